@@ -1,0 +1,38 @@
+#pragma once
+// Fitting view volumes to scene bounds: the light's frustum for shadow maps and automatic camera
+// framing when a scene has no camera.
+
+#include <geometry/Aabb.h>
+
+#include <glm/glm.hpp>
+
+namespace fl::geom {
+
+/// A view and projection pair with the depth range it was fitted to.
+struct ViewVolume {
+    glm::mat4 view{1.0f};
+    glm::mat4 proj{1.0f};
+    float znear = 0.1f;
+    float zfar = 100.0f;
+    [[nodiscard]] glm::mat4 viewProj() const { return proj * view; }
+};
+
+/// Orthographic light volume for a directional light travelling along `dir` that tightly
+/// contains `bounds`.
+ViewVolume fitDirectionalLight(const Aabb& bounds, glm::vec3 dir);
+
+/// Perspective light volume from `position` aimed at the bounds' centre whose square frustum
+/// contains every corner of `bounds` in front of the light. When the light sits inside the
+/// bounds (no finite frustum contains them) the field of view is capped at `maxFov` radians and
+/// the near plane at 1/1000 of the bounds' diagonal.
+ViewVolume fitPerspectiveLight(const Aabb& bounds, glm::vec3 position,
+                               float maxFov = glm::radians(150.0f));
+
+/// A look-at view from direction `fromDir` (pointing from the target to the eye) that shows the
+/// whole bounding sphere of `bounds` for the given vertical fov and aspect, plus near/far planes.
+ViewVolume frameBounds(const Aabb& bounds, glm::vec3 fromDir, float yfov, float aspect);
+
+/// An up vector that is not parallel to `dir` (world +Y unless dir is nearly vertical).
+glm::vec3 stableUp(glm::vec3 dir);
+
+} // namespace fl::geom

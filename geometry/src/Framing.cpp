@@ -1,0 +1,84 @@
+#include <geometry/Framing.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace fl::geom {
+
+glm::vec3 stableUp(glm::vec3 dir) {
+    dir = glm::normalize(dir);
+    return std::abs(dir.y) > 0.99f ? glm::vec3(0.0f, 0.0f, 1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+}
+
+ViewVolume fitDirectionalLight(const Aabb& bounds, glm::vec3 dir) {
+    dir = glm::normalize(dir);
+    const glm::vec3 c = bounds.center();
+    const float r = std::max(bounds.radius(), 1e-4f);
+    ViewVolume v;
+    // Eye one radius plus a margin behind the centre so every point has positive depth.
+    v.view = glm::lookAt(c - dir * (2.0f * r), c, stableUp(dir));
+    const Aabb ls = bounds.transformed(v.view);
+    // View space looks down -Z: depth of a point is -z.
+    const float pad = 1e-3f * r;
+    v.znear = std::max(-ls.max.z - pad, 1e-4f * r);
+    v.zfar = -ls.min.z + pad;
+    v.proj = glm::ortho(ls.min.x - pad, ls.max.x + pad, ls.min.y - pad, ls.max.y + pad, v.znear,
+                        v.zfar);
+    return v;
+}
+
+ViewVolume fitPerspectiveLight(const Aabb& bounds, glm::vec3 position, float maxFov) {
+    const glm::vec3 c = bounds.center();
+    const float r = std::max(bounds.radius(), 1e-4f);
+    glm::vec3 dir = c - position;
+    if (glm::length(dir) < 1e-6f * r) dir = glm::vec3(0.0f, -1.0f, 0.0f);
+    dir = glm::normalize(dir);
+    ViewVolume v;
+    v.view = glm::lookAt(position, position + dir, stableUp(dir));
+    // Largest tangent over the corners in front of the light; corners behind it cannot be
+    // covered by any frustum, so they force the capped fov.
+    float maxTan = 0.0f;
+    float zmin = std::numeric_limits<float>::max();
+    float zmax = 0.0f;
+    bool behind = false;
+    for (int i = 0; i < 8; ++i) {
+        const glm::vec3 corner{(i & 1) ? bounds.max.x : bounds.min.x,
+                               (i & 2) ? bounds.max.y : bounds.min.y,
+                               (i & 4) ? bounds.max.z : bounds.min.z};
+        const glm::vec3 p = glm::vec3(v.view * glm::vec4(corner, 1.0f));
+        const float depth = -p.z;
+        zmax = std::max(zmax, depth);
+        if (depth <= 1e-6f * r) {
+            behind = true;
+            continue;
+        }
+        zmin = std::min(zmin, depth);
+        maxTan = std::max({maxTan, std::abs(p.x) / depth, std::abs(p.y) / depth});
+    }
+    const float capTan = std::tan(0.5f * maxFov);
+    const float tanHalf = behind ? capTan : std::min(maxTan * 1.01f, capTan);
+    v.znear = behind ? 1e-3f * 2.0f * r : std::max(zmin * 0.99f, 1e-3f * 2.0f * r);
+    v.zfar = std::max(zmax * 1.01f, v.znear * 2.0f);
+    v.proj = glm::perspective(2.0f * std::atan(tanHalf), 1.0f, v.znear, v.zfar);
+    return v;
+}
+
+ViewVolume frameBounds(const Aabb& bounds, glm::vec3 fromDir, float yfov, float aspect) {
+    fromDir = glm::normalize(fromDir);
+    const glm::vec3 c = bounds.center();
+    const float r = std::max(bounds.radius(), 1e-4f);
+    // The sphere fits when its distance satisfies r / d = sin(half of the narrower fov).
+    const float halfY = 0.5f * yfov;
+    const float halfX = std::atan(std::tan(halfY) * std::max(aspect, 1e-3f));
+    const float d = r / std::sin(std::min(halfX, halfY));
+    ViewVolume v;
+    v.view = glm::lookAt(c + fromDir * d, c, stableUp(fromDir));
+    v.znear = std::max(d - r, 1e-3f * r) * 0.9f;
+    v.zfar = (d + r) * 1.1f;
+    v.proj = glm::perspective(yfov, aspect, v.znear, v.zfar);
+    return v;
+}
+
+} // namespace fl::geom

@@ -1,0 +1,3 @@
+#pragma once
+// Placeholder: replaced by the plans implementation.
+namespace fl::jfa {}

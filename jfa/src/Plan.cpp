@@ -1,0 +1,1 @@
+#include <jfa/Plan.h>

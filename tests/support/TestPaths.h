@@ -1,0 +1,14 @@
+#pragma once
+// Where tests find their data and write their output.
+
+#include <filesystem>
+#include <string>
+
+namespace fl::test {
+
+/// The tests/ source folder (goldens, fixtures).
+std::filesystem::path dataDir();
+/// A per-test output folder under the build tree, created on demand.
+std::filesystem::path outputDir(const std::string& sub = {});
+
+} // namespace fl::test
