@@ -1,1 +1,49 @@
-int main() { return 0; }
+// floodlight: soft shadows and jump flooding. Subcommands: render, view, make-scene; with no
+// arguments, a window on the default scene when a display exists, else a headless render.
+
+#include "Commands.h"
+
+#include <renderer/GlfwWindow.h>
+#include <renderer/gl/Gl.h>
+
+#include <iostream>
+
+int main(int argc, char** argv) {
+    using namespace fl::app;
+    CLI::App app{"Floodlight: real-time soft shadows and jump flooding (Rong 2007).\n"
+                 "Without a subcommand: opens the default scene in a window when a display is\n"
+                 "available, otherwise renders it headless into captures/."};
+    app.set_help_all_flag("--help-all", "Help for every subcommand");
+    const Runner render = addRenderCommand(app);
+    const Runner view = addViewCommand(app);
+    const Runner makeScene = addMakeSceneCommand(app);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        const int code = app.exit(e); // prints help or the message
+        return code == 0 ? 0 : 2;
+    }
+    try {
+        if (app.got_subcommand("render")) return render();
+        if (app.got_subcommand("view")) return view();
+        if (app.got_subcommand("make-scene")) return makeScene();
+        const SceneOptions defaults;
+        if (fl::displayAvailable()) {
+            try {
+                return runViewer(defaults, 1024, 768, 0, "");
+            } catch (const NoWindow& e) {
+                std::cerr << "no window (" << e.what() << "); rendering headless instead\n";
+            }
+        }
+        return renderHeadless(defaults, 512, 512, "captures", "default");
+    } catch (const InputError& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return 1;
+    } catch (const fl::gl::GlError& e) {
+        std::cerr << "GL error: " << e.what() << "\n";
+        return 1;
+    } catch (const std::exception& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return 1;
+    }
+}

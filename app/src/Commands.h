@@ -1,0 +1,33 @@
+#pragma once
+// The subcommands. Each registers its options on a CLI11 subcommand and returns a runner.
+
+#include "Common.h"
+
+#include <functional>
+
+namespace fl::app {
+
+using Runner = std::function<int()>;
+
+/// `floodlight render`: one headless frame to PNG + EXR.
+Runner addRenderCommand(CLI::App& app);
+/// `floodlight view`: the interactive window.
+Runner addViewCommand(CLI::App& app);
+/// `floodlight make-scene`: writes a generated scene as .glb.
+Runner addMakeSceneCommand(CLI::App& app);
+
+/// Renders the default scene headless into `outDir`, prints the paths; returns the exit code.
+int renderHeadless(const SceneOptions& scene, int width, int height,
+                   const std::filesystem::path& outDir, const std::string& stem);
+/// The window could not be opened (no display, no GL 4.5): callers may fall back to headless.
+class NoWindow : public std::runtime_error {
+  public:
+    using std::runtime_error::runtime_error;
+};
+
+/// Opens the window on a scene; `frames` > 0 closes it after that many frames, `screenshot`
+/// saves the last frame shown (PNG) on close. Throws NoWindow if no window can be opened.
+int runViewer(const SceneOptions& scene, int width, int height, int frames,
+              const std::string& screenshot);
+
+} // namespace fl::app

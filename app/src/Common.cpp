@@ -1,0 +1,126 @@
+#include "Common.h"
+
+#include <renderer/SceneGenerator.h>
+
+#include <iomanip>
+#include <iostream>
+
+namespace fl::app {
+
+namespace {
+constexpr int kMaxImageSize = 8192;   // per side: 8192² RGBA16F + R32F + depth ≈ 768 MiB
+constexpr int kMaxShadowMapSize = 8192;
+} // namespace
+
+void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool sceneAsOption) {
+    if (sceneAsOption)
+        cmd.add_option("--scene", o.scene, "glTF 2.0 scene (.gltf/.glb); default: built-in scene");
+    else
+        cmd.add_option("scene", o.scene, "glTF 2.0 scene (.gltf/.glb); default: built-in scene");
+    cmd.add_option("--light-radius", o.lightRadius, "Disk light radius in scene units")
+        ->check(CLI::PositiveNumber);
+    cmd.add_option("--shader-dir", o.shaderDir, "Load shaders from this folder instead of the binary");
+    cmd.add_option("--shadow-map-size", o.shadowMapSize, "Shadow map texels per side")
+        ->check(CLI::Range(16, kMaxShadowMapSize))
+        ->capture_default_str();
+    cmd.add_option("--bias-slope", o.slopeBias, "Slope-scaled depth bias (polygon offset factor)")
+        ->check(CLI::Range(0.0f, 64.0f))
+        ->capture_default_str();
+    cmd.add_option("--bias-constant", o.constantBias, "Constant depth bias (polygon offset units)")
+        ->check(CLI::Range(0.0f, 4096.0f))
+        ->capture_default_str();
+    cmd.add_option("--timing", o.timing, "Pass timing: auto, query (GL timers), finish (glFinish)")
+        ->check(CLI::IsMember({"auto", "query", "finish"}))
+        ->capture_default_str();
+    cmd.add_option("--camera", o.camera,
+                   "default (scene camera, else auto), auto (frame the bounds), or a glTF camera index")
+        ->capture_default_str();
+    cmd.add_option("--eye", o.eye, "Camera position x,y,z (with --target)")->delimiter(',')->expected(3);
+    cmd.add_option("--target", o.target, "Camera target x,y,z (with --eye)")->delimiter(',')->expected(3);
+    cmd.add_option("--fov", o.fov, "Vertical field of view, degrees")->check(CLI::Range(1.0f, 170.0f));
+}
+
+void addSizeOptions(CLI::App& cmd, int& width, int& height) {
+    cmd.add_option("--width", width, "Image width in pixels")
+        ->check(CLI::Range(1, kMaxImageSize))
+        ->capture_default_str();
+    cmd.add_option("--height", height, "Image height in pixels")
+        ->check(CLI::Range(1, kMaxImageSize))
+        ->capture_default_str();
+}
+
+Scene loadDefaultScene(const LoadOptions& options) {
+    const std::filesystem::path asset =
+        std::filesystem::path(FLOODLIGHT_SOURCE_DIR) / "assets" / "default.glb";
+    if (std::filesystem::exists(asset)) return loadGltf(asset, options);
+    Scene s = generateScene({kDefaultSceneTriangles, kDefaultSceneSeed});
+    if (options.lightRadius && s.light) s.light->radius = *options.lightRadius;
+    return s;
+}
+
+Scene loadScene(const SceneOptions& o) {
+    LoadOptions lo;
+    lo.lightRadius = o.lightRadius;
+    lo.warn = [](const std::string& w) { std::cerr << "warning: " << w << "\n"; };
+    try {
+        return o.scene.empty() ? loadDefaultScene(lo) : loadGltf(o.scene, lo);
+    } catch (const SceneError& e) {
+        throw InputError(e.what());
+    }
+}
+
+ShaderLibrary makeShaderLibrary(const SceneOptions& o) {
+    try {
+        return o.shaderDir.empty() ? ShaderLibrary() : ShaderLibrary(o.shaderDir);
+    } catch (const std::runtime_error& e) {
+        throw InputError(e.what());
+    }
+}
+
+RenderSettings makeRenderSettings(const SceneOptions& o) {
+    RenderSettings s;
+    s.shadow.size = o.shadowMapSize;
+    s.shadow.slopeBias = o.slopeBias;
+    s.shadow.constantBias = o.constantBias;
+    s.timing = o.timing == "query"    ? TimingMode::Query
+               : o.timing == "finish" ? TimingMode::Finish
+                                      : TimingMode::Auto;
+    return s;
+}
+
+CameraSpec makeCameraSpec(const SceneOptions& o) {
+    CameraSpec c;
+    c.yfovDegrees = o.fov;
+    if (!o.eye.empty() || !o.target.empty()) {
+        if (o.eye.size() != 3 || o.target.size() != 3)
+            throw InputError("--eye and --target must be given together, as x,y,z each");
+        c.kind = CameraSpec::Kind::LookAt;
+        c.eye = {o.eye[0], o.eye[1], o.eye[2]};
+        c.target = {o.target[0], o.target[1], o.target[2]};
+        return c;
+    }
+    if (o.camera == "default") return c;
+    if (o.camera == "auto") {
+        c.kind = CameraSpec::Kind::Auto;
+        return c;
+    }
+    try {
+        size_t used = 0;
+        c.gltfIndex = std::stoi(o.camera, &used);
+        if (used != o.camera.size()) throw std::invalid_argument("trailing characters");
+    } catch (const std::exception&) {
+        throw InputError("--camera " + o.camera + ": expected default, auto or a camera index");
+    }
+    c.kind = CameraSpec::Kind::Gltf;
+    return c;
+}
+
+void printTimings(const Renderer& renderer, std::ostream& out) {
+    out << std::fixed << std::setprecision(2);
+    for (const PassTime& p : renderer.timer().passes()) out << "  " << p.name << ": " << p.ms << " ms\n";
+    out << "  frame total: " << renderer.timer().frameMs() << " ms (" << renderer.timer().modeName()
+        << ")\n";
+    out << std::defaultfloat;
+}
+
+} // namespace fl::app

@@ -1,0 +1,61 @@
+#pragma once
+// Options and helpers shared by the subcommands.
+
+#include <renderer/GltfLoader.h>
+#include <renderer/Renderer.h>
+#include <renderer/Scene.h>
+#include <renderer/ShaderLibrary.h>
+
+#include <CLI/CLI.hpp>
+
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace fl::app {
+
+/// A bad-input failure: printed as one line, exit code 1.
+class InputError : public std::runtime_error {
+  public:
+    using std::runtime_error::runtime_error;
+};
+
+/// Options every rendering subcommand takes.
+struct SceneOptions {
+    std::string scene;                 // empty = the built-in default scene
+    std::optional<float> lightRadius;  // --light-radius
+    std::string shaderDir;             // --shader-dir
+    int shadowMapSize = 1024;
+    float slopeBias = 2.0f;
+    float constantBias = 2.0f;
+    std::string timing = "auto";
+    std::string camera = "default";    // default | auto | N (glTF camera index)
+    std::vector<float> eye, target;    // explicit look-at
+    std::optional<float> fov;          // degrees
+};
+
+/// Registers the scene/shadow/camera options on a subcommand.
+void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool sceneAsOption);
+/// Registers --width/--height with the accepted range.
+void addSizeOptions(CLI::App& cmd, int& width, int& height);
+
+/// The committed default scene (assets/default.glb) or, if that file is absent, the same scene
+/// generated in memory.
+Scene loadDefaultScene(const LoadOptions& options);
+/// Loads o.scene (or the default), printing warnings to stderr; throws InputError.
+Scene loadScene(const SceneOptions& o);
+/// The shader library for --shader-dir (or the embedded shaders); throws InputError.
+ShaderLibrary makeShaderLibrary(const SceneOptions& o);
+RenderSettings makeRenderSettings(const SceneOptions& o);
+CameraSpec makeCameraSpec(const SceneOptions& o);
+
+/// Parameters of the built-in default scene (also how assets/default.glb was made).
+inline constexpr std::size_t kDefaultSceneTriangles = 6320;
+inline constexpr std::uint32_t kDefaultSceneSeed = 1;
+
+/// Prints per-pass times and the frame total on one line each.
+void printTimings(const Renderer& renderer, std::ostream& out);
+
+} // namespace fl::app

@@ -1,0 +1,124 @@
+#include "CameraController.h"
+#include "Commands.h"
+
+#include <renderer/GlfwWindow.h>
+#include <renderer/ImageIO.h>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <cstring>
+#include <iostream>
+#include <sstream>
+
+namespace fl::app {
+
+namespace {
+
+// Reads the window's default framebuffer (what the user sees) as an sRGB PNG image.
+ByteImage readWindow(int width, int height) {
+    ByteImage img{width, height, 4, std::vector<std::uint8_t>(static_cast<size_t>(width) * height * 4)};
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    glReadBuffer(GL_BACK);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadnPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE,
+                  static_cast<GLsizei>(img.data.size()), img.data.data());
+    gl::throwIfErrors("window read-back");
+    const size_t row = static_cast<size_t>(width) * 4;
+    std::vector<std::uint8_t> tmp(row);
+    for (int y = 0; y < height / 2; ++y) { // GL rows are bottom-up
+        std::uint8_t* a = &img.data[static_cast<size_t>(y) * row];
+        std::uint8_t* b = &img.data[static_cast<size_t>(height - 1 - y) * row];
+        std::memcpy(tmp.data(), a, row);
+        std::memcpy(a, b, row);
+        std::memcpy(b, tmp.data(), row);
+    }
+    return img;
+}
+
+} // namespace
+
+int runViewer(const SceneOptions& o, int width, int height, int frames,
+              const std::string& screenshot) {
+    const Scene scene = loadScene(o);
+    const CameraSpec spec = makeCameraSpec(o);
+    std::unique_ptr<GlfwWindow> window;
+    try {
+        window = GlfwWindow::create({width, height, "Floodlight", true});
+    } catch (const gl::GlError& e) {
+        throw NoWindow(e.what());
+    }
+    std::cout << "context: " << window->description() << "\n"
+              << "scene: " << scene.source << " (" << scene.triangleCount() << " triangles)\n"
+              << "controls: left drag orbit/look, right drag pan, wheel zoom, Tab orbit<->fly, "
+                 "WASD/QE fly, Shift fast, R reset, Esc quit\n";
+    const ShaderLibrary shaders = makeShaderLibrary(o);
+    Renderer renderer(shaders, scene, makeRenderSettings(o));
+    CameraView initial;
+    try {
+        initial = makeCameraView(scene, spec, static_cast<float>(width) / static_cast<float>(height));
+    } catch (const std::invalid_argument& e) {
+        throw InputError(e.what());
+    }
+    const float yfov = 2.0f * std::atan(1.0f / initial.proj[1][1]);
+    CameraController controller(initial, scene.bounds.radius(), yfov);
+    controller.attach(window->handle());
+
+    double last = glfwGetTime(), titleTime = last;
+    int frame = 0;
+    glm::ivec2 size{0};
+    while (!window->shouldClose() && (frames <= 0 || frame < frames)) {
+        glfwPollEvents();
+        size = window->framebufferSize();
+        if (size.x <= 0 || size.y <= 0) { // minimised: nothing to draw until restored
+            glfwWaitEventsTimeout(0.1);
+            continue;
+        }
+        const double now = glfwGetTime();
+        controller.update(window->handle(), static_cast<float>(now - last));
+        last = now;
+        renderer.resize(size.x, size.y);
+        renderer.render(controller.view(static_cast<float>(size.x) / static_cast<float>(size.y)));
+        renderer.present(size.x, size.y);
+        if (frames > 0 && frame + 1 == frames && !screenshot.empty()) {
+            writePng(screenshot, readWindow(size.x, size.y));
+            std::cout << "wrote " << screenshot << "\n";
+        }
+        window->swapBuffers();
+        ++frame;
+        if (now - titleTime > 0.5) {
+            std::ostringstream title;
+            title.precision(1);
+            title << std::fixed << "Floodlight - "
+                  << (controller.mode() == CameraController::Mode::Orbit ? "orbit" : "fly") << " - "
+                  << renderer.timer().frameMs() << " ms/frame";
+            glfwSetWindowTitle(window->handle(), title.str().c_str());
+            titleTime = now;
+        }
+    }
+    return 0;
+}
+
+Runner addViewCommand(CLI::App& app) {
+    CLI::App* cmd = app.add_subcommand("view", "Open a scene in an interactive window");
+    struct State {
+        SceneOptions scene;
+        int width = 1024, height = 768, frames = 0;
+        std::string screenshot;
+    };
+    auto s = std::make_shared<State>();
+    addSceneOptions(*cmd, s->scene, false);
+    addSizeOptions(*cmd, s->width, s->height);
+    cmd->add_option("--frames", s->frames, "Close after this many frames (0 = run until closed)")
+        ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--screenshot", s->screenshot, "With --frames: save the last frame as PNG");
+    return [s] {
+        try {
+            return runViewer(s->scene, s->width, s->height, s->frames, s->screenshot);
+        } catch (const NoWindow& e) {
+            throw InputError(std::string("cannot open a window: ") + e.what());
+        }
+    };
+}
+
+} // namespace fl::app

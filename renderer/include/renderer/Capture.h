@@ -1,0 +1,29 @@
+#pragma once
+// Saving a rendered frame: PNG (sRGB, for looking) and EXR (linear float, for measuring).
+
+#include <renderer/ImageIO.h>
+#include <renderer/Renderer.h>
+
+#include <filesystem>
+#include <string>
+
+namespace fl {
+
+struct CapturePaths {
+    std::filesystem::path png;
+    std::filesystem::path exr;
+};
+
+/// The last frame's colour (RGBA linear) and visibility read back from the GPU.
+struct FrameImages {
+    FloatImage color;      // 4 channels
+    FloatImage visibility; // 1 channel
+};
+FrameImages readFrame(const Renderer& renderer);
+
+/// Writes DIR/STEM.png (sRGB colour) and DIR/STEM.exr (channels R, G, B, A, visibility; linear
+/// float). Throws std::runtime_error if a pixel is not finite or a file cannot be written.
+CapturePaths writeFrame(const FrameImages& frame, const std::filesystem::path& dir,
+                        const std::string& stem);
+
+} // namespace fl

@@ -1,0 +1,45 @@
+#pragma once
+// A Scene uploaded to GL: one interleaved vertex buffer and one index buffer for all meshes,
+// material textures, and the draw list. Passes draw it with their own programs.
+
+#include <renderer/Scene.h>
+#include <renderer/gl/Gl.h>
+#include <renderer/gl/Program.h>
+
+#include <vector>
+
+namespace fl {
+
+class GpuScene {
+  public:
+    /// Uploads every mesh, material texture and instance; needs a current GL context.
+    explicit GpuScene(const Scene& scene);
+
+    /// What a draw sets per instance.
+    enum class Uniforms { Geometry, Material };
+    /// Draws every instance with `program`, setting uModel (and uNormalMatrix, uBaseColor,
+    /// uHasTexture, uObjectId and the base-colour texture on unit 0 for Uniforms::Material).
+    void draw(const gl::Program& program, Uniforms what) const;
+
+    [[nodiscard]] std::size_t triangleCount() const { return triangles_; }
+
+  private:
+    struct Draw {
+        glm::mat4 model;
+        glm::mat3 normalMatrix;
+        GLsizei indexCount;
+        std::size_t firstIndex;
+        GLint baseVertex;
+        glm::vec4 baseColor;
+        int texture; // index into textures_, -1 none
+        std::uint32_t objectId;
+    };
+    gl::Buffer vertices_;
+    gl::Buffer indices_;
+    gl::VertexArray vao_;
+    std::vector<gl::Texture> textures_;
+    std::vector<Draw> draws_;
+    std::size_t triangles_ = 0;
+};
+
+} // namespace fl

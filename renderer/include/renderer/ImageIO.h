@@ -1,0 +1,61 @@
+#pragma once
+// Reading back GL textures and writing/reading images. Every write goes to a temporary name in the
+// destination folder and is renamed into place, so a failure never leaves a half-written file.
+
+#include <renderer/gl/Gl.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace fl {
+
+/// Float pixels, row 0 at the top (file order), `channels` interleaved per pixel.
+struct FloatImage {
+    int width = 0;
+    int height = 0;
+    int channels = 0;
+    std::vector<float> data;
+    [[nodiscard]] float at(int x, int y, int c) const {
+        return data[(static_cast<size_t>(y) * width + x) * channels + c];
+    }
+};
+
+/// 8-bit pixels, row 0 at the top, `channels` interleaved.
+struct ByteImage {
+    int width = 0;
+    int height = 0;
+    int channels = 0;
+    std::vector<std::uint8_t> data;
+};
+
+/// Reads level 0 of a colour texture as `channels` floats per pixel (1 = red, 4 = RGBA),
+/// flipped so that row 0 is the top of the picture.
+FloatImage readTexture(const gl::Texture& texture, int channels);
+
+/// The sRGB transfer function for a linear value (clamped to [0,1]), as 0..255.
+std::uint8_t linearToSrgb8(float linear);
+/// Encodes linear RGB(A) floats as 8-bit sRGB (alpha kept linear, forced to 255 if absent).
+ByteImage toSrgb8(const FloatImage& linear);
+
+/// Writes an 8-bit PNG; throws std::runtime_error naming the path on failure.
+void writePng(const std::filesystem::path& path, const ByteImage& image);
+/// Reads a PNG as 8-bit RGBA; throws std::runtime_error naming the path on failure.
+ByteImage readPng(const std::filesystem::path& path);
+
+/// One named float channel of an EXR file, width*height values, row 0 at the top.
+struct ExrChannel {
+    std::string name;
+    std::vector<float> values;
+};
+/// Writes a 32-bit float EXR with the given channels (ZIP compression).
+void writeExr(const std::filesystem::path& path, int width, int height,
+              const std::vector<ExrChannel>& channels);
+/// Reads every channel of an EXR file as floats.
+std::vector<ExrChannel> readExr(const std::filesystem::path& path, int& width, int& height);
+
+/// Throws std::runtime_error if any value is NaN or infinite (we never write such pixels).
+void requireFinite(const FloatImage& image, const std::string& what);
+
+} // namespace fl

@@ -1,0 +1,77 @@
+#pragma once
+// The frame, as numbered steps: 1. shadow map from the light, 2. forward shading with the hard
+// shadow test, 3. (window only) present. Owns the passes and the uploaded scene.
+
+#include <renderer/GpuScene.h>
+#include <renderer/PassTimer.h>
+#include <renderer/Scene.h>
+#include <renderer/ShaderLibrary.h>
+#include <renderer/passes/ForwardPass.h>
+#include <renderer/passes/ShadowMapPass.h>
+
+#include <geometry/Framing.h>
+
+#include <optional>
+
+namespace fl {
+
+struct RenderSettings {
+    ShadowMapSettings shadow;
+    TimingMode timing = TimingMode::Auto;
+};
+
+/// How to pick the camera: a glTF camera, automatic framing, or an explicit eye/target.
+struct CameraSpec {
+    enum class Kind { Default, Auto, Gltf, LookAt };
+    Kind kind = Kind::Default; // Default: the scene's first camera if it has one, else Auto
+    int gltfIndex = 0;
+    glm::vec3 eye{0.0f}, target{0.0f};
+    std::optional<float> yfovDegrees; // overrides the camera's field of view
+};
+
+/// The camera for `spec` at the given aspect ratio; throws std::invalid_argument for a glTF
+/// camera index the scene does not have.
+CameraView makeCameraView(const Scene& scene, const CameraSpec& spec, float aspect);
+
+/// The scene's light, or the default one (above and to the side of the bounds) if it has none.
+Light sceneLight(const Scene& scene);
+
+/// The light's view volume fitted to the scene bounds.
+geom::ViewVolume lightVolume(const Scene& scene, const Light& light);
+
+class Renderer {
+  public:
+    /// Compiles the passes' shaders and uploads the scene (needs a current context).
+    Renderer(const ShaderLibrary& shaders, const Scene& scene, const RenderSettings& settings);
+
+    void setSettings(const RenderSettings& settings) { settings_ = settings; }
+    [[nodiscard]] const RenderSettings& settings() const { return settings_; }
+    /// Sets the output size in pixels (both > 0).
+    void resize(int width, int height);
+    /// Renders one frame into color()/visibility(); throws fl::gl::GlError on any GL error.
+    void render(const CameraView& camera);
+    /// Draws the last frame to the default framebuffer (windows).
+    void present(int framebufferWidth, int framebufferHeight);
+
+    [[nodiscard]] const gl::Texture& color() const { return *color_; }
+    [[nodiscard]] const gl::Texture& visibility() const { return *visibility_; }
+    [[nodiscard]] const PassTimer& timer() const { return timer_; }
+    [[nodiscard]] const Light& light() const { return light_; }
+    [[nodiscard]] int width() const { return width_; }
+    [[nodiscard]] int height() const { return height_; }
+
+  private:
+    RenderSettings settings_;
+    GpuScene scene_;
+    Light light_;
+    geom::ViewVolume lightVolume_;
+    ShadowMapPass shadowPass_;
+    ForwardPass forwardPass_;
+    PresentPass presentPass_;
+    PassTimer timer_;
+    const gl::Texture* color_ = nullptr;
+    const gl::Texture* visibility_ = nullptr;
+    int width_ = 0, height_ = 0;
+};
+
+} // namespace fl

@@ -1,0 +1,48 @@
+#pragma once
+// Linked GLSL programs built from ShaderLibrary files; compile and link errors throw GlError with
+// file, line and the driver's info log.
+
+#include <renderer/ShaderLibrary.h>
+#include <renderer/gl/Gl.h>
+
+#include <glm/glm.hpp>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace fl::gl {
+
+/// One shader stage: GL stage enum and the shader file name (e.g. "forward.frag.glsl").
+struct StageSource {
+    GLenum stage;
+    std::string file;
+};
+
+/// A linked program. Uniforms are set with DSA (glProgramUniform*), so no program is bound.
+class Program {
+  public:
+    Program() = default;
+    /// Compiles every stage (with `defines` lines inserted after #version) and links them.
+    static Program build(const ShaderLibrary& library, const std::vector<StageSource>& stages,
+                         const std::vector<std::string>& defines = {});
+
+    [[nodiscard]] GLuint id() const { return handle_.id(); }
+    /// Uniform location, or -1 if the linker removed it.
+    [[nodiscard]] GLint location(const char* name) const;
+    void set(const char* name, int v) const;
+    void set(const char* name, float v) const;
+    void set(const char* name, const glm::vec2& v) const;
+    void set(const char* name, const glm::vec3& v) const;
+    void set(const char* name, const glm::vec4& v) const;
+    void set(const char* name, const glm::mat4& v) const;
+
+  private:
+    ProgramHandle handle_;
+};
+
+/// Rewrites a driver info log so that "0:12(5): error" style references name the file and line;
+/// `files` maps #line source-string numbers to file names. Exposed for tests.
+std::string mapInfoLog(const std::string& log, const std::vector<std::string>& files);
+
+} // namespace fl::gl

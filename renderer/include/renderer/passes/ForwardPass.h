@@ -1,0 +1,56 @@
+#pragma once
+// Step 2 of a frame: forward shading from the camera with the hard shadow-map test. Writes linear
+// colour and the light's visibility (1 lit, 0 shadowed) per pixel.
+
+#include <renderer/GpuScene.h>
+#include <renderer/Scene.h>
+#include <renderer/ShaderLibrary.h>
+#include <renderer/gl/Gl.h>
+#include <renderer/gl/Program.h>
+
+namespace fl {
+
+/// What the camera sees with: matrices and eye position.
+struct CameraView {
+    glm::mat4 view{1.0f};
+    glm::mat4 proj{1.0f};
+    glm::vec3 eye{0.0f};
+};
+
+class ForwardPass {
+  public:
+    explicit ForwardPass(const ShaderLibrary& shaders);
+    /// (Re)allocates the colour, visibility and depth targets.
+    void resize(int width, int height);
+
+    struct Inputs {
+        const GpuScene& scene;
+        const CameraView& camera;
+        const Light& light;
+        const gl::Texture& shadowMap;
+        const glm::mat4& lightViewProj;
+    };
+    struct Outputs {
+        const gl::Texture& color;      // RGBA16F linear; alpha 0 where nothing was drawn
+        const gl::Texture& visibility; // R32F in [0,1]; 1 for background
+    };
+    Outputs execute(const Inputs& in);
+
+  private:
+    gl::Program program_;
+    gl::Texture color_, visibility_, depth_;
+    gl::Framebuffer fbo_;
+};
+
+/// Step 3 in a window: draws a linear colour texture to the default framebuffer, sRGB-encoded.
+class PresentPass {
+  public:
+    explicit PresentPass(const ShaderLibrary& shaders);
+    void execute(const gl::Texture& color, int framebufferWidth, int framebufferHeight);
+
+  private:
+    gl::Program program_;
+    gl::VertexArray emptyVao_;
+};
+
+} // namespace fl

@@ -1,0 +1,105 @@
+#include <renderer/GpuScene.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace fl {
+
+namespace {
+
+struct Vertex {
+    glm::vec3 position;
+    glm::vec3 normal;
+    glm::vec2 uv;
+};
+
+struct MeshRange {
+    std::size_t firstIndex;
+    GLsizei indexCount;
+    GLint baseVertex;
+};
+
+gl::Texture uploadImage(const Image& image) {
+    const int levels = 1 + static_cast<int>(std::floor(std::log2(std::max(image.width, image.height))));
+    gl::Texture t(GL_SRGB8_ALPHA8, image.width, image.height, levels);
+    // glTF images have row 0 at the top and glTF UVs have v=0 at the top, so the image goes in
+    // unflipped and the shader samples (u, v) directly.
+    glTextureSubImage2D(t.id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE,
+                        image.rgba.data());
+    glGenerateTextureMipmap(t.id());
+    t.setSampling(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_REPEAT);
+    return t;
+}
+
+} // namespace
+
+GpuScene::GpuScene(const Scene& scene) {
+    std::vector<Vertex> vertices;
+    std::vector<std::uint32_t> indices;
+    std::vector<MeshRange> ranges;
+    for (const Mesh& m : scene.meshes) {
+        ranges.push_back({indices.size(), static_cast<GLsizei>(m.indices.size()),
+                          static_cast<GLint>(vertices.size())});
+        for (size_t i = 0; i < m.positions.size(); ++i) {
+            const glm::vec2 uv = i < m.texcoords.size() ? m.texcoords[i] : glm::vec2(0.0f);
+            vertices.push_back({m.positions[i], m.normals.at(i), uv});
+        }
+        indices.insert(indices.end(), m.indices.begin(), m.indices.end());
+    }
+    // Zero-sized buffers are invalid in GL; a scene always has triangles (the loader rejects
+    // empty ones), but keep a valid object regardless.
+    vertices_ = gl::Buffer(static_cast<GLsizeiptr>(std::max<size_t>(1, vertices.size()) * sizeof(Vertex)),
+                           vertices.empty() ? nullptr : vertices.data());
+    indices_ = gl::Buffer(
+        static_cast<GLsizeiptr>(std::max<size_t>(1, indices.size()) * sizeof(std::uint32_t)),
+        indices.empty() ? nullptr : indices.data());
+    vao_ = gl::VertexArray::create();
+    glVertexArrayVertexBuffer(vao_.id(), 0, vertices_.id(), 0, sizeof(Vertex));
+    glVertexArrayElementBuffer(vao_.id(), indices_.id());
+    const GLuint offsets[3] = {offsetof(Vertex, position), offsetof(Vertex, normal),
+                               offsetof(Vertex, uv)};
+    const GLint sizes[3] = {3, 3, 2};
+    for (GLuint a = 0; a < 3; ++a) {
+        glEnableVertexArrayAttrib(vao_.id(), a);
+        glVertexArrayAttribFormat(vao_.id(), a, sizes[a], GL_FLOAT, GL_FALSE, offsets[a]);
+        glVertexArrayAttribBinding(vao_.id(), a, 0);
+    }
+
+    for (const Image& img : scene.images) textures_.push_back(uploadImage(img));
+    for (const Instance& inst : scene.instances) {
+        const Mesh& mesh = scene.meshes.at(static_cast<size_t>(inst.mesh));
+        const MeshRange& r = ranges.at(static_cast<size_t>(inst.mesh));
+        Material mat;
+        if (mesh.material >= 0) mat = scene.materials.at(static_cast<size_t>(mesh.material));
+        draws_.push_back({inst.world, glm::transpose(glm::inverse(glm::mat3(inst.world))),
+                          r.indexCount, r.firstIndex, r.baseVertex, mat.baseColorFactor,
+                          mat.baseColorTexture, inst.objectId});
+        triangles_ += mesh.triangleCount();
+    }
+}
+
+void GpuScene::draw(const gl::Program& program, Uniforms what) const {
+    glUseProgram(program.id());
+    glBindVertexArray(vao_.id());
+    const GLint model = program.location("uModel");
+    for (const Draw& d : draws_) {
+        if (d.indexCount == 0) continue;
+        glProgramUniformMatrix4fv(program.id(), model, 1, GL_FALSE, &d.model[0][0]);
+        if (what == Uniforms::Material) {
+            glProgramUniformMatrix3fv(program.id(), program.location("uNormalMatrix"), 1, GL_FALSE,
+                                      &d.normalMatrix[0][0]);
+            program.set("uBaseColor", d.baseColor);
+            const bool textured = d.texture >= 0 && d.texture < static_cast<int>(textures_.size());
+            program.set("uHasTexture", textured ? 1 : 0);
+            program.set("uObjectId", static_cast<int>(d.objectId));
+            if (textured) glBindTextureUnit(0, textures_[static_cast<size_t>(d.texture)].id());
+        }
+        glDrawElementsBaseVertex(GL_TRIANGLES, d.indexCount, GL_UNSIGNED_INT,
+                                 reinterpret_cast<const void*>(d.firstIndex * sizeof(std::uint32_t)),
+                                 d.baseVertex);
+    }
+    glBindVertexArray(0);
+    glUseProgram(0);
+}
+
+} // namespace fl

@@ -1,0 +1,187 @@
+#include <renderer/ImageIO.h>
+
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+#include <ImfOutputFile.h>
+
+#define STB_IMAGE_STATIC
+#define STB_IMAGE_IMPLEMENTATION
+#define STBI_ONLY_PNG
+#if defined(__GNUC__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-function"
+#endif
+#include <stb_image.h>
+#if defined(__GNUC__)
+#pragma GCC diagnostic pop
+#endif
+#include <stb_image_write.h>
+
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+#include <system_error>
+#include <unistd.h>
+
+namespace fl {
+
+namespace {
+
+// A unique temporary name next to `path`, so the final rename stays on one file system.
+std::filesystem::path tempNameFor(const std::filesystem::path& path) {
+    static int counter = 0;
+    // Appended piecewise: GCC 12 at -O3 reports a false -Wrestrict for `"." + std::string`.
+    std::string name = path.filename().string();
+    name.insert(0, 1, '.');
+    name.append(".tmp").append(std::to_string(::getpid())).append("_");
+    name.append(std::to_string(counter++));
+    return path.parent_path() / name;
+}
+
+void ensureParent(const std::filesystem::path& path) {
+    const std::filesystem::path dir = path.parent_path();
+    if (dir.empty()) return;
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec) throw std::runtime_error(dir.string() + ": cannot create folder: " + ec.message());
+}
+
+void commit(const std::filesystem::path& tmp, const std::filesystem::path& path) {
+    std::error_code ec;
+    std::filesystem::rename(tmp, path, ec);
+    if (ec) {
+        std::filesystem::remove(tmp, ec);
+        throw std::runtime_error(path.string() + ": cannot move finished file into place: " +
+                                 ec.message());
+    }
+}
+
+} // namespace
+
+FloatImage readTexture(const gl::Texture& texture, int channels) {
+    if (channels != 1 && channels != 4) throw std::invalid_argument("readTexture: 1 or 4 channels");
+    FloatImage img{texture.width(), texture.height(), channels, {}};
+    const size_t row = static_cast<size_t>(img.width) * static_cast<size_t>(channels);
+    std::vector<float> raw(row * static_cast<size_t>(img.height));
+    glGetTextureImage(texture.id(), 0, channels == 1 ? GL_RED : GL_RGBA, GL_FLOAT,
+                      static_cast<GLsizei>(raw.size() * sizeof(float)), raw.data());
+    gl::throwIfErrors("texture read-back");
+    // GL stores row 0 at the bottom; files store it at the top.
+    img.data.resize(raw.size());
+    for (int y = 0; y < img.height; ++y)
+        std::memcpy(&img.data[static_cast<size_t>(y) * row],
+                    &raw[static_cast<size_t>(img.height - 1 - y) * row], row * sizeof(float));
+    return img;
+}
+
+std::uint8_t linearToSrgb8(float c) {
+    if (!(c > 0.0f)) return 0; // also maps NaN to 0
+    if (c >= 1.0f) return 255;
+    const float s = c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+    return static_cast<std::uint8_t>(std::lround(s * 255.0f));
+}
+
+ByteImage toSrgb8(const FloatImage& linear) {
+    ByteImage out{linear.width, linear.height, 4, {}};
+    const size_t n = static_cast<size_t>(linear.width) * static_cast<size_t>(linear.height);
+    out.data.resize(n * 4);
+    for (size_t i = 0; i < n; ++i) {
+        for (int c = 0; c < 3; ++c) {
+            const int src = std::min(c, linear.channels - 1);
+            out.data[i * 4 + static_cast<size_t>(c)] =
+                linearToSrgb8(linear.data[i * static_cast<size_t>(linear.channels) + static_cast<size_t>(src)]);
+        }
+        out.data[i * 4 + 3] = 255; // PNGs are for looking: opaque, background shows the sky
+    }
+    return out;
+}
+
+void writePng(const std::filesystem::path& path, const ByteImage& image) {
+    ensureParent(path);
+    const std::filesystem::path tmp = tempNameFor(path);
+    const int ok = stbi_write_png(tmp.c_str(), image.width, image.height, image.channels,
+                                  image.data.data(), image.width * image.channels);
+    if (!ok) {
+        std::error_code ec;
+        std::filesystem::remove(tmp, ec);
+        throw std::runtime_error(path.string() + ": cannot write PNG: " + std::strerror(errno));
+    }
+    commit(tmp, path);
+}
+
+ByteImage readPng(const std::filesystem::path& path) {
+    int w = 0, h = 0, n = 0;
+    stbi_uc* pixels = stbi_load(path.c_str(), &w, &h, &n, 4);
+    if (!pixels)
+        throw std::runtime_error(path.string() + ": cannot read PNG: " + stbi_failure_reason());
+    ByteImage out{w, h, 4, std::vector<std::uint8_t>(pixels, pixels + static_cast<size_t>(w) * h * 4)};
+    stbi_image_free(pixels);
+    return out;
+}
+
+void writeExr(const std::filesystem::path& path, int width, int height,
+              const std::vector<ExrChannel>& channels) {
+    ensureParent(path);
+    const std::filesystem::path tmp = tempNameFor(path);
+    try {
+        Imf::Header header(width, height);
+        header.compression() = Imf::ZIP_COMPRESSION;
+        Imf::FrameBuffer fb;
+        for (const ExrChannel& c : channels) {
+            if (c.values.size() != static_cast<size_t>(width) * static_cast<size_t>(height))
+                throw std::invalid_argument("channel " + c.name + " has the wrong size");
+            header.channels().insert(c.name, Imf::Channel(Imf::FLOAT));
+            fb.insert(c.name, Imf::Slice(Imf::FLOAT,
+                                         const_cast<char*>(reinterpret_cast<const char*>(c.values.data())),
+                                         sizeof(float), sizeof(float) * static_cast<size_t>(width)));
+        }
+        Imf::OutputFile file(tmp.c_str(), header);
+        file.setFrameBuffer(fb);
+        file.writePixels(height);
+    } catch (const std::exception& e) {
+        std::error_code ec;
+        std::filesystem::remove(tmp, ec);
+        throw std::runtime_error(path.string() + ": cannot write EXR: " + e.what());
+    }
+    commit(tmp, path);
+}
+
+std::vector<ExrChannel> readExr(const std::filesystem::path& path, int& width, int& height) {
+    try {
+        Imf::InputFile file(path.c_str());
+        const Imath::Box2i dw = file.header().dataWindow();
+        width = dw.max.x - dw.min.x + 1;
+        height = dw.max.y - dw.min.y + 1;
+        std::vector<ExrChannel> out;
+        for (auto it = file.header().channels().begin(); it != file.header().channels().end(); ++it)
+            out.push_back({it.name(), std::vector<float>(static_cast<size_t>(width) * height)});
+        Imf::FrameBuffer fb;
+        for (ExrChannel& c : out) {
+            char* base = reinterpret_cast<char*>(c.values.data()) -
+                         (static_cast<std::ptrdiff_t>(dw.min.y) * width + dw.min.x) *
+                             static_cast<std::ptrdiff_t>(sizeof(float));
+            fb.insert(c.name, Imf::Slice(Imf::FLOAT, base, sizeof(float),
+                                         sizeof(float) * static_cast<size_t>(width)));
+        }
+        file.setFrameBuffer(fb);
+        file.readPixels(dw.min.y, dw.max.y);
+        return out;
+    } catch (const std::exception& e) {
+        throw std::runtime_error(path.string() + ": cannot read EXR: " + e.what());
+    }
+}
+
+void requireFinite(const FloatImage& image, const std::string& what) {
+    for (size_t i = 0; i < image.data.size(); ++i) {
+        if (!std::isfinite(image.data[i])) {
+            const size_t px = i / static_cast<size_t>(image.channels);
+            throw std::runtime_error(what + ": non-finite value at pixel (" +
+                                     std::to_string(px % static_cast<size_t>(image.width)) + ", " +
+                                     std::to_string(px / static_cast<size_t>(image.width)) + ")");
+        }
+    }
+}
+
+} // namespace fl

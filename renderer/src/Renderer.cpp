@@ -1,0 +1,112 @@
+#include <renderer/Renderer.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <stdexcept>
+
+namespace fl {
+
+CameraView makeCameraView(const Scene& scene, const CameraSpec& spec, float aspect) {
+    CameraSpec::Kind kind = spec.kind;
+    if (kind == CameraSpec::Kind::Default)
+        kind = scene.cameras.empty() ? CameraSpec::Kind::Auto : CameraSpec::Kind::Gltf;
+    CameraView out;
+    const float r = std::max(scene.bounds.radius(), 1e-3f);
+    switch (kind) {
+    case CameraSpec::Kind::Gltf: {
+        if (spec.gltfIndex < 0 || spec.gltfIndex >= static_cast<int>(scene.cameras.size()))
+            throw std::invalid_argument("--camera " + std::to_string(spec.gltfIndex) +
+                                        ": the scene has " + std::to_string(scene.cameras.size()) +
+                                        " camera(s)");
+        const Camera& c = scene.cameras[static_cast<size_t>(spec.gltfIndex)];
+        const float fov = spec.yfovDegrees ? glm::radians(*spec.yfovDegrees) : c.yfov;
+        out.view = c.view;
+        out.proj = glm::perspective(fov, aspect, c.znear, c.zfar);
+        out.eye = glm::vec3(glm::inverse(c.view)[3]);
+        return out;
+    }
+    case CameraSpec::Kind::LookAt: {
+        const float fov = glm::radians(spec.yfovDegrees.value_or(50.0f));
+        const glm::vec3 dir = spec.target - spec.eye;
+        if (glm::length(dir) < 1e-6f)
+            throw std::invalid_argument("--eye and --target are the same point");
+        out.view = glm::lookAt(spec.eye, spec.target, geom::stableUp(dir));
+        // Near/far from the distance to the bounds so depth precision follows the scene.
+        const float d = glm::length(scene.bounds.center() - spec.eye);
+        const float znear = std::max(1e-3f * r, (d - r) * 0.5f);
+        out.proj = glm::perspective(fov, aspect, znear, (d + r) * 1.5f);
+        out.eye = spec.eye;
+        return out;
+    }
+    default: {
+        const float fov = glm::radians(spec.yfovDegrees.value_or(50.0f));
+        const geom::ViewVolume v =
+            geom::frameBounds(scene.bounds, glm::vec3(0.55f, 0.5f, 0.75f), fov, aspect);
+        out.view = v.view;
+        out.proj = v.proj;
+        out.eye = glm::vec3(glm::inverse(v.view)[3]);
+        return out;
+    }
+    }
+}
+
+Light sceneLight(const Scene& scene) {
+    if (scene.light) return *scene.light;
+    Light l;
+    l.name = "default";
+    l.type = Light::Type::Point;
+    const float r = std::max(scene.bounds.radius(), 1e-3f);
+    l.position = scene.bounds.center() + glm::normalize(glm::vec3(-0.5f, 1.0f, 0.35f)) * (2.5f * r);
+    l.direction = glm::normalize(scene.bounds.center() - l.position);
+    l.radius = 0.02f * r;
+    return l;
+}
+
+geom::ViewVolume lightVolume(const Scene& scene, const Light& light) {
+    if (light.type == Light::Type::Directional)
+        return geom::fitDirectionalLight(scene.bounds, light.direction);
+    return geom::fitPerspectiveLight(scene.bounds, light.position);
+}
+
+Renderer::Renderer(const ShaderLibrary& shaders, const Scene& scene, const RenderSettings& settings)
+    : settings_(settings), scene_(scene), light_(sceneLight(scene)),
+      lightVolume_(lightVolume(scene, light_)), shadowPass_(shaders), forwardPass_(shaders),
+      presentPass_(shaders), timer_(settings.timing) {
+    gl::throwIfErrors("renderer set-up");
+}
+
+void Renderer::resize(int width, int height) {
+    if (width <= 0 || height <= 0)
+        throw std::invalid_argument("render size must be positive, got " + std::to_string(width) +
+                                    "x" + std::to_string(height));
+    forwardPass_.resize(width, height);
+    width_ = width;
+    height_ = height;
+}
+
+void Renderer::render(const CameraView& camera) {
+    if (width_ == 0) throw std::logic_error("Renderer::render before resize");
+    timer_.beginFrame();
+    // 1. Shadow map: depth from the light, fitted to the scene bounds.
+    timer_.begin("shadow map");
+    const ShadowMapPass::Outputs shadow =
+        shadowPass_.execute({scene_, lightVolume_, settings_.shadow});
+    timer_.end();
+    // 2. Forward shading with the hard shadow test.
+    timer_.begin("forward");
+    const ForwardPass::Outputs fwd =
+        forwardPass_.execute({scene_, camera, light_, shadow.depth, shadow.lightViewProj});
+    timer_.end();
+    timer_.endFrame();
+    color_ = &fwd.color;
+    visibility_ = &fwd.visibility;
+    gl::throwIfErrors("frame");
+}
+
+void Renderer::present(int framebufferWidth, int framebufferHeight) {
+    if (!color_ || framebufferWidth <= 0 || framebufferHeight <= 0) return;
+    presentPass_.execute(*color_, framebufferWidth, framebufferHeight);
+    gl::throwIfErrors("present");
+}
+
+} // namespace fl

@@ -1,0 +1,127 @@
+#include <renderer/gl/Program.h>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <cstring>
+#include <regex>
+#include <sstream>
+
+namespace fl::gl {
+
+namespace {
+
+const char* stageName(GLenum stage) {
+    switch (stage) {
+    case GL_VERTEX_SHADER: return "vertex";
+    case GL_FRAGMENT_SHADER: return "fragment";
+    case GL_COMPUTE_SHADER: return "compute";
+    case GL_GEOMETRY_SHADER: return "geometry";
+    default: return "shader";
+    }
+}
+
+// Inserts `defines` right after the #version line, then restores line numbering with #line.
+std::string withDefines(const std::string& source, const std::vector<std::string>& defines) {
+    if (defines.empty()) return source;
+    const size_t eol = source.find('\n');
+    if (eol == std::string::npos) return source;
+    std::string out = source.substr(0, eol + 1);
+    // ShaderLibrary::expand already put "#line 2 0" after #version, so numbering survives.
+    for (const std::string& d : defines) out += "#define " + d + "\n";
+    out += source.substr(eol + 1);
+    return out;
+}
+
+std::string infoLog(GLuint object, bool isProgram) {
+    GLint length = 0;
+    if (isProgram) glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length);
+    else glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<size_t>(std::max(length, 1)), '\0');
+    if (isProgram) glGetProgramInfoLog(object, length, nullptr, log.data());
+    else glGetShaderInfoLog(object, length, nullptr, log.data());
+    log.resize(std::strlen(log.c_str()));
+    return log;
+}
+
+Shader compile(const ShaderLibrary& library, const StageSource& s,
+               const std::vector<std::string>& defines) {
+    std::vector<std::string> files;
+    const std::string source = withDefines(library.expand(s.file, files), defines);
+    Shader shader(glCreateShader(s.stage));
+    const char* text = source.c_str();
+    glShaderSource(shader.id(), 1, &text, nullptr);
+    glCompileShader(shader.id());
+    GLint ok = 0;
+    glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+        throw GlError(s.file + ": " + stageName(s.stage) + " shader failed to compile:\n" +
+                      mapInfoLog(infoLog(shader.id(), false), files));
+    }
+    return shader;
+}
+
+} // namespace
+
+std::string mapInfoLog(const std::string& log, const std::vector<std::string>& files) {
+    // Mesa: "0:12(5): error: ..."; NVIDIA: "0(12) : error ..."; both start with the
+    // source-string number our #line directives assigned to a file.
+    static const std::regex mesa(R"(^(\d+):(\d+)\((\d+)\)(.*)$)");
+    static const std::regex nvidia(R"(^(\d+)\((\d+)\)(.*)$)");
+    std::istringstream in(log);
+    std::ostringstream out;
+    std::string line;
+    std::smatch m;
+    auto fileName = [&](const std::string& idx) {
+        const size_t i = std::stoul(idx);
+        return i < files.size() ? files[i] : "source " + idx;
+    };
+    while (std::getline(in, line)) {
+        if (std::regex_match(line, m, mesa))
+            out << fileName(m[1]) << ":" << m[2] << ":" << m[3] << m[4] << "\n";
+        else if (std::regex_match(line, m, nvidia))
+            out << fileName(m[1]) << ":" << m[2] << m[3] << "\n";
+        else if (!line.empty())
+            out << line << "\n";
+    }
+    return out.str();
+}
+
+Program Program::build(const ShaderLibrary& library, const std::vector<StageSource>& stages,
+                       const std::vector<std::string>& defines) {
+    std::vector<Shader> shaders;
+    std::string names;
+    for (const StageSource& s : stages) {
+        shaders.push_back(compile(library, s, defines));
+        names += (names.empty() ? "" : " + ") + s.file;
+    }
+    Program p;
+    p.handle_ = ProgramHandle(glCreateProgram());
+    for (const Shader& s : shaders) glAttachShader(p.id(), s.id());
+    glLinkProgram(p.id());
+    for (const Shader& s : shaders) glDetachShader(p.id(), s.id());
+    GLint ok = 0;
+    glGetProgramiv(p.id(), GL_LINK_STATUS, &ok);
+    if (!ok) throw GlError(names + ": program failed to link:\n" + infoLog(p.id(), true));
+    return p;
+}
+
+GLint Program::location(const char* name) const { return glGetUniformLocation(id(), name); }
+void Program::set(const char* name, int v) const { glProgramUniform1i(id(), location(name), v); }
+void Program::set(const char* name, float v) const {
+    glProgramUniform1f(id(), location(name), v);
+}
+void Program::set(const char* name, const glm::vec2& v) const {
+    glProgramUniform2fv(id(), location(name), 1, glm::value_ptr(v));
+}
+void Program::set(const char* name, const glm::vec3& v) const {
+    glProgramUniform3fv(id(), location(name), 1, glm::value_ptr(v));
+}
+void Program::set(const char* name, const glm::vec4& v) const {
+    glProgramUniform4fv(id(), location(name), 1, glm::value_ptr(v));
+}
+void Program::set(const char* name, const glm::mat4& v) const {
+    glProgramUniformMatrix4fv(id(), location(name), 1, GL_FALSE, glm::value_ptr(v));
+}
+
+} // namespace fl::gl

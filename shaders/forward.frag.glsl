@@ -1,0 +1,38 @@
+#version 450 core
+// Forward shading: Lambert from the scene light with a hard shadow, hemispheric ambient.
+#include "shadow_lookup.glsl"
+
+in vec3 vWorld;
+in vec3 vNormal;
+in vec2 vTexcoord;
+
+layout(location = 0) out vec4 oColor;
+layout(location = 1) out float oVisibility;
+
+layout(binding = 0) uniform sampler2D uBaseColorTexture;
+uniform vec4 uBaseColor;
+uniform int uHasTexture;
+uniform int uObjectId;
+uniform vec3 uEye;
+uniform vec3 uLightPosition;
+uniform vec3 uLightDirection;
+uniform int uLightDirectional;
+uniform vec3 uLightColor;
+
+const vec3 kSkyAmbient = vec3(0.20, 0.23, 0.28);
+const vec3 kGroundAmbient = vec3(0.08, 0.07, 0.06);
+
+void main() {
+    vec4 base = uBaseColor;
+    if (uHasTexture != 0) base *= texture(uBaseColorTexture, vTexcoord);
+    vec3 n = normalize(vNormal);
+    // Two-sided shading: the visible side of a surface faces the eye.
+    if (!gl_FrontFacing) n = -n;
+    vec3 toLight = uLightDirectional != 0 ? -uLightDirection : normalize(uLightPosition - vWorld);
+    float lambert = max(dot(n, toLight), 0.0);
+    float visibility = hardShadow(vWorld);
+    vec3 ambient = mix(kGroundAmbient, kSkyAmbient, 0.5 + 0.5 * n.y);
+    vec3 color = base.rgb * (ambient + uLightColor * lambert * visibility);
+    oColor = vec4(color, 1.0);
+    oVisibility = visibility;
+}

@@ -1,0 +1,86 @@
+// Light-frustum fitting and camera framing: every corner of the bounds ends up inside the volume.
+
+#include <geometry/Framing.h>
+
+#include <gtest/gtest.h>
+
+namespace fl::geom {
+namespace {
+
+Aabb box(glm::vec3 lo, glm::vec3 hi) {
+    Aabb b;
+    b.extend(lo);
+    b.extend(hi);
+    return b;
+}
+
+void expectCornersInside(const ViewVolume& v, const Aabb& b, float slack = 1e-4f) {
+    for (int i = 0; i < 8; ++i) {
+        const glm::vec3 c{(i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y,
+                          (i & 4) ? b.max.z : b.min.z};
+        const glm::vec4 clip = v.viewProj() * glm::vec4(c, 1.0f);
+        ASSERT_GT(clip.w, 0.0f);
+        const glm::vec3 ndc = glm::vec3(clip) / clip.w;
+        for (int k = 0; k < 3; ++k) {
+            EXPECT_GE(ndc[k], -1.0f - slack) << "corner " << i << " axis " << k;
+            EXPECT_LE(ndc[k], 1.0f + slack) << "corner " << i << " axis " << k;
+        }
+    }
+}
+
+TEST(Aabb, TransformedContainsTransformedCorners) {
+    const Aabb b = box({-1, 0, 2}, {3, 1, 4});
+    const glm::mat4 t = glm::mat4(glm::vec4(0, 1, 0, 0), glm::vec4(-1, 0, 0, 0), glm::vec4(0, 0, 1, 0),
+                                  glm::vec4(5, 0, 0, 1)); // 90° about z, then +5 x
+    const Aabb r = b.transformed(t);
+    EXPECT_FLOAT_EQ(r.min.x, 4.0f);
+    EXPECT_FLOAT_EQ(r.max.x, 5.0f);
+    EXPECT_FLOAT_EQ(r.min.y, -1.0f);
+    EXPECT_FLOAT_EQ(r.max.y, 3.0f);
+    EXPECT_FALSE(Aabb{}.valid());
+    EXPECT_FALSE(Aabb{}.transformed(t).valid());
+}
+
+TEST(Framing, DirectionalLightContainsBounds) {
+    const Aabb b = box({-10, -1, -7}, {12, 6, 9});
+    for (glm::vec3 dir : {glm::vec3(0, -1, 0), glm::vec3(1, -1, 0.3f), glm::vec3(0, 0, 1),
+                          glm::vec3(0.001f, -1, 0)})
+        expectCornersInside(fitDirectionalLight(b, dir), b);
+}
+
+TEST(Framing, PerspectiveLightContainsBoundsWhenOutside) {
+    const Aabb b = box({-10, -1, -7}, {12, 6, 9});
+    for (glm::vec3 pos : {glm::vec3(0, 30, 0), glm::vec3(-20, 25, 10), glm::vec3(40, 1, 0)})
+        expectCornersInside(fitPerspectiveLight(b, pos), b);
+}
+
+TEST(Framing, PerspectiveLightInsideBoundsIsCappedAndFinite) {
+    const Aabb b = box({-10, -1, -7}, {12, 6, 9});
+    const ViewVolume v = fitPerspectiveLight(b, {0, 2, 0});
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) ASSERT_TRUE(std::isfinite(v.proj[c][r]));
+    EXPECT_GT(v.znear, 0.0f);
+    EXPECT_GT(v.zfar, v.znear);
+    // Capped at 150°: the horizontal/vertical scale is 1/tan(75°).
+    EXPECT_NEAR(v.proj[1][1], 1.0f / std::tan(glm::radians(75.0f)), 1e-4f);
+}
+
+TEST(Framing, FramingShowsWholeBounds) {
+    const Aabb b = box({-3, 0, -2}, {5, 4, 6});
+    for (float aspect : {0.5f, 1.0f, 2.0f})
+        expectCornersInside(frameBounds(b, {1, 0.5f, 1}, glm::radians(50.0f), aspect), b);
+}
+
+TEST(Framing, DegenerateBoundsStayFinite) {
+    const Aabb point = box({1, 1, 1}, {1, 1, 1});
+    const ViewVolume v = frameBounds(point, {0, 1, 0}, glm::radians(45.0f), 1.0f);
+    const ViewVolume l = fitDirectionalLight(point, {0, -1, 0});
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) {
+            EXPECT_TRUE(std::isfinite(v.viewProj()[c][r]));
+            EXPECT_TRUE(std::isfinite(l.viewProj()[c][r]));
+        }
+}
+
+} // namespace
+} // namespace fl::geom

@@ -1,0 +1,105 @@
+// Hard shadow mapping against the CPU ray-cast reference, and the renderer's outputs.
+
+#include "GlTest.h"
+#include "TestPaths.h"
+#include "TestScenes.h"
+
+#include <renderer/Capture.h>
+#include <renderer/Renderer.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace fl::test {
+namespace {
+
+class RendererTest : public GlTest {};
+
+// Pixel (x, y from the top) where world point p lands, or false if off-screen.
+bool project(const CameraView& cam, int w, int h, glm::vec3 p, int& x, int& y) {
+    const glm::vec4 clip = cam.proj * cam.view * glm::vec4(p, 1.0f);
+    if (clip.w <= 0.0f) return false;
+    const glm::vec3 ndc = glm::vec3(clip) / clip.w;
+    x = static_cast<int>((ndc.x * 0.5f + 0.5f) * static_cast<float>(w));
+    y = static_cast<int>((0.5f - ndc.y * 0.5f) * static_cast<float>(h));
+    return x >= 0 && y >= 0 && x < w && y < h;
+}
+
+TEST_F(RendererTest, HardShadowMatchesRayCastReference) {
+    // A box lit from the upper left casts its shadow to the right onto the ground; a camera
+    // above sees most of that shadow beside the box.
+    const Scene scene = groundAndBox(4.0f, {-1, 1, -1}, {1, 2, 1}, {1, -1, 0});
+    const ShaderLibrary shaders;
+    RenderSettings settings;
+    settings.shadow.size = 512;
+    Renderer renderer(shaders, scene, settings);
+    const int w = 128, h = 128;
+    renderer.resize(w, h);
+    CameraSpec spec;
+    spec.kind = CameraSpec::Kind::LookAt;
+    spec.eye = {0.5f, 12.0f, 0.01f};
+    spec.target = {0.5f, 0.0f, 0.0f};
+    spec.yfovDegrees = 45.0f;
+    const CameraView cam = makeCameraView(scene, spec, 1.0f);
+    renderer.render(cam);
+    const FrameImages frame = readFrame(renderer);
+    writeFrame(frame, outputDir("renderer"), "hard_shadow_box"); // for a look when it fails
+
+    // Ground points on a grid, skipping those within a shadow-map texel or two of the shadow
+    // edge (where a 512² map legitimately rounds either way) and those hidden by the box.
+    const float texel = 8.0f * 1.5f / 512.0f; // light frustum spans ~ the 8 m ground diagonal
+    int compared = 0, shadowed = 0, mismatched = 0;
+    for (float gx = -3.5f; gx <= 3.5f; gx += 0.25f) {
+        for (float gz = -3.5f; gz <= 3.5f; gz += 0.25f) {
+            const glm::vec3 p{gx, 0.0f, gz};
+            if (gx > -1.3f && gx < 1.3f && gz > -1.3f && gz < 1.3f) continue; // under/behind box
+            const float ref = rayCastVisibility(scene, *scene.light, p);
+            bool nearEdge = false;
+            for (glm::vec3 d : {glm::vec3(texel * 2, 0, 0), glm::vec3(-texel * 2, 0, 0),
+                                glm::vec3(0, 0, texel * 2), glm::vec3(0, 0, -texel * 2)})
+                if (rayCastVisibility(scene, *scene.light, p + d) != ref) nearEdge = true;
+            if (nearEdge) continue;
+            int x = 0, y = 0;
+            if (!project(cam, w, h, p, x, y)) continue;
+            const float gpu = frame.visibility.at(x, y, 0);
+            ++compared;
+            if (ref == 0.0f) ++shadowed;
+            if (gpu != ref) {
+                ++mismatched;
+                ADD_FAILURE() << "ground (" << gx << ", " << gz << ") pixel (" << x << ", " << y
+                              << "): GPU " << gpu << ", ray cast " << ref;
+            }
+        }
+    }
+    EXPECT_GT(compared, 200);
+    EXPECT_GT(shadowed, 10) << "the test must see shadowed ground to mean anything";
+    EXPECT_EQ(mismatched, 0);
+}
+
+TEST_F(RendererTest, OutputsAreFiniteAndBackgroundIsLit) {
+    const Scene scene = groundAndBox(2.0f, {-0.5f, 0.5f, -0.5f}, {0.5f, 1.0f, 0.5f}, {0.3f, -1, 0.2f});
+    const ShaderLibrary shaders;
+    Renderer renderer(shaders, scene, {});
+    renderer.resize(64, 48);
+    renderer.render(makeCameraView(scene, {}, 64.0f / 48.0f));
+    const FrameImages frame = readFrame(renderer);
+    EXPECT_NO_THROW(requireFinite(frame.color, "colour"));
+    EXPECT_NO_THROW(requireFinite(frame.visibility, "visibility"));
+    EXPECT_EQ(frame.color.width, 64);
+    EXPECT_EQ(frame.color.height, 48);
+    EXPECT_EQ(frame.color.at(0, 0, 3), 0.0f) << "top-left corner should be sky (alpha 0)";
+    EXPECT_EQ(frame.visibility.at(0, 0, 0), 1.0f);
+    ASSERT_EQ(renderer.timer().passes().size(), 2u);
+    EXPECT_EQ(renderer.timer().passes()[0].name, "shadow map");
+    EXPECT_GT(renderer.timer().frameMs(), 0.0);
+}
+
+TEST_F(RendererTest, ResizeRejectsZeroSize) {
+    const Scene scene = groundAndBox(2.0f, {-0.5f, 0.5f, -0.5f}, {0.5f, 1.0f, 0.5f}, {0, -1, 0});
+    const ShaderLibrary shaders;
+    Renderer renderer(shaders, scene, {});
+    EXPECT_THROW(renderer.resize(0, 10), std::invalid_argument);
+    EXPECT_THROW(renderer.render(CameraView{}), std::logic_error);
+}
+
+} // namespace
+} // namespace fl::test

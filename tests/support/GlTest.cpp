@@ -1,0 +1,33 @@
+#include "GlTest.h"
+
+namespace fl::test {
+
+std::unique_ptr<EglContext> GlTest::context_;
+
+void GlTest::SetUpTestSuite() {
+    if (!context_) context_ = EglContext::create(true);
+}
+
+EglContext& GlTest::context() {
+    SetUpTestSuite();
+    return *context_;
+}
+
+void GlTest::SetUp() {
+    context().makeCurrent();
+    // Errors left by an earlier test must not be blamed on this one.
+    try {
+        gl::throwIfErrors("before test");
+    } catch (const gl::GlError&) {
+    }
+}
+
+void GlTest::TearDown() {
+    try {
+        gl::throwIfErrors("test");
+    } catch (const gl::GlError& e) {
+        ADD_FAILURE() << e.what();
+    }
+}
+
+} // namespace fl::test

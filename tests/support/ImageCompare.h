@@ -1,0 +1,37 @@
+#pragma once
+// Golden-image comparison with explicit tolerances; on failure writes actual and diff images.
+
+#include <renderer/ImageIO.h>
+
+#include <filesystem>
+#include <string>
+
+namespace fl::test {
+
+struct Tolerance {
+    int maxAbs = 255;          // largest per-channel difference allowed (0..255)
+    double meanAbs = 0.0;      // mean per-channel difference allowed over all pixels
+    int pixelThreshold = 8;    // a pixel "differs" if any channel differs by more than this
+    double maxPercentOver = 0; // % of pixels allowed to differ
+};
+
+struct CompareResult {
+    bool sizeMatches = true;
+    int maxAbs = 0;
+    double meanAbs = 0.0;
+    double percentOver = 0.0;
+    bool pass = false;
+    std::string report; // one line with every number and the tolerance
+};
+
+/// Compares RGB of two 8-bit RGBA images under `tol`.
+CompareResult compareImages(const ByteImage& actual, const ByteImage& golden, const Tolerance& tol);
+
+/// Compares `actual` with tests/golden/NAME.png. If FLOODLIGHT_UPDATE_GOLDENS=1, rewrites the
+/// golden instead and passes. On failure writes NAME.actual.png and NAME.diff.png (differences
+/// amplified x4, red where a pixel is over the threshold) to the test output folder and names
+/// them in the report.
+CompareResult compareWithGolden(const ByteImage& actual, const std::string& name,
+                                const Tolerance& tol);
+
+} // namespace fl::test

@@ -1,0 +1,93 @@
+#include "TestScenes.h"
+
+#include <cmath>
+
+namespace fl::test {
+
+namespace {
+
+void addQuad(Mesh& m, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d, glm::vec3 n) {
+    const auto base = static_cast<std::uint32_t>(m.positions.size());
+    for (const glm::vec3& p : {a, b, c, d}) {
+        m.positions.push_back(p);
+        m.normals.push_back(n);
+        m.texcoords.emplace_back(0.0f);
+    }
+    for (std::uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) m.indices.push_back(base + i);
+}
+
+Mesh box(glm::vec3 lo, glm::vec3 hi) {
+    Mesh m;
+    m.name = "box";
+    const glm::vec3 p[8] = {{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z},
+                            {lo.x, hi.y, lo.z}, {lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z},
+                            {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}};
+    addQuad(m, p[4], p[5], p[6], p[7], {0, 0, 1});
+    addQuad(m, p[1], p[0], p[3], p[2], {0, 0, -1});
+    addQuad(m, p[5], p[1], p[2], p[6], {1, 0, 0});
+    addQuad(m, p[0], p[4], p[7], p[3], {-1, 0, 0});
+    addQuad(m, p[7], p[6], p[2], p[3], {0, 1, 0});
+    addQuad(m, p[0], p[1], p[5], p[4], {0, -1, 0});
+    m.material = 1;
+    return m;
+}
+
+} // namespace
+
+Scene groundAndBox(float half, glm::vec3 lo, glm::vec3 hi, glm::vec3 lightDir) {
+    Scene s;
+    s.source = "test:groundAndBox";
+    Mesh ground;
+    ground.name = "ground";
+    addQuad(ground, {-half, 0, half}, {half, 0, half}, {half, 0, -half}, {-half, 0, -half},
+            {0, 1, 0});
+    ground.material = 0;
+    s.meshes = {ground, box(lo, hi)};
+    s.materials = {{"ground", glm::vec4(0.8f, 0.8f, 0.8f, 1.0f), -1, false},
+                   {"box", glm::vec4(0.8f, 0.3f, 0.2f, 1.0f), -1, false}};
+    s.instances = {{0, glm::mat4(1.0f), 1, "ground"}, {1, glm::mat4(1.0f), 2, "box"}};
+    Light l;
+    l.type = Light::Type::Directional;
+    l.direction = glm::normalize(lightDir);
+    l.radius = 0.1f;
+    s.light = l;
+    s.computeBounds();
+    return s;
+}
+
+float rayCastVisibility(const Scene& scene, const Light& light, glm::vec3 p, float epsilon) {
+    glm::vec3 dir;
+    float tMax;
+    if (light.type == Light::Type::Directional) {
+        dir = -light.direction;
+        tMax = 1e30f;
+    } else {
+        dir = light.position - p;
+        tMax = glm::length(dir);
+        dir /= tMax;
+    }
+    for (const Instance& inst : scene.instances) {
+        const Mesh& m = scene.meshes[static_cast<size_t>(inst.mesh)];
+        for (size_t t = 0; t + 2 < m.indices.size(); t += 3) {
+            // Möller–Trumbore ray/triangle intersection in world space.
+            const glm::vec3 a = glm::vec3(inst.world * glm::vec4(m.positions[m.indices[t]], 1));
+            const glm::vec3 b = glm::vec3(inst.world * glm::vec4(m.positions[m.indices[t + 1]], 1));
+            const glm::vec3 c = glm::vec3(inst.world * glm::vec4(m.positions[m.indices[t + 2]], 1));
+            const glm::vec3 e1 = b - a, e2 = c - a;
+            const glm::vec3 pv = glm::cross(dir, e2);
+            const float det = glm::dot(e1, pv);
+            if (std::abs(det) < 1e-12f) continue;
+            const glm::vec3 tv = p - a;
+            const float u = glm::dot(tv, pv) / det;
+            if (u < 0.0f || u > 1.0f) continue;
+            const glm::vec3 qv = glm::cross(tv, e1);
+            const float v = glm::dot(dir, qv) / det;
+            if (v < 0.0f || u + v > 1.0f) continue;
+            const float hit = glm::dot(e2, qv) / det;
+            if (hit > epsilon && hit < tMax) return 0.0f;
+        }
+    }
+    return 1.0f;
+}
+
+} // namespace fl::test

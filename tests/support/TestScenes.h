@@ -1,0 +1,17 @@
+#pragma once
+// Small hand-built scenes with known answers, and a CPU ray caster as the reference for shadows.
+
+#include <renderer/Scene.h>
+
+namespace fl::test {
+
+/// A ground quad (y = 0, [-half, half]²) and an axis-aligned box [lo, hi], each its own object,
+/// lit by a directional light travelling along `lightDir`.
+Scene groundAndBox(float half, glm::vec3 lo, glm::vec3 hi, glm::vec3 lightDir);
+
+/// CPU reference for a hard shadow: 1 if the segment from `p` towards the light (direction
+/// -light.direction for directional lights, else to light.position) hits no triangle, 0 if it
+/// does. `epsilon` skips hits right at p (the receiver itself).
+float rayCastVisibility(const Scene& scene, const Light& light, glm::vec3 p, float epsilon = 1e-3f);
+
+} // namespace fl::test
