@@ -30,8 +30,9 @@ void expectCornersInside(const ViewVolume& v, const Aabb& b, float slack = 1e-4f
 
 TEST(Aabb, TransformedContainsTransformedCorners) {
     const Aabb b = box({-1, 0, 2}, {3, 1, 4});
-    const glm::mat4 t = glm::mat4(glm::vec4(0, 1, 0, 0), glm::vec4(-1, 0, 0, 0), glm::vec4(0, 0, 1, 0),
-                                  glm::vec4(5, 0, 0, 1)); // 90° about z, then +5 x
+    const glm::mat4 t =
+        glm::mat4(glm::vec4(0, 1, 0, 0), glm::vec4(-1, 0, 0, 0), glm::vec4(0, 0, 1, 0),
+                  glm::vec4(5, 0, 0, 1)); // 90° about z, then +5 x
     const Aabb r = b.transformed(t);
     EXPECT_FLOAT_EQ(r.min.x, 4.0f);
     EXPECT_FLOAT_EQ(r.max.x, 5.0f);

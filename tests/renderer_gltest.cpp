@@ -76,7 +76,8 @@ TEST_F(RendererTest, HardShadowMatchesRayCastReference) {
 }
 
 TEST_F(RendererTest, OutputsAreFiniteAndBackgroundIsLit) {
-    const Scene scene = groundAndBox(2.0f, {-0.5f, 0.5f, -0.5f}, {0.5f, 1.0f, 0.5f}, {0.3f, -1, 0.2f});
+    const Scene scene =
+        groundAndBox(2.0f, {-0.5f, 0.5f, -0.5f}, {0.5f, 1.0f, 0.5f}, {0.3f, -1, 0.2f});
     const ShaderLibrary shaders;
     Renderer renderer(shaders, scene, {});
     renderer.resize(64, 48);

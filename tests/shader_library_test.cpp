@@ -45,7 +45,8 @@ TEST(ShaderLibrary, MissingDirectoryIsAnError) {
 
 TEST(ShaderLibrary, IncludesExpandWithLineDirectives) {
     const auto dir = outputDir("shaderinclude");
-    writeFile(dir / "main.glsl", "#version 450 core\n// a\n#include \"lib.glsl\"\nvoid main() {}\n");
+    writeFile(dir / "main.glsl",
+              "#version 450 core\n// a\n#include \"lib.glsl\"\nvoid main() {}\n");
     writeFile(dir / "lib.glsl", "float f() { return 1.0; }\n");
     const ShaderLibrary lib(dir);
     std::vector<std::string> files;

@@ -36,7 +36,8 @@ void CameraController::lookFrom(glm::vec3 eye, glm::vec3 fwd) {
 }
 
 glm::vec3 CameraController::forward() const {
-    return {std::cos(pitch_) * std::sin(yaw_), std::sin(pitch_), -std::cos(pitch_) * std::cos(yaw_)};
+    return {std::cos(pitch_) * std::sin(yaw_), std::sin(pitch_),
+            -std::cos(pitch_) * std::cos(yaw_)};
 }
 
 CameraView CameraController::view(float aspect) const {
@@ -109,8 +110,10 @@ void CameraController::attach(GLFWwindow* window) {
         const bool left = glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
         const bool right = glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS ||
                            glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS;
-        if (!left && !right) self->releaseCursor();
-        else self->onCursor(x, y, left, right);
+        if (!left && !right)
+            self->releaseCursor();
+        else
+            self->onCursor(x, y, left, right);
     });
     glfwSetScrollCallback(window, [](GLFWwindow* w, double, double dy) {
         static_cast<CameraController*>(glfwGetWindowUserPointer(w))->onScroll(dy);

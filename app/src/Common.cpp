@@ -8,7 +8,7 @@
 namespace fl::app {
 
 namespace {
-constexpr int kMaxImageSize = 8192;   // per side: 8192² RGBA16F + R32F + depth ≈ 768 MiB
+constexpr int kMaxImageSize = 8192; // per side: 8192² RGBA16F + R32F + depth ≈ 768 MiB
 constexpr int kMaxShadowMapSize = 8192;
 } // namespace
 
@@ -19,7 +19,8 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool sceneAsOption) {
         cmd.add_option("scene", o.scene, "glTF 2.0 scene (.gltf/.glb); default: built-in scene");
     cmd.add_option("--light-radius", o.lightRadius, "Disk light radius in scene units")
         ->check(CLI::PositiveNumber);
-    cmd.add_option("--shader-dir", o.shaderDir, "Load shaders from this folder instead of the binary");
+    cmd.add_option("--shader-dir", o.shaderDir,
+                   "Load shaders from this folder instead of the binary");
     cmd.add_option("--shadow-map-size", o.shadowMapSize, "Shadow map texels per side")
         ->check(CLI::Range(16, kMaxShadowMapSize))
         ->capture_default_str();
@@ -32,12 +33,18 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool sceneAsOption) {
     cmd.add_option("--timing", o.timing, "Pass timing: auto, query (GL timers), finish (glFinish)")
         ->check(CLI::IsMember({"auto", "query", "finish"}))
         ->capture_default_str();
-    cmd.add_option("--camera", o.camera,
-                   "default (scene camera, else auto), auto (frame the bounds), or a glTF camera index")
+    cmd.add_option(
+           "--camera", o.camera,
+           "default (scene camera, else auto), auto (frame the bounds), or a glTF camera index")
         ->capture_default_str();
-    cmd.add_option("--eye", o.eye, "Camera position x,y,z (with --target)")->delimiter(',')->expected(3);
-    cmd.add_option("--target", o.target, "Camera target x,y,z (with --eye)")->delimiter(',')->expected(3);
-    cmd.add_option("--fov", o.fov, "Vertical field of view, degrees")->check(CLI::Range(1.0f, 170.0f));
+    cmd.add_option("--eye", o.eye, "Camera position x,y,z (with --target)")
+        ->delimiter(',')
+        ->expected(3);
+    cmd.add_option("--target", o.target, "Camera target x,y,z (with --eye)")
+        ->delimiter(',')
+        ->expected(3);
+    cmd.add_option("--fov", o.fov, "Vertical field of view, degrees")
+        ->check(CLI::Range(1.0f, 170.0f));
 }
 
 void addSizeOptions(CLI::App& cmd, int& width, int& height) {
@@ -117,7 +124,8 @@ CameraSpec makeCameraSpec(const SceneOptions& o) {
 
 void printTimings(const Renderer& renderer, std::ostream& out) {
     out << std::fixed << std::setprecision(2);
-    for (const PassTime& p : renderer.timer().passes()) out << "  " << p.name << ": " << p.ms << " ms\n";
+    for (const PassTime& p : renderer.timer().passes())
+        out << "  " << p.name << ": " << p.ms << " ms\n";
     out << "  frame total: " << renderer.timer().frameMs() << " ms (" << renderer.timer().modeName()
         << ")\n";
     out << std::defaultfloat;

@@ -24,16 +24,16 @@ class InputError : public std::runtime_error {
 
 /// Options every rendering subcommand takes.
 struct SceneOptions {
-    std::string scene;                 // empty = the built-in default scene
-    std::optional<float> lightRadius;  // --light-radius
-    std::string shaderDir;             // --shader-dir
+    std::string scene;                // empty = the built-in default scene
+    std::optional<float> lightRadius; // --light-radius
+    std::string shaderDir;            // --shader-dir
     int shadowMapSize = 1024;
     float slopeBias = 2.0f;
     float constantBias = 2.0f;
     std::string timing = "auto";
-    std::string camera = "default";    // default | auto | N (glTF camera index)
-    std::vector<float> eye, target;    // explicit look-at
-    std::optional<float> fov;          // degrees
+    std::string camera = "default"; // default | auto | N (glTF camera index)
+    std::vector<float> eye, target; // explicit look-at
+    std::optional<float> fov;       // degrees
 };
 
 /// Registers the scene/shadow/camera options on a subcommand.

@@ -19,7 +19,8 @@ Runner addMakeSceneCommand(CLI::App& app) {
     auto s = std::make_shared<State>();
     std::string sizes;
     for (const NamedSize& n : thesisSceneSizes())
-        sizes += std::string(sizes.empty() ? "" : ", ") + n.name + " (" + std::to_string(n.triangles) + ")";
+        sizes += std::string(sizes.empty() ? "" : ", ") + n.name + " (" +
+                 std::to_string(n.triangles) + ")";
     cmd->add_option("--triangles", s->triangles, "Exact triangle count (at least 600)")
         ->check(CLI::Range(kMinTriangles, std::size_t{50'000'000}))
         ->capture_default_str();
@@ -41,7 +42,8 @@ Runner addMakeSceneCommand(CLI::App& app) {
         const Scene scene = generateScene({triangles, s->seed});
         writeGlb(scene, s->out);
         const double ms =
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                .count();
         std::cout << "wrote " << s->out << ": " << scene.triangleCount() << " triangles, "
                   << scene.instances.size() << " objects, seed " << s->seed << " (" << ms
                   << " ms)\n";

@@ -18,7 +18,8 @@ int renderHeadless(const SceneOptions& o, int width, int height,
     renderer.resize(width, height);
     CameraView camera;
     try {
-        camera = makeCameraView(scene, spec, static_cast<float>(width) / static_cast<float>(height));
+        camera =
+            makeCameraView(scene, spec, static_cast<float>(width) / static_cast<float>(height));
     } catch (const std::invalid_argument& e) {
         throw InputError(e.what());
     }
@@ -29,6 +30,7 @@ int renderHeadless(const SceneOptions& o, int width, int height,
               << renderer.settings().shadow.size << "^2:\n";
     printTimings(renderer, std::cout);
     std::cout << "wrote " << paths.png.string() << "\n"
+              << "wrote " << paths.visibilityPng.string() << "\n"
               << "wrote " << paths.exr.string() << "\n";
     return 0;
 }
@@ -45,7 +47,8 @@ Runner addRenderCommand(CLI::App& app) {
     addSceneOptions(*cmd, s->scene, true);
     addSizeOptions(*cmd, s->width, s->height);
     cmd->add_option("--out", s->out, "Output folder")->capture_default_str();
-    cmd->add_option("--name", s->name, "File name stem: NAME.png and NAME.exr")->capture_default_str();
+    cmd->add_option("--name", s->name, "File name stem: NAME.png and NAME.exr")
+        ->capture_default_str();
     return [s] { return renderHeadless(s->scene, s->width, s->height, s->out, s->name); };
 }
 

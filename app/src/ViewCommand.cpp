@@ -17,7 +17,8 @@ namespace {
 
 // Reads the window's default framebuffer (what the user sees) as an sRGB PNG image.
 ByteImage readWindow(int width, int height) {
-    ByteImage img{width, height, 4, std::vector<std::uint8_t>(static_cast<size_t>(width) * height * 4)};
+    ByteImage img{width, height, 4,
+                  std::vector<std::uint8_t>(static_cast<size_t>(width) * height * 4)};
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     glReadBuffer(GL_BACK);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
@@ -56,7 +57,8 @@ int runViewer(const SceneOptions& o, int width, int height, int frames,
     Renderer renderer(shaders, scene, makeRenderSettings(o));
     CameraView initial;
     try {
-        initial = makeCameraView(scene, spec, static_cast<float>(width) / static_cast<float>(height));
+        initial =
+            makeCameraView(scene, spec, static_cast<float>(width) / static_cast<float>(height));
     } catch (const std::invalid_argument& e) {
         throw InputError(e.what());
     }

@@ -24,8 +24,8 @@ ViewVolume fitDirectionalLight(const Aabb& bounds, glm::vec3 dir) {
     const float pad = 1e-3f * r;
     v.znear = std::max(-ls.max.z - pad, 1e-4f * r);
     v.zfar = -ls.min.z + pad;
-    v.proj = glm::ortho(ls.min.x - pad, ls.max.x + pad, ls.min.y - pad, ls.max.y + pad, v.znear,
-                        v.zfar);
+    v.proj =
+        glm::ortho(ls.min.x - pad, ls.max.x + pad, ls.min.y - pad, ls.max.y + pad, v.znear, v.zfar);
     return v;
 }
 

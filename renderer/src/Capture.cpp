@@ -1,24 +1,41 @@
 #include <renderer/Capture.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace fl {
 
 FrameImages readFrame(const Renderer& renderer) {
     return {readTexture(renderer.color(), 4), readTexture(renderer.visibility(), 1)};
 }
 
+ByteImage visibilityToGrey(const FloatImage& v) {
+    ByteImage out{v.width, v.height, 4, std::vector<std::uint8_t>(v.data.size() * 4)};
+    for (size_t i = 0; i < v.data.size(); ++i) {
+        const float c = std::clamp(v.data[i], 0.0f, 1.0f);
+        const auto g = static_cast<std::uint8_t>(std::lround(c * 255.0f));
+        out.data[i * 4] = out.data[i * 4 + 1] = out.data[i * 4 + 2] = g;
+        out.data[i * 4 + 3] = 255;
+    }
+    return out;
+}
+
 CapturePaths writeFrame(const FrameImages& frame, const std::filesystem::path& dir,
                         const std::string& stem) {
     requireFinite(frame.color, stem + " colour");
     requireFinite(frame.visibility, stem + " visibility");
-    CapturePaths paths{dir / (stem + ".png"), dir / (stem + ".exr")};
+    CapturePaths paths{dir / (stem + ".png"), dir / (stem + ".visibility.png"),
+                       dir / (stem + ".exr")};
     writePng(paths.png, toSrgb8(frame.color));
+    writePng(paths.visibilityPng, visibilityToGrey(frame.visibility));
     const size_t n = frame.visibility.data.size();
-    std::vector<ExrChannel> channels{{"R", {}}, {"G", {}}, {"B", {}}, {"A", {}},
-                                     {"visibility", frame.visibility.data}};
+    std::vector<ExrChannel> channels{
+        {"R", {}}, {"G", {}}, {"B", {}}, {"A", {}}, {"visibility", frame.visibility.data}};
     for (int c = 0; c < 4; ++c) {
         channels[static_cast<size_t>(c)].values.resize(n);
         for (size_t i = 0; i < n; ++i)
-            channels[static_cast<size_t>(c)].values[i] = frame.color.data[i * 4 + static_cast<size_t>(c)];
+            channels[static_cast<size_t>(c)].values[i] =
+                frame.color.data[i * 4 + static_cast<size_t>(c)];
     }
     writeExr(paths.exr, frame.color.width, frame.color.height, channels);
     return paths;

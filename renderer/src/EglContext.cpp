@@ -40,7 +40,8 @@ std::vector<Candidate> candidateDisplays(std::vector<std::string>& failures) {
         EGLDeviceEXT devices[16];
         if (eglQueryDevicesEXT(16, devices, &count)) {
             for (EGLint i = 0; i < count; ++i) {
-                EGLDisplay d = eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
+                EGLDisplay d =
+                    eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
                 if (d != EGL_NO_DISPLAY)
                     out.push_back({d, "EGL device " + std::to_string(i)});
                 else
@@ -53,10 +54,12 @@ std::vector<Candidate> candidateDisplays(std::vector<std::string>& failures) {
         failures.push_back("EGL_EXT_platform_device not offered by the EGL client");
     }
     if (hasExtension(client, "EGL_MESA_platform_surfaceless")) {
-        EGLDisplay d = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY,
-                                                nullptr);
-        if (d != EGL_NO_DISPLAY) out.push_back({d, "EGL surfaceless"});
-        else failures.push_back(eglErrorText("eglGetPlatformDisplayEXT(surfaceless)"));
+        EGLDisplay d =
+            eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+        if (d != EGL_NO_DISPLAY)
+            out.push_back({d, "EGL surfaceless"});
+        else
+            failures.push_back(eglErrorText("eglGetPlatformDisplayEXT(surfaceless)"));
     } else {
         failures.push_back("EGL_MESA_platform_surfaceless not offered by the EGL client");
     }

@@ -62,7 +62,9 @@ GlfwWindow::~GlfwWindow() {
     if (--g_windows == 0) glfwTerminate();
 }
 
-void GlfwWindow::makeCurrent() { glfwMakeContextCurrent(window_); }
+void GlfwWindow::makeCurrent() {
+    glfwMakeContextCurrent(window_);
+}
 
 glm::ivec2 GlfwWindow::framebufferSize() const {
     int w = 0, h = 0;
@@ -70,8 +72,12 @@ glm::ivec2 GlfwWindow::framebufferSize() const {
     return {w, h};
 }
 
-bool GlfwWindow::shouldClose() const { return glfwWindowShouldClose(window_) != 0; }
+bool GlfwWindow::shouldClose() const {
+    return glfwWindowShouldClose(window_) != 0;
+}
 
-void GlfwWindow::swapBuffers() { glfwSwapBuffers(window_); }
+void GlfwWindow::swapBuffers() {
+    glfwSwapBuffers(window_);
+}
 
 } // namespace fl

@@ -20,7 +20,8 @@ struct MeshRange {
 };
 
 gl::Texture uploadImage(const Image& image) {
-    const int levels = 1 + static_cast<int>(std::floor(std::log2(std::max(image.width, image.height))));
+    const int levels =
+        1 + static_cast<int>(std::floor(std::log2(std::max(image.width, image.height))));
     gl::Texture t(GL_SRGB8_ALPHA8, image.width, image.height, levels);
     // glTF images have row 0 at the top and glTF UVs have v=0 at the top, so the image goes in
     // unflipped and the shader samples (u, v) directly.
@@ -48,8 +49,9 @@ GpuScene::GpuScene(const Scene& scene) {
     }
     // Zero-sized buffers are invalid in GL; a scene always has triangles (the loader rejects
     // empty ones), but keep a valid object regardless.
-    vertices_ = gl::Buffer(static_cast<GLsizeiptr>(std::max<size_t>(1, vertices.size()) * sizeof(Vertex)),
-                           vertices.empty() ? nullptr : vertices.data());
+    vertices_ =
+        gl::Buffer(static_cast<GLsizeiptr>(std::max<size_t>(1, vertices.size()) * sizeof(Vertex)),
+                   vertices.empty() ? nullptr : vertices.data());
     indices_ = gl::Buffer(
         static_cast<GLsizeiptr>(std::max<size_t>(1, indices.size()) * sizeof(std::uint32_t)),
         indices.empty() ? nullptr : indices.data());
@@ -94,9 +96,9 @@ void GpuScene::draw(const gl::Program& program, Uniforms what) const {
             program.set("uObjectId", static_cast<int>(d.objectId));
             if (textured) glBindTextureUnit(0, textures_[static_cast<size_t>(d.texture)].id());
         }
-        glDrawElementsBaseVertex(GL_TRIANGLES, d.indexCount, GL_UNSIGNED_INT,
-                                 reinterpret_cast<const void*>(d.firstIndex * sizeof(std::uint32_t)),
-                                 d.baseVertex);
+        glDrawElementsBaseVertex(
+            GL_TRIANGLES, d.indexCount, GL_UNSIGNED_INT,
+            reinterpret_cast<const void*>(d.firstIndex * sizeof(std::uint32_t)), d.baseVertex);
     }
     glBindVertexArray(0);
     glUseProgram(0);

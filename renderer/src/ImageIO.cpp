@@ -53,8 +53,8 @@ void commit(const std::filesystem::path& tmp, const std::filesystem::path& path)
     std::filesystem::rename(tmp, path, ec);
     if (ec) {
         std::filesystem::remove(tmp, ec);
-        throw std::runtime_error(path.string() + ": cannot move finished file into place: " +
-                                 ec.message());
+        throw std::runtime_error(path.string() +
+                                 ": cannot move finished file into place: " + ec.message());
     }
 }
 
@@ -90,8 +90,8 @@ ByteImage toSrgb8(const FloatImage& linear) {
     for (size_t i = 0; i < n; ++i) {
         for (int c = 0; c < 3; ++c) {
             const int src = std::min(c, linear.channels - 1);
-            out.data[i * 4 + static_cast<size_t>(c)] =
-                linearToSrgb8(linear.data[i * static_cast<size_t>(linear.channels) + static_cast<size_t>(src)]);
+            out.data[i * 4 + static_cast<size_t>(c)] = linearToSrgb8(
+                linear.data[i * static_cast<size_t>(linear.channels) + static_cast<size_t>(src)]);
         }
         out.data[i * 4 + 3] = 255; // PNGs are for looking: opaque, background shows the sky
     }
@@ -116,7 +116,8 @@ ByteImage readPng(const std::filesystem::path& path) {
     stbi_uc* pixels = stbi_load(path.c_str(), &w, &h, &n, 4);
     if (!pixels)
         throw std::runtime_error(path.string() + ": cannot read PNG: " + stbi_failure_reason());
-    ByteImage out{w, h, 4, std::vector<std::uint8_t>(pixels, pixels + static_cast<size_t>(w) * h * 4)};
+    ByteImage out{w, h, 4,
+                  std::vector<std::uint8_t>(pixels, pixels + static_cast<size_t>(w) * h * 4)};
     stbi_image_free(pixels);
     return out;
 }
@@ -133,9 +134,10 @@ void writeExr(const std::filesystem::path& path, int width, int height,
             if (c.values.size() != static_cast<size_t>(width) * static_cast<size_t>(height))
                 throw std::invalid_argument("channel " + c.name + " has the wrong size");
             header.channels().insert(c.name, Imf::Channel(Imf::FLOAT));
-            fb.insert(c.name, Imf::Slice(Imf::FLOAT,
-                                         const_cast<char*>(reinterpret_cast<const char*>(c.values.data())),
-                                         sizeof(float), sizeof(float) * static_cast<size_t>(width)));
+            fb.insert(c.name,
+                      Imf::Slice(Imf::FLOAT,
+                                 const_cast<char*>(reinterpret_cast<const char*>(c.values.data())),
+                                 sizeof(float), sizeof(float) * static_cast<size_t>(width)));
         }
         Imf::OutputFile file(tmp.c_str(), header);
         file.setFrameBuffer(fb);

@@ -26,7 +26,8 @@ void PassTimer::beginFrame() {
 void PassTimer::begin(const char* name) {
     results_.push_back({name, 0.0});
     if (mode_ == TimingMode::Query) {
-        if (queries_.size() < results_.size()) queries_.push_back(gl::Query::create(GL_TIME_ELAPSED));
+        if (queries_.size() < results_.size())
+            queries_.push_back(gl::Query::create(GL_TIME_ELAPSED));
         glBeginQuery(GL_TIME_ELAPSED, queries_[results_.size() - 1].id());
     } else {
         glFinish();

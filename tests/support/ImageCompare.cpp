@@ -8,7 +8,8 @@
 
 namespace fl::test {
 
-CompareResult compareImages(const ByteImage& actual, const ByteImage& golden, const Tolerance& tol) {
+CompareResult compareImages(const ByteImage& actual, const ByteImage& golden,
+                            const Tolerance& tol) {
     CompareResult r;
     if (actual.width != golden.width || actual.height != golden.height || actual.channels != 4 ||
         golden.channels != 4) {
@@ -34,10 +35,11 @@ CompareResult compareImages(const ByteImage& actual, const ByteImage& golden, co
     }
     r.meanAbs = sum / static_cast<double>(pixels * 3);
     r.percentOver = 100.0 * static_cast<double>(over) / static_cast<double>(pixels);
-    r.pass = r.maxAbs <= tol.maxAbs && r.meanAbs <= tol.meanAbs && r.percentOver <= tol.maxPercentOver;
+    r.pass =
+        r.maxAbs <= tol.maxAbs && r.meanAbs <= tol.meanAbs && r.percentOver <= tol.maxPercentOver;
     std::ostringstream s;
-    s << "max abs " << r.maxAbs << " (<= " << tol.maxAbs << "), mean abs " << r.meanAbs << " (<= "
-      << tol.meanAbs << "), pixels over " << tol.pixelThreshold << ": " << r.percentOver
+    s << "max abs " << r.maxAbs << " (<= " << tol.maxAbs << "), mean abs " << r.meanAbs
+      << " (<= " << tol.meanAbs << "), pixels over " << tol.pixelThreshold << ": " << r.percentOver
       << "% (<= " << tol.maxPercentOver << "%)";
     r.report = s.str();
     return r;
@@ -67,7 +69,8 @@ CompareResult compareWithGolden(const ByteImage& actual, const std::string& name
     const std::filesystem::path dir = outputDir("golden");
     writePng(dir / (name + ".actual.png"), actual);
     if (r.sizeMatches) {
-        ByteImage diff{actual.width, actual.height, 4, std::vector<std::uint8_t>(actual.data.size())};
+        ByteImage diff{actual.width, actual.height, 4,
+                       std::vector<std::uint8_t>(actual.data.size())};
         for (size_t i = 0; i < actual.data.size() / 4; ++i) {
             int worst = 0;
             for (size_t c = 0; c < 3; ++c) {

@@ -2,7 +2,9 @@
 
 namespace fl::test {
 
-std::filesystem::path dataDir() { return FLOODLIGHT_TEST_DATA; }
+std::filesystem::path dataDir() {
+    return FLOODLIGHT_TEST_DATA;
+}
 
 std::filesystem::path outputDir(const std::string& sub) {
     std::filesystem::path p = std::filesystem::path(FLOODLIGHT_TEST_OUTPUT) / sub;

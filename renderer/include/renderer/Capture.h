@@ -11,6 +11,7 @@ namespace fl {
 
 struct CapturePaths {
     std::filesystem::path png;
+    std::filesystem::path visibilityPng;
     std::filesystem::path exr;
 };
 
@@ -21,8 +22,12 @@ struct FrameImages {
 };
 FrameImages readFrame(const Renderer& renderer);
 
-/// Writes DIR/STEM.png (sRGB colour) and DIR/STEM.exr (channels R, G, B, A, visibility; linear
-/// float). Throws std::runtime_error if a pixel is not finite or a file cannot be written.
+/// Visibility as a grey PNG image: white lit, black shadowed.
+ByteImage visibilityToGrey(const FloatImage& visibility);
+
+/// Writes DIR/STEM.png (sRGB colour), DIR/STEM.visibility.png (grey) and DIR/STEM.exr (channels R,
+/// G, B, A, visibility; linear float). Throws std::runtime_error if a pixel is not finite or a file
+/// cannot be written.
 CapturePaths writeFrame(const FrameImages& frame, const std::filesystem::path& dir,
                         const std::string& stem);
 

@@ -33,8 +33,8 @@ struct Material {
 struct Mesh {
     std::string name;
     std::vector<glm::vec3> positions;
-    std::vector<glm::vec3> normals;   // same size as positions (generated if the file has none)
-    std::vector<glm::vec2> texcoords; // empty or same size as positions
+    std::vector<glm::vec3> normals;     // same size as positions (generated if the file has none)
+    std::vector<glm::vec2> texcoords;   // empty or same size as positions
     std::vector<std::uint32_t> indices; // 3 per triangle, every index < positions.size()
     int material = -1;                  // index into Scene::materials, -1 = default material
     [[nodiscard]] std::size_t triangleCount() const { return indices.size() / 3; }
@@ -42,8 +42,8 @@ struct Mesh {
 
 /// A mesh placed in the world by a node's accumulated transform.
 struct Instance {
-    int mesh = 0;            // index into Scene::meshes
-    glm::mat4 world{1.0f};   // model -> world
+    int mesh = 0;               // index into Scene::meshes
+    glm::mat4 world{1.0f};      // model -> world
     std::uint32_t objectId = 0; // one id per glTF node (JFA-E's object-ID restriction uses it)
     std::string nodeName;
 };
@@ -66,7 +66,7 @@ struct Light {
     glm::vec3 direction{0.0f, -1.0f, 0.0f}; // unit, direction the light travels
     glm::vec3 color{1.0f};
     float intensity = 1.0f;
-    float radius = 0.1f;     // disk radius in world units (extras.radius or --light-radius)
+    float radius = 0.1f; // disk radius in world units (extras.radius or --light-radius)
     float outerConeAngle = glm::radians(45.0f); // spot only
     std::string name;
 };

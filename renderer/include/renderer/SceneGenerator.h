@@ -1,5 +1,6 @@
 #pragma once
-// Deterministic procedural scenes in the spirit of the thesis' "fantasy" test scene, and GLB output.
+// Deterministic procedural scenes in the spirit of the thesis' "fantasy" test scene, and GLB
+// output.
 
 #include <renderer/Scene.h>
 

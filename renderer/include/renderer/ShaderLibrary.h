@@ -22,7 +22,8 @@ class ShaderLibrary {
 
     /// The expanded source of `name`; `fileNames` receives the name of every file it pulled in,
     /// indexed by the source-string number used in its #line directives.
-    [[nodiscard]] std::string expand(const std::string& name, std::vector<std::string>& fileNames) const;
+    [[nodiscard]] std::string expand(const std::string& name,
+                                     std::vector<std::string>& fileNames) const;
 
     /// Raw text of one file; throws std::runtime_error naming the file if it does not exist.
     [[nodiscard]] std::string read(const std::string& name) const;

@@ -54,8 +54,10 @@ void Framebuffer::attach(GLenum attachment, const Texture& tex) {
 void Framebuffer::setDrawBuffers(int count) {
     std::vector<GLenum> bufs;
     for (int i = 0; i < count; ++i) bufs.push_back(GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i));
-    if (bufs.empty()) glNamedFramebufferDrawBuffer(id(), GL_NONE);
-    else glNamedFramebufferDrawBuffers(id(), static_cast<GLsizei>(bufs.size()), bufs.data());
+    if (bufs.empty())
+        glNamedFramebufferDrawBuffer(id(), GL_NONE);
+    else
+        glNamedFramebufferDrawBuffers(id(), static_cast<GLsizei>(bufs.size()), bufs.data());
 }
 
 void Framebuffer::check(const char* what) const {
@@ -86,10 +88,14 @@ std::vector<std::string> g_errors;
 
 const char* typeName(GLenum type) {
     switch (type) {
-    case GL_DEBUG_TYPE_ERROR: return "error";
-    case GL_DEBUG_TYPE_DEPRECATED_BEHAVIOR: return "deprecated";
-    case GL_DEBUG_TYPE_UNDEFINED_BEHAVIOR: return "undefined behaviour";
-    default: return "message";
+    case GL_DEBUG_TYPE_ERROR:
+        return "error";
+    case GL_DEBUG_TYPE_DEPRECATED_BEHAVIOR:
+        return "deprecated";
+    case GL_DEBUG_TYPE_UNDEFINED_BEHAVIOR:
+        return "undefined behaviour";
+    default:
+        return "message";
     }
 }
 
@@ -102,8 +108,8 @@ void GLAPIENTRY onDebugMessage(GLenum source, GLenum type, GLuint id, GLenum sev
                        severity == GL_DEBUG_SEVERITY_HIGH;
     // Shader compiler messages repeat the info log, which Program reports with file names.
     if (!fatal || source == GL_DEBUG_SOURCE_SHADER_COMPILER) return;
-    std::string text = length > 0 ? std::string(message, static_cast<size_t>(length))
-                                   : std::string(message);
+    std::string text =
+        length > 0 ? std::string(message, static_cast<size_t>(length)) : std::string(message);
     std::lock_guard lock(g_mutex);
     g_errors.push_back(std::string("GL ") + typeName(type) + " " + std::to_string(id) + ": " +
                        text);

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cstring>
-#include <regex>
 #include <sstream>
 
 namespace fl::gl {
@@ -13,11 +12,16 @@ namespace {
 
 const char* stageName(GLenum stage) {
     switch (stage) {
-    case GL_VERTEX_SHADER: return "vertex";
-    case GL_FRAGMENT_SHADER: return "fragment";
-    case GL_COMPUTE_SHADER: return "compute";
-    case GL_GEOMETRY_SHADER: return "geometry";
-    default: return "shader";
+    case GL_VERTEX_SHADER:
+        return "vertex";
+    case GL_FRAGMENT_SHADER:
+        return "fragment";
+    case GL_COMPUTE_SHADER:
+        return "compute";
+    case GL_GEOMETRY_SHADER:
+        return "geometry";
+    default:
+        return "shader";
     }
 }
 
@@ -35,11 +39,15 @@ std::string withDefines(const std::string& source, const std::vector<std::string
 
 std::string infoLog(GLuint object, bool isProgram) {
     GLint length = 0;
-    if (isProgram) glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length);
-    else glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
+    if (isProgram)
+        glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length);
+    else
+        glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
     std::string log(static_cast<size_t>(std::max(length, 1)), '\0');
-    if (isProgram) glGetProgramInfoLog(object, length, nullptr, log.data());
-    else glGetShaderInfoLog(object, length, nullptr, log.data());
+    if (isProgram)
+        glGetProgramInfoLog(object, length, nullptr, log.data());
+    else
+        glGetShaderInfoLog(object, length, nullptr, log.data());
     log.resize(std::strlen(log.c_str()));
     return log;
 }
@@ -63,24 +71,42 @@ Shader compile(const ShaderLibrary& library, const StageSource& s,
 
 } // namespace
 
+namespace {
+
+// Reads decimal digits at s[pos]; false if there are none.
+bool readNumber(const std::string& s, size_t& pos, size_t& value) {
+    const size_t start = pos;
+    value = 0;
+    while (pos < s.size() && s[pos] >= '0' && s[pos] <= '9')
+        value = value * 10 + size_t(s[pos++] - '0');
+    return pos > start;
+}
+
+} // namespace
+
 std::string mapInfoLog(const std::string& log, const std::vector<std::string>& files) {
-    // Mesa: "0:12(5): error: ..."; NVIDIA: "0(12) : error ..."; both start with the
+    // Mesa: "0:12(5): error: ..."; NVIDIA: "0(12) : error ...". Both start with the
     // source-string number our #line directives assigned to a file.
-    static const std::regex mesa(R"(^(\d+):(\d+)\((\d+)\)(.*)$)");
-    static const std::regex nvidia(R"(^(\d+)\((\d+)\)(.*)$)");
     std::istringstream in(log);
     std::ostringstream out;
     std::string line;
-    std::smatch m;
-    auto fileName = [&](const std::string& idx) {
-        const size_t i = std::stoul(idx);
-        return i < files.size() ? files[i] : "source " + idx;
-    };
     while (std::getline(in, line)) {
-        if (std::regex_match(line, m, mesa))
-            out << fileName(m[1]) << ":" << m[2] << ":" << m[3] << m[4] << "\n";
-        else if (std::regex_match(line, m, nvidia))
-            out << fileName(m[1]) << ":" << m[2] << m[3] << "\n";
+        size_t pos = 0, source = 0, lineNo = 0, column = 0;
+        const bool hasSource = readNumber(line, pos, source);
+        const bool mesa = hasSource && pos < line.size() && line[pos] == ':' &&
+                          readNumber(line, ++pos, lineNo) && pos < line.size() &&
+                          line[pos] == '(' && readNumber(line, ++pos, column) &&
+                          pos < line.size() && line[pos] == ')';
+        size_t npos = 0;
+        const bool nvidia = !mesa && readNumber(line, npos, source) && npos < line.size() &&
+                            line[npos] == '(' && readNumber(line, ++npos, lineNo) &&
+                            npos < line.size() && line[npos] == ')';
+        const std::string file =
+            source < files.size() ? files[source] : "source " + std::to_string(source);
+        if (mesa)
+            out << file << ":" << lineNo << ":" << column << line.substr(pos + 1) << "\n";
+        else if (nvidia)
+            out << file << ":" << lineNo << line.substr(npos + 1) << "\n";
         else if (!line.empty())
             out << line << "\n";
     }
@@ -106,8 +132,12 @@ Program Program::build(const ShaderLibrary& library, const std::vector<StageSour
     return p;
 }
 
-GLint Program::location(const char* name) const { return glGetUniformLocation(id(), name); }
-void Program::set(const char* name, int v) const { glProgramUniform1i(id(), location(name), v); }
+GLint Program::location(const char* name) const {
+    return glGetUniformLocation(id(), name);
+}
+void Program::set(const char* name, int v) const {
+    glProgramUniform1i(id(), location(name), v);
+}
 void Program::set(const char* name, float v) const {
     glProgramUniform1f(id(), location(name), v);
 }

@@ -11,8 +11,8 @@
 namespace fl {
 
 struct ShadowMapSettings {
-    int size = 1024;          // texels per side
-    float slopeBias = 2.0f;   // glPolygonOffset factor: scales with the depth slope of a triangle
+    int size = 1024;           // texels per side
+    float slopeBias = 2.0f;    // glPolygonOffset factor: scales with the depth slope of a triangle
     float constantBias = 2.0f; // glPolygonOffset units: multiples of the smallest depth step
 };
 

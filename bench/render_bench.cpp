@@ -1,0 +1,94 @@
+// Frame and per-pass times of the hard-shadow renderer on a scene, with peak memory.
+// Prints min and median over --frames frames after --warmup frames, all in one process/context.
+
+#include <renderer/EglContext.h>
+#include <renderer/GltfLoader.h>
+#include <renderer/Renderer.h>
+#include <renderer/SceneGenerator.h>
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <sys/resource.h>
+
+namespace {
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    const size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+long peakRssKiB() {
+    rusage u{};
+    getrusage(RUSAGE_SELF, &u);
+    return u.ru_maxrss; // KiB on Linux
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"floodlight_bench: hard-shadow frame and pass times (min/median) and peak RSS"};
+    std::string scenePath;
+    std::size_t triangles = 0;
+    int width = 512, height = 512, shadowMap = 1024, frames = 20, warmup = 3;
+    app.add_option("--scene", scenePath, "glTF scene (default: generated, see --triangles)");
+    app.add_option("--triangles", triangles,
+                   "Generate the default-style scene with this many triangles");
+    app.add_option("--width", width)->check(CLI::Range(1, 8192))->capture_default_str();
+    app.add_option("--height", height)->check(CLI::Range(1, 8192))->capture_default_str();
+    app.add_option("--shadow-map-size", shadowMap)
+        ->check(CLI::Range(16, 8192))
+        ->capture_default_str();
+    app.add_option("--frames", frames)->check(CLI::Range(1, 100000))->capture_default_str();
+    app.add_option("--warmup", warmup)->check(CLI::Range(0, 1000))->capture_default_str();
+    CLI11_PARSE(app, argc, argv);
+
+    try {
+        fl::Scene scene;
+        if (!scenePath.empty())
+            scene = fl::loadGltf(scenePath);
+        else
+            scene = fl::generateScene({triangles ? triangles : 6320, 1});
+        const long rssScene = peakRssKiB();
+        auto ctx = fl::EglContext::create(false);
+        const fl::ShaderLibrary shaders;
+        fl::RenderSettings settings;
+        settings.shadow.size = shadowMap;
+        fl::Renderer renderer(shaders, scene, settings);
+        renderer.resize(width, height);
+        const fl::CameraView cam =
+            fl::makeCameraView(scene, {}, static_cast<float>(width) / static_cast<float>(height));
+        std::map<std::string, std::vector<double>> passMs;
+        std::vector<double> frameMs;
+        for (int i = 0; i < warmup + frames; ++i) {
+            renderer.render(cam);
+            if (i < warmup) continue;
+            frameMs.push_back(renderer.timer().frameMs());
+            for (const fl::PassTime& p : renderer.timer().passes()) passMs[p.name].push_back(p.ms);
+        }
+        std::cout << "context: " << ctx->description() << "\n"
+                  << "scene: " << scene.source << ", " << scene.triangleCount() << " triangles\n"
+                  << "frame " << width << "x" << height << ", shadow map " << shadowMap << "^2, "
+                  << frames << " frames after " << warmup
+                  << " warm-up, timing: " << renderer.timer().modeName() << "\n"
+                  << std::fixed << std::setprecision(2);
+        for (const auto& [name, v] : passMs)
+            std::cout << "  " << std::left << std::setw(12) << name << " min " << std::right
+                      << std::setw(8) << *std::min_element(v.begin(), v.end()) << " ms   median "
+                      << std::setw(8) << median(v) << " ms\n";
+        std::cout << "  " << std::left << std::setw(12) << "frame"
+                  << " min " << std::right << std::setw(8)
+                  << *std::min_element(frameMs.begin(), frameMs.end()) << " ms   median "
+                  << std::setw(8) << median(frameMs) << " ms\n"
+                  << "peak RSS: " << peakRssKiB() / 1024
+                  << " MiB (after loading the scene: " << rssScene / 1024 << " MiB)\n";
+    } catch (const std::exception& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return 1;
+    }
+    return 0;
+}

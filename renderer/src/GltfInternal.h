@@ -1,0 +1,156 @@
+#pragma once
+// Private to the glTF loader. loadGltf() (GltfLoader.cpp) parses the file with tinygltf and then
+// runs the steps declared here, one source file each:
+//   GltfAccessors.cpp  accessor / bufferView / buffer validation and decoding
+//   GltfMeshes.cpp     triangle primitives -> fl::Mesh (modes, indices, normals, texcoords)
+//   GltfNodes.cpp      node graph checks, transforms, scene traversal, cameras, the light
+//   GltfMaterials.cpp  materials, textures and image decoding
+// tinygltf accepts much malformed content, so every step validates what it reads and reports
+// through Context::fail (reject) or Context::warn (repair).
+
+#include <renderer/GltfLoader.h>
+#include <renderer/Scene.h>
+
+#include <tiny_gltf.h>
+
+#include <glm/glm.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace fl::gltf {
+
+// Limits that keep a hostile file from making us allocate gigabytes or spin for minutes. They
+// sit far above anything Floodlight can render interactively, so real scenes never meet them.
+// An accessor without a bufferView reads as zeros, so a few bytes of JSON can ask for any count:
+// the per-accessor and per-file limits bound what such a file makes us allocate.
+inline constexpr std::size_t kMaxAccessorCount = std::size_t{1} << 24; // elements per accessor
+inline constexpr std::size_t kMaxDecodedValues = std::size_t{1} << 28; // all accessors: 1 GiB
+inline constexpr std::size_t kMaxNodes = std::size_t{1} << 20;
+inline constexpr int kMaxImageSide = 16384; // GL_MAX_TEXTURE_SIZE of common desktop drivers
+inline constexpr long long kMaxImagePixels = 1LL << 26; // 256 MiB of RGBA8
+
+/// Concatenates anything streamable; keeps message building short without <format> (GCC 12).
+template <class... Args>
+std::string cat(const Args&... args) {
+    std::ostringstream s;
+    (s << ... << args);
+    return s.str();
+}
+
+/// "meshes[3]".
+inline std::string elem(std::string_view array, std::size_t index) {
+    return cat(array, '[', index, ']');
+}
+
+/// What every step needs: the parsed model plus where messages go.
+class Context {
+  public:
+    Context(std::string fileName, std::filesystem::path baseDir, const tinygltf::Model& model,
+            const LoadOptions& options)
+        : fileName_(std::move(fileName)), baseDir_(std::move(baseDir)), model_(model),
+          options_(options) {}
+
+    /// Throws SceneError "file: element: problem".
+    [[noreturn]] void fail(std::string_view element, std::string_view problem) const;
+    /// Reports a repair or a skipped part as "file: element: what".
+    void warn(std::string_view element, std::string_view what) const;
+
+    /// Counts `values` decoded components against kMaxDecodedValues; fails past it.
+    void charge(std::size_t values, std::string_view element) const;
+
+    [[nodiscard]] const tinygltf::Model& model() const { return model_; }
+    [[nodiscard]] const LoadOptions& options() const { return options_; }
+    [[nodiscard]] const std::string& fileName() const { return fileName_; }
+    [[nodiscard]] const std::filesystem::path& baseDir() const { return baseDir_; }
+
+    /// items[index], or fail("referrer", "<what> <index> does not exist (<n> in <array>)").
+    template <class T>
+    const T& lookup(const std::vector<T>& items, int index, std::string_view referrer,
+                    std::string_view what, std::string_view array) const {
+        if (!inRange(items, index))
+            fail(referrer,
+                 cat(what, ' ', index, " does not exist (", items.size(), " in ", array, ')'));
+        return items[static_cast<std::size_t>(index)];
+    }
+
+    template <class T>
+    static bool inRange(const std::vector<T>& items, int index) {
+        return index >= 0 && static_cast<std::size_t>(index) < items.size();
+    }
+
+  private:
+    std::string fileName_;
+    std::filesystem::path baseDir_;
+    const tinygltf::Model& model_;
+    const LoadOptions& options_;
+    mutable std::size_t decodedValues_ = 0; // accessor reads are the only mutation
+};
+
+// --- accessors (GltfAccessors.cpp) ---------------------------------------------------------
+// `usage` names the referrer for messages, e.g. "meshes[0].primitives[1].attributes.POSITION".
+
+/// The bytes of bufferViews[index], checked against its buffer.
+struct ByteSpan {
+    const std::uint8_t* data = nullptr;
+    std::size_t size = 0;
+};
+ByteSpan bufferViewBytes(const Context& ctx, int index, std::string_view usage);
+
+/// VEC3 FLOAT (POSITION, NORMAL).
+std::vector<glm::vec3> readVec3(const Context& ctx, int index, std::string_view usage);
+/// VEC2 FLOAT or normalized UNSIGNED_BYTE / UNSIGNED_SHORT (TEXCOORD_n).
+std::vector<glm::vec2> readTexcoords(const Context& ctx, int index, std::string_view usage);
+/// SCALAR UNSIGNED_BYTE / UNSIGNED_SHORT / UNSIGNED_INT (primitive indices).
+std::vector<std::uint32_t> readIndices(const Context& ctx, int index, std::string_view usage);
+
+// --- meshes (GltfMeshes.cpp) ----------------------------------------------------------------
+
+/// Converts the triangle primitives of meshes[meshIndex] (one fl::Mesh each) and appends them
+/// to `out`; skipped primitives (points, lines, empty) are reported through ctx.warn.
+void convertMesh(const Context& ctx, int meshIndex, std::vector<Mesh>& out);
+
+/// glTF primitive modes TRIANGLES / TRIANGLE_STRIP / TRIANGLE_FAN as a triangle list (spec
+/// 3.7.2.1 vertex order); a list's trailing partial triangle is dropped.
+std::vector<std::uint32_t> triangleList(int mode, const std::vector<std::uint32_t>& indices);
+
+// --- nodes (GltfNodes.cpp) ------------------------------------------------------------------
+
+/// A node of the chosen scene with its accumulated model->world transform.
+struct PlacedNode {
+    int node = -1;
+    glm::mat4 world{1.0f};
+};
+
+/// Validates the node graph (indices, single parent, no cycles), picks the scene (default
+/// scene, else scene 0, else every root node) and lists its nodes depth first.
+std::vector<PlacedNode> placeSceneNodes(const Context& ctx);
+
+/// Perspective cameras of the placed nodes; infinite zfar is made finite from `bounds`.
+std::vector<Camera> convertCameras(const Context& ctx, const std::vector<PlacedNode>& placed,
+                                   const geom::Aabb& bounds);
+
+/// The first KHR_lights_punctual light placed by a node, if any.
+std::optional<Light> convertLight(const Context& ctx, const std::vector<PlacedNode>& placed,
+                                  const geom::Aabb& bounds);
+
+// --- materials (GltfMaterials.cpp) ----------------------------------------------------------
+
+/// All materials, in file order (so primitive material indices carry over); the base colour
+/// textures of the `used` ones are decoded into `images`.
+std::vector<Material> convertMaterials(const Context& ctx, const std::vector<bool>& used,
+                                       std::vector<Image>& images);
+
+/// tinygltf image callback: keeps the encoded bytes so that decoding happens only for images
+/// a material uses (see GltfMaterials.cpp).
+bool keepEncodedImage(tinygltf::Image* image, int imageIndex, std::string* err, std::string* warn,
+                      int reqWidth, int reqHeight, const unsigned char* bytes, int size,
+                      void* user);
+
+} // namespace fl::gltf

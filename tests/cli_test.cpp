@@ -1,0 +1,111 @@
+// The floodlight binary: exit codes and messages for bad input, and what `render` writes.
+
+#include "TestPaths.h"
+
+#include <renderer/ImageIO.h>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sys/wait.h>
+
+namespace fl::test {
+namespace {
+
+struct Outcome {
+    int code;
+    std::string output; // stdout and stderr together
+};
+
+Outcome run(const std::string& args) {
+    const std::string cmd = std::string(FLOODLIGHT_BINARY) + " " + args + " 2>&1";
+    FILE* pipe = popen(cmd.c_str(), "r");
+    if (!pipe) return {-1, "popen failed"};
+    std::string out;
+    std::array<char, 4096> buf{};
+    while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) out.append(buf.data(), n);
+    const int status = pclose(pipe);
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), out};
+}
+
+TEST(Cli, HelpExitsZero) {
+    for (const char* cmd : {"--help", "render --help", "view --help", "make-scene --help"}) {
+        const Outcome r = run(cmd);
+        EXPECT_EQ(r.code, 0) << cmd << "\n" << r.output;
+        EXPECT_NE(r.output.find("Usage"), std::string::npos) << cmd;
+    }
+}
+
+TEST(Cli, MissingSceneFileIsOneClearError) {
+    const Outcome r =
+        run("render --scene /nonexistent/scene.gltf --out " + outputDir("cli").string());
+    EXPECT_EQ(r.code, 1) << r.output;
+    EXPECT_NE(r.output.find("/nonexistent/scene.gltf"), std::string::npos) << r.output;
+}
+
+TEST(Cli, UnsupportedExtensionIsRejected) {
+    const auto p = outputDir("cli") / "model.obj";
+    std::ofstream(p) << "v 0 0 0\n";
+    const Outcome r = run("render --scene " + p.string() + " --out " + outputDir("cli").string());
+    EXPECT_EQ(r.code, 1) << r.output;
+    EXPECT_NE(r.output.find("model.obj"), std::string::npos) << r.output;
+}
+
+TEST(Cli, AbsurdSizesAreUsageErrors) {
+    for (const char* size : {"--width 0", "--height -5", "--width 100000", "--width abc"}) {
+        const Outcome r =
+            run(std::string("render ") + size + " --out " + outputDir("cli").string());
+        EXPECT_EQ(r.code, 2) << size << "\n" << r.output;
+        EXPECT_NE(r.output.find("--"), std::string::npos) << size << "\n" << r.output;
+    }
+}
+
+TEST(Cli, BadCameraIsAnInputError) {
+    const Outcome r =
+        run("render --camera 7 --width 32 --height 32 --out " + outputDir("cli").string());
+    EXPECT_EQ(r.code, 1) << r.output;
+    EXPECT_NE(r.output.find("camera"), std::string::npos) << r.output;
+}
+
+TEST(Cli, RenderWritesPngAndExrAndNoTemporaries) {
+    const auto dir = outputDir("cli_render");
+    for (const auto& e : std::filesystem::directory_iterator(dir)) std::filesystem::remove(e);
+    const Outcome r = run("render --width 96 --height 64 --shadow-map-size 256 --out " +
+                          dir.string() + " --name small");
+    ASSERT_EQ(r.code, 0) << r.output;
+    EXPECT_NE(r.output.find("shadow map:"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("frame total:"), std::string::npos) << r.output;
+    const ByteImage png = readPng(dir / "small.png");
+    EXPECT_EQ(png.width, 96);
+    EXPECT_EQ(png.height, 64);
+    int w = 0, h = 0;
+    const std::vector<ExrChannel> exr = readExr(dir / "small.exr", w, h);
+    EXPECT_EQ(w, 96);
+    EXPECT_EQ(h, 64);
+    std::vector<std::string> names;
+    for (const ExrChannel& c : exr) {
+        names.push_back(c.name);
+        for (float v : c.values) ASSERT_TRUE(std::isfinite(v)) << c.name;
+    }
+    EXPECT_EQ(names, (std::vector<std::string>{"A", "B", "G", "R", "visibility"}));
+    int files = 0;
+    for (const auto& e : std::filesystem::directory_iterator(dir)) {
+        ++files;
+        EXPECT_EQ(e.path().string().find(".tmp"), std::string::npos) << e.path();
+    }
+    EXPECT_EQ(files, 3); // NAME.png, NAME.visibility.png, NAME.exr
+}
+
+TEST(Cli, UnwritableOutputIsAnErrorWithoutPartialFiles) {
+    const auto blocker = outputDir("cli") / "not_a_folder";
+    std::ofstream(blocker) << "x";
+    const Outcome r = run("render --width 16 --height 16 --out " + (blocker / "sub").string());
+    EXPECT_EQ(r.code, 1) << r.output;
+    EXPECT_NE(r.output.find("not_a_folder"), std::string::npos) << r.output;
+}
+
+} // namespace
+} // namespace fl::test

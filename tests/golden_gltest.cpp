@@ -1,0 +1,87 @@
+// Image regression: the default scene rendered headless (EGL) at 256², compared with goldens.
+// Regenerate after an intended change with:
+//   FLOODLIGHT_UPDATE_GOLDENS=1 ./build/release/tests/golden_gltest   (see tests/golden/README.md)
+
+#include "GlTest.h"
+#include "ImageCompare.h"
+#include "TestPaths.h"
+
+#include <renderer/Capture.h>
+#include <renderer/GltfLoader.h>
+#include <renderer/Renderer.h>
+#include <renderer/SceneGenerator.h>
+
+#include <fstream>
+
+namespace fl::test {
+namespace {
+
+class GoldenTest : public GlTest {};
+
+const std::filesystem::path kDefaultAsset =
+    std::filesystem::path(FLOODLIGHT_SOURCE_DIR) / "assets" / "default.glb";
+
+std::string readAll(const std::filesystem::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), {}};
+}
+
+FrameImages renderDefault(int size, int shadowMap) {
+    const Scene scene = loadGltf(kDefaultAsset);
+    const ShaderLibrary shaders;
+    RenderSettings settings;
+    settings.shadow.size = shadowMap;
+    Renderer r(shaders, scene, settings);
+    r.resize(size, size);
+    r.render(makeCameraView(scene, {}, 1.0f));
+    return readFrame(r);
+}
+
+// The committed asset must be exactly what assets/README.md says made it.
+TEST(DefaultAsset, IsTheGeneratorOutput) {
+    const auto fresh = outputDir("asset") / "default.glb";
+    writeGlb(generateScene({6320, 1}), fresh);
+    EXPECT_TRUE(readAll(fresh) == readAll(kDefaultAsset))
+        << "assets/default.glb differs from `floodlight make-scene --triangles 6320 --seed 1`; "
+           "regenerate it (assets/README.md) and the goldens (tests/golden/README.md)";
+}
+
+TEST_F(GoldenTest, DefaultSceneColour) {
+    const FrameImages f = renderDefault(256, 1024);
+    // Tolerances: on the machine that made the golden (Mesa llvmpipe) the render is bit-exact.
+    // Another driver or Mesa version rounds shading maths differently (a few 8-bit steps) and
+    // may flip shadow-map comparisons that are within float precision of the surface, each flip
+    // a full light/shadow difference at one pixel. So: any single pixel may differ completely,
+    // but the mean difference stays under 1.5 steps and under 1% of pixels differ by more
+    // than 16 steps. A moved shadow, camera or light breaks both limits by far.
+    Tolerance tol;
+    tol.maxAbs = 255;
+    tol.meanAbs = 1.5;
+    tol.pixelThreshold = 16;
+    tol.maxPercentOver = 1.0;
+    const CompareResult c = compareWithGolden(toSrgb8(f.color), "default_256_colour", tol);
+    EXPECT_TRUE(c.pass) << c.report;
+}
+
+TEST_F(GoldenTest, DefaultSceneVisibility) {
+    const FrameImages f = renderDefault(256, 1024);
+    // Hard-shadow visibility is 0 or 1 per pixel, so any difference is a whole step; allow the
+    // same 1% of pixels (comparisons at float precision on another driver) and nothing more.
+    Tolerance tol;
+    tol.maxAbs = 255;
+    tol.meanAbs = 255 * 0.01;
+    tol.pixelThreshold = 127;
+    tol.maxPercentOver = 1.0;
+    const CompareResult c =
+        compareWithGolden(visibilityToGrey(f.visibility), "default_256_visibility", tol);
+    EXPECT_TRUE(c.pass) << c.report;
+    // The picture must actually contain shadow and light, or the golden proves nothing.
+    size_t shadowed = 0;
+    for (float v : f.visibility.data) shadowed += v < 0.5f;
+    const double share = double(shadowed) / double(f.visibility.data.size());
+    EXPECT_GT(share, 0.03);
+    EXPECT_LT(share, 0.6);
+}
+
+} // namespace
+} // namespace fl::test

@@ -1,0 +1,117 @@
+// The window path (GLFW, run under Xvfb by ctest): same renderer, same pixels as headless EGL;
+// minimise and resize to tiny sizes are survived.
+
+#include "ImageCompare.h"
+#include "TestPaths.h"
+#include "TestScenes.h"
+
+#include <renderer/Capture.h>
+#include <renderer/EglContext.h>
+#include <renderer/GlfwWindow.h>
+#include <renderer/Renderer.h>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+namespace fl::test {
+namespace {
+
+constexpr int kW = 160, kH = 120;
+
+Scene testScene() {
+    return groundAndBox(4.0f, {-1, 0.5f, -1}, {1, 2, 1}, {0.6f, -1, 0.3f});
+}
+
+ByteImage readBackBuffer(int w, int h) {
+    ByteImage img{w, h, 4, std::vector<std::uint8_t>(static_cast<size_t>(w) * h * 4)};
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    glReadBuffer(GL_BACK);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadnPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(img.data.size()),
+                  img.data.data());
+    const size_t row = static_cast<size_t>(w) * 4;
+    std::vector<std::uint8_t> flipped(img.data.size());
+    for (int y = 0; y < h; ++y)
+        std::memcpy(&flipped[static_cast<size_t>(y) * row],
+                    &img.data[static_cast<size_t>(h - 1 - y) * row], row);
+    img.data = flipped;
+    return img;
+}
+
+ByteImage renderHeadless(const Scene& scene) {
+    auto ctx = EglContext::create();
+    const ShaderLibrary shaders;
+    Renderer r(shaders, scene, {});
+    r.resize(kW, kH);
+    r.render(makeCameraView(scene, {}, float(kW) / kH));
+    return toSrgb8(readFrame(r).color);
+}
+
+TEST(Window, RendersTheSamePixelsAsHeadless) {
+    const Scene scene = testScene();
+    const ByteImage headless = renderHeadless(scene);
+
+    auto window = GlfwWindow::create({kW, kH, "floodlight test", true});
+    const glm::ivec2 fb = window->framebufferSize();
+    ASSERT_EQ(fb, glm::ivec2(kW, kH));
+    const ShaderLibrary shaders;
+    Renderer r(shaders, scene, {});
+    r.resize(fb.x, fb.y);
+    ByteImage shown;
+    for (int frame = 0; frame < 3; ++frame) {
+        glfwPollEvents();
+        r.render(makeCameraView(scene, {}, float(kW) / kH));
+        r.present(fb.x, fb.y);
+        if (frame == 2) shown = readBackBuffer(fb.x, fb.y);
+        window->swapBuffers();
+    }
+    EXPECT_NO_THROW(gl::throwIfErrors("window frames"));
+    // The window encodes sRGB in a shader, the headless path on the CPU; both use the same
+    // formula, so they may differ by one 8-bit step from float rounding, nowhere by more.
+    Tolerance tol;
+    tol.maxAbs = 1;
+    tol.meanAbs = 0.5;
+    tol.pixelThreshold = 1;
+    tol.maxPercentOver = 0.0;
+    const CompareResult c = compareImages(shown, headless, tol);
+    EXPECT_TRUE(c.pass) << c.report;
+    if (!c.pass) {
+        writePng(outputDir("window") / "window.png", shown);
+        writePng(outputDir("window") / "headless.png", headless);
+    }
+}
+
+TEST(Window, SurvivesMinimiseAndTinySizes) {
+    const Scene scene = testScene();
+    auto window = GlfwWindow::create({kW, kH, "floodlight test", true});
+    const ShaderLibrary shaders;
+    Renderer r(shaders, scene, {});
+    auto frame = [&] {
+        glfwPollEvents();
+        const glm::ivec2 fb = window->framebufferSize();
+        if (fb.x <= 0 || fb.y <= 0) return false; // minimised: the viewer skips the frame
+        r.resize(fb.x, fb.y);
+        r.render(makeCameraView(scene, {}, float(fb.x) / float(fb.y)));
+        r.present(fb.x, fb.y);
+        window->swapBuffers();
+        return true;
+    };
+    EXPECT_TRUE(frame());
+    glfwIconifyWindow(window->handle());
+    for (int i = 0; i < 3; ++i) frame();
+    glfwRestoreWindow(window->handle());
+    glfwSetWindowSize(window->handle(), 1, 1);
+    for (int i = 0; i < 3; ++i) frame();
+    glfwSetWindowSize(window->handle(), kW, kH);
+    for (int i = 0; i < 5 && window->framebufferSize() != glm::ivec2(kW, kH); ++i)
+        glfwWaitEventsTimeout(0.1);
+    EXPECT_TRUE(frame());
+    EXPECT_NO_THROW(gl::throwIfErrors("after minimise/resize"));
+}
+
+} // namespace
+} // namespace fl::test
