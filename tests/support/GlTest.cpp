@@ -1,10 +1,14 @@
 #include "GlTest.h"
 
+#include <cstdlib>
+
 namespace fl::test {
 
 std::unique_ptr<EglContext> GlTest::context_;
 
 void GlTest::SetUpTestSuite() {
+    // Tests measure today's shaders, not a cache of yesterday's (also set by the ctest presets).
+    ::setenv("MESA_SHADER_CACHE_DISABLE", "true", 0);
     if (!context_) context_ = EglContext::create(true);
 }
 
