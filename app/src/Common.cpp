@@ -122,6 +122,15 @@ CameraSpec makeCameraSpec(const SceneOptions& o) {
     return c;
 }
 
+CameraView initialCamera(const Scene& scene, const SceneOptions& o, int width, int height) {
+    try {
+        return makeCameraView(scene, makeCameraSpec(o),
+                              static_cast<float>(width) / static_cast<float>(height));
+    } catch (const std::invalid_argument& e) {
+        throw InputError(e.what());
+    }
+}
+
 void printTimings(const Renderer& renderer, std::ostream& out) {
     out << std::fixed << std::setprecision(2);
     for (const PassTime& p : renderer.timer().passes())

@@ -50,6 +50,8 @@ Scene loadScene(const SceneOptions& o);
 ShaderLibrary makeShaderLibrary(const SceneOptions& o);
 RenderSettings makeRenderSettings(const SceneOptions& o);
 CameraSpec makeCameraSpec(const SceneOptions& o);
+/// The camera the options ask for at width x height; throws InputError (e.g. no such camera).
+CameraView initialCamera(const Scene& scene, const SceneOptions& o, int width, int height);
 
 /// Parameters of the built-in default scene (also how assets/default.glb was made).
 inline constexpr std::size_t kDefaultSceneTriangles = 6320;

@@ -10,19 +10,12 @@ namespace fl::app {
 int renderHeadless(const SceneOptions& o, int width, int height,
                    const std::filesystem::path& outDir, const std::string& stem) {
     const Scene scene = loadScene(o);
-    const CameraSpec spec = makeCameraSpec(o);
+    const CameraView camera = initialCamera(scene, o, width, height);
     auto context = EglContext::create();
     std::cout << "context: " << context->description() << "\n";
     const ShaderLibrary shaders = makeShaderLibrary(o);
     Renderer renderer(shaders, scene, makeRenderSettings(o));
     renderer.resize(width, height);
-    CameraView camera;
-    try {
-        camera =
-            makeCameraView(scene, spec, static_cast<float>(width) / static_cast<float>(height));
-    } catch (const std::invalid_argument& e) {
-        throw InputError(e.what());
-    }
     renderer.render(camera);
     const CapturePaths paths = writeFrame(readFrame(renderer), outDir, stem);
     std::cout << "scene: " << scene.source << " (" << scene.triangleCount() << " triangles)\n"

@@ -42,7 +42,7 @@ ByteImage readWindow(int width, int height) {
 int runViewer(const SceneOptions& o, int width, int height, int frames,
               const std::string& screenshot) {
     const Scene scene = loadScene(o);
-    const CameraSpec spec = makeCameraSpec(o);
+    const CameraView initial = initialCamera(scene, o, width, height);
     std::unique_ptr<GlfwWindow> window;
     try {
         window = GlfwWindow::create({width, height, "Floodlight", true});
@@ -55,13 +55,6 @@ int runViewer(const SceneOptions& o, int width, int height, int frames,
                  "WASD/QE fly, Shift fast, R reset, Esc quit\n";
     const ShaderLibrary shaders = makeShaderLibrary(o);
     Renderer renderer(shaders, scene, makeRenderSettings(o));
-    CameraView initial;
-    try {
-        initial =
-            makeCameraView(scene, spec, static_cast<float>(width) / static_cast<float>(height));
-    } catch (const std::invalid_argument& e) {
-        throw InputError(e.what());
-    }
     const float yfov = 2.0f * std::atan(1.0f / initial.proj[1][1]);
     CameraController controller(initial, scene.bounds.radius(), yfov);
     controller.attach(window->handle());
