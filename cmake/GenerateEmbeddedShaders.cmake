@@ -2,7 +2,7 @@
 file(GLOB files RELATIVE "${DIR}" "${DIR}/*.glsl")
 list(SORT files)
 set(body "// Generated from shaders/*.glsl by cmake/GenerateEmbeddedShaders.cmake. Do not edit.\n")
-string(APPEND body "#include <renderer/ShaderLibrary.h>\n\nnamespace fl {\n")
+string(APPEND body "#include <gpu/ShaderLibrary.h>\n\nnamespace fl {\n")
 string(APPEND body "const std::map<std::string, std::string_view>& embeddedShaders() {\n")
 string(APPEND body "    static const std::map<std::string, std::string_view> shaders = {\n")
 foreach(f IN LISTS files)

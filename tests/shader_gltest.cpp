@@ -3,7 +3,7 @@
 #include "GlTest.h"
 #include "TestPaths.h"
 
-#include <renderer/gl/Program.h>
+#include <gpu/Program.h>
 
 #include <fstream>
 

@@ -2,8 +2,8 @@
 
 #include "TestPaths.h"
 
-#include <renderer/ShaderLibrary.h>
-#include <renderer/gl/Program.h>
+#include <gpu/ShaderLibrary.h>
+#include <gpu/Program.h>
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 #include <renderer/GltfLoader.h>
 #include <renderer/Renderer.h>
 #include <renderer/Scene.h>
-#include <renderer/ShaderLibrary.h>
+#include <gpu/ShaderLibrary.h>
 
 #include <CLI/CLI.hpp>
 

@@ -4,7 +4,7 @@
 #include "Commands.h"
 
 #include <renderer/GlfwWindow.h>
-#include <renderer/gl/Gl.h>
+#include <gpu/Gl.h>
 
 #include <iostream>
 

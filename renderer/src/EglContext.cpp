@@ -1,5 +1,5 @@
 #include <renderer/EglContext.h>
-#include <renderer/gl/Gl.h>
+#include <gpu/Gl.h>
 
 #include <epoxy/egl.h>
 

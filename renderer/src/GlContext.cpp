@@ -1,5 +1,5 @@
 #include <renderer/GlContext.h>
-#include <renderer/gl/Gl.h>
+#include <gpu/Gl.h>
 
 namespace fl {
 

@@ -1,5 +1,5 @@
 #include <renderer/GlfwWindow.h>
-#include <renderer/gl/Gl.h>
+#include <gpu/Gl.h>
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>

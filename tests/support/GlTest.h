@@ -3,7 +3,7 @@
 // the debug callback during a test fails that test.
 
 #include <renderer/EglContext.h>
-#include <renderer/gl/Gl.h>
+#include <gpu/Gl.h>
 
 #include <gtest/gtest.h>
 

@@ -3,8 +3,8 @@
 // material textures, and the draw list. Passes draw it with their own programs.
 
 #include <renderer/Scene.h>
-#include <renderer/gl/Gl.h>
-#include <renderer/gl/Program.h>
+#include <gpu/Gl.h>
+#include <gpu/Program.h>
 
 #include <vector>
 

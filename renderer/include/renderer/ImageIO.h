@@ -2,7 +2,7 @@
 // Reading back GL textures and writing/reading images. Every write goes to a temporary name in the
 // destination folder and is renamed into place, so a failure never leaves a half-written file.
 
-#include <renderer/gl/Gl.h>
+#include <gpu/Gl.h>
 
 #include <cstdint>
 #include <filesystem>

@@ -3,9 +3,9 @@
 // shadow test, 3. (window only) present. Owns the passes and the uploaded scene.
 
 #include <renderer/GpuScene.h>
-#include <renderer/PassTimer.h>
+#include <gpu/PassTimer.h>
 #include <renderer/Scene.h>
-#include <renderer/ShaderLibrary.h>
+#include <gpu/ShaderLibrary.h>
 #include <renderer/passes/ForwardPass.h>
 #include <renderer/passes/ShadowMapPass.h>
 

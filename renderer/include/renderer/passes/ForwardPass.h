@@ -4,9 +4,9 @@
 
 #include <renderer/GpuScene.h>
 #include <renderer/Scene.h>
-#include <renderer/ShaderLibrary.h>
-#include <renderer/gl/Gl.h>
-#include <renderer/gl/Program.h>
+#include <gpu/ShaderLibrary.h>
+#include <gpu/Gl.h>
+#include <gpu/Program.h>
 
 namespace fl {
 

@@ -2,9 +2,9 @@
 // Step 1 of a frame: depth from the light into a square depth texture (uniform shadow map).
 
 #include <renderer/GpuScene.h>
-#include <renderer/ShaderLibrary.h>
-#include <renderer/gl/Gl.h>
-#include <renderer/gl/Program.h>
+#include <gpu/ShaderLibrary.h>
+#include <gpu/Gl.h>
+#include <gpu/Program.h>
 
 #include <geometry/Framing.h>
 

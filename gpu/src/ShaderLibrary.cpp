@@ -1,4 +1,4 @@
-#include <renderer/ShaderLibrary.h>
+#include <gpu/ShaderLibrary.h>
 
 #include <fstream>
 #include <sstream>

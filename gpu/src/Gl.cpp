@@ -1,4 +1,4 @@
-#include <renderer/gl/Gl.h>
+#include <gpu/Gl.h>
 
 #include <mutex>
 #include <sstream>

@@ -2,7 +2,7 @@
 // Per-pass GPU timing: GL timer queries where the driver supports them, glFinish wall time on
 // software rasterisers (llvmpipe reads 0 for compute dispatches).
 
-#include <renderer/gl/Gl.h>
+#include <gpu/Gl.h>
 
 #include <chrono>
 #include <string>

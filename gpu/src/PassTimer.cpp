@@ -1,4 +1,4 @@
-#include <renderer/PassTimer.h>
+#include <gpu/PassTimer.h>
 
 namespace fl {
 

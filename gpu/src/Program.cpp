@@ -1,4 +1,4 @@
-#include <renderer/gl/Program.h>
+#include <gpu/Program.h>
 
 #include <glm/gtc/type_ptr.hpp>
 

@@ -2,8 +2,8 @@
 // Linked GLSL programs built from ShaderLibrary files; compile and link errors throw GlError with
 // file, line and the driver's info log.
 
-#include <renderer/ShaderLibrary.h>
-#include <renderer/gl/Gl.h>
+#include <gpu/ShaderLibrary.h>
+#include <gpu/Gl.h>
 
 #include <glm/glm.hpp>
 
