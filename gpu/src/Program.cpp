@@ -141,6 +141,9 @@ void Program::set(const char* name, int v) const {
 void Program::set(const char* name, float v) const {
     glProgramUniform1f(id(), location(name), v);
 }
+void Program::set(const char* name, const glm::ivec2& v) const {
+    glProgramUniform2iv(id(), location(name), 1, glm::value_ptr(v));
+}
 void Program::set(const char* name, const glm::vec2& v) const {
     glProgramUniform2fv(id(), location(name), 1, glm::value_ptr(v));
 }

@@ -2,8 +2,8 @@
 // Linked GLSL programs built from ShaderLibrary files; compile and link errors throw GlError with
 // file, line and the driver's info log.
 
-#include <gpu/ShaderLibrary.h>
 #include <gpu/Gl.h>
+#include <gpu/ShaderLibrary.h>
 
 #include <glm/glm.hpp>
 
@@ -32,6 +32,7 @@ class Program {
     [[nodiscard]] GLint location(const char* name) const;
     void set(const char* name, int v) const;
     void set(const char* name, float v) const;
+    void set(const char* name, const glm::ivec2& v) const;
     void set(const char* name, const glm::vec2& v) const;
     void set(const char* name, const glm::vec3& v) const;
     void set(const char* name, const glm::vec4& v) const;

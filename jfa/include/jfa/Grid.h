@@ -29,8 +29,11 @@ struct Grid {
 
     Grid() = default;
     /// A width x height grid filled with `fill`.
-    Grid(int w, int h, Cell fill = {}) : width(w), height(h), cells(std::size_t(w) * std::size_t(h), fill) {}
-    [[nodiscard]] Cell& at(int x, int y) { return cells[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
+    Grid(int w, int h, Cell fill = {})
+        : width(w), height(h), cells(std::size_t(w) * std::size_t(h), fill) {}
+    [[nodiscard]] Cell& at(int x, int y) {
+        return cells[std::size_t(y) * std::size_t(width) + std::size_t(x)];
+    }
     [[nodiscard]] const Cell& at(int x, int y) const {
         return cells[std::size_t(y) * std::size_t(width) + std::size_t(x)];
     }
@@ -57,6 +60,8 @@ struct GridPoint {
     int x;
     int y;
 };
-inline GridPoint gridPoint(int x, int y, int scale) { return {x * scale, y * scale}; }
+inline GridPoint gridPoint(int x, int y, int scale) {
+    return {x * scale, y * scale};
+}
 
 } // namespace fl::jfa

@@ -1,0 +1,166 @@
+#include <jfa/GlKernel.h>
+
+#include <stdexcept>
+#include <string>
+
+namespace fl::jfa {
+
+static_assert(sizeof(Cell) == 4 * sizeof(float), "a Cell must be one RGBA32F texel");
+
+namespace {
+// Integer-site distances are squared in 32-bit ints on the GPU: 2 * 16383² < 2^31.
+constexpr int kMaxGlGridExtent = 16384;
+} // namespace
+
+const char* kernelName(GlKernelKind kind) {
+    return kind == GlKernelKind::Fragment ? "fragment" : "compute";
+}
+
+void setCriterionUniforms(const gl::Program& program, const NearestSite& criterion) {
+    program.set("uJfaIntegerSites", criterion.integerSites ? 1 : 0);
+}
+
+gl::Texture uploadGrid(const Grid& grid) {
+    gl::Texture t(GL_RGBA32F, grid.width, grid.height);
+    glTextureSubImage2D(t.id(), 0, 0, 0, grid.width, grid.height, GL_RGBA, GL_FLOAT,
+                        grid.cells.data());
+    return t;
+}
+
+Grid readGrid(const gl::Texture& texture) {
+    Grid g(texture.width(), texture.height());
+    glGetTextureImage(texture.id(), 0, GL_RGBA, GL_FLOAT,
+                      static_cast<GLsizei>(g.cells.size() * sizeof(Cell)), g.cells.data());
+    gl::throwIfErrors("jfa grid read-back");
+    return g;
+}
+
+GlFloodKernel::GlFloodKernel(const ShaderLibrary& shaders, const std::string& criterionFile,
+                             GlKernelKind kind)
+    : kind_(kind),
+      passProgram_(gl::Program::build(
+          shaders, kind == GlKernelKind::Fragment
+                       ? std::vector<gl::StageSource>{{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
+                                                      {GL_FRAGMENT_SHADER, "jfa_pass.frag.glsl"},
+                                                      {GL_FRAGMENT_SHADER, criterionFile}}
+                       : std::vector<gl::StageSource>{{GL_COMPUTE_SHADER, "jfa_pass.comp.glsl"},
+                                                      {GL_COMPUTE_SHADER, criterionFile}})),
+      emptyVao_(gl::VertexArray::create()),
+      changedCounter_(sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT) {}
+
+const gl::Texture& GlFloodKernel::otherTexture(int width, int height, const gl::Texture* current) {
+    auto [it, inserted] = pairs_.try_emplace({width, height});
+    Pair& pair = it->second;
+    if (inserted) {
+        for (int i = 0; i < 2; ++i) {
+            pair.tex[i] = gl::Texture(GL_RGBA32F, width, height);
+            pair.fbo[i] = gl::Framebuffer::create();
+            pair.fbo[i].attach(GL_COLOR_ATTACHMENT0, pair.tex[i]);
+            pair.fbo[i].setDrawBuffers(1);
+            pair.fbo[i].check("jfa ping-pong");
+        }
+    }
+    return current == &pair.tex[0] ? pair.tex[1] : pair.tex[0];
+}
+
+void GlFloodKernel::dispatch(const gl::Texture& src, const gl::Texture& dst, int mode, int step,
+                             int scale, bool countChanges) {
+    const gl::Program& p = passProgram_;
+    p.set("uSize", glm::ivec2(dst.width(), dst.height()));
+    p.set("uSrcSize", glm::ivec2(src.width(), src.height()));
+    p.set("uStep", step);
+    p.set("uScale", scale);
+    p.set("uMode", mode);
+    p.set("uCountChanges", countChanges ? 1 : 0);
+    glBindTextureUnit(0, src.id());
+    glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, 0, changedCounter_.id());
+    glUseProgram(p.id());
+    if (kind_ == GlKernelKind::Compute) {
+        glBindImageTexture(0, dst.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+        glDispatchCompute(static_cast<GLuint>((dst.width() + 7) / 8),
+                          static_cast<GLuint>((dst.height() + 7) / 8), 1);
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_ATOMIC_COUNTER_BARRIER_BIT |
+                        GL_BUFFER_UPDATE_BARRIER_BIT);
+        glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    } else {
+        const Pair& pair = pairs_.at({dst.width(), dst.height()});
+        const gl::Framebuffer& fbo = &dst == &pair.tex[0] ? pair.fbo[0] : pair.fbo[1];
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+        glViewport(0, 0, dst.width(), dst.height());
+        glDisable(GL_DEPTH_TEST);
+        glDisable(GL_BLEND);
+        glBindVertexArray(emptyVao_.id());
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glBindVertexArray(0);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glMemoryBarrier(GL_ATOMIC_COUNTER_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    }
+    glUseProgram(0);
+    glBindTextureUnit(0, 0);
+}
+
+const gl::Texture& GlFloodKernel::runPlan(const Plan& plan, const gl::Texture& seeds,
+                                          PassTimer* timer, const PassCallback& callback) {
+    if (seeds.width() != plan.width() || seeds.height() != plan.height())
+        throw std::invalid_argument("jfa: seeds are " + std::to_string(seeds.width()) + "x" +
+                                    std::to_string(seeds.height()) + " but the plan is for " +
+                                    std::to_string(plan.width()) + "x" +
+                                    std::to_string(plan.height()));
+    if (plan.width() > kMaxGlGridExtent || plan.height() > kMaxGlGridExtent)
+        throw std::invalid_argument("jfa: GL kernels support grids up to 16384 per side");
+    passesRun_ = 0;
+    const auto& stages = plan.stages();
+    const bool halfRes = stages.size() > 1;
+    const gl::Texture* current = &seeds;
+    if (halfRes) {
+        const Stage& s0 = stages.front();
+        const gl::Texture& dst = otherTexture(s0.width, s0.height, nullptr);
+        if (timer) timer->begin("downsample");
+        dispatch(seeds, dst, 2, 0, 2, false);
+        if (timer) timer->end();
+        current = &dst;
+    }
+    bool expanded = false;
+    bool stageSettled = false; // an "until unchanged" stage saw a pass that changed nothing
+    int index = 0;
+    for (const Pass& pass : plan.passes()) {
+        if (pass.expandBefore) {
+            expanded = true;
+            stageSettled = false;
+        }
+        if (pass.untilUnchanged && stageSettled) {
+            ++index;
+            continue;
+        }
+        const int mode = pass.expandBefore ? 1 : 0;
+        const int scale = halfRes && !expanded ? 2 : 1;
+        const gl::Texture& dst = otherTexture(pass.width, pass.height, current);
+        if (pass.untilUnchanged) {
+            const GLuint zero = 0;
+            glNamedBufferSubData(changedCounter_.id(), 0, sizeof(zero), &zero);
+        }
+        if (timer) timer->begin("jfa step");
+        dispatch(*current, dst, mode, pass.step, scale, pass.untilUnchanged);
+        if (timer) timer->end();
+        ++passesRun_;
+        if (pass.untilUnchanged) {
+            GLuint changed = 0;
+            glGetNamedBufferSubData(changedCounter_.id(), 0, sizeof(changed), &changed);
+            stageSettled = changed == 0;
+        }
+        current = &dst;
+        if (callback) callback(index, pass, dst);
+        ++index;
+    }
+    if (current == &seeds) {
+        // A plan without passes (a 1x1 grid): the result is a copy of the seeds.
+        const gl::Texture& dst = otherTexture(seeds.width(), seeds.height(), nullptr);
+        glCopyImageSubData(seeds.id(), GL_TEXTURE_2D, 0, 0, 0, 0, dst.id(), GL_TEXTURE_2D, 0, 0, 0,
+                           0, seeds.width(), seeds.height(), 1);
+        current = &dst;
+    }
+    gl::throwIfErrors("jfa flood");
+    return *current;
+}
+
+} // namespace fl::jfa

@@ -1,0 +1,28 @@
+#version 450 core
+// Voronoi criterion (jfa/NearestSite.h on the CPU, which this must match bit for bit): the
+// nearest site wins; ties go to the smaller id, then the smaller y, then the smaller x.
+// Cell: xy = site position in full-resolution grid coordinates, z = id (-1 empty).
+
+uniform int uJfaIntegerSites; // 1: exact integer squared distances (grids up to 16384 wide)
+
+bool jfaEmpty(vec4 c) { return c.z < 0.0; }
+
+bool jfaBetter(ivec2 p, vec4 a, vec4 b) {
+    if (uJfaIntegerSites != 0) {
+        ivec2 da = ivec2(a.xy) - p;
+        ivec2 db = ivec2(b.xy) - p;
+        int la = da.x * da.x + da.y * da.y;
+        int lb = db.x * db.x + db.y * db.y;
+        if (la != lb) return la < lb;
+    } else {
+        // `precise`: no fused multiply-add, as on the CPU (built with -ffp-contract=off).
+        precise vec2 da = a.xy - vec2(p);
+        precise vec2 db = b.xy - vec2(p);
+        precise float la = da.x * da.x + da.y * da.y;
+        precise float lb = db.x * db.x + db.y * db.y;
+        if (la != lb) return la < lb;
+    }
+    if (a.z != b.z) return a.z < b.z;
+    if (a.y != b.y) return a.y < b.y;
+    return a.x < b.x;
+}

@@ -1,0 +1,33 @@
+#version 450 core
+// Jump-flooding kernel, compute version: the same passes as jfa_pass.frag.glsl, one invocation
+// per texel, written with imageStore.
+#include "jfa_select.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(binding = 0) uniform sampler2D uSrc;
+layout(binding = 0, rgba32f) uniform writeonly image2D uDst;
+uniform ivec2 uSize;
+uniform ivec2 uSrcSize;
+uniform int uStep;
+uniform int uScale;
+uniform int uMode;
+uniform int uCountChanges;
+layout(binding = 0, offset = 0) uniform atomic_uint uChanged;
+
+void main() {
+    ivec2 t = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(t, uSize))) return;
+    vec4 result;
+    vec4 before;
+    if (uMode == 2) {
+        result = jfaDownsample(uSrc, t, uSrcSize);
+        before = result;
+    } else {
+        int srcDiv = uMode == 1 ? 2 : 1;
+        before = texelFetch(uSrc, t / srcDiv, 0);
+        result = jfaSelect(uSrc, t, uSize, uStep, uScale, srcDiv);
+    }
+    if (uCountChanges != 0 && result != before) atomicCounterIncrement(uChanged);
+    imageStore(uDst, t, result);
+}

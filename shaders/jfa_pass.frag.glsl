@@ -1,0 +1,32 @@
+#version 450 core
+// Jump-flooding kernel, fragment version: one full-screen triangle per pass into the
+// write texture of the ping-pong pair. uMode: 0 = pass, 1 = expand then pass (uSrc is the
+// half-resolution grid), 2 = downsample full-resolution seeds to half resolution.
+#include "jfa_select.glsl"
+
+layout(binding = 0) uniform sampler2D uSrc;
+uniform ivec2 uSize;    // grid size of the stage written
+uniform ivec2 uSrcSize; // grid size of uSrc
+uniform int uStep;
+uniform int uScale;
+uniform int uMode;
+uniform int uCountChanges;
+layout(binding = 0, offset = 0) uniform atomic_uint uChanged;
+
+layout(location = 0) out vec4 oCell;
+
+void main() {
+    ivec2 t = ivec2(gl_FragCoord.xy);
+    vec4 result;
+    vec4 before;
+    if (uMode == 2) {
+        result = jfaDownsample(uSrc, t, uSrcSize);
+        before = result;
+    } else {
+        int srcDiv = uMode == 1 ? 2 : 1;
+        before = texelFetch(uSrc, t / srcDiv, 0);
+        result = jfaSelect(uSrc, t, uSize, uStep, uScale, srcDiv);
+    }
+    if (uCountChanges != 0 && result != before) atomicCounterIncrement(uChanged);
+    oCell = result;
+}

@@ -1,0 +1,51 @@
+// The heart of one jump-flooding pass, shared by the fragment and compute kernels: texel `t`
+// reads the 9 cells t + (i, j) * step, i, j in {-1, 0, 1}, that lie inside the grid, and keeps
+// the best non-empty one under the criterion (linked in from its own shader object).
+
+bool jfaEmpty(vec4 c);
+bool jfaBetter(ivec2 p, vec4 a, vec4 b);
+
+const vec4 kJfaEmptyCell = vec4(0.0, 0.0, -1.0, 0.0);
+
+// `scale`: 1 at full resolution, 2 in the half-resolution stage (texel t stands for grid
+// point t * 2, whose distances are measured in full-resolution coordinates).
+// `srcDiv`: 1 normally; 2 for the pass right after expanding the half-resolution stage, whose
+// full-resolution cell q is the half-resolution cell q / 2 (the expansion is fused into it).
+vec4 jfaSelect(sampler2D src, ivec2 t, ivec2 size, int step, int scale, int srcDiv) {
+    ivec2 p = t * scale;
+    vec4 best = kJfaEmptyCell;
+    bool have = false;
+    for (int j = -1; j <= 1; ++j) {
+        for (int i = -1; i <= 1; ++i) {
+            ivec2 q = t + ivec2(i, j) * step;
+            if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
+            vec4 c = texelFetch(src, q / srcDiv, 0);
+            if (jfaEmpty(c)) continue;
+            if (!have || jfaBetter(p, c, best)) {
+                best = c;
+                have = true;
+            }
+        }
+    }
+    return best;
+}
+
+// Half-resolution seeding: half-res texel t takes the best of full-res cells 2t .. 2t + 1.
+vec4 jfaDownsample(sampler2D full, ivec2 t, ivec2 fullSize) {
+    ivec2 p = t * 2;
+    vec4 best = kJfaEmptyCell;
+    bool have = false;
+    for (int j = 0; j <= 1; ++j) {
+        for (int i = 0; i <= 1; ++i) {
+            ivec2 q = p + ivec2(i, j);
+            if (any(greaterThanEqual(q, fullSize))) continue;
+            vec4 c = texelFetch(full, q, 0);
+            if (jfaEmpty(c)) continue;
+            if (!have || jfaBetter(p, c, best)) {
+                best = c;
+                have = true;
+            }
+        }
+    }
+    return best;
+}

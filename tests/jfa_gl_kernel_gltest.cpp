@@ -1,0 +1,75 @@
+// The GL flood kernels (fragment and compute) against the CPU kernel, texel for texel, for every
+// plan variant, integer and sub-pixel sites, and grid sizes that are not powers of two.
+
+#include "GlTest.h"
+
+#include <jfa/GlKernel.h>
+
+#include <cstdint>
+
+namespace fl::jfa {
+namespace {
+
+class JfaGlKernelTest : public test::GlTest, public ::testing::WithParamInterface<GlKernelKind> {};
+
+// Deterministic sites without depending on the CPU side's generators.
+Grid randomSeeds(int w, int h, int count, std::uint64_t seed, bool integer) {
+    Grid g(w, h);
+    std::uint64_t s = seed;
+    auto next = [&s] {
+        s += 0x9E3779B97F4A7C15ull;
+        std::uint64_t z = s;
+        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+        return z ^ (z >> 31);
+    };
+    for (int i = 0; i < count; ++i) {
+        const int x = int(next() % std::uint64_t(w)), y = int(next() % std::uint64_t(h));
+        Cell c{float(x), float(y), float(i), 0.0f};
+        if (!integer) {
+            c.x += float(next() % 1000) / 1000.0f - 0.5f;
+            c.y += float(next() % 1000) / 1000.0f - 0.5f;
+        }
+        g.at(x, y) = c; // a later site on the same pixel replaces the earlier one
+    }
+    return g;
+}
+
+TEST_P(JfaGlKernelTest, OneSeedFillsAnyGrid) {
+    const ShaderLibrary shaders;
+    GlFloodKernel kernel(shaders, NearestSite::glslFile, GetParam());
+    for (auto [w, h] : {std::pair{1, 1}, {2, 1}, {7, 3}, {64, 64}, {300, 200}, {513, 7}}) {
+        for (const char* spec : {"jfa", "1+jfa", "half:jfa", "doubling"}) {
+            Grid seeds(w, h);
+            seeds.at(w - 1, 0) = Cell{float(w - 1), 0.0f, 5.0f, 0.0f};
+            const Grid out = kernel.run(parsePlan(spec, w, h), seeds, NearestSite{});
+            ASSERT_EQ(out.width, w);
+            for (const Cell& c : out.cells)
+                ASSERT_EQ(c, seeds.at(w - 1, 0)) << spec << " " << w << "x" << h;
+        }
+    }
+}
+
+TEST_P(JfaGlKernelTest, FragmentAndComputeAgree) {
+    const ShaderLibrary shaders;
+    GlFloodKernel kernel(shaders, NearestSite::glslFile, GetParam());
+    const GlKernelKind other =
+        GetParam() == GlKernelKind::Fragment ? GlKernelKind::Compute : GlKernelKind::Fragment;
+    GlFloodKernel reference(shaders, NearestSite::glslFile, other);
+    for (bool integer : {true, false}) {
+        const Grid seeds = randomSeeds(200, 150, 60, 7, integer);
+        for (const char* spec : {"jfa", "jfa+2", "1+jfa", "half:jfa+2", "flood", "flood:20"}) {
+            const Plan plan = parsePlan(spec, 200, 150);
+            const NearestSite crit{integer};
+            EXPECT_TRUE(kernel.run(plan, seeds, crit) == reference.run(plan, seeds, crit))
+                << spec << (integer ? " integer" : " float");
+        }
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Kinds, JfaGlKernelTest,
+                         ::testing::Values(GlKernelKind::Fragment, GlKernelKind::Compute),
+                         [](const auto& p) { return std::string(kernelName(p.param)); });
+
+} // namespace
+} // namespace fl::jfa
