@@ -107,5 +107,34 @@ TEST(Cli, UnwritableOutputIsAnErrorWithoutPartialFiles) {
     EXPECT_NE(r.output.find("not_a_folder"), std::string::npos) << r.output;
 }
 
+TEST(Cli, VoronoiWritesDiagramAndReportsErrors) {
+    const auto dir = outputDir("cli_voronoi");
+    const Outcome r = run("voronoi --sites 50 --width 64 --height 48 --plan 1+jfa --out " +
+                          dir.string() + " --name v");
+    ASSERT_EQ(r.code, 0) << r.output;
+    EXPECT_NE(r.output.find("1+JFA on 64x48"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("error pixels"), std::string::npos) << r.output;
+    EXPECT_EQ(readPng(dir / "v.png").width, 64);
+    int w = 0, h = 0;
+    EXPECT_EQ(readExr(dir / "v.exr", w, h).size(), 6u);
+}
+
+TEST(Cli, VoronoiBadInput) {
+    const auto bad = outputDir("cli") / "bad_points.txt";
+    std::ofstream(bad) << "1 2\n3 oops\n";
+    Outcome r = run("voronoi --backend cpu --points " + bad.string() + " --out " +
+                    outputDir("cli").string());
+    EXPECT_EQ(r.code, 1) << r.output;
+    EXPECT_NE(r.output.find("bad_points.txt:2"), std::string::npos) << r.output;
+    r = run("voronoi --backend cpu --plan jfa+x --out " + outputDir("cli").string());
+    EXPECT_EQ(r.code, 1) << r.output;
+    EXPECT_NE(r.output.find("--plan"), std::string::npos) << r.output;
+    const auto outside = outputDir("cli") / "outside.txt";
+    std::ofstream(outside) << "10 10\n600 3\n";
+    r = run("voronoi --backend cpu --width 64 --height 64 --points " + outside.string() +
+            " --out " + outputDir("cli").string());
+    EXPECT_EQ(r.code, 1) << r.output;
+}
+
 } // namespace
 } // namespace fl::test

@@ -3,7 +3,9 @@
 
 #include "GlTest.h"
 
+#include <jfa/CpuKernel.h>
 #include <jfa/GlKernel.h>
+#include <jfa/Sites.h>
 
 #include <cstdint>
 
@@ -65,6 +67,46 @@ TEST_P(JfaGlKernelTest, FragmentAndComputeAgree) {
                 << spec << (integer ? " integer" : " float");
         }
     }
+}
+
+// The reason the GL kernels exist twice: for the same plan, criterion and input the GPU result
+// equals the CPU reference kernel's in every texel (all four floats), for every variant.
+TEST_P(JfaGlKernelTest, EqualsCpuKernelTexelForTexel) {
+    const ShaderLibrary shaders;
+    GlFloodKernel kernel(shaders, NearestSite::glslFile, GetParam());
+    const char* specs[] = {"jfa",      "jfa+1",    "jfa+2", "jfa2",     "1+jfa",      "1+jfa+1",
+                           "doubling", "flood:12", "flood", "half:jfa", "half:jfa+2", "half:1+jfa"};
+    for (auto [w, h, sites] : {std::tuple{128, 128, 40}, {200, 150, 300}, {97, 61, 25}}) {
+        for (bool integer : {true, false}) {
+            const std::vector<Site> points =
+                integer ? randomIntegerSites(sites, w, h, 11) : randomFloatSites(sites, w, h, 11);
+            const Grid seeds = seedPoints(points, w, h, integer).grid;
+            const NearestSite crit{integer};
+            for (const char* spec : specs) {
+                const Plan plan = parsePlan(spec, w, h);
+                const Grid cpu = flood(plan, seeds, crit);
+                const Grid gpu = kernel.run(plan, seeds, crit);
+                ASSERT_EQ(gpu.cells.size(), cpu.cells.size());
+                size_t differing = 0;
+                for (size_t i = 0; i < cpu.cells.size(); ++i)
+                    differing += !(cpu.cells[i] == gpu.cells[i]);
+                EXPECT_EQ(differing, 0u)
+                    << spec << " " << w << "x" << h << (integer ? " integer" : " float");
+            }
+        }
+    }
+}
+
+TEST_P(JfaGlKernelTest, UntilUnchangedStopsWhenTheCpuKernelDoes) {
+    const ShaderLibrary shaders;
+    GlFloodKernel kernel(shaders, NearestSite::glslFile, GetParam());
+    const Grid seeds = seedPoints(randomIntegerSites(30, 90, 70, 3), 90, 70, true).grid;
+    const Plan plan = parsePlan("flood", 90, 70);
+    const FloodResult cpu = floodWithStats(plan, seeds, NearestSite{});
+    const Grid gpu = kernel.run(plan, seeds, NearestSite{});
+    EXPECT_EQ(kernel.passesRun(), cpu.passesRun());
+    EXPECT_LT(kernel.passesRun(), plan.passCount());
+    EXPECT_TRUE(gpu == cpu.grid);
 }
 
 INSTANTIATE_TEST_SUITE_P(Kinds, JfaGlKernelTest,

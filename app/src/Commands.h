@@ -13,6 +13,8 @@ using Runner = std::function<int()>;
 Runner addRenderCommand(CLI::App& app);
 /// `floodlight view`: the interactive window.
 Runner addViewCommand(CLI::App& app);
+/// `floodlight voronoi`: jump-flooded Voronoi diagrams and distance transforms with errors.
+Runner addVoronoiCommand(CLI::App& app);
 /// `floodlight make-scene`: writes a generated scene as .glb.
 Runner addMakeSceneCommand(CLI::App& app);
 

@@ -1,10 +1,10 @@
 #pragma once
 // Options and helpers shared by the subcommands.
 
+#include <gpu/ShaderLibrary.h>
 #include <renderer/GltfLoader.h>
 #include <renderer/Renderer.h>
 #include <renderer/Scene.h>
-#include <gpu/ShaderLibrary.h>
 
 #include <CLI/CLI.hpp>
 

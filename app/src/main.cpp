@@ -3,8 +3,8 @@
 
 #include "Commands.h"
 
-#include <renderer/GlfwWindow.h>
 #include <gpu/Gl.h>
+#include <renderer/GlfwWindow.h>
 
 #include <iostream>
 
@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
     const Runner render = addRenderCommand(app);
     const Runner view = addViewCommand(app);
     const Runner makeScene = addMakeSceneCommand(app);
+    const Runner voronoi = addVoronoiCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -27,6 +28,7 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("render")) return render();
         if (app.got_subcommand("view")) return view();
         if (app.got_subcommand("make-scene")) return makeScene();
+        if (app.got_subcommand("voronoi")) return voronoi();
         const SceneOptions defaults;
         if (fl::displayAvailable()) {
             try {

@@ -1,0 +1,300 @@
+// `floodlight voronoi`: Voronoi diagrams and distance transforms by jump flooding (thesis ch. 4),
+// on the GPU or the CPU, with errors counted against the exact diagram.
+
+#include "Commands.h"
+
+#include <renderer/EglContext.h>
+#include <renderer/ImageIO.h>
+
+#include <jfa/CpuKernel.h>
+#include <jfa/DistanceTransform.h>
+#include <jfa/ErrorAnalysis.h>
+#include <jfa/GlKernel.h>
+#include <jfa/Reference.h>
+#include <jfa/Sites.h>
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+namespace fl::app {
+
+namespace {
+
+struct VoronoiOptions {
+    int width = 512, height = 512;
+    int sites = 100;
+    std::uint64_t seed = 1;
+    bool floatSites = false;
+    std::string points, mask, labels;
+    std::string plan = "jfa";
+    std::string backend = "gl";
+    std::string kernel = "fragment";
+    bool compare = false;
+    std::string out = "captures";
+    std::string name = "voronoi";
+    std::string shaderDir;
+};
+
+// Reads "x y" per line (blank lines and # comments skipped); names file and line on errors.
+std::vector<jfa::Site> readPoints(const std::string& file) {
+    std::ifstream in(file);
+    if (!in) throw InputError(file + ": cannot read point file");
+    std::vector<jfa::Site> out;
+    std::string line;
+    for (int n = 1; std::getline(in, line); ++n) {
+        if (line.find_first_not_of(" \t\r") == std::string::npos || line[0] == '#') continue;
+        std::istringstream s(line);
+        double x = 0, y = 0;
+        if (!(s >> x >> y) || !std::isfinite(x) || !std::isfinite(y))
+            throw InputError(file + ":" + std::to_string(n) +
+                             ": expected two finite numbers 'x y'");
+        out.push_back({float(x), float(y)});
+    }
+    if (out.empty()) throw InputError(file + ": no points");
+    return out;
+}
+
+struct Input {
+    jfa::Grid seeds;
+    bool integer = true;
+    std::vector<std::uint8_t> mask; // for masks: the binary image (distance transforms)
+    std::string what;
+};
+
+Input makeInput(const VoronoiOptions& o) {
+    Input in;
+    if (!o.mask.empty()) {
+        const ByteImage img = [&] {
+            try {
+                return readPng(o.mask);
+            } catch (const std::exception& e) {
+                throw InputError(e.what());
+            }
+        }();
+        in.mask.resize(size_t(img.width) * size_t(img.height));
+        // PNG row 0 is the top; grid row 0 is y = 0: flip so the picture reads the same way.
+        for (int y = 0; y < img.height; ++y)
+            for (int x = 0; x < img.width; ++x)
+                in.mask[size_t(img.height - 1 - y) * size_t(img.width) + size_t(x)] =
+                    img.data[(size_t(y) * size_t(img.width) + size_t(x)) * 4] > 127;
+        std::vector<std::int32_t> labels;
+        if (!o.labels.empty()) {
+            const ByteImage lab = readPng(o.labels);
+            if (lab.width != img.width || lab.height != img.height)
+                throw InputError(o.labels + ": label image size differs from the mask's");
+            std::map<std::uint32_t, std::int32_t> ids; // colour -> id, in order of appearance
+            labels.resize(in.mask.size());
+            for (int y = 0; y < lab.height; ++y)
+                for (int x = 0; x < lab.width; ++x) {
+                    const std::uint8_t* p =
+                        &lab.data[(size_t(y) * size_t(lab.width) + size_t(x)) * 4];
+                    const std::uint32_t rgb =
+                        std::uint32_t(p[0]) << 16 | std::uint32_t(p[1]) << 8 | p[2];
+                    auto [it, added] = ids.try_emplace(rgb, std::int32_t(ids.size()));
+                    labels[size_t(lab.height - 1 - y) * size_t(lab.width) + size_t(x)] = it->second;
+                }
+        }
+        in.seeds =
+            jfa::seedMask(in.mask, img.width, img.height, labels.empty() ? nullptr : &labels);
+        in.what =
+            o.mask + " (" + std::to_string(img.width) + "x" + std::to_string(img.height) + ")";
+        return in;
+    }
+    std::vector<jfa::Site> sites;
+    if (!o.points.empty())
+        sites = readPoints(o.points);
+    else if (o.floatSites)
+        sites = jfa::randomFloatSites(o.sites, o.width, o.height, o.seed);
+    else
+        sites = jfa::randomIntegerSites(o.sites, o.width, o.height, o.seed);
+    in.integer = !o.floatSites;
+    try {
+        const jfa::SeedResult r = jfa::seedPoints(sites, o.width, o.height, in.integer);
+        in.seeds = r.grid;
+        if (!r.missing.empty())
+            std::cerr << "note: " << r.missing.size()
+                      << " site(s) share a pixel with a nearer site "
+                      << "and are not flooded (first: site " << r.missing.front() << ")\n";
+    } catch (const std::invalid_argument& e) {
+        throw InputError((o.points.empty() ? std::string("sites") : o.points) + ": " + e.what());
+    }
+    in.what = std::to_string(sites.size()) + (in.integer ? " integer" : " sub-pixel") + " sites";
+    return in;
+}
+
+struct Run {
+    jfa::Grid grid;
+    double ms = 0;
+};
+
+Run flood(const VoronoiOptions& o, const jfa::Plan& plan, const jfa::Grid& seeds,
+          const jfa::NearestSite& crit, jfa::GlFloodKernel* gl) {
+    Run r;
+    if (gl) {
+        const gl::Texture in = jfa::uploadGrid(seeds);
+        gl->run(plan, in, crit); // warm-up: shader compilation and allocation are not the flood
+        glFinish();
+        const auto t0 = std::chrono::steady_clock::now();
+        const gl::Texture& out = gl->run(plan, in, crit);
+        glFinish();
+        r.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                   .count();
+        r.grid = jfa::readGrid(out);
+    } else {
+        const auto t0 = std::chrono::steady_clock::now();
+        r.grid = jfa::flood(plan, seeds, crit);
+        r.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                   .count();
+    }
+    (void)o;
+    return r;
+}
+
+std::array<std::uint8_t, 3> colourOf(float id) {
+    std::uint32_t h = std::uint32_t(std::max(id, 0.0f)) * 2654435761u;
+    h ^= h >> 15;
+    return {std::uint8_t(64 + (h & 0x7f)), std::uint8_t(64 + ((h >> 8) & 0x7f)),
+            std::uint8_t(64 + ((h >> 16) & 0x7f))};
+}
+
+void writeOutputs(const VoronoiOptions& o, const jfa::Grid& g, const jfa::ExactField& exact,
+                  const std::vector<std::uint8_t>& errors, const jfa::NearestSite& crit) {
+    const int w = g.width, h = g.height;
+    ByteImage pic{w, h, 4, std::vector<std::uint8_t>(size_t(w) * size_t(h) * 4)};
+    std::vector<ExrChannel> ch{{"site.x", {}},   {"site.y", {}},         {"site.id", {}},
+                               {"distance", {}}, {"exact_distance", {}}, {"error", {}}};
+    for (auto& c : ch) c.values.resize(size_t(w) * size_t(h));
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            const size_t src = size_t(y) * size_t(w) + size_t(x);
+            const size_t dst = size_t(h - 1 - y) * size_t(w) + size_t(x); // files: top row first
+            const jfa::Cell& c = g.cells[src];
+            auto rgb = colourOf(c.z);
+            if (errors[src]) rgb = {255, 0, 0};
+            if (!crit.empty(c) && jfa::pixelOf(c.x) == x && jfa::pixelOf(c.y) == y) rgb = {0, 0, 0};
+            for (int k = 0; k < 3; ++k) pic.data[dst * 4 + size_t(k)] = rgb[size_t(k)];
+            pic.data[dst * 4 + 3] = 255;
+            ch[0].values[dst] = c.x;
+            ch[1].values[dst] = c.y;
+            ch[2].values[dst] = c.z;
+            ch[3].values[dst] =
+                crit.empty(c) ? 0.0f : float(std::sqrt(jfa::squaredDistance(crit, x, y, c)));
+            ch[4].values[dst] = float(std::sqrt(exact.at(x, y)));
+            ch[5].values[dst] = errors[src] ? 1.0f : 0.0f;
+        }
+    }
+    const std::filesystem::path dir = o.out;
+    writePng(dir / (o.name + ".png"), pic);
+    std::vector<ExrChannel> exr;
+    for (auto& c : ch) exr.push_back({c.name, std::move(c.values)});
+    writeExr(dir / (o.name + ".exr"), w, h, exr);
+    std::cout << "wrote " << (dir / (o.name + ".png")).string()
+              << " (regions by site, sites black, "
+              << "errors red)\nwrote " << (dir / (o.name + ".exr")).string()
+              << " (site.x, site.y, site.id, distance, exact_distance, error)\n";
+}
+
+int runVoronoi(const VoronoiOptions& o) {
+    const Input in = makeInput(o);
+    const int w = in.seeds.width, h = in.seeds.height;
+    const jfa::NearestSite crit{in.integer};
+    const jfa::ExactField exact = jfa::exactNearest(in.seeds, crit);
+    const std::vector<jfa::Cell> siteList = jfa::siteCells(in.seeds);
+    const jfa::ExactDiagramView view{w, h, siteList, exact.distSq, in.integer};
+
+    std::unique_ptr<EglContext> ctx;
+    std::unique_ptr<ShaderLibrary> shaders;
+    std::unique_ptr<jfa::GlFloodKernel> kernel;
+    if (o.backend == "gl") {
+        ctx = EglContext::create();
+        shaders = std::make_unique<ShaderLibrary>(o.shaderDir.empty() ? ShaderLibrary()
+                                                                      : ShaderLibrary(o.shaderDir));
+        kernel = std::make_unique<jfa::GlFloodKernel>(
+            *shaders, jfa::NearestSite::glslFile,
+            o.kernel == "compute" ? jfa::GlKernelKind::Compute : jfa::GlKernelKind::Fragment);
+    }
+    const std::string backend = o.backend == "gl" ? "GL " + o.kernel : std::string("CPU");
+    std::cout << "input: " << in.what << " on " << w << "x" << h << ", backend " << backend << "\n";
+
+    std::vector<std::string> specs{o.plan};
+    if (o.compare)
+        specs = {"jfa",     "jfa+1",    "jfa+2",    "jfa2",       "1+jfa",
+                 "1+jfa+1", "doubling", "half:jfa", "half:jfa+2", "flood"};
+    for (const std::string& spec : specs) {
+        jfa::Plan plan = [&] {
+            try {
+                return jfa::parsePlan(spec, w, h);
+            } catch (const std::invalid_argument& e) {
+                throw InputError(std::string("--plan: ") + e.what());
+            }
+        }();
+        const Run r = flood(o, plan, in.seeds, crit, kernel.get());
+        const jfa::ErrorReport rep = jfa::analyzeErrors(r.grid, view, plan.name());
+        std::cout << std::fixed << std::setprecision(2) << plan.describe() << "\n  " << r.ms
+                  << " ms; " << rep.describe() << "\n"
+                  << std::defaultfloat;
+        if (!o.compare) writeOutputs(o, r.grid, exact, jfa::errorPixelMask(r.grid, view), crit);
+    }
+    if (!in.mask.empty() && !o.compare) {
+        // Distance transforms of the mask on the CPU kernel, against the exact ones.
+        const jfa::Plan plan = jfa::parsePlan(o.plan, w, h);
+        const jfa::DistanceField sd = jfa::signedDistanceTransform(in.mask, w, h, plan);
+        const jfa::DistanceField ex = jfa::exactSignedDistanceTransform(in.mask, w, h);
+        std::cout << "signed distance transform (" << plan.name()
+                  << ", CPU): " << jfa::countDifferences(sd, ex)
+                  << " pixels differ from the exact one\n";
+        std::vector<float> flipped(sd.values.size());
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x)
+                flipped[size_t(h - 1 - y) * size_t(w) + size_t(x)] = sd.at(x, y);
+        const auto path = std::filesystem::path(o.out) / (o.name + ".sdf.exr");
+        writeExr(path, w, h, {{"signed_distance", flipped}});
+        std::cout << "wrote " << path.string() << " (negative inside the mask)\n";
+    }
+    return 0;
+}
+
+} // namespace
+
+Runner addVoronoiCommand(CLI::App& app) {
+    CLI::App* cmd = app.add_subcommand(
+        "voronoi", "Voronoi diagram / distance transform by jump flooding, errors vs exact");
+    auto o = std::make_shared<VoronoiOptions>();
+    cmd->add_option("--width", o->width, "Grid width")
+        ->check(CLI::Range(1, 16384))
+        ->capture_default_str();
+    cmd->add_option("--height", o->height, "Grid height")
+        ->check(CLI::Range(1, 16384))
+        ->capture_default_str();
+    cmd->add_option("--sites", o->sites, "Random sites")
+        ->check(CLI::Range(1, 1 << 24))
+        ->capture_default_str();
+    cmd->add_option("--seed", o->seed, "Random seed")->capture_default_str();
+    cmd->add_flag("--float-sites", o->floatSites, "Sub-pixel random sites (float distances)");
+    cmd->add_option("--points", o->points, "Text file of sites, 'x y' per line (grid coordinates)");
+    cmd->add_option("--mask", o->mask,
+                    "PNG whose bright pixels are generalized sites (sets the size)");
+    cmd->add_option("--labels", o->labels, "PNG giving each mask pixel a region id by colour");
+    cmd->add_option("--plan", o->plan,
+                    "Flood plan: jfa, jfa+1, jfa+2, jfa2, 1+jfa, 1+jfa+1, doubling, "
+                    "flood, flood:N, half:jfa, half:jfa+2, ...")
+        ->capture_default_str();
+    cmd->add_option("--backend", o->backend, "gl or cpu")
+        ->check(CLI::IsMember({"gl", "cpu"}))
+        ->capture_default_str();
+    cmd->add_option("--kernel", o->kernel, "GL kernel: fragment or compute")
+        ->check(CLI::IsMember({"fragment", "compute"}))
+        ->capture_default_str();
+    cmd->add_flag("--compare", o->compare, "Run every variant and print times and errors");
+    cmd->add_option("--out", o->out, "Output folder")->capture_default_str();
+    cmd->add_option("--name", o->name, "Output name stem")->capture_default_str();
+    cmd->add_option("--shader-dir", o->shaderDir, "Load shaders from this folder");
+    return [o] { return runVoronoi(*o); };
+}
+
+} // namespace fl::app

@@ -1,0 +1,114 @@
+// GL jump flooding: fragment vs compute kernels, JFA vs standard flooding, few vs many sites.
+// Every configuration runs --runs times in one process and context; min and median reported,
+// with ratios taken between medians measured side by side in this same run.
+
+#include <renderer/EglContext.h>
+
+#include <jfa/GlKernel.h>
+#include <jfa/Sites.h>
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <iomanip>
+#include <iostream>
+
+namespace {
+
+using namespace fl;
+using Clock = std::chrono::steady_clock;
+
+struct Timing {
+    double min = 0, median = 0;
+};
+
+Timing timeRuns(int runs, const std::function<void()>& f) {
+    std::vector<double> ms;
+    f(); // warm-up: shader compilation, texture allocation
+    for (int i = 0; i < runs; ++i) {
+        glFinish();
+        const auto t0 = Clock::now();
+        f();
+        glFinish();
+        ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
+    }
+    std::sort(ms.begin(), ms.end());
+    return {ms.front(),
+            ms.size() % 2 ? ms[ms.size() / 2] : 0.5 * (ms[ms.size() / 2 - 1] + ms[ms.size() / 2])};
+}
+
+void row(const std::string& what, const Timing& t, int passes) {
+    std::cout << "  " << std::left << std::setw(44) << what << std::right << std::fixed
+              << std::setprecision(2) << " min " << std::setw(9) << t.min << " ms  median "
+              << std::setw(9) << t.median << " ms  (" << passes << " passes, "
+              << t.median / std::max(passes, 1) << " ms/pass)\n";
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"jfa_bench: GL flooding kernels (fragment vs compute, JFA vs standard flooding)"};
+    int size = 512, runs = 5, floodRuns = 3;
+    app.add_option("--size", size, "Grid side")->check(CLI::Range(8, 4096))->capture_default_str();
+    app.add_option("--runs", runs, "Timed runs per configuration")
+        ->check(CLI::Range(1, 1000))
+        ->capture_default_str();
+    app.add_option("--flood-runs", floodRuns, "Timed runs of the (slow) standard flooding")
+        ->check(CLI::Range(1, 1000))
+        ->capture_default_str();
+    CLI11_PARSE(app, argc, argv);
+    try {
+        auto ctx = EglContext::create(false);
+        std::cout << "context: " << ctx->description() << "\n"
+                  << "grid " << size << "x" << size << ", " << runs
+                  << " runs each (min / median), glFinish wall time\n";
+        const ShaderLibrary shaders;
+        const jfa::NearestSite crit{true};
+        std::map<std::string, double> median;
+        for (jfa::GlKernelKind kind : {jfa::GlKernelKind::Fragment, jfa::GlKernelKind::Compute}) {
+            jfa::GlFloodKernel kernel(shaders, jfa::NearestSite::glslFile, kind);
+            const std::string k = jfa::kernelName(kind);
+            for (int sites : {100, 10000}) {
+                const jfa::Grid seeds =
+                    jfa::seedPoints(jfa::randomIntegerSites(sites, size, size, 1), size, size, true)
+                        .grid;
+                const gl::Texture in = jfa::uploadGrid(seeds);
+                for (const char* spec : {"jfa", "1+jfa", "jfa+2", "half:jfa+2"}) {
+                    const jfa::Plan plan = jfa::parsePlan(spec, size, size);
+                    const Timing t = timeRuns(runs, [&] { kernel.run(plan, in, crit); });
+                    const std::string name =
+                        k + " " + plan.name() + ", " + std::to_string(sites) + " sites";
+                    row(name, t, plan.passCount());
+                    median[name] = t.median;
+                }
+            }
+            // Standard flooding as many passes as JFA reaches: n - 1 (all step 1).
+            const jfa::Grid seeds =
+                jfa::seedPoints(jfa::randomIntegerSites(100, size, size, 1), size, size, true).grid;
+            const gl::Texture in = jfa::uploadGrid(seeds);
+            const jfa::Plan flood = jfa::Plan::flood(size - 1, size, size);
+            const Timing t = timeRuns(floodRuns, [&] { kernel.run(flood, in, crit); });
+            const std::string name = k + " " + flood.name() + ", 100 sites";
+            row(name, t, flood.passCount());
+            median[name] = t.median;
+        }
+        auto ratio = [&](const std::string& a, const std::string& b) {
+            std::cout << "  " << a << " / " << b << " = " << std::setprecision(3)
+                      << median.at(a) / median.at(b) << "\n";
+        };
+        std::cout << "ratios of medians:\n";
+        const std::string floodName = jfa::Plan::flood(size - 1, size, size).name();
+        for (const char* k : {"fragment", "compute"}) {
+            ratio(std::string(k) + " " + floodName + ", 100 sites",
+                  std::string(k) + " JFA, 100 sites");
+            ratio(std::string(k) + " JFA, 10000 sites", std::string(k) + " JFA, 100 sites");
+        }
+        ratio("compute JFA, 100 sites", "fragment JFA, 100 sites");
+        ratio("compute JFA, 10000 sites", "fragment JFA, 10000 sites");
+    } catch (const std::exception& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return 1;
+    }
+    return 0;
+}
