@@ -110,6 +110,11 @@ const gl::Texture& GlFloodKernel::runPlan(const Plan& plan, const gl::Texture& s
         throw std::invalid_argument("jfa: GL kernels support grids up to 16384 per side");
     passesRun_ = 0;
     const auto& stages = plan.stages();
+    // The thesis' variants have one half-resolution stage at most; deeper pyramids would need a
+    // scale-4+ downsample the kernels do not implement.
+    if (stages.size() > 2)
+        throw std::invalid_argument("jfa: GL kernels run plans of at most two stages, got " +
+                                    std::to_string(stages.size()));
     const bool halfRes = stages.size() > 1;
     const gl::Texture* current = &seeds;
     if (halfRes) {

@@ -1,0 +1,219 @@
+#pragma once
+// The CPU flood kernel: runs a Plan with a Criterion on a Grid, rows split among std::threads.
+// It is the reference the GL kernels (jfa/GlKernel.h) replicate texel for texel, so its
+// semantics are spelled out exactly here.
+//
+// Semantics of flood(plan, fullResSeeds, criterion):
+//  * Grids. Stage s of a plan with S stages has scale 2^(S-1-s) (1 = full resolution; the
+//    half-resolution stage of the thesis' "halve resolution" variant has scale 2). Texel (x, y)
+//    of a stage grid stands for the full-resolution grid point gridPoint(x, y, scale) =
+//    (x * scale, y * scale); every better() call is made at that point.
+//  * Seeding. `fullResSeeds` must be plan.width() x plan.height(). If the first stage has scale
+//    1 it is copied as is. Otherwise it is downsampled: texel (x, y) of the first stage takes the
+//    best non-empty cell among the full-resolution cells (x*scale + i, y*scale + j),
+//    0 <= i, j < scale, that exist (a grid with odd W or H has partial blocks), judged at grid
+//    point (x*scale, y*scale); kEmptyCell if all of them are empty. For the usual two-stage
+//    half-resolution plan that is the 2x2 block (2x..2x+1, 2y..2y+1) at grid point (2x, 2y).
+//  * A pass with step k writes texel (x, y) of its stage grid from the grid of the previous pass
+//    (ping-pong; never in place). Candidates are the cells at (x + i*k, y + j*k), i, j in
+//    {-1, 0, 1}, that lie inside the stage grid (outside ones are skipped, no clamping or
+//    wrapping). The result is the best non-empty candidate under
+//    criterion.better(p.x, p.y, a, b), p = gridPoint(x, y, scale); kEmptyCell if all candidates
+//    are empty. Candidates are read j = -1, 0, 1 (outer) and i = -1, 0, 1 (inner) and a later
+//    one replaces the best so far only if strictly better, so with a strict total order (as the
+//    Criterion concept demands) the reading order does not matter.
+//  * Expansion (Pass::expandBefore, the first pass of every stage after the first): full-
+//    resolution texel (x, y) first takes the previous stage's cell (x / 2, y / 2) (integer
+//    division; the cell is copied verbatim), then the pass runs on the expanded grid. The full-
+//    resolution seeds are not read again: a seed that was not its block's pick is gone (so a
+//    half-resolution distance transform is not 0 on every feature pixel).
+//  * Changed texels. A pass changes texel (x, y) if the cell it writes differs (Cell::operator==,
+//    float comparison of all four components) from the cell that texel held before the pass (for
+//    an expanding pass: the expanded cell). Counted for every pass.
+//  * Until unchanged (Stage::untilUnchanged): after the first pass of such a stage that changes no
+//    texel, the stage's remaining passes are skipped (its step count is the cap). Skipped passes
+//    are not run and not reported; later stages still run.
+//  * Result: the full-resolution grid after the last pass run (the seeded grid if the plan has
+//    no passes at all; a stage after the first always has at least one pass).
+//  * Threads. Each pass splits the stage's rows into min(threads, rows) contiguous bands, one per
+//    thread; every texel depends only on the previous grid, so results are identical for every
+//    thread count.
+
+#include <jfa/Grid.h>
+#include <jfa/Plan.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace fl::jfa {
+
+/// The cell a texel holds when no candidate is non-empty (the GL kernels' kJfaEmptyCell).
+inline constexpr Cell kEmptyCell{0.0f, 0.0f, -1.0f, 0.0f};
+
+/// How flood() runs.
+struct FloodOptions {
+    /// Worker threads per pass; 0 = std::thread::hardware_concurrency() (at least 1).
+    int threads = 0;
+    /// Called on the calling thread after every pass that runs, with the pass' index in
+    /// plan.passes(), the pass and the grid it wrote (valid only during the call).
+    std::function<void(int passIndex, const Pass& pass, const Grid& after)> onPass;
+};
+
+/// What one executed pass did.
+struct PassStats {
+    int passIndex = 0; // index in plan.passes()
+    Pass pass;
+    std::int64_t changed = 0; // texels whose cell differs from the one they held before the pass
+};
+
+/// A flood's full-resolution result plus one entry per executed pass, in execution order.
+struct FloodResult {
+    Grid grid;
+    std::vector<PassStats> passes;
+    /// Number of passes actually run (less than plan.passCount() if an until-unchanged stage
+    /// stopped early).
+    [[nodiscard]] int passesRun() const { return static_cast<int>(passes.size()); }
+};
+
+/// Resolves a thread count: 0 -> hardware_concurrency() (at least 1); negative throws.
+int resolveThreads(int threads);
+
+/// Number of row bands a pass over `rows` rows uses: min(resolveThreads(threads), rows), >= 1.
+int bandCount(int rows, int threads);
+
+/// Runs body(rowBegin, rowEnd, band) over rows [0, rows) split into bandCount(rows, threads)
+/// contiguous bands, each on its own thread (band 0 on the caller's); rethrows the first exception.
+void parallelRows(int rows, int threads, const std::function<void(int, int, int)>& body);
+
+/// Scale (1, 2, 4, ...) of a plan's stage: 2^(stage count - 1 - stageIndex).
+int stageScale(const Plan& plan, std::size_t stageIndex);
+
+/// Downsamples full-resolution seeds to the grid of a stage at `scale` (see the header comment).
+template <Criterion C>
+Grid downsample(const Grid& full, int scale, const C& criterion) {
+    if (scale == 1) return full;
+    const int w = (full.width + scale - 1) / scale, h = (full.height + scale - 1) / scale;
+    Grid out(w, h, kEmptyCell);
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            const int px = x * scale, py = y * scale;
+            const Cell* best = nullptr;
+            for (int j = 0; j < scale && py + j < full.height; ++j) {
+                for (int i = 0; i < scale && px + i < full.width; ++i) {
+                    const Cell& c = full.at(px + i, py + j);
+                    if (criterion.empty(c)) continue;
+                    if (best == nullptr || criterion.better(px, py, c, *best)) best = &c;
+                }
+            }
+            if (best != nullptr) out.at(x, y) = *best;
+        }
+    }
+    return out;
+}
+
+/// Expands a grid 2x into width x height: texel (x, y) takes cell (x / 2, y / 2) verbatim.
+/// Requires grid.width == ceil(width / 2) and grid.height == ceil(height / 2).
+Grid expand(const Grid& grid, int width, int height);
+
+/// Runs one pass of step `step` from `src` into `dst` (resized to src's size; must not be src)
+/// for a stage at `scale`; returns the number of changed texels (compared with src).
+template <Criterion C>
+std::int64_t runPass(const Grid& src, Grid& dst, int step, int scale, const C& criterion,
+                     int threads) {
+    const int w = src.width, h = src.height;
+    dst.width = w;
+    dst.height = h;
+    dst.cells.resize(src.cells.size());
+    std::vector<std::int64_t> changedPerBand(static_cast<std::size_t>(bandCount(h, threads)), 0);
+    parallelRows(h, threads, [&](int rowBegin, int rowEnd, int band) {
+        std::int64_t changed = 0;
+        for (int y = rowBegin; y < rowEnd; ++y) {
+            const int py = y * scale;
+            // Rows y - step, y, y + step that exist, in reading order (j = -1, 0, 1).
+            const Cell* own = &src.cells[std::size_t(y) * std::size_t(w)];
+            const Cell* rows[3];
+            int rowCount = 0;
+            if (y >= step) rows[rowCount++] = own - std::size_t(step) * std::size_t(w);
+            rows[rowCount++] = own;
+            if (step < h - y) rows[rowCount++] = own + std::size_t(step) * std::size_t(w);
+            for (int x = 0; x < w; ++x) {
+                const int px = x * scale;
+                const bool left = x >= step, right = step < w - x;
+                const Cell* best = nullptr;
+                auto offer = [&](const Cell& c) {
+                    if (!criterion.empty(c) &&
+                        (best == nullptr || criterion.better(px, py, c, *best)))
+                        best = &c;
+                };
+                for (int r = 0; r < rowCount; ++r) { // i = -1, 0, 1 within each row
+                    const Cell* row = rows[r];
+                    if (left) offer(row[x - step]);
+                    offer(row[x]);
+                    if (right) offer(row[x + step]);
+                }
+                const Cell result = best != nullptr ? *best : kEmptyCell;
+                if (!(result == own[x])) ++changed;
+                dst.cells[std::size_t(y) * std::size_t(w) + std::size_t(x)] = result;
+            }
+        }
+        changedPerBand[static_cast<std::size_t>(band)] = changed;
+    });
+    std::int64_t total = 0;
+    for (std::int64_t c : changedPerBand) total += c;
+    return total;
+}
+
+/// Runs `plan` on full-resolution seeds with `criterion`; returns the result and per-pass stats.
+/// Throws std::invalid_argument if the seeds are not plan.width() x plan.height().
+template <Criterion C>
+FloodResult floodWithStats(const Plan& plan, const Grid& fullResSeeds, const C& criterion,
+                           const FloodOptions& options = {}) {
+    if (fullResSeeds.width != plan.width() || fullResSeeds.height != plan.height() ||
+        fullResSeeds.cells.size() !=
+            std::size_t(fullResSeeds.width) * std::size_t(fullResSeeds.height)) {
+        throw std::invalid_argument("flood: seeds are " + std::to_string(fullResSeeds.width) + "x" +
+                                    std::to_string(fullResSeeds.height) + " but plan \"" +
+                                    plan.name() + "\" runs on " + std::to_string(plan.width()) +
+                                    "x" + std::to_string(plan.height()));
+    }
+    resolveThreads(options.threads); // validates
+    FloodResult result;
+    Grid current = downsample(fullResSeeds, stageScale(plan, 0), criterion);
+    Grid next;
+    int passIndex = 0;
+    const std::vector<Stage>& stages = plan.stages();
+    for (std::size_t s = 0; s < stages.size(); ++s) {
+        const Stage& stage = stages[s];
+        const int scale = stageScale(plan, s);
+        if (s > 0) current = expand(current, stage.width, stage.height);
+        bool skipRest = false;
+        for (std::size_t k = 0; k < stage.steps.size(); ++k, ++passIndex) {
+            if (skipRest) continue;
+            const Pass pass{stage.steps[k], stage.width, stage.height, s > 0 && k == 0,
+                            stage.untilUnchanged};
+            const std::int64_t changed =
+                runPass(current, next, pass.step, scale, criterion, options.threads);
+            std::swap(current, next);
+            result.passes.push_back(PassStats{passIndex, pass, changed});
+            if (options.onPass) options.onPass(passIndex, pass, current);
+            if (stage.untilUnchanged && changed == 0) skipRest = true;
+        }
+    }
+    result.grid = std::move(current);
+    return result;
+}
+
+/// Runs `plan` on full-resolution seeds with `criterion`; returns the full-resolution grid.
+template <Criterion C>
+Grid flood(const Plan& plan, const Grid& fullResSeeds, const C& criterion,
+           const FloodOptions& options = {}) {
+    return floodWithStats(plan, fullResSeeds, criterion, options).grid;
+}
+
+} // namespace fl::jfa
