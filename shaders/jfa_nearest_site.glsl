@@ -8,21 +8,24 @@ uniform int uJfaIntegerSites; // 1: exact integer squared distances (grids up to
 bool jfaEmpty(vec4 c) { return c.z < 0.0; }
 
 bool jfaBetter(ivec2 p, vec4 a, vec4 b) {
+    bool closer, same;
     if (uJfaIntegerSites != 0) {
         ivec2 da = ivec2(a.xy) - p;
         ivec2 db = ivec2(b.xy) - p;
         int la = da.x * da.x + da.y * da.y;
         int lb = db.x * db.x + db.y * db.y;
-        if (la != lb) return la < lb;
+        closer = la < lb;
+        same = la == lb;
     } else {
         // `precise`: no fused multiply-add, as on the CPU (built with -ffp-contract=off).
         precise vec2 da = a.xy - vec2(p);
         precise vec2 db = b.xy - vec2(p);
         precise float la = da.x * da.x + da.y * da.y;
         precise float lb = db.x * db.x + db.y * db.y;
-        if (la != lb) return la < lb;
+        closer = la < lb;
+        same = la == lb;
     }
-    if (a.z != b.z) return a.z < b.z;
-    if (a.y != b.y) return a.y < b.y;
-    return a.x < b.x;
+    // Written without early returns: branch-light code runs faster on SIMD rasterisers.
+    bool tieWins = a.z < b.z || (a.z == b.z && (a.y < b.y || (a.y == b.y && a.x < b.x)));
+    return closer || (same && tieWins);
 }

@@ -15,16 +15,17 @@ vec4 jfaSelect(sampler2D src, ivec2 t, ivec2 size, int step, int scale, int srcD
     ivec2 p = t * scale;
     vec4 best = kJfaEmptyCell;
     bool have = false;
+    // Clamped reads plus an "inside" flag instead of skipping: branch-light code runs much
+    // faster on SIMD rasterisers (llvmpipe), and an outside candidate still never wins.
+    ivec2 hi = size - 1;
     for (int j = -1; j <= 1; ++j) {
         for (int i = -1; i <= 1; ++i) {
             ivec2 q = t + ivec2(i, j) * step;
-            if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
-            vec4 c = texelFetch(src, q / srcDiv, 0);
-            if (jfaEmpty(c)) continue;
-            if (!have || jfaBetter(p, c, best)) {
-                best = c;
-                have = true;
-            }
+            ivec2 qc = clamp(q, ivec2(0), hi);
+            vec4 c = texelFetch(src, qc / srcDiv, 0);
+            bool take = q == qc && !jfaEmpty(c) && (!have || jfaBetter(p, c, best));
+            best = take ? c : best;
+            have = have || take;
         }
     }
     return best;
@@ -38,13 +39,11 @@ vec4 jfaDownsample(sampler2D full, ivec2 t, ivec2 fullSize) {
     for (int j = 0; j <= 1; ++j) {
         for (int i = 0; i <= 1; ++i) {
             ivec2 q = p + ivec2(i, j);
-            if (any(greaterThanEqual(q, fullSize))) continue;
-            vec4 c = texelFetch(full, q, 0);
-            if (jfaEmpty(c)) continue;
-            if (!have || jfaBetter(p, c, best)) {
-                best = c;
-                have = true;
-            }
+            ivec2 qc = min(q, fullSize - 1);
+            vec4 c = texelFetch(full, qc, 0);
+            bool take = q == qc && !jfaEmpty(c) && (!have || jfaBetter(p, c, best));
+            best = take ? c : best;
+            have = have || take;
         }
     }
     return best;
