@@ -18,16 +18,8 @@ layout(binding = 0, offset = 0) uniform atomic_uint uChanged;
 void main() {
     ivec2 t = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(t, uSize))) return;
-    vec4 result;
     vec4 before;
-    if (uMode == 2) {
-        result = jfaDownsample(uSrc, t, uSrcSize);
-        before = result;
-    } else {
-        int srcDiv = uMode == 1 ? 2 : 1;
-        before = texelFetch(uSrc, t / srcDiv, 0);
-        result = jfaSelect(uSrc, t, uSize, uStep, uScale, srcDiv);
-    }
+    vec4 result = jfaTexel(uSrc, t, uSize, uSrcSize, uStep, uScale, uMode, before);
     if (uCountChanges != 0 && result != before) atomicCounterIncrement(uChanged);
     imageStore(uDst, t, result);
 }

@@ -17,16 +17,8 @@ layout(location = 0) out vec4 oCell;
 
 void main() {
     ivec2 t = ivec2(gl_FragCoord.xy);
-    vec4 result;
     vec4 before;
-    if (uMode == 2) {
-        result = jfaDownsample(uSrc, t, uSrcSize);
-        before = result;
-    } else {
-        int srcDiv = uMode == 1 ? 2 : 1;
-        before = texelFetch(uSrc, t / srcDiv, 0);
-        result = jfaSelect(uSrc, t, uSize, uStep, uScale, srcDiv);
-    }
+    vec4 result = jfaTexel(uSrc, t, uSize, uSrcSize, uStep, uScale, uMode, before);
     if (uCountChanges != 0 && result != before) atomicCounterIncrement(uChanged);
     oCell = result;
 }

@@ -48,3 +48,17 @@ vec4 jfaDownsample(sampler2D full, ivec2 t, ivec2 fullSize) {
     }
     return best;
 }
+
+// One texel of a kernel dispatch. mode 0: pass; 1: expand then pass (src is the
+// half-resolution grid); 2: downsample full-resolution seeds. `before` receives the cell the
+// texel held before (for "until unchanged" counting).
+vec4 jfaTexel(sampler2D src, ivec2 t, ivec2 size, ivec2 srcSize, int step, int scale, int mode,
+              out vec4 before) {
+    if (mode == 2) {
+        before = jfaDownsample(src, t, srcSize);
+        return before;
+    }
+    int srcDiv = mode == 1 ? 2 : 1;
+    before = texelFetch(src, t / srcDiv, 0);
+    return jfaSelect(src, t, size, step, scale, srcDiv);
+}

@@ -2,8 +2,8 @@
 
 #include "TestPaths.h"
 
-#include <gpu/ShaderLibrary.h>
 #include <gpu/Program.h>
+#include <gpu/ShaderLibrary.h>
 
 #include <gtest/gtest.h>
 

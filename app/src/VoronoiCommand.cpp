@@ -132,8 +132,8 @@ struct Run {
     double ms = 0;
 };
 
-Run flood(const VoronoiOptions& o, const jfa::Plan& plan, const jfa::Grid& seeds,
-          const jfa::NearestSite& crit, jfa::GlFloodKernel* gl) {
+Run flood(const jfa::Plan& plan, const jfa::Grid& seeds, const jfa::NearestSite& crit,
+          jfa::GlFloodKernel* gl) {
     Run r;
     if (gl) {
         const gl::Texture in = jfa::uploadGrid(seeds);
@@ -151,7 +151,6 @@ Run flood(const VoronoiOptions& o, const jfa::Plan& plan, const jfa::Grid& seeds
         r.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
                    .count();
     }
-    (void)o;
     return r;
 }
 
@@ -233,7 +232,7 @@ int runVoronoi(const VoronoiOptions& o) {
                 throw InputError(std::string("--plan: ") + e.what());
             }
         }();
-        const Run r = flood(o, plan, in.seeds, crit, kernel.get());
+        const Run r = flood(plan, in.seeds, crit, kernel.get());
         const jfa::ErrorReport rep = jfa::analyzeErrors(r.grid, view, plan.name());
         std::cout << std::fixed << std::setprecision(2) << plan.describe() << "\n  " << r.ms
                   << " ms; " << rep.describe() << "\n"

@@ -1,5 +1,5 @@
-#include <renderer/EglContext.h>
 #include <gpu/Gl.h>
+#include <renderer/EglContext.h>
 
 #include <epoxy/egl.h>
 

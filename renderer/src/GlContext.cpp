@@ -1,5 +1,5 @@
-#include <renderer/GlContext.h>
 #include <gpu/Gl.h>
+#include <renderer/GlContext.h>
 
 namespace fl {
 

@@ -1,5 +1,5 @@
-#include <renderer/GlfwWindow.h>
 #include <gpu/Gl.h>
+#include <renderer/GlfwWindow.h>
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>

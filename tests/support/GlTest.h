@@ -2,8 +2,8 @@
 // Fixture for *_gltest.cpp: one headless EGL context per test program; any GL error recorded by
 // the debug callback during a test fails that test.
 
-#include <renderer/EglContext.h>
 #include <gpu/Gl.h>
+#include <renderer/EglContext.h>
 
 #include <gtest/gtest.h>
 

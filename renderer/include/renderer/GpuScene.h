@@ -2,9 +2,9 @@
 // A Scene uploaded to GL: one interleaved vertex buffer and one index buffer for all meshes,
 // material textures, and the draw list. Passes draw it with their own programs.
 
-#include <renderer/Scene.h>
 #include <gpu/Gl.h>
 #include <gpu/Program.h>
+#include <renderer/Scene.h>
 
 #include <vector>
 

@@ -2,10 +2,10 @@
 // The frame, as numbered steps: 1. shadow map from the light, 2. forward shading with the hard
 // shadow test, 3. (window only) present. Owns the passes and the uploaded scene.
 
-#include <renderer/GpuScene.h>
 #include <gpu/PassTimer.h>
-#include <renderer/Scene.h>
 #include <gpu/ShaderLibrary.h>
+#include <renderer/GpuScene.h>
+#include <renderer/Scene.h>
 #include <renderer/passes/ForwardPass.h>
 #include <renderer/passes/ShadowMapPass.h>
 

@@ -2,11 +2,11 @@
 // Step 2 of a frame: forward shading from the camera with the hard shadow-map test. Writes linear
 // colour and the light's visibility (1 lit, 0 shadowed) per pixel.
 
-#include <renderer/GpuScene.h>
-#include <renderer/Scene.h>
-#include <gpu/ShaderLibrary.h>
 #include <gpu/Gl.h>
 #include <gpu/Program.h>
+#include <gpu/ShaderLibrary.h>
+#include <renderer/GpuScene.h>
+#include <renderer/Scene.h>
 
 namespace fl {
 

@@ -1,10 +1,10 @@
 #pragma once
 // Step 1 of a frame: depth from the light into a square depth texture (uniform shadow map).
 
-#include <renderer/GpuScene.h>
-#include <gpu/ShaderLibrary.h>
 #include <gpu/Gl.h>
 #include <gpu/Program.h>
+#include <gpu/ShaderLibrary.h>
+#include <renderer/GpuScene.h>
 
 #include <geometry/Framing.h>
 
