@@ -4,6 +4,7 @@
 
 #include <renderer/EglContext.h>
 
+#include <jfa/CpuKernel.h>
 #include <jfa/GlKernel.h>
 #include <jfa/Sites.h>
 
@@ -50,6 +51,7 @@ void row(const std::string& what, const Timing& t, int passes) {
 int main(int argc, char** argv) {
     CLI::App app{"jfa_bench: GL flooding kernels (fragment vs compute, JFA vs standard flooding)"};
     int size = 512, runs = 5, floodRuns = 3;
+    std::vector<int> scaling{512, 1024, 2048};
     app.add_option("--size", size, "Grid side")->check(CLI::Range(8, 4096))->capture_default_str();
     app.add_option("--runs", runs, "Timed runs per configuration")
         ->check(CLI::Range(1, 1000))
@@ -57,6 +59,8 @@ int main(int argc, char** argv) {
     app.add_option("--flood-runs", floodRuns, "Timed runs of the (slow) standard flooding")
         ->check(CLI::Range(1, 1000))
         ->capture_default_str();
+    app.add_option("--scaling-sizes", scaling, "Grid sides for the JFA size sweep (GL and CPU)")
+        ->delimiter(',');
     CLI11_PARSE(app, argc, argv);
     try {
         auto ctx = EglContext::create(false);
@@ -93,6 +97,45 @@ int main(int argc, char** argv) {
             row(name, t, flood.passCount());
             median[name] = t.median;
         }
+        // Until unchanged: standard flooding run to completion (it stops when nothing changes).
+        for (jfa::GlKernelKind kind : {jfa::GlKernelKind::Fragment}) {
+            jfa::GlFloodKernel kernel(shaders, jfa::NearestSite::glslFile, kind);
+            for (int sites : {100, 1000}) {
+                const jfa::Grid seeds =
+                    jfa::seedPoints(jfa::randomIntegerSites(sites, size, size, 1), size, size, true)
+                        .grid;
+                const gl::Texture in = jfa::uploadGrid(seeds);
+                const jfa::Plan plan = jfa::parsePlan("flood", size, size);
+                const Timing t = timeRuns(floodRuns, [&] { kernel.run(plan, in, crit); });
+                const std::string name = std::string(jfa::kernelName(kind)) +
+                                         " flood until unchanged, " + std::to_string(sites) +
+                                         " sites";
+                row(name, t, kernel.passesRun());
+                median[name] = t.median;
+            }
+        }
+        // Size sweep: the whole JFA plan on the GL fragment kernel and the CPU kernel (2 threads),
+        // and JFA's defining property, cost independent of the number of sites.
+        std::cout << "JFA plan time by grid size (GL fragment kernel; CPU kernel, all threads):\n";
+        jfa::GlFloodKernel fragment(shaders, jfa::NearestSite::glslFile,
+                                    jfa::GlKernelKind::Fragment);
+        for (int n : scaling) {
+            const jfa::Plan plan = jfa::parsePlan("jfa", n, n);
+            for (int sites : {100, 10000}) {
+                const jfa::Grid seeds =
+                    jfa::seedPoints(jfa::randomIntegerSites(sites, n, n, 1), n, n, true).grid;
+                const gl::Texture in = jfa::uploadGrid(seeds);
+                const std::string tag =
+                    std::to_string(n) + "^2 JFA, " + std::to_string(sites) + " sites";
+                const Timing g = timeRuns(runs, [&] { fragment.run(plan, in, crit); });
+                row("GL fragment " + tag, g, plan.passCount());
+                median["GL " + tag] = g.median;
+                const Timing c = timeRuns(runs, [&] { (void)jfa::flood(plan, seeds, crit); });
+                row("CPU " + tag, c, plan.passCount());
+                median["CPU " + tag] = c.median;
+            }
+        }
+
         auto ratio = [&](const std::string& a, const std::string& b) {
             std::cout << "  " << a << " / " << b << " = " << std::setprecision(3)
                       << median.at(a) / median.at(b) << "\n";
@@ -105,6 +148,14 @@ int main(int argc, char** argv) {
             ratio(std::string(k) + " JFA, 10000 sites", std::string(k) + " JFA, 100 sites");
         }
         ratio("compute JFA, 100 sites", "fragment JFA, 100 sites");
+        ratio("fragment flood until unchanged, 100 sites", "fragment JFA, 100 sites");
+        ratio("fragment flood until unchanged, 1000 sites", "fragment JFA, 100 sites");
+        for (int n : scaling) {
+            const std::string base = std::to_string(n) + "^2 JFA, ";
+            ratio("GL " + base + "10000 sites", "GL " + base + "100 sites");
+            ratio("CPU " + base + "10000 sites", "CPU " + base + "100 sites");
+            ratio("CPU " + base + "100 sites", "GL " + base + "100 sites");
+        }
         ratio("compute JFA, 10000 sites", "fragment JFA, 10000 sites");
     } catch (const std::exception& e) {
         std::cerr << "error: " << e.what() << "\n";

@@ -134,6 +134,37 @@ TEST(Cli, VoronoiBadInput) {
     r = run("voronoi --backend cpu --width 64 --height 64 --points " + outside.string() +
             " --out " + outputDir("cli").string());
     EXPECT_EQ(r.code, 1) << r.output;
+    EXPECT_NE(r.output.find("site 1"), std::string::npos) << r.output;
+    const auto dup = outputDir("cli") / "dup.txt";
+    std::ofstream(dup) << "3 4\n5 6\n3 4\n";
+    r = run("voronoi --backend cpu --points " + dup.string() + " --out " +
+            outputDir("cli").string());
+    EXPECT_EQ(r.code, 1) << r.output;
+    EXPECT_NE(r.output.find("dup.txt:3: duplicate of the site on line 1"), std::string::npos)
+        << r.output;
+    const auto empty = outputDir("cli") / "empty.txt";
+    std::ofstream(empty) << "# nothing\n";
+    r = run("voronoi --backend cpu --points " + empty.string() + " --out " +
+            outputDir("cli").string());
+    EXPECT_EQ(r.code, 1) << r.output;
+    EXPECT_NE(r.output.find("no sites"), std::string::npos) << r.output;
+    for (const char* size : {"--width 0", "--height 20000"}) {
+        r = run(std::string("voronoi ") + size + " --out " + outputDir("cli").string());
+        EXPECT_EQ(r.code, 1) << size << "\n" << r.output;
+        EXPECT_NE(r.output.find("GL maximum texture size"), std::string::npos) << r.output;
+    }
+    const auto blank = outputDir("cli") / "blank.png";
+    writePng(blank, ByteImage{8, 8, 4, std::vector<std::uint8_t>(8 * 8 * 4, 0)});
+    r = run("voronoi --backend cpu --mask " + blank.string() + " --out " +
+            outputDir("cli").string());
+    EXPECT_EQ(r.code, 1) << r.output;
+    EXPECT_NE(r.output.find("no sites"), std::string::npos) << r.output;
+    const auto notPng = outputDir("cli") / "not_a.png";
+    std::ofstream(notPng) << "garbage";
+    r = run("voronoi --backend cpu --mask " + notPng.string() + " --out " +
+            outputDir("cli").string());
+    EXPECT_EQ(r.code, 1) << r.output;
+    EXPECT_NE(r.output.find("not_a.png"), std::string::npos) << r.output;
 }
 
 } // namespace

@@ -45,6 +45,7 @@ std::vector<jfa::Site> readPoints(const std::string& file) {
     std::ifstream in(file);
     if (!in) throw InputError(file + ": cannot read point file");
     std::vector<jfa::Site> out;
+    std::map<std::pair<float, float>, int> seen; // position -> line, to name duplicates
     std::string line;
     for (int n = 1; std::getline(in, line); ++n) {
         if (line.find_first_not_of(" \t\r") == std::string::npos || line[0] == '#') continue;
@@ -53,9 +54,13 @@ std::vector<jfa::Site> readPoints(const std::string& file) {
         if (!(s >> x >> y) || !std::isfinite(x) || !std::isfinite(y))
             throw InputError(file + ":" + std::to_string(n) +
                              ": expected two finite numbers 'x y'");
+        const auto [it, added] = seen.try_emplace({float(x), float(y)}, n);
+        if (!added)
+            throw InputError(file + ":" + std::to_string(n) + ": duplicate of the site on line " +
+                             std::to_string(it->second));
         out.push_back({float(x), float(y)});
     }
-    if (out.empty()) throw InputError(file + ": no points");
+    if (out.empty()) throw InputError(file + ": no sites");
     return out;
 }
 
@@ -198,19 +203,35 @@ void writeOutputs(const VoronoiOptions& o, const jfa::Grid& g, const jfa::ExactF
               << " (site.x, site.y, site.id, distance, exact_distance, error)\n";
 }
 
+// Grid sizes the kernels can take: 1 .. 16384 (integer distances in 32 bits on the GPU), and
+// with the GL backend no more than the implementation's largest texture.
+void checkGridSize(int w, int h, const std::string& what, bool gl) {
+    GLint glMax = 16384;
+    if (gl) glGetIntegerv(GL_MAX_TEXTURE_SIZE, &glMax);
+    const int limit = std::min(16384, int(glMax));
+    if (w < 1 || h < 1 || w > limit || h > limit)
+        throw InputError(what + ": grid " + std::to_string(w) + "x" + std::to_string(h) +
+                         " is outside 1.." + std::to_string(limit) + " per side" +
+                         (gl ? " (GL maximum texture size here: " + std::to_string(glMax) + ")"
+                             : std::string()));
+}
+
 int runVoronoi(const VoronoiOptions& o) {
+    std::unique_ptr<EglContext> ctx;
+    if (o.backend == "gl") ctx = EglContext::create();
+    if (o.mask.empty()) checkGridSize(o.width, o.height, "--width/--height", bool(ctx));
     const Input in = makeInput(o);
     const int w = in.seeds.width, h = in.seeds.height;
+    checkGridSize(w, h, in.what, bool(ctx));
+    if (jfa::siteCells(in.seeds).empty()) throw InputError(in.what + ": no sites to flood");
     const jfa::NearestSite crit{in.integer};
     const jfa::ExactField exact = jfa::exactNearest(in.seeds, crit);
     const std::vector<jfa::Cell> siteList = jfa::siteCells(in.seeds);
     const jfa::ExactDiagramView view{w, h, siteList, exact.distSq, in.integer};
 
-    std::unique_ptr<EglContext> ctx;
     std::unique_ptr<ShaderLibrary> shaders;
     std::unique_ptr<jfa::GlFloodKernel> kernel;
     if (o.backend == "gl") {
-        ctx = EglContext::create();
         shaders = std::make_unique<ShaderLibrary>(o.shaderDir.empty() ? ShaderLibrary()
                                                                       : ShaderLibrary(o.shaderDir));
         kernel = std::make_unique<jfa::GlFloodKernel>(
@@ -264,11 +285,9 @@ Runner addVoronoiCommand(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand(
         "voronoi", "Voronoi diagram / distance transform by jump flooding, errors vs exact");
     auto o = std::make_shared<VoronoiOptions>();
-    cmd->add_option("--width", o->width, "Grid width")
-        ->check(CLI::Range(1, 16384))
+    cmd->add_option("--width", o->width, "Grid width (1..16384, at most the GL maximum)")
         ->capture_default_str();
-    cmd->add_option("--height", o->height, "Grid height")
-        ->check(CLI::Range(1, 16384))
+    cmd->add_option("--height", o->height, "Grid height (1..16384, at most the GL maximum)")
         ->capture_default_str();
     cmd->add_option("--sites", o->sites, "Random sites")
         ->check(CLI::Range(1, 1 << 24))
