@@ -7,6 +7,14 @@ uniform int uJfaIntegerSites; // 1: exact integer squared distances (grids up to
 
 bool jfaEmpty(vec4 c) { return c.z < 0.0; }
 
+// The full-resolution pixel the site was seeded at, floor(v + 0.5) per coordinate, computed
+// exactly (NearestSite::seedPixel on the CPU).
+ivec2 jfaSeedPixel(vec4 c) {
+    precise vec2 f = floor(c.xy);
+    precise vec2 frac = c.xy - f;
+    return ivec2(f) + ivec2(greaterThanEqual(frac, vec2(0.5)));
+}
+
 bool jfaBetter(ivec2 p, vec4 a, vec4 b) {
     bool closer, same;
     if (uJfaIntegerSites != 0) {

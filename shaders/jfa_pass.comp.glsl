@@ -6,6 +6,7 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(binding = 0) uniform sampler2D uSrc;
+layout(binding = 1) uniform sampler2D uSeeds; // full-resolution seeds (for the expansion)
 layout(binding = 0, rgba32f) uniform writeonly image2D uDst;
 uniform ivec2 uSize;
 uniform ivec2 uSrcSize;
@@ -19,7 +20,7 @@ void main() {
     ivec2 t = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(t, uSize))) return;
     vec4 before;
-    vec4 result = jfaTexel(uSrc, t, uSize, uSrcSize, uStep, uScale, uMode, before);
+    vec4 result = jfaTexel(uSrc, uSeeds, t, uSize, uSrcSize, uStep, uScale, uMode, before);
     if (uCountChanges != 0 && result != before) atomicCounterIncrement(uChanged);
     imageStore(uDst, t, result);
 }

@@ -5,6 +5,7 @@
 #include "jfa_select.glsl"
 
 layout(binding = 0) uniform sampler2D uSrc;
+layout(binding = 1) uniform sampler2D uSeeds; // full-resolution seeds (for the expansion)
 uniform ivec2 uSize;    // grid size of the stage written
 uniform ivec2 uSrcSize; // grid size of uSrc
 uniform int uStep;
@@ -18,7 +19,7 @@ layout(location = 0) out vec4 oCell;
 void main() {
     ivec2 t = ivec2(gl_FragCoord.xy);
     vec4 before;
-    vec4 result = jfaTexel(uSrc, t, uSize, uSrcSize, uStep, uScale, uMode, before);
+    vec4 result = jfaTexel(uSrc, uSeeds, t, uSize, uSrcSize, uStep, uScale, uMode, before);
     if (uCountChanges != 0 && result != before) atomicCounterIncrement(uChanged);
     oCell = result;
 }

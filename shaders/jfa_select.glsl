@@ -4,14 +4,38 @@
 
 bool jfaEmpty(vec4 c);
 bool jfaBetter(ivec2 p, vec4 a, vec4 b);
+// Full-resolution pixel a cell was seeded at; any negative coordinate = unknown (copy verbatim).
+ivec2 jfaSeedPixel(vec4 c);
 
 const vec4 kJfaEmptyCell = vec4(0.0, 0.0, -1.0, 0.0);
 
 // `scale`: 1 at full resolution, 2 in the half-resolution stage (texel t stands for grid
 // point t * 2, whose distances are measured in full-resolution coordinates).
-// `srcDiv`: 1 normally; 2 for the pass right after expanding the half-resolution stage, whose
-// full-resolution cell q is the half-resolution cell q / 2 (the expansion is fused into it).
-vec4 jfaSelect(sampler2D src, ivec2 t, ivec2 size, int step, int scale, int srcDiv) {
+// Expansion (thesis §4.3.2): full-resolution texel q takes the half-resolution cell r = q / 2,
+// refined among the full-resolution seeds of the 2x2 block holding r's seed pixel (the sites r
+// stands for), judged at q. Same as expandStage() in jfa/CpuKernel.h.
+vec4 jfaExpandedCell(sampler2D coarse, sampler2D seeds, ivec2 q, ivec2 fullSize) {
+    vec4 best = texelFetch(coarse, q / 2, 0);
+    if (jfaEmpty(best)) return best;
+    ivec2 sp = jfaSeedPixel(best);
+    if (any(lessThan(sp, ivec2(0)))) return best;
+    ivec2 b = (sp / 2) * 2;
+    for (int j = 0; j <= 1; ++j) {
+        for (int i = 0; i <= 1; ++i) {
+            ivec2 c = b + ivec2(i, j);
+            ivec2 cc = min(c, fullSize - 1);
+            vec4 s = texelFetch(seeds, cc, 0);
+            bool take = c == cc && !jfaEmpty(s) && jfaBetter(q, s, best);
+            best = take ? s : best;
+        }
+    }
+    return best;
+}
+
+// `expand`: false normally; true for the pass right after the half-resolution stage, whose
+// full-resolution cell q is jfaExpandedCell(src, seeds, q) (the expansion is fused into it).
+vec4 jfaSelect(sampler2D src, sampler2D seeds, ivec2 t, ivec2 size, int step, int scale,
+               bool expand) {
     ivec2 p = t * scale;
     vec4 best = kJfaEmptyCell;
     bool have = false;
@@ -22,7 +46,7 @@ vec4 jfaSelect(sampler2D src, ivec2 t, ivec2 size, int step, int scale, int srcD
         for (int i = -1; i <= 1; ++i) {
             ivec2 q = t + ivec2(i, j) * step;
             ivec2 qc = clamp(q, ivec2(0), hi);
-            vec4 c = texelFetch(src, qc / srcDiv, 0);
+            vec4 c = expand ? jfaExpandedCell(src, seeds, qc, size) : texelFetch(src, qc, 0);
             bool take = q == qc && !jfaEmpty(c) && (!have || jfaBetter(p, c, best));
             best = take ? c : best;
             have = have || take;
@@ -52,13 +76,13 @@ vec4 jfaDownsample(sampler2D full, ivec2 t, ivec2 fullSize) {
 // One texel of a kernel dispatch. mode 0: pass; 1: expand then pass (src is the
 // half-resolution grid); 2: downsample full-resolution seeds. `before` receives the cell the
 // texel held before (for "until unchanged" counting).
-vec4 jfaTexel(sampler2D src, ivec2 t, ivec2 size, ivec2 srcSize, int step, int scale, int mode,
-              out vec4 before) {
+vec4 jfaTexel(sampler2D src, sampler2D seeds, ivec2 t, ivec2 size, ivec2 srcSize, int step,
+              int scale, int mode, out vec4 before) {
     if (mode == 2) {
         before = jfaDownsample(src, t, srcSize);
         return before;
     }
-    int srcDiv = mode == 1 ? 2 : 1;
-    before = texelFetch(src, t / srcDiv, 0);
-    return jfaSelect(src, t, size, step, scale, srcDiv);
+    bool expand = mode == 1;
+    before = expand ? jfaExpandedCell(src, seeds, t, size) : texelFetch(src, t, 0);
+    return jfaSelect(src, seeds, t, size, step, scale, expand);
 }

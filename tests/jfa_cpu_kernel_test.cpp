@@ -279,15 +279,21 @@ TEST(CpuKernel, DownsampleKeepsTheBestSiteOfEachBlockAtItsGridPoint) {
     EXPECT_EQ(half.at(1, 1), site(3, 2, 9));
     EXPECT_EQ(half.at(2, 1), kEmptyCell);
 
-    // Through a plan: no half-resolution pass, expand, then a pass that reads only itself.
+    // Through a plan: no half-resolution pass, expansion, then a pass that reads only itself.
+    // Expansion refines each texel among the sites of its representative's block (thesis
+    // §4.3.2): block (0,0) holds ids 2 and 5, block (1,0) ids 0 and 1, so every site gets back
+    // its own pixel; (2,0) and (3,1) are ties between ids 0 and 1 (d2 = 1), won by id 0.
     const Grid out =
         flood(custom({Stage{3, 2, {}}, Stage{5, 3, {1000}}}), full, NearestSite{}, {1, {}});
     ASSERT_EQ(out.width, 5);
+    const int expectedIds[3][5] = {{2, 5, 0, 1, 7}, {2, 5, 0, 0, 7}, {-1, -1, 9, 9, -1}};
     for (int y = 0; y < 3; ++y) {
         for (int x = 0; x < 5; ++x)
-            EXPECT_EQ(out.at(x, y), half.at(x / 2, y / 2)) << x << ", " << y;
+            EXPECT_EQ(out.at(x, y).z, float(expectedIds[y][x])) << x << ", " << y;
     }
-    EXPECT_EQ(expand(half, 5, 3), out);
+    EXPECT_EQ(expandStage(half, 5, 3, 2, full, NearestSite{}), out);
+    // The plain 2x copy underneath, and its size check.
+    EXPECT_EQ(expand(half, 5, 3).at(1, 1), half.at(0, 0));
     EXPECT_THROW(expand(half, 7, 3), std::invalid_argument);
 }
 
@@ -320,7 +326,7 @@ TEST(CpuKernel, HalfResolutionExpandsBeforeItsFullResolutionPass) {
     EXPECT_EQ(seen, plan.passes());
     ASSERT_TRUE(seen.back().expandBefore);
     Grid expected;
-    runPass(expand(lastHalf, 6, 4), expected, 1, 1, NearestSite{}, 1);
+    runPass(expandStage(lastHalf, 6, 4, 2, seeds, NearestSite{}), expected, 1, 1, NearestSite{}, 1);
     EXPECT_EQ(out, expected);
 }
 

@@ -154,16 +154,17 @@ TEST(DistanceTransform, JfaVariantsAgainstExact) {
     }
 }
 
-TEST(DistanceTransform, HalfResolutionLosesFeaturePixels) {
-    // The half-resolution variant keeps one seed per 2x2 block and expands by copying, so a
-    // feature pixel that was not its block's representative ends up at distance 1, not 0.
+TEST(DistanceTransform, HalfResolutionRecoversFeaturePixelsOfABlock) {
+    // Downsampling keeps one seed per 2x2 block; the expansion lets each pixel choose among all
+    // the seeds its representative stands for (thesis §4.3.2), so a feature pixel that was not
+    // its block's representative is still at distance 0.
     const int w = 8, h = 4;
     Mask mask(std::size_t(w * h), 0);
     mask[0] = mask[1] = 1; // (0,0) and (1,0): one block
     const DistanceField half = distanceTransform(mask, w, h, "half:jfa");
     EXPECT_EQ(half.at(0, 0), 0.0f);
-    EXPECT_EQ(half.at(1, 0), 1.0f);
-    EXPECT_EQ(exactDistanceTransform(mask, w, h).at(1, 0), 0.0f);
+    EXPECT_EQ(half.at(1, 0), 0.0f);
+    EXPECT_EQ(half, exactDistanceTransform(mask, w, h));
 }
 
 TEST(DistanceTransform, PlansAndSizesAreChecked) {

@@ -63,8 +63,9 @@ const gl::Texture& GlFloodKernel::otherTexture(int width, int height, const gl::
     return current == &pair.tex[0] ? pair.tex[1] : pair.tex[0];
 }
 
-void GlFloodKernel::dispatch(const gl::Texture& src, const gl::Texture& dst, int mode, int step,
-                             int scale, bool countChanges) {
+void GlFloodKernel::dispatch(const gl::Texture& src, const gl::Texture& seeds,
+                             const gl::Texture& dst, int mode, int step, int scale,
+                             bool countChanges) {
     const gl::Program& p = passProgram_;
     p.set("uSize", glm::ivec2(dst.width(), dst.height()));
     p.set("uSrcSize", glm::ivec2(src.width(), src.height()));
@@ -73,6 +74,7 @@ void GlFloodKernel::dispatch(const gl::Texture& src, const gl::Texture& dst, int
     p.set("uMode", mode);
     p.set("uCountChanges", countChanges ? 1 : 0);
     glBindTextureUnit(0, src.id());
+    glBindTextureUnit(1, seeds.id());
     glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, 0, changedCounter_.id());
     glUseProgram(p.id());
     if (kind_ == GlKernelKind::Compute) {
@@ -97,6 +99,7 @@ void GlFloodKernel::dispatch(const gl::Texture& src, const gl::Texture& dst, int
     }
     glUseProgram(0);
     glBindTextureUnit(0, 0);
+    glBindTextureUnit(1, 0);
 }
 
 const gl::Texture& GlFloodKernel::runPlan(const Plan& plan, const gl::Texture& seeds,
@@ -121,7 +124,7 @@ const gl::Texture& GlFloodKernel::runPlan(const Plan& plan, const gl::Texture& s
         const Stage& s0 = stages.front();
         const gl::Texture& dst = otherTexture(s0.width, s0.height, nullptr);
         if (timer) timer->begin("downsample");
-        dispatch(seeds, dst, 2, 0, 2, false);
+        dispatch(seeds, seeds, dst, 2, 0, 2, false);
         if (timer) timer->end();
         current = &dst;
     }
@@ -145,7 +148,7 @@ const gl::Texture& GlFloodKernel::runPlan(const Plan& plan, const gl::Texture& s
             glNamedBufferSubData(changedCounter_.id(), 0, sizeof(zero), &zero);
         }
         if (timer) timer->begin("jfa step");
-        dispatch(*current, dst, mode, pass.step, scale, pass.untilUnchanged);
+        dispatch(*current, seeds, dst, mode, pass.step, scale, pass.untilUnchanged);
         if (timer) timer->end();
         ++passesRun_;
         if (pass.untilUnchanged) {

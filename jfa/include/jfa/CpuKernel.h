@@ -22,10 +22,14 @@
 //    are empty. Candidates are read j = -1, 0, 1 (outer) and i = -1, 0, 1 (inner) and a later
 //    one replaces the best so far only if strictly better, so with a strict total order (as the
 //    Criterion concept demands) the reading order does not matter.
-//  * Expansion (Pass::expandBefore, the first pass of every stage after the first): full-
-//    resolution texel (x, y) first takes the previous stage's cell (x / 2, y / 2) (integer
-//    division; the cell is copied verbatim), then the pass runs on the expanded grid. The full-
-//    resolution seeds are not read again: a seed that was not its block's pick is gone (so a
+//  * Expansion (Pass::expandBefore, the first pass of every stage after the first): texel (x, y)
+//    first takes the previous stage's cell r = (x / 2, y / 2) (integer division), then the pass
+//    runs on the expanded grid. Thesis §4.3.2: each of the new texels "derives its nearest site
+//    from those sites represented by the representative site", so for a criterion with
+//    seedPixel() (NearestSite) the texel takes the best, at its own grid point, of the
+//    full-resolution seeds in the block of the previous stage's scale that holds r's seed pixel
+//    (r is one of them, so it is never worse than the copy); other criteria copy r verbatim. The
+//    full- resolution seeds are not read again: a seed that was not its block's pick is gone (so a
 //    half-resolution distance transform is not 0 on every feature pixel).
 //  * Changed texels. A pass changes texel (x, y) if the cell it writes differs (Cell::operator==,
 //    float comparison of all four components) from the cell that texel held before the pass (for
@@ -43,6 +47,7 @@
 #include <jfa/Plan.h>
 
 #include <algorithm>
+#include <concepts>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -121,6 +126,41 @@ Grid downsample(const Grid& full, int scale, const C& criterion) {
 /// Requires grid.width == ceil(width / 2) and grid.height == ceil(height / 2).
 Grid expand(const Grid& grid, int width, int height);
 
+/// Criteria that can name the full-resolution pixel a cell was seeded at.
+template <class C>
+concept SeedLocating = Criterion<C> && requires(const Cell& c) {
+    { C::seedPixel(c) } -> std::same_as<GridPoint>;
+};
+
+/// Expands the previous stage's grid `prev` (at scale `prevScale`) 2x into width x height (at
+/// scale prevScale / 2), refining each texel among the seeds its representative stands for (see
+/// the header comment).
+template <Criterion C>
+Grid expandStage(const Grid& prev, int width, int height, int prevScale, const Grid& fullResSeeds,
+                 const C& criterion) {
+    Grid out = expand(prev, width, height);
+    if constexpr (SeedLocating<C>) {
+        const int scale = prevScale / 2;
+        for (int y = 0; y < height; ++y) {
+            for (int x = 0; x < width; ++x) {
+                Cell& best = out.at(x, y);
+                if (criterion.empty(best)) continue;
+                const GridPoint seed = C::seedPixel(best);
+                if (seed.x < 0 || seed.y < 0) continue; // not a grid pixel: keep the copy
+                const int bx = seed.x / prevScale * prevScale, by = seed.y / prevScale * prevScale;
+                const GridPoint p = gridPoint(x, y, scale);
+                for (int j = 0; j < prevScale && by + j < fullResSeeds.height; ++j) {
+                    for (int i = 0; i < prevScale && bx + i < fullResSeeds.width; ++i) {
+                        const Cell& c = fullResSeeds.at(bx + i, by + j);
+                        if (!criterion.empty(c) && criterion.better(p.x, p.y, c, best)) best = c;
+                    }
+                }
+            }
+        }
+    }
+    return out;
+}
+
 /// Runs one pass of step `step` from `src` into `dst` (resized to src's size; must not be src)
 /// for a stage at `scale`; returns the number of changed texels (compared with src).
 template <Criterion C>
@@ -191,7 +231,9 @@ FloodResult floodWithStats(const Plan& plan, const Grid& fullResSeeds, const C& 
     for (std::size_t s = 0; s < stages.size(); ++s) {
         const Stage& stage = stages[s];
         const int scale = stageScale(plan, s);
-        if (s > 0) current = expand(current, stage.width, stage.height);
+        if (s > 0)
+            current = expandStage(current, stage.width, stage.height, stageScale(plan, s - 1),
+                                  fullResSeeds, criterion);
         bool skipRest = false;
         for (std::size_t k = 0; k < stage.steps.size(); ++k, ++passIndex) {
             if (skipRest) continue;

@@ -65,8 +65,8 @@ class GlFloodKernel {
     const gl::Texture& runPlan(const Plan& plan, const gl::Texture& seeds, PassTimer* timer,
                                const PassCallback& callback);
     // One dispatch: mode 0 pass, 1 expand + pass, 2 downsample.
-    void dispatch(const gl::Texture& src, const gl::Texture& dst, int mode, int step, int scale,
-                  bool countChanges);
+    void dispatch(const gl::Texture& src, const gl::Texture& seeds, const gl::Texture& dst,
+                  int mode, int step, int scale, bool countChanges);
     const gl::Texture& otherTexture(int width, int height, const gl::Texture* current);
 
     GlKernelKind kind_;

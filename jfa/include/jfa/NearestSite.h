@@ -31,6 +31,13 @@ struct NearestSite {
         return a.x < b.x;
     }
 
+    /// The full-resolution pixel the cell's site was seeded at: floor(v + 0.5) per coordinate
+    /// (as seedPoints rounds). The half-resolution expansion uses it to find the sites a
+    /// representative stands for (thesis §4.3.2, "Halve Resolution").
+    [[nodiscard]] static GridPoint seedPixel(const Cell& c) {
+        return {int(std::floor(double(c.x) + 0.5)), int(std::floor(double(c.y) + 0.5))};
+    }
+
     static std::int64_t squaredInt(int px, int py, const Cell& c) {
         const std::int64_t dx = std::int64_t(c.x) - px, dy = std::int64_t(c.y) - py;
         return dx * dx + dy * dy;
