@@ -1,7 +1,7 @@
 #version 450 core
 // Jump-flooding kernel, fragment version: one full-screen triangle per pass into the
-// write texture of the ping-pong pair. uMode: 0 = pass, 1 = expand then pass (uSrc is the
-// half-resolution grid), 2 = downsample full-resolution seeds to half resolution.
+// write texture of the ping-pong pair. uMode: 0 = pass (expand then pass in the JFA_EXPAND
+// build; uSrc is then the half-resolution grid), 2 = downsample full-resolution seeds.
 #include "jfa_select.glsl"
 
 layout(binding = 0) uniform sampler2D uSrc;

@@ -32,10 +32,19 @@ vec4 jfaExpandedCell(sampler2D coarse, sampler2D seeds, ivec2 q, ivec2 fullSize)
     return best;
 }
 
-// `expand`: false normally; true for the pass right after the half-resolution stage, whose
-// full-resolution cell q is jfaExpandedCell(src, seeds, q) (the expansion is fused into it).
-vec4 jfaSelect(sampler2D src, sampler2D seeds, ivec2 t, ivec2 size, int step, int scale,
-               bool expand) {
+// Compiled twice: normally a candidate is the cell src[q]; with JFA_EXPAND defined (the pass
+// right after the half-resolution stage) it is jfaExpandedCell(src, seeds, q), the expansion
+// fused into the pass. Two programs rather than a run-time switch: a SIMD rasteriser
+// (llvmpipe) would otherwise pay for the expansion's reads in every pass.
+vec4 jfaCandidate(sampler2D src, sampler2D seeds, ivec2 q, ivec2 size) {
+#ifdef JFA_EXPAND
+    return jfaExpandedCell(src, seeds, q, size);
+#else
+    return texelFetch(src, q, 0);
+#endif
+}
+
+vec4 jfaSelect(sampler2D src, sampler2D seeds, ivec2 t, ivec2 size, int step, int scale) {
     ivec2 p = t * scale;
     vec4 best = kJfaEmptyCell;
     bool have = false;
@@ -46,7 +55,7 @@ vec4 jfaSelect(sampler2D src, sampler2D seeds, ivec2 t, ivec2 size, int step, in
         for (int i = -1; i <= 1; ++i) {
             ivec2 q = t + ivec2(i, j) * step;
             ivec2 qc = clamp(q, ivec2(0), hi);
-            vec4 c = expand ? jfaExpandedCell(src, seeds, qc, size) : texelFetch(src, qc, 0);
+            vec4 c = jfaCandidate(src, seeds, qc, size);
             bool take = q == qc && !jfaEmpty(c) && (!have || jfaBetter(p, c, best));
             best = take ? c : best;
             have = have || take;
@@ -73,16 +82,15 @@ vec4 jfaDownsample(sampler2D full, ivec2 t, ivec2 fullSize) {
     return best;
 }
 
-// One texel of a kernel dispatch. mode 0: pass; 1: expand then pass (src is the
-// half-resolution grid); 2: downsample full-resolution seeds. `before` receives the cell the
-// texel held before (for "until unchanged" counting).
+// One texel of a kernel dispatch. mode 0: pass (expand then pass when compiled with
+// JFA_EXPAND; src is then the half-resolution grid); 2: downsample full-resolution seeds.
+// `before` receives the cell the texel held before (for "until unchanged" counting).
 vec4 jfaTexel(sampler2D src, sampler2D seeds, ivec2 t, ivec2 size, ivec2 srcSize, int step,
               int scale, int mode, out vec4 before) {
     if (mode == 2) {
         before = jfaDownsample(src, t, srcSize);
         return before;
     }
-    bool expand = mode == 1;
-    before = expand ? jfaExpandedCell(src, seeds, t, size) : texelFetch(src, t, 0);
-    return jfaSelect(src, seeds, t, size, step, scale, expand);
+    before = jfaCandidate(src, seeds, t, size);
+    return jfaSelect(src, seeds, t, size, step, scale);
 }

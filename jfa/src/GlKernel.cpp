@@ -35,16 +35,29 @@ Grid readGrid(const gl::Texture& texture) {
     return g;
 }
 
+namespace {
+
+gl::Program buildKernel(const ShaderLibrary& shaders, const std::string& criterionFile,
+                        GlKernelKind kind, bool expand) {
+    const std::vector<std::string> defines =
+        expand ? std::vector<std::string>{"JFA_EXPAND"} : std::vector<std::string>{};
+    if (kind == GlKernelKind::Fragment)
+        return gl::Program::build(shaders,
+                                  {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
+                                   {GL_FRAGMENT_SHADER, "jfa_pass.frag.glsl"},
+                                   {GL_FRAGMENT_SHADER, criterionFile}},
+                                  defines);
+    return gl::Program::build(
+        shaders, {{GL_COMPUTE_SHADER, "jfa_pass.comp.glsl"}, {GL_COMPUTE_SHADER, criterionFile}},
+        defines);
+}
+
+} // namespace
+
 GlFloodKernel::GlFloodKernel(const ShaderLibrary& shaders, const std::string& criterionFile,
                              GlKernelKind kind)
-    : kind_(kind),
-      passProgram_(gl::Program::build(
-          shaders, kind == GlKernelKind::Fragment
-                       ? std::vector<gl::StageSource>{{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
-                                                      {GL_FRAGMENT_SHADER, "jfa_pass.frag.glsl"},
-                                                      {GL_FRAGMENT_SHADER, criterionFile}}
-                       : std::vector<gl::StageSource>{{GL_COMPUTE_SHADER, "jfa_pass.comp.glsl"},
-                                                      {GL_COMPUTE_SHADER, criterionFile}})),
+    : kind_(kind), passProgram_(buildKernel(shaders, criterionFile, kind, false)),
+      expandProgram_(buildKernel(shaders, criterionFile, kind, true)),
       emptyVao_(gl::VertexArray::create()),
       changedCounter_(sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT) {}
 
@@ -66,7 +79,7 @@ const gl::Texture& GlFloodKernel::otherTexture(int width, int height, const gl::
 void GlFloodKernel::dispatch(const gl::Texture& src, const gl::Texture& seeds,
                              const gl::Texture& dst, int mode, int step, int scale,
                              bool countChanges) {
-    const gl::Program& p = passProgram_;
+    const gl::Program& p = mode == 1 ? expandProgram_ : passProgram_;
     p.set("uSize", glm::ivec2(dst.width(), dst.height()));
     p.set("uSrcSize", glm::ivec2(src.width(), src.height()));
     p.set("uStep", step);

@@ -46,7 +46,8 @@ class GlFloodKernel {
     template <Criterion C>
     const gl::Texture& run(const Plan& plan, const gl::Texture& seeds, const C& criterion,
                            PassTimer* timer = nullptr, const PassCallback& callback = {}) {
-        for (const gl::Program* p : {&passProgram_}) setCriterionUniforms(*p, criterion);
+        for (const gl::Program* p : {&passProgram_, &expandProgram_})
+            setCriterionUniforms(*p, criterion);
         return runPlan(plan, seeds, timer, callback);
     }
 
@@ -70,7 +71,8 @@ class GlFloodKernel {
     const gl::Texture& otherTexture(int width, int height, const gl::Texture* current);
 
     GlKernelKind kind_;
-    gl::Program passProgram_;
+    gl::Program passProgram_;   // passes and downsampling
+    gl::Program expandProgram_; // the pass that expands the half-resolution stage (JFA_EXPAND)
     gl::VertexArray emptyVao_;
     gl::Buffer changedCounter_;
     struct Pair {
