@@ -83,17 +83,23 @@ GpuScene::GpuScene(const Scene& scene) {
 void GpuScene::draw(const gl::Program& program, Uniforms what) const {
     glUseProgram(program.id());
     glBindVertexArray(vao_.id());
+    // Uniform locations are looked up once per draw call, not once per instance.
+    const GLuint id = program.id();
     const GLint model = program.location("uModel");
+    const bool material = what == Uniforms::Material;
+    const GLint normalMatrix = material ? program.location("uNormalMatrix") : -1;
+    const GLint baseColor = material ? program.location("uBaseColor") : -1;
+    const GLint hasTexture = material ? program.location("uHasTexture") : -1;
+    const GLint objectId = material ? program.location("uObjectId") : -1;
     for (const Draw& d : draws_) {
         if (d.indexCount == 0) continue;
-        glProgramUniformMatrix4fv(program.id(), model, 1, GL_FALSE, &d.model[0][0]);
-        if (what == Uniforms::Material) {
-            glProgramUniformMatrix3fv(program.id(), program.location("uNormalMatrix"), 1, GL_FALSE,
-                                      &d.normalMatrix[0][0]);
-            program.set("uBaseColor", d.baseColor);
+        glProgramUniformMatrix4fv(id, model, 1, GL_FALSE, &d.model[0][0]);
+        if (material) {
+            glProgramUniformMatrix3fv(id, normalMatrix, 1, GL_FALSE, &d.normalMatrix[0][0]);
+            glProgramUniform4fv(id, baseColor, 1, &d.baseColor[0]);
             const bool textured = d.texture >= 0 && d.texture < static_cast<int>(textures_.size());
-            program.set("uHasTexture", textured ? 1 : 0);
-            program.set("uObjectId", static_cast<int>(d.objectId));
+            glProgramUniform1i(id, hasTexture, textured ? 1 : 0);
+            glProgramUniform1i(id, objectId, static_cast<int>(d.objectId));
             if (textured) glBindTextureUnit(0, textures_[static_cast<size_t>(d.texture)].id());
         }
         glDrawElementsBaseVertex(
