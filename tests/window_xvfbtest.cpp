@@ -15,8 +15,6 @@
 
 #include <gtest/gtest.h>
 
-#include <cstring>
-
 namespace fl::test {
 namespace {
 
@@ -24,22 +22,6 @@ constexpr int kW = 160, kH = 120;
 
 Scene testScene() {
     return groundAndBox(4.0f, {-1, 0.5f, -1}, {1, 2, 1}, {0.6f, -1, 0.3f});
-}
-
-ByteImage readBackBuffer(int w, int h) {
-    ByteImage img{w, h, 4, std::vector<std::uint8_t>(static_cast<size_t>(w) * h * 4)};
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-    glReadBuffer(GL_BACK);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadnPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(img.data.size()),
-                  img.data.data());
-    const size_t row = static_cast<size_t>(w) * 4;
-    std::vector<std::uint8_t> flipped(img.data.size());
-    for (int y = 0; y < h; ++y)
-        std::memcpy(&flipped[static_cast<size_t>(y) * row],
-                    &img.data[static_cast<size_t>(h - 1 - y) * row], row);
-    img.data = flipped;
-    return img;
 }
 
 ByteImage renderHeadless(const Scene& scene) {
@@ -66,7 +48,7 @@ TEST(Window, RendersTheSamePixelsAsHeadless) {
         glfwPollEvents();
         r.render(makeCameraView(scene, {}, float(kW) / kH));
         r.present(fb.x, fb.y);
-        if (frame == 2) shown = readBackBuffer(fb.x, fb.y);
+        if (frame == 2) shown = readDefaultFramebuffer(fb.x, fb.y);
         window->swapBuffers();
     }
     EXPECT_NO_THROW(gl::throwIfErrors("window frames"));

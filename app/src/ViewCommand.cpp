@@ -7,37 +7,10 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
-#include <cstring>
 #include <iostream>
 #include <sstream>
 
 namespace fl::app {
-
-namespace {
-
-// Reads the window's default framebuffer (what the user sees) as an sRGB PNG image.
-ByteImage readWindow(int width, int height) {
-    ByteImage img{width, height, 4,
-                  std::vector<std::uint8_t>(static_cast<size_t>(width) * height * 4)};
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-    glReadBuffer(GL_BACK);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadnPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE,
-                  static_cast<GLsizei>(img.data.size()), img.data.data());
-    gl::throwIfErrors("window read-back");
-    const size_t row = static_cast<size_t>(width) * 4;
-    std::vector<std::uint8_t> tmp(row);
-    for (int y = 0; y < height / 2; ++y) { // GL rows are bottom-up
-        std::uint8_t* a = &img.data[static_cast<size_t>(y) * row];
-        std::uint8_t* b = &img.data[static_cast<size_t>(height - 1 - y) * row];
-        std::memcpy(tmp.data(), a, row);
-        std::memcpy(a, b, row);
-        std::memcpy(b, tmp.data(), row);
-    }
-    return img;
-}
-
-} // namespace
 
 int runViewer(const SceneOptions& o, int width, int height, int frames,
               const std::string& screenshot) {
@@ -76,7 +49,7 @@ int runViewer(const SceneOptions& o, int width, int height, int frames,
         renderer.render(controller.view(static_cast<float>(size.x) / static_cast<float>(size.y)));
         renderer.present(size.x, size.y);
         if (frames > 0 && frame + 1 == frames && !screenshot.empty()) {
-            writePng(screenshot, readWindow(size.x, size.y));
+            writePng(screenshot, readDefaultFramebuffer(size.x, size.y));
             std::cout << "wrote " << screenshot << "\n";
         }
         window->swapBuffers();

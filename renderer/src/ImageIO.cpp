@@ -76,6 +76,23 @@ FloatImage readTexture(const gl::Texture& texture, int channels) {
     return img;
 }
 
+ByteImage readDefaultFramebuffer(int width, int height) {
+    ByteImage img{width, height, 4,
+                  std::vector<std::uint8_t>(static_cast<size_t>(width) * height * 4)};
+    std::vector<std::uint8_t> raw(img.data.size());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    glReadBuffer(GL_BACK);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadnPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(raw.size()),
+                  raw.data());
+    gl::throwIfErrors("window read-back");
+    const size_t row = static_cast<size_t>(width) * 4; // GL rows are bottom-up
+    for (int y = 0; y < height; ++y)
+        std::memcpy(&img.data[static_cast<size_t>(y) * row],
+                    &raw[static_cast<size_t>(height - 1 - y) * row], row);
+    return img;
+}
+
 std::uint8_t linearToSrgb8(float c) {
     if (!(c > 0.0f)) return 0; // also maps NaN to 0
     if (c >= 1.0f) return 255;

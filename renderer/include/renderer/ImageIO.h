@@ -34,6 +34,10 @@ struct ByteImage {
 /// flipped so that row 0 is the top of the picture.
 FloatImage readTexture(const gl::Texture& texture, int channels);
 
+/// Reads the default framebuffer's back buffer (what a window shows) as 8-bit RGBA, row 0 at the
+/// top.
+ByteImage readDefaultFramebuffer(int width, int height);
+
 /// The sRGB transfer function for a linear value (clamped to [0,1]), as 0..255.
 std::uint8_t linearToSrgb8(float linear);
 /// Encodes linear RGB(A) floats as 8-bit sRGB (alpha kept linear, forced to 255 if absent).
