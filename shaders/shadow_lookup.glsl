@@ -1,16 +1,32 @@
-// Hard shadow-map test shared by every method that needs the binary answer.
-// Depth is compared in the light's post-perspective space, where the shadow map was written;
-// the bias was applied when the map was drawn (slope-scaled polygon offset).
+// Shadow-map lookup shared by every shadow method, for either provider (uniform or TSM).
+// A point's texel comes from the warped light space (uShadowWarp * uLightViewProj; the warp is
+// the identity for a uniform map and N_T for TSM); its reference depth comes from the light's
+// own post-perspective space (uLightViewProj), where the shadow pass stored depths and applied
+// the bias.
 layout(binding = 1) uniform sampler2DShadow uShadowMap;
 uniform mat4 uLightViewProj;
+uniform mat4 uShadowWarp;
+
+// Map coordinates of `world` for a map made with `lightViewProj` and `warp`: xy in [0,1]^2 on
+// the map, z the reference depth in [0,1]. False if the point is behind the light or outside
+// the map.
+bool shadowCoordWith(mat4 lightViewProj, mat4 warp, vec3 world, out vec3 uvz) {
+    vec4 light = lightViewProj * vec4(world, 1.0);
+    vec4 map = warp * light;
+    uvz = vec3(0.0);
+    if (light.w <= 0.0 || map.w <= 0.0) return false;
+    uvz = vec3(map.xy / map.w, light.z / light.w) * 0.5 + 0.5;
+    return all(greaterThanEqual(uvz, vec3(0.0))) && all(lessThanEqual(uvz, vec3(1.0)));
+}
+
+bool shadowCoord(vec3 world, out vec3 uvz) {
+    return shadowCoordWith(uLightViewProj, uShadowWarp, world, uvz);
+}
 
 // 1 if `world` sees the light's centre, 0 if the shadow map holds something nearer.
-// Points outside the light's frustum are treated as lit.
+// Points outside the light's map are treated as lit.
 float hardShadow(vec3 world) {
-    vec4 clip = uLightViewProj * vec4(world, 1.0);
-    if (clip.w <= 0.0) return 1.0;
-    vec3 ndc = clip.xyz / clip.w;
-    vec3 uvz = ndc * 0.5 + 0.5;
-    if (any(lessThan(uvz, vec3(0.0))) || any(greaterThan(uvz, vec3(1.0)))) return 1.0;
+    vec3 uvz;
+    if (!shadowCoord(world, uvz)) return 1.0;
     return texture(uShadowMap, uvz);
 }

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -97,6 +98,36 @@ TEST(Cli, RenderWritesPngAndExrAndNoTemporaries) {
         EXPECT_EQ(e.path().string().find(".tmp"), std::string::npos) << e.path();
     }
     EXPECT_EQ(files, 3); // NAME.png, NAME.visibility.png, NAME.exr
+}
+
+TEST(Cli, RenderSideBySideWritesBothProvidersAndAliasingMaps) {
+    const auto dir = outputDir("cli_tsm");
+    for (const auto& e : std::filesystem::directory_iterator(dir)) std::filesystem::remove(e);
+    const Outcome r = run("render --width 64 --height 48 --shadow-map-size 256 --side-by-side "
+                          "--aliasing-map " +
+                          (dir / "alias.exr").string() + " --out " + dir.string() + " --name f");
+    ASSERT_EQ(r.code, 0) << r.output;
+    EXPECT_NE(r.output.find("near the viewer"), std::string::npos) << r.output;
+    for (const char* name : {"f.uniform.png", "f.tsm.png", "f.uniform.exr", "f.tsm.exr",
+                             "alias.uniform.exr", "alias.tsm.exr", "f.uniform-vs-tsm.png",
+                             "f.uniform-vs-tsm.visibility.png", "f.uniform-vs-tsm.footprint.png"})
+        EXPECT_TRUE(std::filesystem::exists(dir / name)) << name << "\n" << r.output;
+    const ByteImage pair = readPng(dir / "f.uniform-vs-tsm.png");
+    EXPECT_EQ(pair.width, 2 * 64 + 4); // two frames and a 4-pixel gutter
+    EXPECT_EQ(pair.height, 48);
+    int w = 0, h = 0;
+    const std::vector<ExrChannel> exr = readExr(dir / "alias.tsm.exr", w, h);
+    std::vector<std::string> names;
+    for (const ExrChannel& c : exr) names.push_back(c.name);
+    std::sort(names.begin(), names.end());
+    EXPECT_EQ(names, (std::vector<std::string>{"footprint", "previousVisibility", "viewDepth",
+                                               "visibility"}));
+}
+
+TEST(Cli, UnknownShadowMapProviderIsAUsageError) {
+    const Outcome r = run("render --shadow-map cascaded --out " + outputDir("cli").string());
+    EXPECT_EQ(r.code, 2) << r.output;
+    EXPECT_NE(r.output.find("--shadow-map"), std::string::npos) << r.output;
 }
 
 TEST(Cli, UnwritableOutputIsAnErrorWithoutPartialFiles) {

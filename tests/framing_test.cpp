@@ -2,6 +2,7 @@
 
 #include <geometry/Framing.h>
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 namespace fl::geom {
@@ -81,6 +82,46 @@ TEST(Framing, DegenerateBoundsStayFinite) {
             EXPECT_TRUE(std::isfinite(v.viewProj()[c][r]));
             EXPECT_TRUE(std::isfinite(l.viewProj()[c][r]));
         }
+}
+
+TEST(Framing, ClampDepthRangeTightensToTheBounds) {
+    const glm::mat4 view = glm::lookAt(glm::vec3(0, 0, 10), glm::vec3(0), glm::vec3(0, 1, 0));
+    const glm::mat4 proj = glm::perspective(glm::radians(60.0f), 1.5f, 0.1f, 1000.0f);
+    Aabb box;
+    box.extend(glm::vec3(-1, -1, -2));
+    box.extend(glm::vec3(1, 1, 3));
+    const glm::mat4 p = clampDepthRange(proj, view, box);
+    // Depths 7 (z = 3) and 12 (z = -2) map to the new near and far planes.
+    auto ndcZ = [&](float d) {
+        const glm::vec4 c = p * glm::vec4(0, 0, -d, 1);
+        return c.z / c.w;
+    };
+    EXPECT_NEAR(ndcZ(7.0f), -1.0f, 1e-5f);
+    EXPECT_NEAR(ndcZ(12.0f), 1.0f, 1e-5f);
+    // x and y are untouched.
+    EXPECT_EQ(p[0][0], proj[0][0]);
+    EXPECT_EQ(p[1][1], proj[1][1]);
+}
+
+TEST(Framing, ClampDepthRangeNeverWidensOrBreaks) {
+    const glm::mat4 view = glm::lookAt(glm::vec3(0, 0, 10), glm::vec3(0), glm::vec3(0, 1, 0));
+    const glm::mat4 proj = glm::perspective(glm::radians(60.0f), 1.0f, 8.0f, 11.0f);
+    Aabb box;
+    box.extend(glm::vec3(-50));
+    box.extend(glm::vec3(50));
+    // Bounds larger than the frustum's depth range: the original planes stay.
+    const glm::mat4 p = clampDepthRange(proj, view, box);
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            EXPECT_NEAR(p[c][r], proj[c][r], 1e-5f * std::abs(proj[c][r]) + 1e-6f);
+    // Bounds behind the camera: unchanged.
+    Aabb behind;
+    behind.extend(glm::vec3(-1, -1, 20));
+    behind.extend(glm::vec3(1, 1, 30));
+    EXPECT_EQ(clampDepthRange(proj, view, behind), proj);
+    // Orthographic: unchanged.
+    const glm::mat4 ortho = glm::ortho(-1.0f, 1.0f, -1.0f, 1.0f, 0.1f, 100.0f);
+    EXPECT_EQ(clampDepthRange(ortho, view, box), ortho);
 }
 
 } // namespace

@@ -26,11 +26,13 @@ std::string readAll(const std::filesystem::path& p) {
     return {std::istreambuf_iterator<char>(in), {}};
 }
 
-FrameImages renderDefault(int size, int shadowMap) {
+FrameImages renderDefault(int size, int shadowMap,
+                          ShadowMapProvider provider = ShadowMapProvider::Uniform) {
     const Scene scene = loadGltf(kDefaultAsset);
     const ShaderLibrary shaders;
     RenderSettings settings;
     settings.shadow.size = shadowMap;
+    settings.shadow.provider = provider;
     Renderer r(shaders, scene, settings);
     r.resize(size, size);
     r.render(makeCameraView(scene, {}, 1.0f));
@@ -60,6 +62,7 @@ TEST_F(GoldenTest, DefaultSceneColour) {
     tol.pixelThreshold = 16;
     tol.maxPercentOver = 1.0;
     const CompareResult c = compareWithGolden(toSrgb8(f.color), "default_256_colour", tol);
+    std::printf("%s\n", c.report.c_str());
     EXPECT_TRUE(c.pass) << c.report;
 }
 
@@ -74,6 +77,7 @@ TEST_F(GoldenTest, DefaultSceneVisibility) {
     tol.maxPercentOver = 1.0;
     const CompareResult c =
         compareWithGolden(visibilityToGrey(f.visibility), "default_256_visibility", tol);
+    std::printf("%s\n", c.report.c_str());
     EXPECT_TRUE(c.pass) << c.report;
     // The picture must actually contain shadow and light, or the golden proves nothing.
     size_t shadowed = 0;
@@ -81,6 +85,39 @@ TEST_F(GoldenTest, DefaultSceneVisibility) {
     const double share = double(shadowed) / double(f.visibility.data.size());
     EXPECT_GT(share, 0.03);
     EXPECT_LT(share, 0.6);
+}
+
+// TSM hard shadows, same view and tolerances as the uniform goldens above (the same reasons
+// apply). A 512² map keeps the difference from the uniform map visible near the viewer.
+TEST_F(GoldenTest, DefaultSceneTsmColour) {
+    const FrameImages f = renderDefault(256, 512, ShadowMapProvider::Tsm);
+    Tolerance tol;
+    tol.maxAbs = 255;
+    tol.meanAbs = 1.5;
+    tol.pixelThreshold = 16;
+    tol.maxPercentOver = 1.0;
+    const CompareResult c = compareWithGolden(toSrgb8(f.color), "default_256_tsm_colour", tol);
+    std::printf("%s\n", c.report.c_str());
+    EXPECT_TRUE(c.pass) << c.report;
+}
+
+TEST_F(GoldenTest, DefaultSceneTsmVisibility) {
+    const FrameImages f = renderDefault(256, 512, ShadowMapProvider::Tsm);
+    Tolerance tol;
+    tol.maxAbs = 255;
+    tol.meanAbs = 255 * 0.01;
+    tol.pixelThreshold = 127;
+    tol.maxPercentOver = 1.0;
+    const CompareResult c =
+        compareWithGolden(visibilityToGrey(f.visibility), "default_256_tsm_visibility", tol);
+    std::printf("%s\n", c.report.c_str());
+    EXPECT_TRUE(c.pass) << c.report;
+    // TSM must differ from the uniform map at the same resolution, or the provider is not in use.
+    const FrameImages u = renderDefault(256, 512, ShadowMapProvider::Uniform);
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < f.visibility.data.size(); ++i)
+        differing += (f.visibility.data[i] < 0.5f) != (u.visibility.data[i] < 0.5f);
+    EXPECT_GT(differing, 100u);
 }
 
 } // namespace

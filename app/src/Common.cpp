@@ -24,10 +24,16 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool sceneAsOption) {
     cmd.add_option("--shadow-map-size", o.shadowMapSize, "Shadow map texels per side")
         ->check(CLI::Range(16, kMaxShadowMapSize))
         ->capture_default_str();
-    cmd.add_option("--bias-slope", o.slopeBias, "Slope-scaled depth bias (polygon offset factor)")
+    cmd.add_option("--shadow-map", o.shadowMap,
+                   "Shadow-map provider: uniform (fitted to the scene) or tsm (trapezoidal)")
+        ->check(CLI::IsMember({"uniform", "tsm"}))
+        ->capture_default_str();
+    cmd.add_option("--bias-slope", o.slopeBias,
+                   "Slope-scaled depth bias (polygon offset factor, in light depth)")
         ->check(CLI::Range(0.0f, 64.0f))
         ->capture_default_str();
-    cmd.add_option("--bias-constant", o.constantBias, "Constant depth bias (polygon offset units)")
+    cmd.add_option("--bias-constant", o.constantBias,
+                   "Constant depth bias (polygon offset units, in light depth)")
         ->check(CLI::Range(0.0f, 4096.0f))
         ->capture_default_str();
     cmd.add_option("--timing", o.timing, "Pass timing: auto, query (GL timers), finish (glFinish)")
@@ -87,6 +93,7 @@ ShaderLibrary makeShaderLibrary(const SceneOptions& o) {
 RenderSettings makeRenderSettings(const SceneOptions& o) {
     RenderSettings s;
     s.shadow.size = o.shadowMapSize;
+    s.shadow.provider = parseProvider(o.shadowMap).value_or(ShadowMapProvider::Uniform);
     s.shadow.slopeBias = o.slopeBias;
     s.shadow.constantBias = o.constantBias;
     s.timing = o.timing == "query"    ? TimingMode::Query

@@ -28,6 +28,7 @@ struct SceneOptions {
     std::optional<float> lightRadius; // --light-radius
     std::string shaderDir;            // --shader-dir
     int shadowMapSize = 1024;
+    std::string shadowMap = "uniform"; // provider: uniform | tsm
     float slopeBias = 2.0f;
     float constantBias = 2.0f;
     std::string timing = "auto";

@@ -2,47 +2,145 @@
 
 #include <renderer/Capture.h>
 #include <renderer/EglContext.h>
+#include <renderer/ShadowStats.h>
 
+#include <iomanip>
 #include <iostream>
 
 namespace fl::app {
 
-int renderHeadless(const SceneOptions& o, int width, int height,
-                   const std::filesystem::path& outDir, const std::string& stem) {
-    const Scene scene = loadScene(o);
-    const CameraView camera = initialCamera(scene, o, width, height);
-    auto context = EglContext::create();
-    std::cout << "context: " << context->description() << "\n";
-    const ShaderLibrary shaders = makeShaderLibrary(o);
-    Renderer renderer(shaders, scene, makeRenderSettings(o));
+namespace {
+
+struct RenderRequest {
+    SceneOptions scene;
+    std::string out = "captures";
+    std::string name = "frame";
+    std::string aliasingMap; // --aliasing-map FILE.exr
+    bool sideBySide = false; // --side-by-side: uniform and TSM, plus comparison pictures
+    int width = 512, height = 512;
+};
+
+void printShadowStats(const ShadowMapStats& s, std::ostream& out) {
+    out << std::setprecision(3) << "  texel footprint (screen pixels per shadow texel) over "
+        << s.receivers << " receivers: median " << s.footprint.median << ", p95 " << s.footprint.p95
+        << "\n"
+        << "  near the viewer (nearest 25%, view depth <= " << s.nearDepth << "): median "
+        << s.footprintNear.median << ", p95 " << s.footprintNear.p95 << "\n"
+        << std::defaultfloat;
+}
+
+// "out.exr" with provider "tsm" -> "out.tsm.exr" (only when several providers are written).
+std::filesystem::path withSuffix(const std::filesystem::path& p, std::string_view suffix) {
+    std::filesystem::path q = p;
+    q.replace_filename(p.stem().string() + "." + std::string(suffix) + p.extension().string());
+    return q;
+}
+
+struct ProviderResult {
+    FrameImages frame;
+    FloatImage diagnostics;
+};
+
+ProviderResult renderWith(const ShaderLibrary& shaders, const Scene& scene,
+                          const CameraView& camera, RenderSettings settings, int width,
+                          int height) {
+    settings.diagnostics = true;
+    Renderer renderer(shaders, scene, settings);
     renderer.resize(width, height);
     renderer.render(camera);
-    const CapturePaths paths = writeFrame(readFrame(renderer), outDir, stem);
-    std::cout << "scene: " << scene.source << " (" << scene.triangleCount() << " triangles)\n"
-              << "frame " << width << "x" << height << ", shadow map "
-              << renderer.settings().shadow.size << "^2:\n";
+    std::cout << "shadow map " << providerName(settings.shadow.provider) << " "
+              << settings.shadow.size << "^2";
+    if (const ShadowMapPass::Outputs* sm = renderer.shadow(); sm && sm->trapezoid)
+        std::cout << " (trapezoid weight " << sm->trapezoid->weight
+                  << (sm->trapezoid->degenerate ? ", blended towards a focused uniform map" : "")
+                  << ")";
+    std::cout << ", frame " << width << "x" << height << ":\n";
     printTimings(renderer, std::cout);
-    std::cout << "wrote " << paths.png.string() << "\n"
-              << "wrote " << paths.visibilityPng.string() << "\n"
-              << "wrote " << paths.exr.string() << "\n";
+    return {readFrame(renderer), readTexture(*renderer.diagnostics(), 4)};
+}
+
+int renderHeadless(const RenderRequest& r) {
+    const Scene scene = loadScene(r.scene);
+    const CameraView camera = initialCamera(scene, r.scene, r.width, r.height);
+    auto context = EglContext::create();
+    std::cout << "context: " << context->description() << "\n"
+              << "scene: " << scene.source << " (" << scene.triangleCount() << " triangles)\n";
+    const ShaderLibrary shaders = makeShaderLibrary(r.scene);
+    const RenderSettings base = makeRenderSettings(r.scene);
+    std::vector<ShadowMapProvider> providers{base.shadow.provider};
+    if (r.sideBySide) providers = {ShadowMapProvider::Uniform, ShadowMapProvider::Tsm};
+
+    std::vector<ProviderResult> results;
+    for (ShadowMapProvider p : providers) {
+        RenderSettings settings = base;
+        settings.shadow.provider = p;
+        results.push_back(renderWith(shaders, scene, camera, settings, r.width, r.height));
+        printShadowStats(summarizeShadowDiagnostics(results.back().diagnostics), std::cout);
+    }
+    // Every image is checked and encoded before anything is written, and each file is
+    // written under a temporary name and renamed, so a failure leaves no partial output.
+    std::vector<std::filesystem::path> written;
+    for (std::size_t i = 0; i < results.size(); ++i) {
+        const std::string stem =
+            r.sideBySide ? r.name + "." + std::string(providerName(providers[i])) : r.name;
+        const CapturePaths paths = writeFrame(results[i].frame, r.out, stem);
+        written.insert(written.end(), {paths.png, paths.visibilityPng, paths.exr});
+        if (!r.aliasingMap.empty()) {
+            const std::filesystem::path a =
+                r.sideBySide ? withSuffix(r.aliasingMap, providerName(providers[i]))
+                             : std::filesystem::path(r.aliasingMap);
+            writeAliasingMap(a, results[i].diagnostics);
+            written.push_back(a);
+        }
+    }
+    if (r.sideBySide) {
+        const std::filesystem::path dir(r.out);
+        const std::string stem = r.name + ".uniform-vs-tsm";
+        auto pair = [&](auto&& picture) {
+            return sideBySide({picture(results[0]), picture(results[1])});
+        };
+        writePng(dir / (stem + ".png"),
+                 pair([](const ProviderResult& x) { return toSrgb8(x.frame.color); }));
+        writePng(dir / (stem + ".visibility.png"), pair([](const ProviderResult& x) {
+                     return visibilityToGrey(x.frame.visibility);
+                 }));
+        writePng(dir / (stem + ".footprint.png"),
+                 pair([](const ProviderResult& x) { return footprintHeatMap(x.diagnostics); }));
+        for (const char* suffix : {".png", ".visibility.png", ".footprint.png"})
+            written.push_back(dir / (stem + suffix));
+    }
+    for (const std::filesystem::path& p : written) std::cout << "wrote " << p.string() << "\n";
     return 0;
+}
+
+} // namespace
+
+int renderHeadless(const SceneOptions& o, int width, int height,
+                   const std::filesystem::path& outDir, const std::string& stem) {
+    RenderRequest r;
+    r.scene = o;
+    r.width = width;
+    r.height = height;
+    r.out = outDir.string();
+    r.name = stem;
+    return renderHeadless(r);
 }
 
 Runner addRenderCommand(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand("render", "Render one frame headless (EGL) to PNG and EXR");
-    struct State {
-        SceneOptions scene;
-        std::string out = "captures";
-        std::string name = "frame";
-        int width = 512, height = 512;
-    };
-    auto s = std::make_shared<State>();
+    auto s = std::make_shared<RenderRequest>();
     addSceneOptions(*cmd, s->scene, true);
     addSizeOptions(*cmd, s->width, s->height);
     cmd->add_option("--out", s->out, "Output folder")->capture_default_str();
     cmd->add_option("--name", s->name, "File name stem: NAME.png and NAME.exr")
         ->capture_default_str();
-    return [s] { return renderHeadless(s->scene, s->width, s->height, s->out, s->name); };
+    cmd->add_option("--aliasing-map", s->aliasingMap,
+                    "Also write the shadow-map texel footprint (screen pixels per texel), view "
+                    "depth and visibility per pixel to this EXR file");
+    cmd->add_flag("--side-by-side", s->sideBySide,
+                  "Render with the uniform and the TSM provider and write NAME.uniform-vs-tsm.png "
+                  "(colour), .visibility.png and .footprint.png (heat map) side by side");
+    return [s] { return renderHeadless(*s); };
 }
 
 } // namespace fl::app

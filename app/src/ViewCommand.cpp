@@ -25,7 +25,7 @@ int runViewer(const SceneOptions& o, int width, int height, int frames,
     std::cout << "context: " << window->description() << "\n"
               << "scene: " << scene.source << " (" << scene.triangleCount() << " triangles)\n"
               << "controls: left drag orbit/look, right drag pan, wheel zoom, Tab orbit<->fly, "
-                 "WASD/QE fly, Shift fast, R reset, Esc quit\n";
+                 "WASD/QE fly, Shift fast, R reset, T uniform<->TSM shadow map, Esc quit\n";
     const ShaderLibrary shaders = makeShaderLibrary(o);
     Renderer renderer(shaders, scene, makeRenderSettings(o));
     const float yfov = 2.0f * std::atan(1.0f / initial.proj[1][1]);
@@ -33,6 +33,7 @@ int runViewer(const SceneOptions& o, int width, int height, int frames,
     controller.attach(window->handle());
 
     double last = glfwGetTime(), titleTime = last;
+    bool providerKeyDown = false;
     int frame = 0;
     glm::ivec2 size{0};
     while (!window->shouldClose() && (frames <= 0 || frame < frames)) {
@@ -44,6 +45,17 @@ int runViewer(const SceneOptions& o, int width, int height, int frames,
         }
         const double now = glfwGetTime();
         controller.update(window->handle(), static_cast<float>(now - last));
+        // T switches the shadow-map provider on the key's press, not while it is held.
+        const bool tDown = glfwGetKey(window->handle(), GLFW_KEY_T) == GLFW_PRESS;
+        if (tDown && !providerKeyDown) {
+            RenderSettings settings = renderer.settings();
+            settings.shadow.provider = settings.shadow.provider == ShadowMapProvider::Uniform
+                                           ? ShadowMapProvider::Tsm
+                                           : ShadowMapProvider::Uniform;
+            renderer.setSettings(settings);
+            std::cout << "shadow map: " << providerName(settings.shadow.provider) << "\n";
+        }
+        providerKeyDown = tDown;
         last = now;
         renderer.resize(size.x, size.y);
         renderer.render(controller.view(static_cast<float>(size.x) / static_cast<float>(size.y)));
@@ -59,6 +71,7 @@ int runViewer(const SceneOptions& o, int width, int height, int frames,
             title.precision(1);
             title << std::fixed << "Floodlight - "
                   << (controller.mode() == CameraController::Mode::Orbit ? "orbit" : "fly") << " - "
+                  << providerName(renderer.settings().shadow.provider) << " shadow map - "
                   << renderer.timer().frameMs() << " ms/frame";
             glfwSetWindowTitle(window->handle(), title.str().c_str());
             titleTime = now;

@@ -81,4 +81,20 @@ ViewVolume frameBounds(const Aabb& bounds, glm::vec3 fromDir, float yfov, float 
     return v;
 }
 
+glm::mat4 clampDepthRange(const glm::mat4& proj, const glm::mat4& view, const Aabb& bounds) {
+    // A perspective matrix has w_clip = -z_view: column 2, row 3 is -1 and column 3, row 3 is 0.
+    if (proj[2][3] != -1.0f || proj[3][3] != 0.0f || !bounds.valid()) return proj;
+    const float a = proj[2][2], b = proj[3][2];
+    // z_ndc = (a z + b) / -z with z = -d: near plane d = b / (a - 1), far plane d = b / (a + 1).
+    const float znear = b / (a - 1.0f), zfar = b / (a + 1.0f);
+    if (!(znear > 0.0f) || !(zfar > znear) || !std::isfinite(zfar)) return proj;
+    const Aabb v = bounds.transformed(view);
+    const float dmin = std::max(znear, -v.max.z), dmax = std::min(zfar, -v.min.z);
+    if (!(dmax > dmin * (1.0f + 1e-4f))) return proj;
+    glm::mat4 out = proj;
+    out[2][2] = -(dmax + dmin) / (dmax - dmin);
+    out[3][2] = -2.0f * dmax * dmin / (dmax - dmin);
+    return out;
+}
+
 } // namespace fl::geom

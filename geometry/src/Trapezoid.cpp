@@ -90,8 +90,8 @@ std::vector<dvec2> clipToSquare(const std::vector<dvec2>& polygon) {
     return poly;
 }
 
-std::array<dvec4, 8> projectFrustumCorners(const glm::mat4& lightViewProj,
-                                           const glm::mat4& eyeViewProjInverse) {
+std::array<dvec4, 8> projectFrustumCorners(const glm::dmat4& lightViewProj,
+                                           const glm::dmat4& eyeViewProjInverse) {
     const dmat4 light(lightViewProj);
     const dmat4 inv(eyeViewProjInverse);
     std::array<dvec4, 8> out{};
@@ -104,7 +104,7 @@ std::array<dvec4, 8> projectFrustumCorners(const glm::mat4& lightViewProj,
     return out;
 }
 
-TrapezoidFit fitTrapezoid(const glm::mat4& lightViewProj, const glm::mat4& eyeViewProjInverse,
+TrapezoidFit fitTrapezoid(const glm::dmat4& lightViewProj, const glm::dmat4& eyeViewProjInverse,
                           const TrapezoidParams& params) {
     TrapezoidFit fit;
     // Whole-map fallback for inputs with nothing to focus on: identity in x, y, w.

@@ -69,9 +69,9 @@ geom::ViewVolume lightVolume(const Scene& scene, const Light& light) {
 }
 
 Renderer::Renderer(const ShaderLibrary& shaders, const Scene& scene, const RenderSettings& settings)
-    : settings_(settings), scene_(scene), light_(sceneLight(scene)),
+    : settings_(settings), scene_(scene), light_(sceneLight(scene)), sceneBounds_(scene.bounds),
       lightVolume_(lightVolume(scene, light_)), shadowPass_(shaders), forwardPass_(shaders),
-      presentPass_(shaders), timer_(settings.timing) {
+      diagnosticsPass_(shaders), presentPass_(shaders), timer_(settings.timing) {
     gl::throwIfErrors("renderer set-up");
 }
 
@@ -80,6 +80,7 @@ void Renderer::resize(int width, int height) {
         throw std::invalid_argument("render size must be positive, got " + std::to_string(width) +
                                     "x" + std::to_string(height));
     forwardPass_.resize(width, height);
+    diagnosticsPass_.resize(width, height);
     width_ = width;
     height_ = height;
 }
@@ -87,16 +88,24 @@ void Renderer::resize(int width, int height) {
 void Renderer::render(const CameraView& camera) {
     if (width_ == 0) throw std::logic_error("Renderer::render before resize");
     timer_.beginFrame();
-    // 1. Shadow map: depth from the light, fitted to the scene bounds.
+    // 1. Shadow map: depth from the light, fitted to the scene bounds; TSM also fits the warp
+    //    to the camera's frustum.
     timer_.begin("shadow map");
-    const ShadowMapPass::Outputs shadow =
-        shadowPass_.execute({scene_, lightVolume_, settings_.shadow});
+    shadow_.reset();
+    const ShadowMapPass::Outputs& shadow = shadow_.emplace(shadowPass_.execute(
+        {scene_, lightVolume_, settings_.shadow, camera.view, camera.proj, sceneBounds_}));
     timer_.end();
     // 2. Forward shading with the hard shadow test.
     timer_.begin("forward");
-    const ForwardPass::Outputs fwd =
-        forwardPass_.execute({scene_, camera, light_, shadow.depth, shadow.lightViewProj});
+    const ForwardPass::Outputs fwd = forwardPass_.execute({scene_, camera, light_, shadow});
     timer_.end();
+    // 3. Diagnostics: texel footprint and the previous frame's visibility (measurement only).
+    diagnostics_ = nullptr;
+    if (settings_.diagnostics) {
+        timer_.begin("diagnostics");
+        diagnostics_ = &diagnosticsPass_.execute({scene_, camera, light_, shadow}).diagnostics;
+        timer_.end();
+    }
     timer_.endFrame();
     color_ = &fwd.color;
     visibility_ = &fwd.visibility;

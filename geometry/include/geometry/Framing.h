@@ -32,6 +32,14 @@ ViewVolume fitPerspectiveLight(const Aabb& bounds, glm::vec3 position,
 /// whole bounding sphere of `bounds` for the given vertical fov and aspect, plus near/far planes.
 ViewVolume frameBounds(const Aabb& bounds, glm::vec3 fromDir, float yfov, float aspect);
 
+/// The perspective projection `proj` (a glm::perspective / glm::frustum matrix) with its near and
+/// far planes moved in to the depth range that `bounds` (in the space `view` maps from) occupies,
+/// never beyond the original planes. TSM fits its trapezoid to this frustum: the part of the eye
+/// frustum beyond the scene holds no receivers and would only waste shadow-map texels. Returns
+/// `proj` unchanged for an orthographic projection or when the bounds lie outside the frustum's
+/// depth range.
+glm::mat4 clampDepthRange(const glm::mat4& proj, const glm::mat4& view, const Aabb& bounds);
+
 /// An up vector that is not parallel to `dir` (world +Y unless dir is nearly vertical).
 glm::vec3 stableUp(glm::vec3 dir);
 

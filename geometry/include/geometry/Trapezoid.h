@@ -83,11 +83,13 @@ std::vector<glm::dvec2> clipToSquare(const std::vector<glm::dvec2>& polygon);
 
 /// The 8 corners of the eye frustum (NDC cube through eyeViewProjInverse) in light clip space;
 /// index bits: 1 = +x, 2 = +y, 4 = far plane.
-std::array<glm::dvec4, 8> projectFrustumCorners(const glm::mat4& lightViewProj,
-                                                const glm::mat4& eyeViewProjInverse);
+std::array<glm::dvec4, 8> projectFrustumCorners(const glm::dmat4& lightViewProj,
+                                                const glm::dmat4& eyeViewProjInverse);
 
 /// Fits the TSM trapezoid to the eye frustum seen from the light and returns N_T; never NaN.
-TrapezoidFit fitTrapezoid(const glm::mat4& lightViewProj, const glm::mat4& eyeViewProjInverse,
+/// Takes double matrices: the inverse of the eye matrix loses enough precision in float to make
+/// the fit jitter by a fraction of a texel between nearly identical cameras.
+TrapezoidFit fitTrapezoid(const glm::dmat4& lightViewProj, const glm::dmat4& eyeViewProjInverse,
                           const TrapezoidParams& params = {});
 
 } // namespace fl::geom

@@ -1,12 +1,14 @@
 #pragma once
-// The frame, as numbered steps: 1. shadow map from the light, 2. forward shading with the hard
-// shadow test, 3. (window only) present. Owns the passes and the uploaded scene.
+// The frame, as numbered steps: 1. shadow map from the light (uniform or TSM provider),
+// 2. forward shading with the hard shadow test, 3. (optional) shadow-map diagnostics, 4. (window
+// only) present. Owns the passes and the uploaded scene.
 
 #include <gpu/PassTimer.h>
 #include <gpu/ShaderLibrary.h>
 #include <renderer/GpuScene.h>
 #include <renderer/Scene.h>
 #include <renderer/passes/ForwardPass.h>
+#include <renderer/passes/ShadowDiagnosticsPass.h>
 #include <renderer/passes/ShadowMapPass.h>
 
 #include <geometry/Framing.h>
@@ -18,6 +20,7 @@ namespace fl {
 struct RenderSettings {
     ShadowMapSettings shadow;
     TimingMode timing = TimingMode::Auto;
+    bool diagnostics = false; // run step 3 (texel footprint and temporal continuity)
 };
 
 /// How to pick the camera: a glTF camera, automatic framing, or an explicit eye/target.
@@ -55,6 +58,14 @@ class Renderer {
 
     [[nodiscard]] const gl::Texture& color() const { return *color_; }
     [[nodiscard]] const gl::Texture& visibility() const { return *visibility_; }
+    /// Step 3's output (see ShadowDiagnosticsPass); nullptr unless settings().diagnostics.
+    [[nodiscard]] const gl::Texture* diagnostics() const { return diagnostics_; }
+    /// The last frame's shadow map and its matrices; nullptr before the first frame.
+    [[nodiscard]] const ShadowMapPass::Outputs* shadow() const {
+        return shadow_ ? &*shadow_ : nullptr;
+    }
+    /// Makes the next diagnostics frame compare with itself (e.g. after a camera cut).
+    void resetDiagnostics() { diagnosticsPass_.reset(); }
     [[nodiscard]] const PassTimer& timer() const { return timer_; }
     [[nodiscard]] const Light& light() const { return light_; }
     [[nodiscard]] int width() const { return width_; }
@@ -64,13 +75,17 @@ class Renderer {
     RenderSettings settings_;
     GpuScene scene_;
     Light light_;
+    geom::Aabb sceneBounds_;
     geom::ViewVolume lightVolume_;
     ShadowMapPass shadowPass_;
     ForwardPass forwardPass_;
+    ShadowDiagnosticsPass diagnosticsPass_;
     PresentPass presentPass_;
     PassTimer timer_;
     const gl::Texture* color_ = nullptr;
     const gl::Texture* visibility_ = nullptr;
+    const gl::Texture* diagnostics_ = nullptr;
+    std::optional<ShadowMapPass::Outputs> shadow_;
     int width_ = 0, height_ = 0;
 };
 

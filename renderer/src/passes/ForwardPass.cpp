@@ -36,12 +36,11 @@ ForwardPass::Outputs ForwardPass::execute(const Inputs& in) {
 
     program_.set("uViewProj", in.camera.proj * in.camera.view);
     program_.set("uEye", in.camera.eye);
-    program_.set("uLightViewProj", in.lightViewProj);
     program_.set("uLightPosition", in.light.position);
     program_.set("uLightDirection", in.light.direction);
     program_.set("uLightDirectional", in.light.type == Light::Type::Directional ? 1 : 0);
     program_.set("uLightColor", in.light.color);
-    glBindTextureUnit(1, in.shadowMap.id());
+    bindShadowMap(program_, in.shadow);
     in.scene.draw(program_, GpuScene::Uniforms::Material);
     glBindTextureUnit(0, 0);
     glBindTextureUnit(1, 0);

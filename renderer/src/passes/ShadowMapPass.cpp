@@ -2,6 +2,16 @@
 
 namespace fl {
 
+std::string_view providerName(ShadowMapProvider p) {
+    return p == ShadowMapProvider::Tsm ? "tsm" : "uniform";
+}
+
+std::optional<ShadowMapProvider> parseProvider(std::string_view name) {
+    if (name == "uniform") return ShadowMapProvider::Uniform;
+    if (name == "tsm") return ShadowMapProvider::Tsm;
+    return std::nullopt;
+}
+
 ShadowMapPass::ShadowMapPass(const ShaderLibrary& shaders)
     : program_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "shadow_depth.vert.glsl"},
                                             {GL_FRAGMENT_SHADER, "shadow_depth.frag.glsl"}})) {}
@@ -22,6 +32,18 @@ void ShadowMapPass::resize(int size) {
 
 ShadowMapPass::Outputs ShadowMapPass::execute(const Inputs& in) {
     resize(in.settings.size);
+    const glm::mat4 lightViewProj = in.light.viewProj();
+    glm::mat4 warp(1.0f);
+    const bool tsm = in.settings.provider == ShadowMapProvider::Tsm;
+    if (tsm) {
+        // Fit to the part of the eye frustum the scene occupies: receivers exist only there.
+        const glm::mat4 eyeProj = geom::clampDepthRange(in.eyeProj, in.eyeView, in.sceneBounds);
+        fit_ = geom::fitTrapezoid(in.light.viewProj(),
+                                  glm::inverse(glm::dmat4(eyeProj) * glm::dmat4(in.eyeView)),
+                                  in.settings.tsm);
+        warp = fit_.nt;
+    }
+
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glViewport(0, 0, depth_.width(), depth_.height());
     glEnable(GL_DEPTH_TEST);
@@ -32,14 +54,19 @@ ShadowMapPass::Outputs ShadowMapPass::execute(const Inputs& in) {
     // Both faces are drawn: the generated and loaded scenes contain open and double-sided
     // surfaces, and culling either face would let light through them.
     glDisable(GL_CULL_FACE);
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(in.settings.slopeBias, in.settings.constantBias);
-    const glm::mat4 vp = in.light.viewProj();
-    program_.set("uLightViewProj", vp);
+    program_.set("uLightViewProj", lightViewProj);
+    program_.set("uShadowWarp", warp);
+    program_.set("uSlopeBias", in.settings.slopeBias);
+    program_.set("uConstantBias", in.settings.constantBias);
     in.scene.draw(program_, GpuScene::Uniforms::Geometry);
-    glDisable(GL_POLYGON_OFFSET_FILL);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    return {depth_, vp};
+    return {depth_, lightViewProj, warp, tsm ? &fit_ : nullptr, in.settings.provider};
+}
+
+void bindShadowMap(const gl::Program& program, const ShadowMapPass::Outputs& shadow) {
+    glBindTextureUnit(1, shadow.depth.id());
+    program.set("uLightViewProj", shadow.lightViewProj);
+    program.set("uShadowWarp", shadow.warp);
 }
 
 } // namespace fl

@@ -7,6 +7,7 @@
 #include <gpu/ShaderLibrary.h>
 #include <renderer/GpuScene.h>
 #include <renderer/Scene.h>
+#include <renderer/passes/ShadowMapPass.h>
 
 namespace fl {
 
@@ -27,8 +28,7 @@ class ForwardPass {
         const GpuScene& scene;
         const CameraView& camera;
         const Light& light;
-        const gl::Texture& shadowMap;
-        const glm::mat4& lightViewProj;
+        const ShadowMapPass::Outputs& shadow;
     };
     struct Outputs {
         const gl::Texture& color;      // RGBA16F linear; alpha 0 where nothing was drawn

@@ -1,19 +1,46 @@
 #pragma once
-// Step 1 of a frame: depth from the light into a square depth texture (uniform shadow map).
+// Step 1 of a frame: depth from the light into a square depth texture, through one of two
+// shadow-map providers:
+// - uniform: the light's frustum fitted to the scene bounds, mapped straight onto the square;
+// - tsm: Trapezoidal Shadow Maps (Martin & Tan 2004): a projective warp N_T of the light's
+//   post-perspective space that spends most texels near the eye (geom::fitTrapezoid).
+// Either way a texel's *position* comes from mapViewProj = warp * lightViewProj and its stored
+// *depth* is the light's post-perspective depth from lightViewProj alone (TSM's warp would
+// distort depth; its z row is zero). Every shadow method reads the map through
+// shaders/shadow_lookup.glsl, which applies the same split, so every method takes either
+// provider.
 
 #include <gpu/Gl.h>
 #include <gpu/Program.h>
 #include <gpu/ShaderLibrary.h>
 #include <renderer/GpuScene.h>
 
+#include <geometry/Aabb.h>
 #include <geometry/Framing.h>
+#include <geometry/Trapezoid.h>
+
+#include <optional>
+#include <string_view>
 
 namespace fl {
 
+enum class ShadowMapProvider { Uniform, Tsm };
+
+/// "uniform" or "tsm".
+std::string_view providerName(ShadowMapProvider p);
+/// Parses "uniform" or "tsm"; nullopt for anything else.
+std::optional<ShadowMapProvider> parseProvider(std::string_view name);
+
 struct ShadowMapSettings {
-    int size = 1024;           // texels per side
-    float slopeBias = 2.0f;    // glPolygonOffset factor: scales with the depth slope of a triangle
-    float constantBias = 2.0f; // glPolygonOffset units: multiples of the smallest depth step
+    int size = 1024; // texels per side
+    ShadowMapProvider provider = ShadowMapProvider::Uniform;
+    geom::TrapezoidParams tsm; // used by the tsm provider
+    // Depth bias, applied in the light's post-perspective depth (the space depths are compared
+    // in) by the shadow pass' fragment shader, with glPolygonOffset's meaning: slopeBias times
+    // the larger screen-space depth slope of the fragment (per shadow-map texel), plus
+    // constantBias times the smallest representable depth step at that depth (float32).
+    float slopeBias = 2.0f;
+    float constantBias = 2.0f;
 };
 
 class ShadowMapPass {
@@ -24,12 +51,20 @@ class ShadowMapPass {
 
     struct Inputs {
         const GpuScene& scene;
-        const geom::ViewVolume& light;
+        const geom::ViewVolume& light; // light frustum fitted to the scene
         const ShadowMapSettings& settings;
+        const glm::mat4& eyeView; // the camera, for the TSM fit
+        const glm::mat4& eyeProj;
+        const geom::Aabb& sceneBounds; // clamps the eye frustum's depth range for the TSM fit
     };
     struct Outputs {
         const gl::Texture& depth; // DEPTH_COMPONENT32F, compare mode set for sampler2DShadow
-        glm::mat4 lightViewProj;
+        glm::mat4 lightViewProj;  // world -> light clip space (depth is compared here)
+        glm::mat4 warp;           // light clip -> shadow-map clip (identity for uniform)
+        const geom::TrapezoidFit* trapezoid; // the fit (tsm only; nullptr for uniform)
+        ShadowMapProvider provider;
+        /// world -> shadow-map clip space (texel positions).
+        [[nodiscard]] glm::mat4 mapViewProj() const { return warp * lightViewProj; }
     };
     /// Renders the scene's depth as seen from the light.
     Outputs execute(const Inputs& in);
@@ -38,6 +73,11 @@ class ShadowMapPass {
     gl::Program program_;
     gl::Texture depth_;
     gl::Framebuffer fbo_;
+    geom::TrapezoidFit fit_;
 };
+
+/// Binds the map for shaders/shadow_lookup.glsl: the depth texture on unit 1 and the
+/// uLightViewProj / uShadowWarp uniforms of `program`.
+void bindShadowMap(const gl::Program& program, const ShadowMapPass::Outputs& shadow);
 
 } // namespace fl

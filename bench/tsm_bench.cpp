@@ -1,0 +1,186 @@
+// TSM vs uniform shadow map on a scripted walkthrough (renderer/CameraPath.h) at equal
+// shadow-map resolution, both measured side by side in one process:
+//  - texel footprint (screen pixels per shadow texel) median and p95, over all receivers and
+//    near the viewer (nearest 25% by view depth), median over the frames;
+//  - flicker: share of receivers whose hard visibility changed since the previous frame's map
+//    (same world point), mean and max over the frames, and as a share of shadow-edge pixels;
+//  - frame time (shadow map + forward, no diagnostics) with each provider, interleaved frame by
+//    frame, min and median, and TSM / uniform.
+
+#include <renderer/CameraPath.h>
+#include <renderer/Capture.h>
+#include <renderer/EglContext.h>
+#include <renderer/GltfLoader.h>
+#include <renderer/Renderer.h>
+#include <renderer/SceneGenerator.h>
+#include <renderer/ShadowStats.h>
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <iomanip>
+#include <iostream>
+
+namespace {
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    const size_t n = v.size();
+    return n == 0 ? 0.0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+double minOf(const std::vector<double>& v) {
+    return *std::min_element(v.begin(), v.end());
+}
+double maxOf(const std::vector<double>& v) {
+    return *std::max_element(v.begin(), v.end());
+}
+double mean(const std::vector<double>& v) {
+    double s = 0;
+    for (double x : v) s += x;
+    return v.empty() ? 0.0 : s / static_cast<double>(v.size());
+}
+
+// Share of receivers with a 4-neighbour receiver of different hard visibility (shadow edges).
+double edgeShare(const fl::FloatImage& d) {
+    std::size_t receivers = 0, edges = 0;
+    for (int y = 0; y < d.height; ++y)
+        for (int x = 0; x < d.width; ++x) {
+            if (!(d.at(x, y, 0) > 0.0f)) continue;
+            ++receivers;
+            const bool v = d.at(x, y, 2) >= 0.5f;
+            bool edge = false;
+            for (auto [dx, dy] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+                const int nx = x + dx, ny = y + dy;
+                if (nx < 0 || ny < 0 || nx >= d.width || ny >= d.height) continue;
+                if (d.at(nx, ny, 0) > 0.0f && (d.at(nx, ny, 2) >= 0.5f) != v) edge = true;
+            }
+            edges += edge;
+        }
+    return receivers ? static_cast<double>(edges) / static_cast<double>(receivers) : 0.0;
+}
+
+struct Series {
+    std::vector<double> fpMed, fpP95, nearMed, nearP95, flicker, flickerPerEdge, frameMs;
+    int degenerateFrames = 0;
+};
+
+} // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"tsm_bench: TSM vs uniform shadow map along a walkthrough, side by side"};
+    std::string scenePath;
+    int size = 512, shadowMap = 1024, frames = 120, timedFrames = 20, saveEvery = 0;
+    std::string saveDir;
+    app.add_option("--scene", scenePath, "glTF scene (default: assets/default.glb)");
+    app.add_option("--size", size, "Frame width and height")->capture_default_str();
+    app.add_option("--shadow-map-size", shadowMap)->capture_default_str();
+    app.add_option("--frames", frames, "Walkthrough frames measured")
+        ->check(CLI::Range(2, 100000))
+        ->capture_default_str();
+    app.add_option("--timed-frames", timedFrames, "Frames timed per provider (interleaved)")
+        ->check(CLI::Range(1, 100000))
+        ->capture_default_str();
+    app.add_option("--save", saveDir,
+                   "Write uniform | TSM side-by-side PNGs of every --save-every-th frame here");
+    app.add_option("--save-every", saveEvery, "Frame interval for --save (0 = only the first)")
+        ->check(CLI::NonNegativeNumber);
+    CLI11_PARSE(app, argc, argv);
+    try {
+        const fl::Scene scene = fl::loadGltf(
+            scenePath.empty() ? std::string(FLOODLIGHT_SOURCE_DIR) + "/assets/default.glb"
+                              : scenePath);
+        auto ctx = fl::EglContext::create(false);
+        const fl::ShaderLibrary shaders;
+        const fl::CameraPath path =
+            fl::defaultWalkthrough(fl::makeCameraView(scene, {}, 1.0f), scene.bounds);
+        const fl::ShadowMapProvider providers[2] = {fl::ShadowMapProvider::Uniform,
+                                                    fl::ShadowMapProvider::Tsm};
+        std::vector<std::unique_ptr<fl::Renderer>> renderers;
+        for (fl::ShadowMapProvider p : providers) {
+            fl::RenderSettings s;
+            s.shadow.size = shadowMap;
+            s.shadow.provider = p;
+            s.diagnostics = true;
+            renderers.push_back(std::make_unique<fl::Renderer>(shaders, scene, s));
+            renderers.back()->resize(size, size);
+        }
+        Series series[2];
+        for (int i = 0; i < frames; ++i) {
+            const fl::CameraView cam = path.frame(i, frames, scene.bounds, 1.0f);
+            std::vector<fl::ByteImage> pictures;
+            for (int k = 0; k < 2; ++k) {
+                renderers[k]->render(cam);
+                if (!saveDir.empty() && (saveEvery > 0 ? i % saveEvery == 0 : i == 0))
+                    pictures.push_back(fl::toSrgb8(fl::readTexture(renderers[k]->color(), 4)));
+                const fl::FloatImage d = fl::readTexture(*renderers[k]->diagnostics(), 4);
+                const fl::ShadowMapStats st = fl::summarizeShadowDiagnostics(d);
+                Series& s = series[k];
+                s.fpMed.push_back(st.footprint.median);
+                s.fpP95.push_back(st.footprint.p95);
+                s.nearMed.push_back(st.footprintNear.median);
+                s.nearP95.push_back(st.footprintNear.p95);
+                if (renderers[k]->shadow()->trapezoid &&
+                    renderers[k]->shadow()->trapezoid->degenerate)
+                    ++s.degenerateFrames;
+                if (i == 0) continue; // the first frame has no previous map
+                s.flicker.push_back(st.flickerShare);
+                const double e = edgeShare(d);
+                s.flickerPerEdge.push_back(e > 0 ? st.flickerShare / e : 0.0);
+            }
+            if (pictures.size() == 2) {
+                std::filesystem::create_directories(saveDir);
+                char name[64];
+                std::snprintf(name, sizeof name, "walk_%04d.uniform-vs-tsm.png", i);
+                fl::writePng(std::filesystem::path(saveDir) / name, fl::sideBySide(pictures));
+            }
+        }
+        // Timing without diagnostics, providers interleaved frame by frame over the same path.
+        for (auto& r : renderers) {
+            fl::RenderSettings s = r->settings();
+            s.diagnostics = false;
+            r->setSettings(s);
+        }
+        for (int i = 0; i < timedFrames + 2; ++i) {
+            const fl::CameraView cam =
+                path.frame(i * frames / (timedFrames + 2), frames, scene.bounds, 1.0f);
+            for (int k = 0; k < 2; ++k) {
+                renderers[k]->render(cam);
+                if (i >= 2) series[k].frameMs.push_back(renderers[k]->timer().frameMs());
+            }
+        }
+        std::cout << "context: " << ctx->description() << "\n"
+                  << "scene: " << scene.source << ", " << scene.triangleCount() << " triangles\n"
+                  << "walkthrough: " << frames << " frames at " << size << "x" << size
+                  << ", shadow map " << shadowMap << "^2 (both providers)\n"
+                  << std::fixed << std::setprecision(3);
+        const char* names[2] = {"uniform", "tsm"};
+        for (int k = 0; k < 2; ++k) {
+            const Series& s = series[k];
+            std::cout << names[k] << ":\n"
+                      << "  footprint (px/texel), median over frames: all median "
+                      << median(s.fpMed) << " p95 " << median(s.fpP95) << "; near median "
+                      << median(s.nearMed) << " p95 " << median(s.nearP95) << "\n"
+                      << "  flicker (share of receivers flipping per frame): mean "
+                      << 100 * mean(s.flicker) << "% max " << 100 * maxOf(s.flicker)
+                      << "%; per shadow-edge pixel: mean " << 100 * mean(s.flickerPerEdge)
+                      << "% max " << 100 * maxOf(s.flickerPerEdge) << "%\n"
+                      << "  frame (shadow map + forward): min " << minOf(s.frameMs)
+                      << " ms, median " << median(s.frameMs) << " ms ("
+                      << renderers[k]->timer().modeName() << ")\n";
+            if (k == 1)
+                std::cout << "  frames with the uniform fallback blended in: " << s.degenerateFrames
+                          << " of " << frames << "\n";
+        }
+        std::cout << "ratios uniform / tsm footprint near the viewer: median "
+                  << median(series[0].nearMed) / median(series[1].nearMed) << ", p95 "
+                  << median(series[0].nearP95) / median(series[1].nearP95) << "\n"
+                  << "tsm / uniform frame time: min "
+                  << minOf(series[1].frameMs) / minOf(series[0].frameMs) << ", median "
+                  << median(series[1].frameMs) / median(series[0].frameMs) << "\n";
+    } catch (const std::exception& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return 1;
+    }
+    return 0;
+}

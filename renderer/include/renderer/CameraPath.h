@@ -1,0 +1,43 @@
+#pragma once
+// Smooth camera paths for walkthroughs: keyframes (eye, target) interpolated with centripetal-
+// free uniform Catmull-Rom splines, sampled at a fixed frame count. Measurements of temporal
+// behaviour (TSM continuity, flicker) need a camera that moves smoothly over a static scene.
+
+#include <renderer/Scene.h>
+#include <renderer/passes/ForwardPass.h>
+
+#include <vector>
+
+namespace fl {
+
+struct CameraKey {
+    glm::vec3 eye{0.0f};
+    glm::vec3 target{0.0f};
+};
+
+class CameraPath {
+  public:
+    /// At least two keys; throws std::invalid_argument otherwise or if a key's eye equals its
+    /// target.
+    explicit CameraPath(std::vector<CameraKey> keys, float yfovDegrees = 50.0f);
+    /// The camera at parameter t in [0, 1] (clamped): passes through every key, C1-continuous.
+    [[nodiscard]] CameraKey keyAt(float t) const;
+    /// The camera view at t for a picture of the given aspect; near/far from the scene bounds.
+    [[nodiscard]] CameraView viewAt(float t, const geom::Aabb& bounds, float aspect) const;
+    /// Frame i of n evenly spaced frames from the first key to the last.
+    [[nodiscard]] CameraView frame(int i, int n, const geom::Aabb& bounds, float aspect) const;
+    [[nodiscard]] const std::vector<CameraKey>& keys() const { return keys_; }
+
+  private:
+    std::vector<CameraKey> keys_;
+    float yfovDegrees_;
+};
+
+/// A walkthrough that starts at `start` (e.g. the scene's camera): it swings 60 degrees around
+/// the vertical axis through the point the camera looks at, closing in to 55% of the distance
+/// half-way and back out, at a height that scales with the distance (so it stays above the
+/// ground the start camera looks down on). Eye height relative to the ground is not known from
+/// the bounds alone, which is why a path is built from a camera rather than from the bounds.
+CameraPath defaultWalkthrough(const CameraView& start, const geom::Aabb& bounds);
+
+} // namespace fl

@@ -1,0 +1,87 @@
+#include <renderer/CameraPath.h>
+
+#include <geometry/Framing.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace fl {
+
+namespace {
+
+glm::vec3 catmullRom(glm::vec3 p0, glm::vec3 p1, glm::vec3 p2, glm::vec3 p3, float t) {
+    const float t2 = t * t, t3 = t2 * t;
+    return 0.5f * ((2.0f * p1) + (-p0 + p2) * t + (2.0f * p0 - 5.0f * p1 + 4.0f * p2 - p3) * t2 +
+                   (-p0 + 3.0f * p1 - 3.0f * p2 + p3) * t3);
+}
+
+} // namespace
+
+CameraPath::CameraPath(std::vector<CameraKey> keys, float yfovDegrees)
+    : keys_(std::move(keys)), yfovDegrees_(yfovDegrees) {
+    if (keys_.size() < 2) throw std::invalid_argument("a camera path needs at least two keys");
+    for (std::size_t i = 0; i < keys_.size(); ++i)
+        if (glm::length(keys_[i].target - keys_[i].eye) < 1e-6f)
+            throw std::invalid_argument("camera path key " + std::to_string(i) +
+                                        ": eye and target are the same point");
+}
+
+CameraKey CameraPath::keyAt(float t) const {
+    const int segments = static_cast<int>(keys_.size()) - 1;
+    const float u = std::clamp(t, 0.0f, 1.0f) * static_cast<float>(segments);
+    const int i = std::min(static_cast<int>(u), segments - 1);
+    const float f = u - static_cast<float>(i);
+    // End keys are mirrored so the curve starts and ends at the first and last key.
+    auto at = [&](int k) -> const CameraKey& {
+        return keys_[static_cast<std::size_t>(std::clamp(k, 0, segments))];
+    };
+    return {catmullRom(at(i - 1).eye, at(i).eye, at(i + 1).eye, at(i + 2).eye, f),
+            catmullRom(at(i - 1).target, at(i).target, at(i + 1).target, at(i + 2).target, f)};
+}
+
+CameraView CameraPath::viewAt(float t, const geom::Aabb& bounds, float aspect) const {
+    const CameraKey k = keyAt(t);
+    glm::vec3 dir = k.target - k.eye;
+    if (glm::length(dir) < 1e-6f) dir = keys_.front().target - keys_.front().eye;
+    CameraView v;
+    v.eye = k.eye;
+    v.view = glm::lookAt(k.eye, k.eye + dir, geom::stableUp(dir));
+    const float r = std::max(bounds.radius(), 1e-3f);
+    const float d = glm::length(bounds.center() - k.eye);
+    const float znear = std::max(1e-3f * r, std::min(0.05f * r, (d - r) * 0.5f));
+    v.proj = glm::perspective(glm::radians(yfovDegrees_), aspect, znear, (d + r) * 1.5f);
+    return v;
+}
+
+CameraView CameraPath::frame(int i, int n, const geom::Aabb& bounds, float aspect) const {
+    const float t = n <= 1 ? 0.0f : static_cast<float>(i) / static_cast<float>(n - 1);
+    return viewAt(t, bounds, aspect);
+}
+
+CameraPath defaultWalkthrough(const CameraView& start, const geom::Aabb& bounds) {
+    const glm::mat4 inv = glm::inverse(start.view);
+    const glm::vec3 eye = start.eye, forward = -glm::normalize(glm::vec3(inv[2]));
+    // The pivot: the point on the view axis nearest the scene's centre (at least a little ahead).
+    const float r = std::max(bounds.radius(), 1e-3f);
+    const float along = std::max(glm::dot(bounds.center() - eye, forward), 0.1f * r);
+    const glm::vec3 pivot = eye + forward * along;
+    const float yfov = glm::degrees(2.0f * std::atan(1.0f / start.proj[1][1]));
+    std::vector<CameraKey> keys;
+    const int n = 7;
+    for (int i = 0; i < n; ++i) {
+        const float u = static_cast<float>(i) / static_cast<float>(n - 1); // 0..1
+        const float angle = glm::radians(-30.0f + 60.0f * u);
+        const float scale = 1.0f - 0.45f * std::sin(3.14159265f * u); // 1 -> 0.55 -> 1
+        const glm::vec3 offset = eye - pivot;
+        const float c = std::cos(angle), s = std::sin(angle);
+        const glm::vec3 rotated{c * offset.x + s * offset.z, offset.y,
+                                -s * offset.x + c * offset.z};
+        keys.push_back({pivot + rotated * scale, pivot});
+    }
+    return CameraPath(std::move(keys), yfov);
+}
+
+} // namespace fl
