@@ -1,6 +1,7 @@
 #version 450 core
 // Forward shading: Lambert from the scene light with a hard shadow, hemispheric ambient.
 #include "shadow_lookup.glsl"
+#include "light.glsl"
 
 in vec3 vWorld;
 in vec3 vNormal;
@@ -14,9 +15,6 @@ uniform vec4 uBaseColor;
 uniform int uHasTexture;
 uniform int uObjectId;
 uniform vec3 uEye;
-uniform vec3 uLightPosition;
-uniform vec3 uLightDirection;
-uniform int uLightDirectional;
 uniform vec3 uLightColor;
 
 const vec3 kSkyAmbient = vec3(0.20, 0.23, 0.28);
@@ -28,8 +26,8 @@ void main() {
     vec3 n = normalize(vNormal);
     // Two-sided shading: the visible side of a surface faces the eye.
     if (!gl_FrontFacing) n = -n;
-    vec3 toLight = uLightDirectional != 0 ? -uLightDirection : normalize(uLightPosition - vWorld);
-    float lambert = max(dot(n, toLight), 0.0);
+    vec3 l = toLight(vWorld);
+    float lambert = max(dot(n, l), 0.0);
     float visibility = hardShadow(vWorld);
     vec3 ambient = mix(kGroundAmbient, kSkyAmbient, 0.5 + 0.5 * n.y);
     vec3 color = base.rgb * (ambient + uLightColor * lambert * visibility);

@@ -2,6 +2,7 @@
 // Shadow-map diagnostics per visible pixel (see renderer/passes/ShadowDiagnosticsPass.h):
 // texel footprint, view depth, hard visibility with this and the previous frame's map.
 #include "shadow_lookup.glsl"
+#include "light.glsl"
 
 in vec3 vWorld;
 in vec3 vNormal;
@@ -15,9 +16,6 @@ uniform mat4 uPreviousShadowWarp;
 uniform int uHasPrevious;
 uniform float uShadowMapSize;
 uniform mat4 uView;
-uniform vec3 uLightPosition;
-uniform vec3 uLightDirection;
-uniform int uLightDirectional;
 
 void main() {
     // Texel coordinates up to a constant offset, computed in uniform control flow so the
@@ -33,8 +31,8 @@ void main() {
     // on the others Lambert shading is zero, so the shadow map's texels there never show.
     vec3 n = normalize(vNormal);
     if (!gl_FrontFacing) n = -n;
-    vec3 toLight = uLightDirectional != 0 ? -uLightDirection : normalize(uLightPosition - vWorld);
-    bool receiver = inMap && dot(n, toLight) > 0.0;
+    vec3 l = toLight(vWorld);
+    bool receiver = inMap && dot(n, l) > 0.0;
     bool valid = receiver && !isnan(det) && !isinf(det);
     // Capped at 1e6 pixels per texel (a surface seen exactly edge-on) to stay finite.
     float footprint = valid ? min(inversesqrt(max(det, 1e-12)), 1e6) : 0.0;

@@ -39,6 +39,32 @@ FrameImages renderDefault(int size, int shadowMap,
     return readFrame(r);
 }
 
+// Tolerances of the colour goldens; the reasons are given at DefaultSceneColour.
+Tolerance colourTolerance() {
+    Tolerance tol;
+    tol.maxAbs = 255;
+    tol.meanAbs = 1.5;
+    tol.pixelThreshold = 16;
+    tol.maxPercentOver = 1.0;
+    return tol;
+}
+
+// Tolerances of the visibility goldens; the reasons are given at DefaultSceneVisibility.
+Tolerance visibilityTolerance() {
+    Tolerance tol;
+    tol.maxAbs = 255;
+    tol.meanAbs = 255 * 0.01;
+    tol.pixelThreshold = 127;
+    tol.maxPercentOver = 1.0;
+    return tol;
+}
+
+void expectMatchesGolden(const ByteImage& image, const std::string& name, const Tolerance& tol) {
+    const CompareResult c = compareWithGolden(image, name, tol);
+    std::printf("%s: %s\n", name.c_str(), c.report.c_str());
+    EXPECT_TRUE(c.pass) << c.report;
+}
+
 // The committed asset must be exactly what assets/README.md says made it.
 TEST(DefaultAsset, IsTheGeneratorOutput) {
     const auto fresh = outputDir("asset") / "default.glb";
@@ -56,29 +82,15 @@ TEST_F(GoldenTest, DefaultSceneColour) {
     // a full light/shadow difference at one pixel. So: any single pixel may differ completely,
     // but the mean difference stays under 1.5 steps and under 1% of pixels differ by more
     // than 16 steps. A moved shadow, camera or light breaks both limits by far.
-    Tolerance tol;
-    tol.maxAbs = 255;
-    tol.meanAbs = 1.5;
-    tol.pixelThreshold = 16;
-    tol.maxPercentOver = 1.0;
-    const CompareResult c = compareWithGolden(toSrgb8(f.color), "default_256_colour", tol);
-    std::printf("%s\n", c.report.c_str());
-    EXPECT_TRUE(c.pass) << c.report;
+    expectMatchesGolden(toSrgb8(f.color), "default_256_colour", colourTolerance());
 }
 
 TEST_F(GoldenTest, DefaultSceneVisibility) {
     const FrameImages f = renderDefault(256, 1024);
     // Hard-shadow visibility is 0 or 1 per pixel, so any difference is a whole step; allow the
     // same 1% of pixels (comparisons at float precision on another driver) and nothing more.
-    Tolerance tol;
-    tol.maxAbs = 255;
-    tol.meanAbs = 255 * 0.01;
-    tol.pixelThreshold = 127;
-    tol.maxPercentOver = 1.0;
-    const CompareResult c =
-        compareWithGolden(visibilityToGrey(f.visibility), "default_256_visibility", tol);
-    std::printf("%s\n", c.report.c_str());
-    EXPECT_TRUE(c.pass) << c.report;
+    expectMatchesGolden(visibilityToGrey(f.visibility), "default_256_visibility",
+                        visibilityTolerance());
     // The picture must actually contain shadow and light, or the golden proves nothing.
     size_t shadowed = 0;
     for (float v : f.visibility.data) shadowed += v < 0.5f;
@@ -91,27 +103,13 @@ TEST_F(GoldenTest, DefaultSceneVisibility) {
 // apply). A 512² map keeps the difference from the uniform map visible near the viewer.
 TEST_F(GoldenTest, DefaultSceneTsmColour) {
     const FrameImages f = renderDefault(256, 512, ShadowMapProvider::Tsm);
-    Tolerance tol;
-    tol.maxAbs = 255;
-    tol.meanAbs = 1.5;
-    tol.pixelThreshold = 16;
-    tol.maxPercentOver = 1.0;
-    const CompareResult c = compareWithGolden(toSrgb8(f.color), "default_256_tsm_colour", tol);
-    std::printf("%s\n", c.report.c_str());
-    EXPECT_TRUE(c.pass) << c.report;
+    expectMatchesGolden(toSrgb8(f.color), "default_256_tsm_colour", colourTolerance());
 }
 
 TEST_F(GoldenTest, DefaultSceneTsmVisibility) {
     const FrameImages f = renderDefault(256, 512, ShadowMapProvider::Tsm);
-    Tolerance tol;
-    tol.maxAbs = 255;
-    tol.meanAbs = 255 * 0.01;
-    tol.pixelThreshold = 127;
-    tol.maxPercentOver = 1.0;
-    const CompareResult c =
-        compareWithGolden(visibilityToGrey(f.visibility), "default_256_tsm_visibility", tol);
-    std::printf("%s\n", c.report.c_str());
-    EXPECT_TRUE(c.pass) << c.report;
+    expectMatchesGolden(visibilityToGrey(f.visibility), "default_256_tsm_visibility",
+                        visibilityTolerance());
     // TSM must differ from the uniform map at the same resolution, or the provider is not in use.
     const FrameImages u = renderDefault(256, 512, ShadowMapProvider::Uniform);
     std::size_t differing = 0;
