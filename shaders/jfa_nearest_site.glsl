@@ -7,6 +7,9 @@ uniform int uJfaIntegerSites; // 1: exact integer squared distances (grids up to
 
 bool jfaEmpty(vec4 c) { return c.z < 0.0; }
 
+// Every site is a candidate everywhere.
+bool jfaAccept(ivec2 p, vec4 c) { return true; }
+
 // The full-resolution pixel the site was seeded at, floor(v + 0.5) per coordinate, computed
 // exactly (NearestSite::seedPixel on the CPU).
 ivec2 jfaSeedPixel(vec4 c) {

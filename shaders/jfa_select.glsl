@@ -4,6 +4,8 @@
 
 bool jfaEmpty(vec4 c);
 bool jfaBetter(ivec2 p, vec4 a, vec4 b);
+// Whether non-empty `c` may be taken at grid point p (false: treated as empty there).
+bool jfaAccept(ivec2 p, vec4 c);
 // Full-resolution pixel a cell was seeded at; any negative coordinate = unknown (copy verbatim).
 ivec2 jfaSeedPixel(vec4 c);
 
@@ -25,7 +27,7 @@ vec4 jfaExpandedCell(sampler2D coarse, sampler2D seeds, ivec2 q, ivec2 fullSize)
             ivec2 c = b + ivec2(i, j);
             ivec2 cc = min(c, fullSize - 1);
             vec4 s = texelFetch(seeds, cc, 0);
-            bool take = c == cc && !jfaEmpty(s) && jfaBetter(q, s, best);
+            bool take = c == cc && !jfaEmpty(s) && jfaAccept(q, s) && jfaBetter(q, s, best);
             best = take ? s : best;
         }
     }
@@ -56,7 +58,7 @@ vec4 jfaSelect(sampler2D src, sampler2D seeds, ivec2 t, ivec2 size, int step, in
             ivec2 q = t + ivec2(i, j) * step;
             ivec2 qc = clamp(q, ivec2(0), hi);
             vec4 c = jfaCandidate(src, seeds, qc, size);
-            bool take = q == qc && !jfaEmpty(c) && (!have || jfaBetter(p, c, best));
+            bool take = q == qc && !jfaEmpty(c) && jfaAccept(p, c) && (!have || jfaBetter(p, c, best));
             best = take ? c : best;
             have = have || take;
         }
@@ -74,7 +76,7 @@ vec4 jfaDownsample(sampler2D full, ivec2 t, ivec2 fullSize) {
             ivec2 q = p + ivec2(i, j);
             ivec2 qc = min(q, fullSize - 1);
             vec4 c = texelFetch(full, qc, 0);
-            bool take = q == qc && !jfaEmpty(c) && (!have || jfaBetter(p, c, best));
+            bool take = q == qc && !jfaEmpty(c) && jfaAccept(p, c) && (!have || jfaBetter(p, c, best));
             best = take ? c : best;
             have = have || take;
         }

@@ -99,6 +99,24 @@ void parallelRows(int rows, int threads, const std::function<void(int, int, int)
 /// Scale (1, 2, 4, ...) of a plan's stage: 2^(stage count - 1 - stageIndex).
 int stageScale(const Plan& plan, std::size_t stageIndex);
 
+/// Criteria that reject a candidate at some grid points (`accepts(px, py, c)` false): such a
+/// candidate is treated as empty there, so the texel neither takes nor passes it on. JFA-L uses
+/// this for occluders whose ray misses the light (thesis §5.2). Criteria without `accepts`
+/// accept every non-empty cell.
+template <class C>
+concept Accepting = Criterion<C> && requires(const C& c, int px, int py, const Cell& a) {
+    { c.accepts(px, py, a) } -> std::convertible_to<bool>;
+};
+
+/// Whether non-empty cell `c` may be taken at grid point (px, py).
+template <Criterion C>
+bool acceptsAt(const C& criterion, int px, int py, const Cell& c) {
+    if constexpr (Accepting<C>)
+        return criterion.accepts(px, py, c);
+    else
+        return true;
+}
+
 /// Downsamples full-resolution seeds to the grid of a stage at `scale` (see the header comment).
 template <Criterion C>
 Grid downsample(const Grid& full, int scale, const C& criterion) {
@@ -112,7 +130,7 @@ Grid downsample(const Grid& full, int scale, const C& criterion) {
             for (int j = 0; j < scale && py + j < full.height; ++j) {
                 for (int i = 0; i < scale && px + i < full.width; ++i) {
                     const Cell& c = full.at(px + i, py + j);
-                    if (criterion.empty(c)) continue;
+                    if (criterion.empty(c) || !acceptsAt(criterion, px, py, c)) continue;
                     if (best == nullptr || criterion.better(px, py, c, *best)) best = &c;
                 }
             }
@@ -152,7 +170,9 @@ Grid expandStage(const Grid& prev, int width, int height, int prevScale, const G
                 for (int j = 0; j < prevScale && by + j < fullResSeeds.height; ++j) {
                     for (int i = 0; i < prevScale && bx + i < fullResSeeds.width; ++i) {
                         const Cell& c = fullResSeeds.at(bx + i, by + j);
-                        if (!criterion.empty(c) && criterion.better(p.x, p.y, c, best)) best = c;
+                        if (!criterion.empty(c) && acceptsAt(criterion, p.x, p.y, c) &&
+                            criterion.better(p.x, p.y, c, best))
+                            best = c;
                     }
                 }
             }
@@ -187,7 +207,7 @@ std::int64_t runPass(const Grid& src, Grid& dst, int step, int scale, const C& c
                 const bool left = x >= step, right = step < w - x;
                 const Cell* best = nullptr;
                 auto offer = [&](const Cell& c) {
-                    if (!criterion.empty(c) &&
+                    if (!criterion.empty(c) && acceptsAt(criterion, px, py, c) &&
                         (best == nullptr || criterion.better(px, py, c, *best)))
                         best = &c;
                 };

@@ -1,0 +1,63 @@
+#include <renderer/soft/DiskLight.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace fl {
+
+DiskLight makeDiskLight(const Light& light, const geom::Aabb& bounds) {
+    DiskLight d;
+    d.radius = std::max(light.radius, 0.0f);
+    const float r = std::max(bounds.radius(), 1e-3f);
+    switch (light.type) {
+    case Light::Type::Spot:
+        d.center = light.position;
+        d.normal = glm::normalize(light.direction);
+        break;
+    case Light::Type::Point: {
+        d.center = light.position;
+        const glm::vec3 toScene = bounds.center() - light.position;
+        d.normal = glm::length(toScene) > 1e-6f * r ? glm::normalize(toScene)
+                                                    : glm::vec3(0.0f, -1.0f, 0.0f);
+        break;
+    }
+    case Light::Type::Directional:
+        // A directional light has no position; the disk is placed where the shadow map's
+        // light volume starts (two scene radii back from the centre, geom::fitDirectionalLight),
+        // so its radius keeps the meaning "radius in scene units" at the scene's distance.
+        d.normal = glm::normalize(light.direction);
+        d.center = bounds.center() - d.normal * (2.0f * r);
+        break;
+    }
+    return d;
+}
+
+float segmentFraction(float t) {
+    t = std::clamp(t, 0.0f, 1.0f);
+    return (std::acos(t) - t * std::sqrt(1.0f - t * t)) / 3.14159265358979f;
+}
+
+std::optional<float> occluderHit(const DiskLight& light, glm::vec3 p, glm::vec3 o) {
+    // q = p + s (o - p) on the plane dot(x - c, n) = 0: s = dot(c - p, n) / dot(o - p, n).
+    // The occluder must lie strictly between p and the plane: s > 1.
+    const glm::vec3 dir = o - p;
+    const float den = glm::dot(dir, light.normal);
+    const float num = glm::dot(light.center - p, light.normal);
+    if (!(den != 0.0f)) return std::nullopt;
+    const float s = num / den;
+    if (!(s > 1.0f)) return std::nullopt;
+    const glm::vec3 cq = p + dir * s - light.center;
+    const float d2 = glm::dot(cq, cq);
+    if (!(d2 < light.radius * light.radius)) return std::nullopt;
+    return d2;
+}
+
+std::optional<float> occluderIntensity(const DiskLight& light, glm::vec3 p, glm::vec3 o,
+                                       bool insideHardShadow) {
+    const std::optional<float> d2 = occluderHit(light, p, o);
+    if (!d2) return std::nullopt;
+    const float seg = segmentFraction(std::sqrt(*d2) / light.radius);
+    return insideHardShadow ? seg : 1.0f - seg;
+}
+
+} // namespace fl
