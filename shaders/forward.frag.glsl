@@ -2,6 +2,9 @@
 // Forward shading: Lambert from the scene light with a hard shadow, hemispheric ambient.
 #include "shadow_lookup.glsl"
 #include "light.glsl"
+#ifdef SOFT_PENUMBRA_MAP
+#include "soft_penumbra.glsl"
+#endif
 
 in vec3 vWorld;
 in vec3 vNormal;
@@ -28,7 +31,11 @@ void main() {
     if (!gl_FrontFacing) n = -n;
     vec3 l = toLight(vWorld);
     float lambert = max(dot(n, l), 0.0);
+#ifdef SOFT_PENUMBRA_MAP
+    float visibility = penumbraMapVisibility(vWorld);
+#else
     float visibility = hardShadow(vWorld);
+#endif
     vec3 ambient = mix(kGroundAmbient, kSkyAmbient, 0.5 + 0.5 * n.y);
     vec3 color = base.rgb * (ambient + uLightColor * lambert * visibility);
     oColor = vec4(color, 1.0);

@@ -4,6 +4,10 @@
 // depth, which TSM does not use: slope = the larger depth change per shadow-map texel, unit = the
 // smallest float32 depth step at this depth (2^(exponent - 23)).
 in vec2 vLightZW;
+in vec3 vWorld;
+
+// Receiver positions (only when the pass binds that target; otherwise discarded).
+layout(location = 0) out vec4 oReceiver;
 
 uniform float uSlopeBias;
 uniform float uConstantBias;
@@ -14,4 +18,5 @@ void main() {
     int e;
     frexp(max(z, 1e-30), e); // z = m * 2^e, m in [0.5, 1): float32 step is 2^(e - 24)
     gl_FragDepth = z + uSlopeBias * slope + uConstantBias * ldexp(1.0, e - 24);
+    oReceiver = vec4(vWorld, 1.0);
 }

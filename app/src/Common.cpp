@@ -28,6 +28,16 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool sceneAsOption) {
                    "Shadow-map provider: uniform (fitted to the scene) or tsm (trapezoidal)")
         ->check(CLI::IsMember({"uniform", "tsm"}))
         ->capture_default_str();
+    cmd.add_option("--method", o.method,
+                   "Shadow method: hard, jfa-l (JFA penumbra map, thesis 5.3), flood-l (its "
+                   "standard-flooding reference)")
+        ->check(CLI::IsMember({"hard", "jfa-l", "flood-l"}))
+        ->capture_default_str();
+    cmd.add_option("--jfa-passes", o.jfaPasses,
+                   "Flooding passes of jfa-l / flood-l: penumbrae up to 2^N - 1 shadow-map texels "
+                   "wide; 1 to log2(shadow-map size)")
+        ->check(CLI::Range(1, 13))
+        ->capture_default_str();
     cmd.add_option("--bias-slope", o.slopeBias,
                    "Slope-scaled depth bias (polygon offset factor, in light depth)")
         ->check(CLI::Range(0.0f, 64.0f))
@@ -94,6 +104,14 @@ RenderSettings makeRenderSettings(const SceneOptions& o) {
     RenderSettings s;
     s.shadow.size = o.shadowMapSize;
     s.shadow.provider = parseProvider(o.shadowMap).value_or(ShadowMapProvider::Uniform);
+    s.method = parseMethod(o.method).value_or(ShadowMethod::Hard);
+    s.penumbra.passes = o.jfaPasses;
+    // Validated here so that a bad count is one clear input error before any rendering.
+    try {
+        (void)penumbraPlan(s.penumbra, s.shadow.size);
+    } catch (const std::invalid_argument& e) {
+        throw InputError(std::string("--jfa-passes: ") + e.what());
+    }
     s.shadow.slopeBias = o.slopeBias;
     s.shadow.constantBias = o.constantBias;
     s.timing = o.timing == "query"    ? TimingMode::Query

@@ -29,6 +29,8 @@ struct SceneOptions {
     std::string shaderDir;            // --shader-dir
     int shadowMapSize = 1024;
     std::string shadowMap = "uniform"; // provider: uniform | tsm
+    std::string method = "hard";       // hard | jfa-l | flood-l
+    int jfaPasses = 6;                 // JFA-L / flood-L reach: 2^passes - 1 texels
     float slopeBias = 2.0f;
     float constantBias = 2.0f;
     std::string timing = "auto";

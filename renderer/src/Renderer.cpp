@@ -50,6 +50,23 @@ CameraView makeCameraView(const Scene& scene, const CameraSpec& spec, float aspe
     }
 }
 
+std::string_view methodName(ShadowMethod m) {
+    switch (m) {
+    case ShadowMethod::JfaL:
+        return "jfa-l";
+    case ShadowMethod::FloodL:
+        return "flood-l";
+    default:
+        return "hard";
+    }
+}
+
+std::optional<ShadowMethod> parseMethod(std::string_view name) {
+    for (ShadowMethod m : {ShadowMethod::Hard, ShadowMethod::JfaL, ShadowMethod::FloodL})
+        if (name == methodName(m)) return m;
+    return std::nullopt;
+}
+
 Light sceneLight(const Scene& scene) {
     if (scene.light) return *scene.light;
     Light l;
@@ -70,7 +87,8 @@ geom::ViewVolume lightVolume(const Scene& scene, const Light& light) {
 
 Renderer::Renderer(const ShaderLibrary& shaders, const Scene& scene, const RenderSettings& settings)
     : settings_(settings), scene_(scene), light_(sceneLight(scene)), sceneBounds_(scene.bounds),
-      lightVolume_(lightVolume(scene, light_)), shadowPass_(shaders), forwardPass_(shaders),
+      disk_(makeDiskLight(light_, scene.bounds)), lightVolume_(lightVolume(scene, light_)),
+      shadowPass_(shaders), penumbraPass_(shaders), forwardPass_(shaders),
       diagnosticsPass_(shaders), presentPass_(shaders), timer_(settings.timing) {
     gl::throwIfErrors("renderer set-up");
 }
@@ -88,18 +106,35 @@ void Renderer::resize(int width, int height) {
 void Renderer::render(const CameraView& camera) {
     if (width_ == 0) throw std::logic_error("Renderer::render before resize");
     timer_.beginFrame();
+    const bool penumbra =
+        settings_.method == ShadowMethod::JfaL || settings_.method == ShadowMethod::FloodL;
     // 1. Shadow map: depth from the light, fitted to the scene bounds; TSM also fits the warp
-    //    to the camera's frustum.
+    //    to the camera's frustum. The soft methods also keep each texel's world position.
     timer_.begin("shadow map");
     shadow_.reset();
-    const ShadowMapPass::Outputs& shadow = shadow_.emplace(shadowPass_.execute(
-        {scene_, lightVolume_, settings_.shadow, camera.view, camera.proj, sceneBounds_}));
+    const ShadowMapPass::Outputs& shadow =
+        shadow_.emplace(shadowPass_.execute({scene_, lightVolume_, settings_.shadow, camera.view,
+                                             camera.proj, sceneBounds_, penumbra}));
     timer_.end();
-    // 2. Forward shading with the hard shadow test.
+    // 2-3. JFA-L / flood-L: silhouette seeds, flooded into the penumbra map.
+    seeds_ = penumbraMap_ = nullptr;
+    if (penumbra) {
+        PenumbraSettings ps = settings_.penumbra;
+        ps.standardFlooding = settings_.method == ShadowMethod::FloodL;
+        const float threshold = ps.silhouetteThreshold > 0.0f
+                                    ? ps.silhouetteThreshold
+                                    : 0.001f * std::max(sceneBounds_.radius(), 1e-3f);
+        const PenumbraMapPass::Outputs pm =
+            penumbraPass_.execute({*shadow.receivers, disk_, ps, threshold}, &timer_);
+        seeds_ = &pm.seeds;
+        penumbraMap_ = &pm.penumbraMap;
+    }
+    // 4. Forward shading with the method's visibility.
     timer_.begin("forward");
-    const ForwardPass::Outputs fwd = forwardPass_.execute({scene_, camera, light_, shadow});
+    const ForwardPass::Outputs fwd =
+        forwardPass_.execute({scene_, camera, light_, shadow, penumbraMap_, &disk_});
     timer_.end();
-    // 3. Diagnostics: texel footprint and the previous frame's visibility (measurement only).
+    // 5. Diagnostics: texel footprint and the previous frame's visibility (measurement only).
     diagnostics_ = nullptr;
     if (settings_.diagnostics) {
         timer_.begin("diagnostics");

@@ -1,7 +1,8 @@
 #pragma once
-// The frame, as numbered steps: 1. shadow map from the light (uniform or TSM provider),
-// 2. forward shading with the hard shadow test, 3. (optional) shadow-map diagnostics, 4. (window
-// only) present. Owns the passes and the uploaded scene.
+// The frame, as numbered steps: 1. shadow map from the light (uniform or TSM provider);
+// 2. (JFA-L, flood-L) silhouettes and 3. the flooded penumbra map; 4. forward shading with the
+// method's visibility; 5. (optional) shadow-map diagnostics; 6. (window only) present. Owns the
+// passes and the uploaded scene.
 
 #include <gpu/PassTimer.h>
 #include <gpu/ShaderLibrary.h>
@@ -10,6 +11,8 @@
 #include <renderer/passes/ForwardPass.h>
 #include <renderer/passes/ShadowDiagnosticsPass.h>
 #include <renderer/passes/ShadowMapPass.h>
+#include <renderer/soft/DiskLight.h>
+#include <renderer/soft/PenumbraMap.h>
 
 #include <geometry/Framing.h>
 
@@ -17,8 +20,21 @@
 
 namespace fl {
 
+/// The shadow methods.
+enum class ShadowMethod {
+    Hard,   // one shadow-map test (the light's centre)
+    JfaL,   // thesis §5.3: penumbra map by jump flooding in light space
+    FloodL, // the same phases with standard flooding (the reference for JFA-L)
+};
+/// "hard", "jfa-l", "flood-l".
+std::string_view methodName(ShadowMethod m);
+/// Parses a method name; nullopt if unknown.
+std::optional<ShadowMethod> parseMethod(std::string_view name);
+
 struct RenderSettings {
     ShadowMapSettings shadow;
+    ShadowMethod method = ShadowMethod::Hard;
+    PenumbraSettings penumbra; // JFA-L / flood-L (standardFlooding is set from the method)
     TimingMode timing = TimingMode::Auto;
     bool diagnostics = false; // run step 3 (texel footprint and temporal continuity)
 };
@@ -58,7 +74,12 @@ class Renderer {
 
     [[nodiscard]] const gl::Texture& color() const { return *color_; }
     [[nodiscard]] const gl::Texture& visibility() const { return *visibility_; }
-    /// Step 3's output (see ShadowDiagnosticsPass); nullptr unless settings().diagnostics.
+    /// The disk light the soft methods use.
+    [[nodiscard]] const DiskLight& disk() const { return disk_; }
+    /// JFA-L / flood-L: the last frame's silhouette seeds and penumbra map (nullptr otherwise).
+    [[nodiscard]] const gl::Texture* seeds() const { return seeds_; }
+    [[nodiscard]] const gl::Texture* penumbraMap() const { return penumbraMap_; }
+    /// Step 5's output (see ShadowDiagnosticsPass); nullptr unless settings().diagnostics.
     [[nodiscard]] const gl::Texture* diagnostics() const { return diagnostics_; }
     /// The last frame's shadow map and its matrices; nullptr before the first frame.
     [[nodiscard]] const ShadowMapPass::Outputs* shadow() const {
@@ -76,8 +97,10 @@ class Renderer {
     GpuScene scene_;
     Light light_;
     geom::Aabb sceneBounds_;
+    DiskLight disk_;
     geom::ViewVolume lightVolume_;
     ShadowMapPass shadowPass_;
+    PenumbraMapPass penumbraPass_;
     ForwardPass forwardPass_;
     ShadowDiagnosticsPass diagnosticsPass_;
     PresentPass presentPass_;
@@ -85,6 +108,8 @@ class Renderer {
     const gl::Texture* color_ = nullptr;
     const gl::Texture* visibility_ = nullptr;
     const gl::Texture* diagnostics_ = nullptr;
+    const gl::Texture* seeds_ = nullptr;
+    const gl::Texture* penumbraMap_ = nullptr;
     std::optional<ShadowMapPass::Outputs> shadow_;
     int width_ = 0, height_ = 0;
 };

@@ -1,10 +1,17 @@
 #include <renderer/passes/ForwardPass.h>
+#include <renderer/soft/PenumbraCriterion.h>
+
+#include <stdexcept>
 
 namespace fl {
 
 ForwardPass::ForwardPass(const ShaderLibrary& shaders)
     : program_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "forward.vert.glsl"},
-                                            {GL_FRAGMENT_SHADER, "forward.frag.glsl"}})) {}
+                                            {GL_FRAGMENT_SHADER, "forward.frag.glsl"}})),
+      penumbraProgram_(gl::Program::build(
+          shaders,
+          {{GL_VERTEX_SHADER, "forward.vert.glsl"}, {GL_FRAGMENT_SHADER, "forward.frag.glsl"}},
+          {"SOFT_PENUMBRA_MAP 1"})) {}
 
 void ForwardPass::resize(int width, int height) {
     if (color_ && color_.width() == width && color_.height() == height) return;
@@ -34,16 +41,25 @@ ForwardPass::Outputs ForwardPass::execute(const Inputs& in) {
     glDepthMask(GL_TRUE);
     glDisable(GL_CULL_FACE); // glTF doubleSided and open meshes: shade both faces
 
-    program_.set("uViewProj", in.camera.proj * in.camera.view);
-    program_.set("uEye", in.camera.eye);
-    program_.set("uLightPosition", in.light.position);
-    program_.set("uLightDirection", in.light.direction);
-    program_.set("uLightDirectional", in.light.type == Light::Type::Directional ? 1 : 0);
-    program_.set("uLightColor", in.light.color);
-    bindShadowMap(program_, in.shadow);
-    in.scene.draw(program_, GpuScene::Uniforms::Material);
+    const bool penumbra = in.penumbraMap != nullptr;
+    if (penumbra && in.disk == nullptr)
+        throw std::invalid_argument("ForwardPass: a penumbra map needs the disk light");
+    const gl::Program& program = penumbra ? penumbraProgram_ : program_;
+    program.set("uViewProj", in.camera.proj * in.camera.view);
+    program.set("uEye", in.camera.eye);
+    program.set("uLightPosition", in.light.position);
+    program.set("uLightDirection", in.light.direction);
+    program.set("uLightDirectional", in.light.type == Light::Type::Directional ? 1 : 0);
+    program.set("uLightColor", in.light.color);
+    bindShadowMap(program, in.shadow);
+    if (penumbra) {
+        setDiskLightUniforms(program, *in.disk);
+        glBindTextureUnit(3, in.penumbraMap->id());
+    }
+    in.scene.draw(program, GpuScene::Uniforms::Material);
     glBindTextureUnit(0, 0);
     glBindTextureUnit(1, 0);
+    glBindTextureUnit(3, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return {color_, visibility_};
 }

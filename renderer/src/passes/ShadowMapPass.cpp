@@ -28,6 +28,12 @@ void ShadowMapPass::resize(int size) {
     fbo_.attach(GL_DEPTH_ATTACHMENT, depth_);
     fbo_.setDrawBuffers(0);
     fbo_.check("shadow map");
+    receivers_ = gl::Texture(GL_RGBA32F, size, size);
+    receiversFbo_ = gl::Framebuffer::create();
+    receiversFbo_.attach(GL_DEPTH_ATTACHMENT, depth_);
+    receiversFbo_.attach(GL_COLOR_ATTACHMENT0, receivers_);
+    receiversFbo_.setDrawBuffers(1);
+    receiversFbo_.check("shadow map with receiver positions");
 }
 
 ShadowMapPass::Outputs ShadowMapPass::execute(const Inputs& in) {
@@ -44,13 +50,18 @@ ShadowMapPass::Outputs ShadowMapPass::execute(const Inputs& in) {
         warp = fit_.nt;
     }
 
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    const gl::Framebuffer& target = in.writeReceivers ? receiversFbo_ : fbo_;
+    glBindFramebuffer(GL_FRAMEBUFFER, target.id());
     glViewport(0, 0, depth_.width(), depth_.height());
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
     const float one = 1.0f;
-    glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
+    glClearNamedFramebufferfv(target.id(), GL_DEPTH, 0, &one);
+    if (in.writeReceivers) {
+        const float nothing[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+        glClearNamedFramebufferfv(target.id(), GL_COLOR, 0, nothing);
+    }
     // Both faces are drawn: the generated and loaded scenes contain open and double-sided
     // surfaces, and culling either face would let light through them.
     glDisable(GL_CULL_FACE);
@@ -60,7 +71,12 @@ ShadowMapPass::Outputs ShadowMapPass::execute(const Inputs& in) {
     program_.set("uConstantBias", in.settings.constantBias);
     in.scene.draw(program_, GpuScene::Uniforms::Geometry);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    return {depth_, lightViewProj, warp, tsm ? &fit_ : nullptr, in.settings.provider};
+    return {depth_,
+            lightViewProj,
+            warp,
+            tsm ? &fit_ : nullptr,
+            in.settings.provider,
+            in.writeReceivers ? &receivers_ : nullptr};
 }
 
 void bindShadowMap(const gl::Program& program, const ShadowMapPass::Outputs& shadow) {

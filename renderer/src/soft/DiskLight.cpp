@@ -37,18 +37,31 @@ float segmentFraction(float t) {
     return (std::acos(t) - t * std::sqrt(1.0f - t * t)) / 3.14159265358979f;
 }
 
-std::optional<float> occluderHit(const DiskLight& light, glm::vec3 p, glm::vec3 o) {
-    // q = p + s (o - p) on the plane dot(x - c, n) = 0: s = dot(c - p, n) / dot(o - p, n).
-    // The occluder must lie strictly between p and the plane: s > 1.
-    const glm::vec3 dir = o - p;
-    const float den = glm::dot(dir, light.normal);
-    const float num = glm::dot(light.center - p, light.normal);
-    if (!(den != 0.0f)) return std::nullopt;
+float occluderHitDistance2(const DiskLight& light, glm::vec3 p, glm::vec3 o) {
+    // Written out operation by operation, in the order of penumbraHit() in
+    // shaders/disk_light.glsl (built without fused multiply-add on both sides), so that CPU and
+    // GL floods make identical choices.
+    // q = p + s (o - p) on the plane dot(x - c, n) = 0: s = dot(c - p, n) / dot(o - p, n); the
+    // occluder must lie strictly between p and the plane: s > 1.
+    const glm::vec3 n = light.normal;
+    const float dx = o.x - p.x, dy = o.y - p.y, dz = o.z - p.z;
+    const float den = dx * n.x + dy * n.y + dz * n.z;
+    const float num =
+        (light.center.x - p.x) * n.x + (light.center.y - p.y) * n.y + (light.center.z - p.z) * n.z;
+    if (!(den != 0.0f)) return -1.0f;
     const float s = num / den;
-    if (!(s > 1.0f)) return std::nullopt;
-    const glm::vec3 cq = p + dir * s - light.center;
-    const float d2 = glm::dot(cq, cq);
-    if (!(d2 < light.radius * light.radius)) return std::nullopt;
+    if (!(s > 1.0f)) return -1.0f;
+    const float qx = (p.x + dx * s) - light.center.x;
+    const float qy = (p.y + dy * s) - light.center.y;
+    const float qz = (p.z + dz * s) - light.center.z;
+    const float d2 = qx * qx + qy * qy + qz * qz;
+    if (!(d2 < light.radius * light.radius)) return -1.0f;
+    return d2;
+}
+
+std::optional<float> occluderHit(const DiskLight& light, glm::vec3 p, glm::vec3 o) {
+    const float d2 = occluderHitDistance2(light, p, o);
+    if (d2 < 0.0f) return std::nullopt;
     return d2;
 }
 

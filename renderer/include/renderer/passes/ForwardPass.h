@@ -8,6 +8,7 @@
 #include <renderer/GpuScene.h>
 #include <renderer/Scene.h>
 #include <renderer/passes/ShadowMapPass.h>
+#include <renderer/soft/DiskLight.h>
 
 namespace fl {
 
@@ -29,6 +30,9 @@ class ForwardPass {
         const CameraView& camera;
         const Light& light;
         const ShadowMapPass::Outputs& shadow;
+        /// JFA-L / flood-L: the penumbra map (nullptr: hard shadows) and the disk light.
+        const gl::Texture* penumbraMap = nullptr;
+        const DiskLight* disk = nullptr;
     };
     struct Outputs {
         const gl::Texture& color;      // RGBA16F linear; alpha 0 where nothing was drawn
@@ -37,7 +41,8 @@ class ForwardPass {
     Outputs execute(const Inputs& in);
 
   private:
-    gl::Program program_;
+    gl::Program program_;         // hard shadows
+    gl::Program penumbraProgram_; // visibility from a penumbra map (SOFT_PENUMBRA_MAP)
     gl::Texture color_, visibility_, depth_;
     gl::Framebuffer fbo_;
 };

@@ -56,6 +56,7 @@ class ShadowMapPass {
         const glm::mat4& eyeView; // the camera, for the TSM fit
         const glm::mat4& eyeProj;
         const geom::Aabb& sceneBounds; // clamps the eye frustum's depth range for the TSM fit
+        bool writeReceivers = false;   // also store each texel's world position (JFA-L)
     };
     struct Outputs {
         const gl::Texture& depth; // DEPTH_COMPONENT32F, compare mode set for sampler2DShadow
@@ -63,6 +64,9 @@ class ShadowMapPass {
         glm::mat4 warp;           // light clip -> shadow-map clip (identity for uniform)
         const geom::TrapezoidFit* trapezoid; // the fit (tsm only; nullptr for uniform)
         ShadowMapProvider provider;
+        /// With writeReceivers: RGBA32F, the world position of the surface each texel sees
+        /// (w = 1; w = 0 where the light sees nothing). nullptr otherwise.
+        const gl::Texture* receivers;
         /// world -> shadow-map clip space (texel positions).
         [[nodiscard]] glm::mat4 mapViewProj() const { return warp * lightViewProj; }
     };
@@ -71,8 +75,8 @@ class ShadowMapPass {
 
   private:
     gl::Program program_;
-    gl::Texture depth_;
-    gl::Framebuffer fbo_;
+    gl::Texture depth_, receivers_;
+    gl::Framebuffer fbo_, receiversFbo_;
     geom::TrapezoidFit fit_;
 };
 

@@ -35,6 +35,10 @@ float segmentFraction(float t);
 /// p and the light) or misses the disk (|cq| >= radius).
 std::optional<float> occluderHit(const DiskLight& light, glm::vec3 p, glm::vec3 o);
 
+/// occluderHit() as a plain float: |cq|^2, or -1 for a miss. Bit-identical to penumbraHit() in
+/// shaders/disk_light.glsl.
+float occluderHitDistance2(const DiskLight& light, glm::vec3 p, glm::vec3 o);
+
 /// Visible fraction of the light at p with occluder o (nullopt when the ray misses, see
 /// occluderHit): 1 - segmentFraction(|cq| / r) outside the hard shadow, segmentFraction inside.
 std::optional<float> occluderIntensity(const DiskLight& light, glm::vec3 p, glm::vec3 o,

@@ -1,0 +1,65 @@
+#pragma once
+// The flooding criterion of JFA-L (and JFA-E's occluder propagation), thesis §5.2-5.3, for the
+// jfa/ kernels: the CPU functor here and shaders/jfa_penumbra.glsl for the GL kernels, which
+// agree bit for bit. See the GLSL file for the rule.
+
+#include <renderer/soft/DiskLight.h>
+
+#include <jfa/Grid.h>
+
+#include <gpu/Gl.h>
+#include <gpu/Program.h>
+
+#include <glm/glm.hpp>
+
+#include <limits>
+#include <vector>
+
+namespace fl {
+
+/// Per texel of the flooded grid: the receiver's world position (xyz, w = 1) or w = 0 where
+/// nothing is there. Row-major, the grid's size.
+struct ReceiverGrid {
+    int width = 0;
+    int height = 0;
+    std::vector<glm::vec4> points;
+    [[nodiscard]] const glm::vec4& at(int x, int y) const {
+        return points[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
+                      static_cast<std::size_t>(x)];
+    }
+};
+
+struct PenumbraCriterion {
+    static constexpr const char* glslFile = "jfa_penumbra.glsl";
+    DiskLight light;
+    const ReceiverGrid* receivers = nullptr; // CPU kernel
+    GLuint receiverTexture = 0;              // GL kernels: RGBA32F, same layout
+
+    /// The ranking key of occluder c at receiver r: |cq|^2 if its ray reaches the light, the
+    /// largest float if c is the receiver itself (a silhouette texel keeps its own occluder, so
+    /// JFA's later passes can still pass it on), -1 (rejected) otherwise.
+    [[nodiscard]] float key(glm::vec3 r, const jfa::Cell& c) const {
+        if (c.x == r.x && c.y == r.y && c.z == r.z) return std::numeric_limits<float>::max();
+        return occluderHitDistance2(light, r, {c.x, c.y, c.z});
+    }
+    [[nodiscard]] bool empty(const jfa::Cell& c) const { return c.w == 0.0f; }
+    [[nodiscard]] bool accepts(int px, int py, const jfa::Cell& c) const {
+        const glm::vec4& r = receivers->at(px, py);
+        return r.w != 0.0f && key(glm::vec3(r), c) >= 0.0f;
+    }
+    [[nodiscard]] bool better(int px, int py, const jfa::Cell& a, const jfa::Cell& b) const {
+        const glm::vec3 r(receivers->at(px, py));
+        const float da = key(r, a);
+        const float db = key(r, b);
+        const bool tieWins = a.x < b.x || (a.x == b.x && (a.y < b.y || (a.y == b.y && a.z < b.z)));
+        return da < db || (da == db && tieWins);
+    }
+};
+
+/// Sets the disk-light uniforms (shaders/disk_light.glsl) of any program that includes it.
+void setDiskLightUniforms(const gl::Program& program, const DiskLight& light);
+/// The GL kernels' hook (found by argument-dependent lookup from jfa::GlFloodKernel::run):
+/// binds the receiver texture on unit 2 and sets the light.
+void setCriterionUniforms(const gl::Program& program, const PenumbraCriterion& criterion);
+
+} // namespace fl

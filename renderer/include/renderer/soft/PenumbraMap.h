@@ -1,0 +1,61 @@
+#pragma once
+// JFA-L phases 2 and 3 (thesis §5.3.1): silhouette pixels of the shadow map become seeds
+// carrying their world position, and jump flooding with PenumbraCriterion spreads them into the
+// penumbra map. The CPU functions are the reference the GL pass is tested against.
+
+#include <renderer/soft/PenumbraCriterion.h>
+
+#include <gpu/PassTimer.h>
+#include <gpu/ShaderLibrary.h>
+#include <jfa/GlKernel.h>
+#include <jfa/Plan.h>
+
+namespace fl {
+
+/// How the penumbra map is flooded.
+struct PenumbraSettings {
+    /// JFA passes with steps 2^(passes-1), ..., 2, 1: penumbrae up to 2^passes - 1 texels wide
+    /// (thesis default 6 -> 63). Must be in [1, log2(shadow-map size)].
+    int passes = 6;
+    /// The standard-flooding reference: 2^passes - 1 passes of step 1 (same reach).
+    bool standardFlooding = false;
+    /// Silhouette depth-jump threshold in world units along the light's normal, on top of the
+    /// slope allowance (shaders/silhouette.frag.glsl); 0 = 0.1% of the scene's bounding radius.
+    float silhouetteThreshold = 0.0f;
+};
+
+/// The flood plan for a size x size shadow map. Throws std::invalid_argument when passes is
+/// outside [1, log2(size)] (the message names the valid range).
+jfa::Plan penumbraPlan(const PenumbraSettings& settings, int size);
+
+/// CPU reference of the silhouette pass (shaders/silhouette.frag.glsl).
+jfa::Grid silhouetteSeeds(const ReceiverGrid& receivers, const DiskLight& light, float threshold);
+
+/// The technique: silhouettes, then the flood.
+class PenumbraMapPass {
+  public:
+    explicit PenumbraMapPass(const ShaderLibrary& shaders);
+
+    struct Inputs {
+        const gl::Texture& receivers; // ShadowMapPass::Outputs::receivers
+        const DiskLight& light;
+        const PenumbraSettings& settings;
+        float threshold; // resolved silhouette threshold (world units)
+    };
+    struct Outputs {
+        const gl::Texture& seeds;       // RGBA32F silhouette seeds (w = 1) or empty cells
+        const gl::Texture& penumbraMap; // RGBA32F occluder per texel (w = 1) or empty
+        int passes;                     // flood passes run
+    };
+    /// Runs both phases; `timer` (optional) times them as "silhouettes" and "flood".
+    Outputs execute(const Inputs& in, PassTimer* timer = nullptr);
+
+  private:
+    gl::Program silhouette_;
+    gl::VertexArray emptyVao_;
+    gl::Texture seeds_;
+    gl::Framebuffer fbo_;
+    jfa::GlFloodKernel kernel_;
+};
+
+} // namespace fl

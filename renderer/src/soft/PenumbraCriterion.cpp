@@ -1,0 +1,16 @@
+#include <renderer/soft/PenumbraCriterion.h>
+
+namespace fl {
+
+void setDiskLightUniforms(const gl::Program& program, const DiskLight& light) {
+    program.set("uDiskCenter", light.center);
+    program.set("uDiskNormal", light.normal);
+    program.set("uDiskRadius", light.radius);
+}
+
+void setCriterionUniforms(const gl::Program& program, const PenumbraCriterion& criterion) {
+    setDiskLightUniforms(program, criterion.light);
+    glBindTextureUnit(2, criterion.receiverTexture);
+}
+
+} // namespace fl

@@ -1,0 +1,108 @@
+#include <renderer/soft/PenumbraMap.h>
+
+#include <jfa/CpuKernel.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace fl {
+
+jfa::Plan penumbraPlan(const PenumbraSettings& settings, int size) {
+    int maxPasses = 0;
+    while ((2 << maxPasses) <= size) ++maxPasses; // largest k with 2^k <= size
+    if (settings.passes < 1 || settings.passes > maxPasses)
+        throw std::invalid_argument("JFA pass count " + std::to_string(settings.passes) +
+                                    " is outside [1, " + std::to_string(maxPasses) + "] for a " +
+                                    std::to_string(size) + "^2 shadow map");
+    const int reach = (1 << settings.passes) - 1;
+    if (settings.standardFlooding) return jfa::Plan::flood(reach, size, size);
+    std::vector<int> steps;
+    for (int s = 1 << (settings.passes - 1); s >= 1; s /= 2) steps.push_back(s);
+    jfa::Stage stage;
+    stage.width = size;
+    stage.height = size;
+    stage.steps = steps;
+    return jfa::Plan("JFA " + std::to_string(settings.passes) + " passes", {stage});
+}
+
+namespace {
+constexpr float kSilhouetteSlope = 3.0f; // shaders/silhouette.frag.glsl
+float lightDepth(const DiskLight& l, glm::vec3 p) {
+    return (p.x - l.center.x) * l.normal.x + (p.y - l.center.y) * l.normal.y +
+           (p.z - l.center.z) * l.normal.z;
+}
+} // namespace
+
+jfa::Grid silhouetteSeeds(const ReceiverGrid& r, const DiskLight& light, float threshold) {
+    jfa::Grid out(r.width, r.height, jfa::kEmptyCell);
+    for (int y = 0; y < r.height; ++y)
+        for (int x = 0; x < r.width; ++x) {
+            const glm::vec4& self = r.at(x, y);
+            if (self.w == 0.0f) continue;
+            const float d = lightDepth(light, glm::vec3(self));
+            bool silhouette = false;
+            for (int j = -1; j <= 1; ++j)
+                for (int i = -1; i <= 1; ++i) {
+                    const int qx = x + i, qy = y + j;
+                    if ((i == 0 && j == 0) || qx < 0 || qy < 0 || qx >= r.width || qy >= r.height)
+                        continue;
+                    const glm::vec4& n = r.at(qx, qy);
+                    const float deeper = lightDepth(light, glm::vec3(n)) - d;
+                    // Same operations as shaders/silhouette.frag.glsl (see there for why).
+                    const float ax = (n.x - self.x) - deeper * light.normal.x;
+                    const float ay = (n.y - self.y) - deeper * light.normal.y;
+                    const float az = (n.z - self.z) - deeper * light.normal.z;
+                    const float lateral2 = ax * ax + ay * ay + az * az;
+                    const float allowed = threshold + kSilhouetteSlope * std::sqrt(lateral2);
+                    silhouette = silhouette || n.w == 0.0f || deeper > allowed;
+                }
+            if (silhouette) out.at(x, y) = {self.x, self.y, self.z, 1.0f};
+        }
+    return out;
+}
+
+PenumbraMapPass::PenumbraMapPass(const ShaderLibrary& shaders)
+    : silhouette_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
+                                               {GL_FRAGMENT_SHADER, "silhouette.frag.glsl"}})),
+      emptyVao_(gl::VertexArray::create()),
+      kernel_(shaders, PenumbraCriterion::glslFile, jfa::GlKernelKind::Fragment) {}
+
+PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, PassTimer* timer) {
+    const int size = in.receivers.width();
+    const jfa::Plan plan = penumbraPlan(in.settings, size); // validates before any GL work
+    if (!seeds_ || seeds_.width() != size) {
+        seeds_ = gl::Texture(GL_RGBA32F, size, size);
+        fbo_ = gl::Framebuffer::create();
+        fbo_.attach(GL_COLOR_ATTACHMENT0, seeds_);
+        fbo_.setDrawBuffers(1);
+        fbo_.check("silhouette seeds");
+    }
+    // Phase 2: silhouettes.
+    if (timer) timer->begin("silhouettes");
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    glViewport(0, 0, size, size);
+    glDisable(GL_DEPTH_TEST);
+    setDiskLightUniforms(silhouette_, in.light);
+    silhouette_.set("uSilhouetteThreshold", in.threshold);
+    glBindTextureUnit(0, in.receivers.id());
+    glUseProgram(silhouette_.id());
+    glBindVertexArray(emptyVao_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+    glUseProgram(0);
+    glBindTextureUnit(0, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (timer) timer->end();
+    // Phase 3: flood the occluders through the penumbra region.
+    if (timer) timer->begin("flood");
+    PenumbraCriterion criterion;
+    criterion.light = in.light;
+    criterion.receiverTexture = in.receivers.id();
+    const gl::Texture& map = kernel_.run(plan, seeds_, criterion);
+    glBindTextureUnit(2, 0);
+    if (timer) timer->end();
+    return {seeds_, map, kernel_.passesRun()};
+}
+
+} // namespace fl

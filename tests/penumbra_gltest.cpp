@@ -1,0 +1,191 @@
+// JFA-L (thesis §5.3) on the GPU against its CPU reference, phase by phase, and its pictures.
+
+#include "GlTest.h"
+#include "ImageCompare.h"
+#include "TestPaths.h"
+#include "TestScenes.h"
+
+#include <renderer/Capture.h>
+#include <renderer/GltfLoader.h>
+#include <renderer/Renderer.h>
+#include <renderer/soft/PenumbraMap.h>
+
+#include <jfa/CpuKernel.h>
+#include <jfa/GlKernel.h>
+
+#include <cmath>
+
+namespace fl::test {
+namespace {
+
+class PenumbraTest : public GlTest {};
+
+const std::filesystem::path kDefaultAsset =
+    std::filesystem::path(FLOODLIGHT_SOURCE_DIR) / "assets" / "default.glb";
+
+ReceiverGrid readReceivers(const gl::Texture& t) {
+    const jfa::Grid g = jfa::readGrid(t);
+    ReceiverGrid r{g.width, g.height, {}};
+    for (const jfa::Cell& c : g.cells) r.points.emplace_back(c.x, c.y, c.z, c.w);
+    return r;
+}
+
+std::size_t nonEmpty(const jfa::Grid& g) {
+    std::size_t n = 0;
+    for (const jfa::Cell& c : g.cells) n += c.w != 0.0f;
+    return n;
+}
+
+// A box on a ground plane under a large disk light, rendered with JFA-L; returns the renderer.
+struct BoxSetup {
+    Scene scene;
+    CameraView camera;
+};
+
+BoxSetup boxScene() {
+    Scene scene = groundAndBox(3.0f, {-0.5f, 0.0f, -0.5f}, {0.5f, 1.0f, 0.5f}, {0.3f, -1, 0.2f});
+    scene.light->type = Light::Type::Spot;
+    scene.light->position = {-1.5f, 6.0f, -1.0f};
+    scene.light->direction = glm::normalize(glm::vec3(1.5f, -6.0f, 1.0f));
+    scene.light->radius = 2.0f;
+    CameraSpec spec;
+    spec.kind = CameraSpec::Kind::LookAt;
+    spec.eye = {2.5f, 4.0f, 4.0f};
+    spec.target = {0.3f, 0.0f, 0.3f};
+    return {scene, makeCameraView(scene, spec, 1.0f)};
+}
+
+TEST_F(PenumbraTest, SilhouettesAndFloodMatchTheCpuReference) {
+    const BoxSetup s = boxScene();
+    const ShaderLibrary shaders;
+    for (ShadowMethod method : {ShadowMethod::JfaL, ShadowMethod::FloodL}) {
+        RenderSettings settings;
+        settings.shadow.size = 128;
+        settings.method = method;
+        settings.penumbra.passes = 4;
+        Renderer r(shaders, s.scene, settings);
+        r.resize(64, 64);
+        r.render(s.camera);
+        ASSERT_NE(r.penumbraMap(), nullptr);
+        const ReceiverGrid receivers = readReceivers(*r.shadow()->receivers);
+        const jfa::Grid gpuSeeds = jfa::readGrid(*r.seeds());
+        const float threshold = 0.001f * s.scene.bounds.radius();
+        const jfa::Grid cpuSeeds = silhouetteSeeds(receivers, r.disk(), threshold);
+        ASSERT_EQ(gpuSeeds, cpuSeeds) << "silhouette seeds differ";
+        EXPECT_GT(nonEmpty(cpuSeeds), 50u) << "the box must have a silhouette";
+
+        PenumbraCriterion criterion;
+        criterion.light = r.disk();
+        criterion.receivers = &receivers;
+        PenumbraSettings ps = settings.penumbra;
+        ps.standardFlooding = method == ShadowMethod::FloodL;
+        const jfa::Grid cpuMap = jfa::flood(penumbraPlan(ps, 128), cpuSeeds, criterion);
+        const jfa::Grid gpuMap = jfa::readGrid(*r.penumbraMap());
+        std::size_t differ = 0;
+        for (std::size_t i = 0; i < cpuMap.cells.size(); ++i)
+            differ += !(cpuMap.cells[i] == gpuMap.cells[i]);
+        EXPECT_EQ(differ, 0u) << methodName(method);
+        EXPECT_GT(nonEmpty(cpuMap), nonEmpty(cpuSeeds)) << "the flood must spread occluders";
+        std::printf("%s: %zu seeds, %zu penumbra-map texels\n",
+                    std::string(methodName(method)).c_str(), nonEmpty(cpuSeeds), nonEmpty(cpuMap));
+    }
+}
+
+// The default scene's light (radius 0.3, 24 units away) casts penumbrae of only a few
+// centimetres, under a texel of a 512² map; the soft-shadow tests use a larger disk.
+constexpr float kTestRadius = 1.5f;
+
+FrameImages renderDefault(ShadowMethod method, std::optional<float> radius = kTestRadius) {
+    Scene scene = loadGltf(kDefaultAsset);
+    if (radius) scene.light->radius = *radius;
+    const ShaderLibrary shaders;
+    RenderSettings settings;
+    settings.shadow.size = 512;
+    settings.method = method;
+    Renderer r(shaders, scene, settings);
+    r.resize(256, 256);
+    r.render(makeCameraView(scene, {}, 1.0f));
+    return readFrame(r);
+}
+
+TEST_F(PenumbraTest, ZeroLightRadiusGivesExactlyTheHardShadows) {
+    const FrameImages hard = renderDefault(ShadowMethod::Hard, 0.0f);
+    const FrameImages soft = renderDefault(ShadowMethod::JfaL, 0.0f);
+    EXPECT_EQ(hard.visibility.data, soft.visibility.data);
+    EXPECT_NO_THROW(requireFinite(soft.color, "colour"));
+}
+
+TEST_F(PenumbraTest, SceneWithoutCastersIsLitEverywhere) {
+    Scene scene = groundAndBox(3.0f, {-0.5f, 0.0f, -0.5f}, {0.5f, 1.0f, 0.5f}, {0.3f, -1, 0.2f});
+    scene.instances.erase(scene.instances.begin() + 1); // only the ground is left
+    scene.light->radius = 1.0f;
+    const ShaderLibrary shaders;
+    RenderSettings settings;
+    settings.shadow.size = 128;
+    settings.method = ShadowMethod::JfaL;
+    Renderer r(shaders, scene, settings);
+    r.resize(48, 48);
+    r.render(makeCameraView(scene, {}, 1.0f));
+    const FloatImage v = readFrame(r).visibility;
+    for (float x : v.data) ASSERT_EQ(x, 1.0f);
+}
+
+TEST_F(PenumbraTest, PassCountsOutsideTheRangeAreRejected) {
+    PenumbraSettings ps;
+    ps.passes = 0;
+    EXPECT_THROW((void)penumbraPlan(ps, 512), std::invalid_argument);
+    ps.passes = 10; // 2^10 > 512
+    EXPECT_THROW((void)penumbraPlan(ps, 512), std::invalid_argument);
+    ps.passes = 9;
+    EXPECT_EQ(penumbraPlan(ps, 512).passCount(), 9);
+    ps.standardFlooding = true;
+    ps.passes = 6;
+    EXPECT_EQ(penumbraPlan(ps, 512).passCount(), 63);
+}
+
+// JFA-L against its standard-flooding reference on the default view (thesis Fig. 5.4): the
+// parity (penumbra or not) differs at few pixels and most penumbra pixels agree within 0.05.
+TEST_F(PenumbraTest, JfaLIsCloseToStandardFlooding) {
+    const FrameImages jfa = renderDefault(ShadowMethod::JfaL);
+    const FrameImages ref = renderDefault(ShadowMethod::FloodL);
+    std::size_t penumbra = 0, parity = 0, close = 0;
+    for (std::size_t i = 0; i < jfa.visibility.data.size(); ++i) {
+        const float a = jfa.visibility.data[i], b = ref.visibility.data[i];
+        const bool pa = a > 0.0f && a<1.0f, pb = b> 0.0f && b < 1.0f;
+        parity += pa != pb;
+        if (pb) {
+            ++penumbra;
+            close += std::abs(a - b) < 0.05f;
+        }
+    }
+    const double n = static_cast<double>(jfa.visibility.data.size());
+    std::printf("penumbra pixels %zu, parity differs %.3f%%, |dI| < 0.05 for %.2f%%\n", penumbra,
+                100.0 * parity / n, 100.0 * close / static_cast<double>(penumbra));
+    ASSERT_GT(penumbra, 500u) << "the default view must show penumbrae";
+    // Thesis: parity < 0.1% of pixels; issue target: >= 95% of penumbra pixels within 0.05.
+    EXPECT_LT(parity / n, 0.001);
+    EXPECT_GE(close / static_cast<double>(penumbra), 0.95);
+}
+
+// Image regression at 256² with a 512² map; tolerances as for the hard-shadow goldens
+// (golden_gltest.cpp): another driver may round shading and flip comparisons at float precision.
+TEST_F(PenumbraTest, Goldens) {
+    for (ShadowMethod m : {ShadowMethod::JfaL, ShadowMethod::FloodL}) {
+        const FrameImages f = renderDefault(m);
+        const std::string name = "default_256_" + std::string(methodName(m));
+        Tolerance colour;
+        colour.maxAbs = 255;
+        colour.meanAbs = 1.5;
+        colour.pixelThreshold = 16;
+        colour.maxPercentOver = 1.0;
+        const CompareResult c = compareWithGolden(toSrgb8(f.color), name + "_colour", colour);
+        EXPECT_TRUE(c.pass) << c.report;
+        // Soft visibility: grey levels, so the same limits as colour.
+        const CompareResult v =
+            compareWithGolden(visibilityToGrey(f.visibility), name + "_visibility", colour);
+        EXPECT_TRUE(v.pass) << v.report;
+    }
+}
+
+} // namespace
+} // namespace fl::test
