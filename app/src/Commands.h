@@ -15,6 +15,10 @@ Runner addRenderCommand(CLI::App& app);
 Runner addViewCommand(CLI::App& app);
 /// `floodlight voronoi`: jump-flooded Voronoi diagrams and distance transforms with errors.
 Runner addVoronoiCommand(CLI::App& app);
+/// `floodlight delaunay`: Delaunay triangulation of a point file by 1+JFA and exact repair.
+Runner addDelaunayCommand(CLI::App& app);
+/// `floodlight compare`: a soft-shadow method against its standard-flooding reference.
+Runner addCompareCommand(CLI::App& app);
 /// `floodlight make-scene`: writes a generated scene as .glb.
 Runner addMakeSceneCommand(CLI::App& app);
 

@@ -1,6 +1,13 @@
 #include <renderer/CameraPath.h>
 
+#include <renderer/ImageIO.h>
+
 #include <geometry/Framing.h>
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <sstream>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -82,6 +89,70 @@ CameraPath defaultWalkthrough(const CameraView& start, const geom::Aabb& bounds)
         keys.push_back({pivot + rotated * scale, pivot});
     }
     return CameraPath(std::move(keys), yfov);
+}
+
+namespace {
+
+glm::vec3 readVec3(const nlohmann::json& j, const std::string& where) {
+    if (!j.is_array() || j.size() != 3)
+        throw std::runtime_error(where + ": expected an array of 3 numbers");
+    glm::vec3 v;
+    for (int k = 0; k < 3; ++k) {
+        if (!j[static_cast<std::size_t>(k)].is_number())
+            throw std::runtime_error(where + "[" + std::to_string(k) + "]: expected a number");
+        v[k] = j[static_cast<std::size_t>(k)].get<float>();
+        if (!std::isfinite(v[k]))
+            throw std::runtime_error(where + "[" + std::to_string(k) + "]: not finite");
+    }
+    return v;
+}
+
+} // namespace
+
+CameraPath readCameraPath(const std::filesystem::path& file) {
+    const std::string name = file.string();
+    std::ifstream in(file);
+    if (!in) throw std::runtime_error(name + ": cannot open");
+    nlohmann::json j;
+    try {
+        j = nlohmann::json::parse(in);
+    } catch (const nlohmann::json::parse_error& e) {
+        throw std::runtime_error(name + ": not valid JSON: " + e.what());
+    }
+    try {
+        if (!j.is_object()) throw std::runtime_error("expected an object with \"keys\"");
+        float fov = 50.0f;
+        if (j.contains("fov")) {
+            if (!j["fov"].is_number()) throw std::runtime_error("fov: expected a number");
+            fov = j["fov"].get<float>();
+            if (!(fov >= 1.0f && fov <= 170.0f))
+                throw std::runtime_error("fov: must be between 1 and 170 degrees");
+        }
+        if (!j.contains("keys") || !j["keys"].is_array())
+            throw std::runtime_error("keys: missing (an array of {eye, target})");
+        std::vector<CameraKey> keys;
+        for (std::size_t i = 0; i < j["keys"].size(); ++i) {
+            const nlohmann::json& k = j["keys"][i];
+            const std::string where = "keys[" + std::to_string(i) + "]";
+            if (!k.is_object() || !k.contains("eye") || !k.contains("target"))
+                throw std::runtime_error(where + ": expected {\"eye\": [..], \"target\": [..]}");
+            keys.push_back(
+                {readVec3(k["eye"], where + ".eye"), readVec3(k["target"], where + ".target")});
+        }
+        return CameraPath(std::move(keys), fov);
+    } catch (const std::exception& e) {
+        throw std::runtime_error(name + ": " + e.what());
+    }
+}
+
+void writeCameraPath(const std::filesystem::path& file, const CameraPath& path) {
+    nlohmann::json j;
+    j["fov"] = path.yfovDegrees();
+    j["keys"] = nlohmann::json::array();
+    for (const CameraKey& k : path.keys())
+        j["keys"].push_back({{"eye", {k.eye.x, k.eye.y, k.eye.z}},
+                             {"target", {k.target.x, k.target.y, k.target.z}}});
+    writeTextFile(file, j.dump(2) + "\n");
 }
 
 } // namespace fl

@@ -22,6 +22,7 @@
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
+#include <fstream>
 #include <system_error>
 #include <unistd.h>
 
@@ -59,6 +60,22 @@ void commit(const std::filesystem::path& tmp, const std::filesystem::path& path)
 }
 
 } // namespace
+
+void writeTextFile(const std::filesystem::path& path, const std::string& text) {
+    ensureParent(path);
+    const std::filesystem::path tmp = tempNameFor(path);
+    {
+        std::ofstream out(tmp, std::ios::binary);
+        out << text;
+        out.close();
+        if (!out) {
+            std::error_code ec;
+            std::filesystem::remove(tmp, ec);
+            throw std::runtime_error(path.string() + ": cannot write");
+        }
+    }
+    commit(tmp, path);
+}
 
 FloatImage readTexture(const gl::Texture& texture, int channels) {
     if (channels != 1 && channels != 4) throw std::invalid_argument("readTexture: 1 or 4 channels");

@@ -6,6 +6,7 @@
 #include <renderer/Scene.h>
 #include <renderer/passes/ForwardPass.h>
 
+#include <filesystem>
 #include <vector>
 
 namespace fl {
@@ -27,11 +28,20 @@ class CameraPath {
     /// Frame i of n evenly spaced frames from the first key to the last.
     [[nodiscard]] CameraView frame(int i, int n, const geom::Aabb& bounds, float aspect) const;
     [[nodiscard]] const std::vector<CameraKey>& keys() const { return keys_; }
+    [[nodiscard]] float yfovDegrees() const { return yfovDegrees_; }
 
   private:
     std::vector<CameraKey> keys_;
     float yfovDegrees_;
 };
+
+/// Reads a camera path from JSON: {"fov": degrees (optional, default 50), "keys": [{"eye":
+/// [x, y, z], "target": [x, y, z]}, ...]} with at least two keys. Throws std::runtime_error
+/// "FILE: FIELD: problem" for a missing or malformed field.
+CameraPath readCameraPath(const std::filesystem::path& file);
+
+/// Writes a path in the format readCameraPath reads (temporary name, then rename).
+void writeCameraPath(const std::filesystem::path& file, const CameraPath& path);
 
 /// A walkthrough that starts at `start` (e.g. the scene's camera): it swings 60 degrees around
 /// the vertical axis through the point the camera looks at, closing in to 55% of the distance

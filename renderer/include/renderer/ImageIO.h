@@ -59,6 +59,10 @@ void writeExr(const std::filesystem::path& path, int width, int height,
 /// Reads every channel of an EXR file as floats.
 std::vector<ExrChannel> readExr(const std::filesystem::path& path, int& width, int& height);
 
+/// Writes text (CSV, JSON, HTML) under a temporary name and renames it into place; throws
+/// std::runtime_error naming the path on failure.
+void writeTextFile(const std::filesystem::path& path, const std::string& text);
+
 /// Throws std::runtime_error if any value is NaN or infinite (we never write such pixels).
 void requireFinite(const FloatImage& image, const std::string& what);
 
