@@ -5,6 +5,10 @@
 #ifdef SOFT_PENUMBRA_MAP
 #include "soft_penumbra.glsl"
 #endif
+#ifdef SOFT_EYE_VISIBILITY
+// JFA-E / flood-E: visibility computed in eye space for exactly these pixels.
+layout(binding = 3) uniform sampler2D uEyeVisibility;
+#endif
 
 in vec3 vWorld;
 in vec3 vNormal;
@@ -31,7 +35,9 @@ void main() {
     if (!gl_FrontFacing) n = -n;
     vec3 l = toLight(vWorld);
     float lambert = max(dot(n, l), 0.0);
-#ifdef SOFT_PENUMBRA_MAP
+#if defined(SOFT_EYE_VISIBILITY)
+    float visibility = texelFetch(uEyeVisibility, ivec2(gl_FragCoord.xy), 0).r;
+#elif defined(SOFT_PENUMBRA_MAP)
     float visibility = penumbraMapVisibility(vWorld);
 #else
     float visibility = hardShadow(vWorld);

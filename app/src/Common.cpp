@@ -30,13 +30,24 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool sceneAsOption) {
         ->capture_default_str();
     cmd.add_option("--method", o.method,
                    "Shadow method: hard, jfa-l (JFA penumbra map, thesis 5.3), flood-l (its "
-                   "standard-flooding reference)")
-        ->check(CLI::IsMember({"hard", "jfa-l", "flood-l"}))
+                   "standard-flooding reference), jfa-e (JFA in eye space, thesis 5.4), flood-e "
+                   "(its standard-flooding reference)")
+        ->check(CLI::IsMember({"hard", "jfa-l", "flood-l", "jfa-e", "flood-e"}))
         ->capture_default_str();
     cmd.add_option("--jfa-passes", o.jfaPasses,
-                   "Flooding passes of jfa-l / flood-l: penumbrae up to 2^N - 1 shadow-map texels "
-                   "wide; 1 to log2(shadow-map size)")
+                   "Flooding passes of jfa-l / flood-l / jfa-e / flood-e: penumbrae up to 2^N - 1 "
+                   "shadow-map texels (-l) or pixels (-e) wide; 1 to log2(size)")
         ->check(CLI::Range(1, 13))
+        ->capture_default_str();
+    cmd.add_flag("--no-object-id-fix", o.noObjectIdFix,
+                 "jfa-e / flood-e: let occluders flood into the hard shadows of other objects "
+                 "(thesis 5.4.2, first jump-too-far fix off)");
+    cmd.add_flag("--no-midpoint-fix", o.noMidpointFix,
+                 "jfa-e / flood-e: no midpoint continuity check (thesis 5.4.2, second fix off)");
+    cmd.add_option("--boundary-threshold", o.boundaryThreshold,
+                   "jfa-e / flood-e: largest 3D distance from a shadowed boundary pixel to its lit "
+                   "neighbour, in scene units; 0 = 6 pixel footprints")
+        ->check(CLI::Range(0.0f, 1e6f))
         ->capture_default_str();
     cmd.add_option("--bias-slope", o.slopeBias,
                    "Slope-scaled depth bias (polygon offset factor, in light depth)")
@@ -112,6 +123,9 @@ RenderSettings makeRenderSettings(const SceneOptions& o) {
     } catch (const std::invalid_argument& e) {
         throw InputError(std::string("--jfa-passes: ") + e.what());
     }
+    s.eyeSoft.objectIdFix = !o.noObjectIdFix;
+    s.eyeSoft.midpointFix = !o.noMidpointFix;
+    s.eyeSoft.boundaryThreshold = o.boundaryThreshold;
     s.shadow.slopeBias = o.slopeBias;
     s.shadow.constantBias = o.constantBias;
     s.timing = o.timing == "query"    ? TimingMode::Query

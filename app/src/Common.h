@@ -29,8 +29,11 @@ struct SceneOptions {
     std::string shaderDir;            // --shader-dir
     int shadowMapSize = 1024;
     std::string shadowMap = "uniform"; // provider: uniform | tsm
-    std::string method = "hard";       // hard | jfa-l | flood-l
+    std::string method = "hard";       // hard | jfa-l | flood-l | jfa-e | flood-e
     int jfaPasses = 6;                 // JFA-L / flood-L reach: 2^passes - 1 texels
+    bool noObjectIdFix = false;        // JFA-E: first jump-too-far fix off
+    bool noMidpointFix = false;        // JFA-E: second jump-too-far fix off
+    float boundaryThreshold = 0.0f;    // JFA-E boundary distance; 0 = automatic
     float slopeBias = 2.0f;
     float constantBias = 2.0f;
     std::string timing = "auto";

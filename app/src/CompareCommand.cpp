@@ -36,6 +36,8 @@ ShadowMethod referenceOf(ShadowMethod m) {
     switch (m) {
     case ShadowMethod::JfaL:
         return ShadowMethod::FloodL;
+    case ShadowMethod::JfaE:
+        return ShadowMethod::FloodE;
     default:
         throw InputError("--method " + std::string(methodName(m)) +
                          ": no standard-flooding reference for it");
@@ -49,7 +51,9 @@ double passMs(const Renderer& r, const std::string& name) {
     return ms;
 }
 
-const char* kPhases[] = {"shadow map", "silhouettes", "flood", "forward"};
+// Every phase either method may time (absent phases read 0).
+const char* kPhases[] = {"shadow map", "silhouettes", "occluder ids", "eye hard shadows",
+                         "boundaries", "flood", "composite", "forward"};
 
 std::string csvHeader() {
     std::string h = "frame,penumbra_reference,penumbra_method,dI_lt_0.05,dI_0.05_0.1,dI_0.1_0.2,"

@@ -56,13 +56,18 @@ std::string_view methodName(ShadowMethod m) {
         return "jfa-l";
     case ShadowMethod::FloodL:
         return "flood-l";
+    case ShadowMethod::JfaE:
+        return "jfa-e";
+    case ShadowMethod::FloodE:
+        return "flood-e";
     default:
         return "hard";
     }
 }
 
 std::optional<ShadowMethod> parseMethod(std::string_view name) {
-    for (ShadowMethod m : {ShadowMethod::Hard, ShadowMethod::JfaL, ShadowMethod::FloodL})
+    for (ShadowMethod m : {ShadowMethod::Hard, ShadowMethod::JfaL, ShadowMethod::FloodL,
+                           ShadowMethod::JfaE, ShadowMethod::FloodE})
         if (name == methodName(m)) return m;
     return std::nullopt;
 }
@@ -88,7 +93,7 @@ geom::ViewVolume lightVolume(const Scene& scene, const Light& light) {
 Renderer::Renderer(const ShaderLibrary& shaders, const Scene& scene, const RenderSettings& settings)
     : settings_(settings), scene_(scene), light_(sceneLight(scene)), sceneBounds_(scene.bounds),
       disk_(makeDiskLight(light_, scene.bounds)), lightVolume_(lightVolume(scene, light_)),
-      shadowPass_(shaders), penumbraPass_(shaders), forwardPass_(shaders),
+      shadowPass_(shaders), penumbraPass_(shaders), eyeSoftPass_(shaders), forwardPass_(shaders),
       diagnosticsPass_(shaders), presentPass_(shaders), timer_(settings.timing) {
     gl::throwIfErrors("renderer set-up");
 }
@@ -108,13 +113,15 @@ void Renderer::render(const CameraView& camera) {
     timer_.beginFrame();
     const bool penumbra =
         settings_.method == ShadowMethod::JfaL || settings_.method == ShadowMethod::FloodL;
+    const bool eyeSoft =
+        settings_.method == ShadowMethod::JfaE || settings_.method == ShadowMethod::FloodE;
     // 1. Shadow map: depth from the light, fitted to the scene bounds; TSM also fits the warp
     //    to the camera's frustum. The soft methods also keep each texel's world position.
     timer_.begin("shadow map");
     shadow_.reset();
     const ShadowMapPass::Outputs& shadow =
         shadow_.emplace(shadowPass_.execute({scene_, lightVolume_, settings_.shadow, camera.view,
-                                             camera.proj, sceneBounds_, penumbra}));
+                                             camera.proj, sceneBounds_, penumbra || eyeSoft}));
     timer_.end();
     // 2-3. JFA-L / flood-L: silhouette seeds, flooded into the penumbra map.
     seeds_ = penumbraMap_ = nullptr;
@@ -129,10 +136,18 @@ void Renderer::render(const CameraView& camera) {
         seeds_ = &pm.seeds;
         penumbraMap_ = &pm.penumbraMap;
     }
+    // 2-3'. JFA-E / flood-E: eye hard shadows, boundary seeds, eye-space flood, visibility.
+    eyeSoft_.reset();
+    if (eyeSoft)
+        eyeSoft_.emplace(eyeSoftPass_.execute(
+            {scene_, camera, shadow, settings_.shadow, disk_, settings_.eyeSoft,
+             settings_.penumbra.passes, settings_.method == ShadowMethod::FloodE, width_, height_},
+            &timer_));
     // 4. Forward shading with the method's visibility.
     timer_.begin("forward");
     const ForwardPass::Outputs fwd =
-        forwardPass_.execute({scene_, camera, light_, shadow, penumbraMap_, &disk_});
+        forwardPass_.execute({scene_, camera, light_, shadow, penumbraMap_, &disk_,
+                              eyeSoft_ ? &eyeSoft_->visibility : nullptr});
     timer_.end();
     // 5. Diagnostics: texel footprint and the previous frame's visibility (measurement only).
     diagnostics_ = nullptr;

@@ -1,8 +1,9 @@
 #pragma once
 // The frame, as numbered steps: 1. shadow map from the light (uniform or TSM provider);
-// 2. (JFA-L, flood-L) silhouettes and 3. the flooded penumbra map; 4. forward shading with the
-// method's visibility; 5. (optional) shadow-map diagnostics; 6. (window only) present. Owns the
-// passes and the uploaded scene.
+// 2. (JFA-L, flood-L) silhouettes and 3. the flooded penumbra map, or (JFA-E, flood-E) the eye
+// hard-shadow image, its boundary seeds, the eye-space flood and the visibility composite;
+// 4. forward shading with the method's visibility; 5. (optional) shadow-map diagnostics;
+// 6. (window only) present. Owns the passes and the uploaded scene.
 
 #include <gpu/PassTimer.h>
 #include <gpu/ShaderLibrary.h>
@@ -12,6 +13,7 @@
 #include <renderer/passes/ShadowDiagnosticsPass.h>
 #include <renderer/passes/ShadowMapPass.h>
 #include <renderer/soft/DiskLight.h>
+#include <renderer/soft/EyeSoftShadow.h>
 #include <renderer/soft/PenumbraMap.h>
 
 #include <geometry/Framing.h>
@@ -25,8 +27,10 @@ enum class ShadowMethod {
     Hard,   // one shadow-map test (the light's centre)
     JfaL,   // thesis §5.3: penumbra map by jump flooding in light space
     FloodL, // the same phases with standard flooding (the reference for JFA-L)
+    JfaE,   // thesis §5.4: occluders jump-flooded in eye space from the hard-shadow image
+    FloodE, // the same phases with standard flooding (the reference for JFA-E)
 };
-/// "hard", "jfa-l", "flood-l".
+/// "hard", "jfa-l", "flood-l", "jfa-e", "flood-e".
 std::string_view methodName(ShadowMethod m);
 /// Parses a method name; nullopt if unknown.
 std::optional<ShadowMethod> parseMethod(std::string_view name);
@@ -34,7 +38,9 @@ std::optional<ShadowMethod> parseMethod(std::string_view name);
 struct RenderSettings {
     ShadowMapSettings shadow;
     ShadowMethod method = ShadowMethod::Hard;
-    PenumbraSettings penumbra; // JFA-L / flood-L (standardFlooding is set from the method)
+    PenumbraSettings penumbra; // JFA-L / flood-L (standardFlooding is set from the method);
+                               // JFA-E / flood-E take its pass count
+    EyeSoftSettings eyeSoft;   // JFA-E / flood-E: the jump-too-far fixes, boundary threshold
     TimingMode timing = TimingMode::Auto;
     bool diagnostics = false; // run step 3 (texel footprint and temporal continuity)
 };
@@ -79,6 +85,10 @@ class Renderer {
     /// JFA-L / flood-L: the last frame's silhouette seeds and penumbra map (nullptr otherwise).
     [[nodiscard]] const gl::Texture* seeds() const { return seeds_; }
     [[nodiscard]] const gl::Texture* penumbraMap() const { return penumbraMap_; }
+    /// JFA-E / flood-E: the last frame's phase outputs (nullptr otherwise).
+    [[nodiscard]] const EyeSoftShadowPass::Outputs* eyeSoft() const {
+        return eyeSoft_ ? &*eyeSoft_ : nullptr;
+    }
     /// Step 5's output (see ShadowDiagnosticsPass); nullptr unless settings().diagnostics.
     [[nodiscard]] const gl::Texture* diagnostics() const { return diagnostics_; }
     /// The last frame's shadow map and its matrices; nullptr before the first frame.
@@ -101,6 +111,7 @@ class Renderer {
     geom::ViewVolume lightVolume_;
     ShadowMapPass shadowPass_;
     PenumbraMapPass penumbraPass_;
+    EyeSoftShadowPass eyeSoftPass_;
     ForwardPass forwardPass_;
     ShadowDiagnosticsPass diagnosticsPass_;
     PresentPass presentPass_;
@@ -111,6 +122,7 @@ class Renderer {
     const gl::Texture* seeds_ = nullptr;
     const gl::Texture* penumbraMap_ = nullptr;
     std::optional<ShadowMapPass::Outputs> shadow_;
+    std::optional<EyeSoftShadowPass::Outputs> eyeSoft_;
     int width_ = 0, height_ = 0;
 };
 

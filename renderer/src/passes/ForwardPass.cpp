@@ -11,7 +11,11 @@ ForwardPass::ForwardPass(const ShaderLibrary& shaders)
       penumbraProgram_(gl::Program::build(
           shaders,
           {{GL_VERTEX_SHADER, "forward.vert.glsl"}, {GL_FRAGMENT_SHADER, "forward.frag.glsl"}},
-          {"SOFT_PENUMBRA_MAP 1"})) {}
+          {"SOFT_PENUMBRA_MAP 1"})),
+      eyeProgram_(gl::Program::build(
+          shaders,
+          {{GL_VERTEX_SHADER, "forward.vert.glsl"}, {GL_FRAGMENT_SHADER, "forward.frag.glsl"}},
+          {"SOFT_EYE_VISIBILITY 1"})) {}
 
 void ForwardPass::resize(int width, int height) {
     if (color_ && color_.width() == width && color_.height() == height) return;
@@ -44,7 +48,8 @@ ForwardPass::Outputs ForwardPass::execute(const Inputs& in) {
     const bool penumbra = in.penumbraMap != nullptr;
     if (penumbra && in.disk == nullptr)
         throw std::invalid_argument("ForwardPass: a penumbra map needs the disk light");
-    const gl::Program& program = penumbra ? penumbraProgram_ : program_;
+    const bool eye = in.eyeVisibility != nullptr;
+    const gl::Program& program = eye ? eyeProgram_ : penumbra ? penumbraProgram_ : program_;
     program.set("uViewProj", in.camera.proj * in.camera.view);
     program.set("uEye", in.camera.eye);
     program.set("uLightPosition", in.light.position);
@@ -52,7 +57,9 @@ ForwardPass::Outputs ForwardPass::execute(const Inputs& in) {
     program.set("uLightDirectional", in.light.type == Light::Type::Directional ? 1 : 0);
     program.set("uLightColor", in.light.color);
     bindShadowMap(program, in.shadow);
-    if (penumbra) {
+    if (eye) {
+        glBindTextureUnit(3, in.eyeVisibility->id());
+    } else if (penumbra) {
         setDiskLightUniforms(program, *in.disk);
         glBindTextureUnit(3, in.penumbraMap->id());
     }

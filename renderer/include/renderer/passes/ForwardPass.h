@@ -33,6 +33,8 @@ class ForwardPass {
         /// JFA-L / flood-L: the penumbra map (nullptr: hard shadows) and the disk light.
         const gl::Texture* penumbraMap = nullptr;
         const DiskLight* disk = nullptr;
+        /// JFA-E / flood-E: the per-pixel visibility of this frame (R32F, the frame's size).
+        const gl::Texture* eyeVisibility = nullptr;
     };
     struct Outputs {
         const gl::Texture& color;      // RGBA16F linear; alpha 0 where nothing was drawn
@@ -43,6 +45,7 @@ class ForwardPass {
   private:
     gl::Program program_;         // hard shadows
     gl::Program penumbraProgram_; // visibility from a penumbra map (SOFT_PENUMBRA_MAP)
+    gl::Program eyeProgram_;      // visibility from an eye-space texture (SOFT_EYE_VISIBILITY)
     gl::Texture color_, visibility_, depth_;
     gl::Framebuffer fbo_;
 };

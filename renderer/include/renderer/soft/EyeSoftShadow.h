@@ -1,0 +1,146 @@
+#pragma once
+// JFA-E (thesis §5.4.1): soft shadows flooded in eye space from an image with hard shadows.
+//   phase 2  eye pass: per pixel its world position and hard-shadow flag, and its occluder (the
+//            surface the light's centre sees at the pixel's shadow-map texel) with that
+//            occluder's object id (from a light-space id pass over the shadow map);
+//   phase 3  boundary pixels (in hard shadow, with a lit neighbour nearer than a 3D distance
+//            threshold) become seeds carrying their occluder;
+//   phase 4  jump flooding with EyeSoftCriterion (or standard flooding, the reference);
+//   phase 5  composite: per pixel the intensity from its occluder, else 0 inside / 1 outside.
+// The CPU functions are the references the GL passes are tested against.
+
+#include <renderer/ImageIO.h>
+#include <renderer/passes/ShadowMapPass.h>
+#include <renderer/soft/DiskLight.h>
+
+#include <jfa/Grid.h>
+#include <jfa/Plan.h>
+
+#include <gpu/Gl.h>
+#include <gpu/PassTimer.h>
+#include <gpu/Program.h>
+#include <gpu/ShaderLibrary.h>
+#include <jfa/GlKernel.h>
+
+namespace fl {
+
+struct CameraView;
+
+/// Switches and thresholds of JFA-E / flood-E (the pass count is PenumbraSettings::passes).
+struct EyeSoftSettings {
+    /// Thesis §5.4.2, first fix: an occluder floods into a hard-shadowed pixel only if that
+    /// pixel's own occluder belongs to the same object (lit pixels have no occluder).
+    bool objectIdFix = true;
+    /// Thesis §5.4.2, second fix: the pixel midway between the occluder's boundary pixel and
+    /// the pixel must itself get a penumbra intensity from the occluder.
+    bool midpointFix = true;
+    /// Boundary test (phase 3): a lit neighbour counts if nearer in 3D than this many world
+    /// units; 0 = kBoundaryFootprints pixel footprints at the pixel's distance from the eye.
+    float boundaryThreshold = 0.0f;
+};
+
+/// Footprints of the automatic boundary threshold: wide enough for a floor seen at ~80 degrees
+/// from its normal, narrow enough to exclude the depth jump to an object in front.
+inline constexpr float kBoundaryFootprints = 6.0f;
+
+/// Phase 2's output on the CPU side, row-major width x height (row 0 = bottom, as GL).
+struct EyeImage {
+    int width = 0;
+    int height = 0;
+    /// xyz world position; w = 1 in hard shadow, 0 lit, -1 no surface (background).
+    std::vector<glm::vec4> points;
+    /// xyz the occluder point (shadow-map receiver at the pixel's texel); w its object id, -1
+    /// when unknown (no surface, outside the map, or the object-ID fix is off).
+    std::vector<glm::vec4> occluders;
+    [[nodiscard]] std::size_t index(int x, int y) const {
+        return static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
+               static_cast<std::size_t>(x);
+    }
+};
+
+/// The boundary threshold as shader terms: a lit neighbour at squared distance d2 counts when
+/// d2 < absolute2 + relative2 * |p - eye|^2.
+struct BoundaryThreshold {
+    float absolute2 = 0.0f;
+    float relative2 = 0.0f;
+};
+/// Resolves settings.boundaryThreshold for a camera and frame height.
+BoundaryThreshold boundaryThreshold(const EyeSoftSettings& settings, const glm::mat4& proj,
+                                    int height);
+
+/// The most JFA passes a width x height frame can use: log2(max(width, height)), rounded down.
+int eyeSoftMaxPasses(int width, int height);
+
+/// The flooding plan for a width x height frame: JFA with steps 2^(passes-1) .. 1, or with
+/// `standardFlooding` 2^passes - 1 step-1 passes. Throws std::invalid_argument when passes is
+/// outside [1, log2(max(width, height))] or the frame has 2^24 pixels or more (seed pixel
+/// indices must be exact in a float).
+jfa::Plan eyeSoftPlan(int passes, bool standardFlooding, int width, int height);
+
+/// CPU reference of phase 3 (shaders/jfae_boundary.frag.glsl): boundary pixels become cells
+/// (occluder xyz, w = seed pixel index + 1); others are jfa::kEmptyCell.
+jfa::Grid eyeBoundarySeeds(const EyeImage& image, glm::vec3 eye, BoundaryThreshold threshold);
+
+/// The flooding criterion of JFA-E: the CPU functor here, shaders/jfae_criterion.glsl for the
+/// GL kernel (bit for bit the same). See the GLSL file for the rule.
+struct EyeSoftCriterion {
+    static constexpr const char* glslFile = "jfae_criterion.glsl";
+    DiskLight light;
+    bool objectIdFix = true;
+    bool midpointFix = true;
+    const EyeImage* image = nullptr; // CPU kernel
+    GLuint pointsTexture = 0;        // GL kernel: RGBA32F, EyeImage::points
+    GLuint occludersTexture = 0;     // GL kernel: RGBA32F, EyeImage::occluders
+
+    [[nodiscard]] bool empty(const jfa::Cell& c) const { return c.w == 0.0f; }
+    [[nodiscard]] bool accepts(int px, int py, const jfa::Cell& c) const;
+    [[nodiscard]] bool better(int px, int py, const jfa::Cell& a, const jfa::Cell& b) const;
+};
+/// The GL kernel's hook (argument-dependent lookup): textures on units 2 and 3, uniforms.
+void setCriterionUniforms(const gl::Program& program, const EyeSoftCriterion& criterion);
+
+/// CPU reference of phase 5 (shaders/jfae_composite.frag.glsl): one visibility per pixel.
+/// Uses std::acos, so equal to the GL result only to float rounding (~1e-6).
+FloatImage eyeSoftVisibility(const EyeImage& image, const jfa::Grid& flooded,
+                             const DiskLight& light);
+
+/// The technique's phases 2-5 on the GPU. Phase 1 (the shadow map with receiver positions) is
+/// the caller's; the result is a visibility texture ForwardPass reads (SOFT_EYE_VISIBILITY).
+class EyeSoftShadowPass {
+  public:
+    explicit EyeSoftShadowPass(const ShaderLibrary& shaders);
+
+    struct Inputs {
+        const GpuScene& scene;
+        const CameraView& camera;
+        const ShadowMapPass::Outputs& shadow; // phase 1, made with writeReceivers
+        const ShadowMapSettings& shadowSettings;
+        const DiskLight& light;
+        const EyeSoftSettings& settings;
+        int passes;            // PenumbraSettings::passes (capped at eyeSoftMaxPasses)
+        bool standardFlooding; // flood-E
+        int width, height;     // frame size
+    };
+    struct Outputs {
+        const gl::Texture& points;     // phase 2, RGBA32F (EyeImage::points)
+        const gl::Texture& occluders;  // phase 2, RGBA32F (EyeImage::occluders)
+        const gl::Texture& seeds;      // phase 3, RGBA32F cells
+        const gl::Texture& flooded;    // phase 4, RGBA32F cells
+        const gl::Texture& visibility; // phase 5, R32F
+        int passes;                    // flood passes run
+    };
+    /// Runs phases 2-5; `timer` (optional) times them as "occluder ids", "eye hard shadows",
+    /// "boundaries", "flood" and "composite".
+    Outputs execute(const Inputs& in, PassTimer* timer = nullptr);
+
+  private:
+    void resize(int width, int height, int shadowSize);
+
+    gl::Program lightIds_, eyePass_, boundary_, composite_;
+    gl::VertexArray emptyVao_;
+    gl::Texture ids_, points_, occluders_, eyeDepth_, seeds_, visibility_;
+    gl::Framebuffer eyeFbo_, seedsFbo_, visibilityFbo_;
+    jfa::GlFloodKernel kernel_;
+};
+
+} // namespace fl

@@ -1,0 +1,293 @@
+#include <renderer/soft/EyeSoftShadow.h>
+
+#include <renderer/GpuScene.h>
+#include <renderer/passes/ForwardPass.h>
+#include <renderer/soft/PenumbraCriterion.h>
+
+#include <jfa/CpuKernel.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace fl {
+
+BoundaryThreshold boundaryThreshold(const EyeSoftSettings& settings, const glm::mat4& proj,
+                                    int height) {
+    BoundaryThreshold t;
+    if (settings.boundaryThreshold > 0.0f) {
+        t.absolute2 = settings.boundaryThreshold * settings.boundaryThreshold;
+        return t;
+    }
+    // A pixel's footprint at distance d (facing the eye) is d * 2 / (proj[1][1] * height) for a
+    // perspective projection; the distance to the eye stands in for the view depth (a little
+    // larger off-axis, so the threshold errs towards finding boundaries).
+    const float perUnit = 2.0f / (std::abs(proj[1][1]) * static_cast<float>(std::max(height, 1)));
+    const float rel = kBoundaryFootprints * perUnit;
+    t.relative2 = rel * rel;
+    return t;
+}
+
+int eyeSoftMaxPasses(int width, int height) {
+    const int size = std::max(width, height);
+    int maxPasses = 0;
+    while ((2 << maxPasses) <= size) ++maxPasses; // largest k with 2^k <= size
+    return maxPasses;
+}
+
+jfa::Plan eyeSoftPlan(int passes, bool standardFlooding, int width, int height) {
+    const int maxPasses = eyeSoftMaxPasses(width, height);
+    if (passes < 1 || passes > maxPasses)
+        throw std::invalid_argument("JFA-E pass count " + std::to_string(passes) +
+                                    " is outside [1, " + std::to_string(maxPasses) + "] for a " +
+                                    std::to_string(width) + "x" + std::to_string(height) +
+                                    " frame");
+    if (static_cast<long long>(width) * height >= (1LL << 24))
+        throw std::invalid_argument("JFA-E frames must have fewer than 2^24 pixels");
+    const int reach = (1 << passes) - 1;
+    if (standardFlooding) return jfa::Plan::flood(reach, width, height);
+    jfa::Stage stage;
+    stage.width = width;
+    stage.height = height;
+    for (int s = 1 << (passes - 1); s >= 1; s /= 2) stage.steps.push_back(s);
+    return jfa::Plan("JFA-E " + std::to_string(passes) + " passes", {stage});
+}
+
+jfa::Grid eyeBoundarySeeds(const EyeImage& im, glm::vec3 eye, BoundaryThreshold th) {
+    jfa::Grid out(im.width, im.height, jfa::kEmptyCell);
+    for (int y = 0; y < im.height; ++y)
+        for (int x = 0; x < im.width; ++x) {
+            const glm::vec4& self = im.points[im.index(x, y)];
+            if (self.w != 1.0f) continue;
+            // Same operations as shaders/jfae_boundary.frag.glsl.
+            const float ex = self.x - eye.x, ey = self.y - eye.y, ez = self.z - eye.z;
+            const float e2 = ex * ex + ey * ey + ez * ez;
+            const float limit2 = th.absolute2 + th.relative2 * e2;
+            bool boundary = false;
+            for (int j = -1; j <= 1; ++j)
+                for (int i = -1; i <= 1; ++i) {
+                    const int qx = x + i, qy = y + j;
+                    if (qx < 0 || qy < 0 || qx >= im.width || qy >= im.height) continue;
+                    const glm::vec4& n = im.points[im.index(qx, qy)];
+                    const float dx = n.x - self.x, dy = n.y - self.y, dz = n.z - self.z;
+                    const float d2 = dx * dx + dy * dy + dz * dz;
+                    boundary = boundary || (n.w == 0.0f && d2 < limit2);
+                }
+            if (!boundary) continue;
+            const glm::vec4& o = im.occluders[im.index(x, y)];
+            out.at(x, y) = {o.x, o.y, o.z, static_cast<float>(y * im.width + x + 1)};
+        }
+    return out;
+}
+
+bool EyeSoftCriterion::accepts(int px, int py, const jfa::Cell& c) const {
+    // Same rule and operations as jfaAccept() in shaders/jfae_criterion.glsl.
+    const glm::vec4& r = image->points[image->index(px, py)];
+    const int index = static_cast<int>(c.w) - 1;
+    const int sx = index % image->width, sy = index / image->width;
+    const glm::vec3 o(c.x, c.y, c.z);
+    if (!(r.w >= 0.0f) || occluderHitDistance2(light, glm::vec3(r), o) < 0.0f) return false;
+    if (objectIdFix && r.w == 1.0f &&
+        image->occluders[image->index(px, py)].w != image->occluders[image->index(sx, sy)].w)
+        return false;
+    if (midpointFix) {
+        const glm::vec4& m = image->points[image->index((px + sx) / 2, (py + sy) / 2)];
+        if (!(m.w >= 0.0f) || occluderHitDistance2(light, glm::vec3(m), o) < 0.0f) return false;
+    }
+    return true;
+}
+
+bool EyeSoftCriterion::better(int px, int py, const jfa::Cell& a, const jfa::Cell& b) const {
+    const glm::vec3 r(image->points[image->index(px, py)]);
+    const float da = occluderHitDistance2(light, r, {a.x, a.y, a.z});
+    const float db = occluderHitDistance2(light, r, {b.x, b.y, b.z});
+    const bool tieWins =
+        a.x < b.x ||
+        (a.x == b.x && (a.y < b.y || (a.y == b.y && (a.z < b.z || (a.z == b.z && a.w < b.w)))));
+    return da < db || (da == db && tieWins);
+}
+
+void setCriterionUniforms(const gl::Program& program, const EyeSoftCriterion& criterion) {
+    setDiskLightUniforms(program, criterion.light);
+    program.set("uObjectIdFix", criterion.objectIdFix ? 1 : 0);
+    program.set("uMidpointFix", criterion.midpointFix ? 1 : 0);
+    glBindTextureUnit(2, criterion.pointsTexture);
+    glBindTextureUnit(3, criterion.occludersTexture);
+}
+
+FloatImage eyeSoftVisibility(const EyeImage& im, const jfa::Grid& flooded, const DiskLight& light) {
+    FloatImage out{im.width, im.height, 1, std::vector<float>(im.points.size(), 1.0f)};
+    for (std::size_t i = 0; i < im.points.size(); ++i) {
+        const glm::vec4& r = im.points[i];
+        const jfa::Cell& c = flooded.cells[i];
+        const bool inside = r.w == 1.0f;
+        float v = inside ? 0.0f : 1.0f;
+        if (r.w >= 0.0f && c.w != 0.0f) {
+            const std::optional<float> intensity =
+                occluderIntensity(light, glm::vec3(r), {c.x, c.y, c.z}, inside);
+            if (intensity) v = *intensity;
+        }
+        out.data[i] = v;
+    }
+    return out;
+}
+
+namespace {
+void drawFullscreen(const gl::Program& program, const gl::VertexArray& vao) {
+    glUseProgram(program.id());
+    glBindVertexArray(vao.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+    glUseProgram(0);
+}
+} // namespace
+
+EyeSoftShadowPass::EyeSoftShadowPass(const ShaderLibrary& shaders)
+    : lightIds_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "shadow_depth.vert.glsl"},
+                                             {GL_FRAGMENT_SHADER, "jfae_light_id.frag.glsl"}})),
+      eyePass_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "forward.vert.glsl"},
+                                            {GL_FRAGMENT_SHADER, "jfae_eye.frag.glsl"}})),
+      boundary_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
+                                             {GL_FRAGMENT_SHADER, "jfae_boundary.frag.glsl"}})),
+      composite_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
+                                              {GL_FRAGMENT_SHADER, "jfae_composite.frag.glsl"}})),
+      emptyVao_(gl::VertexArray::create()),
+      kernel_(shaders, EyeSoftCriterion::glslFile, jfa::GlKernelKind::Fragment) {}
+
+void EyeSoftShadowPass::resize(int width, int height, int shadowSize) {
+    if (!ids_ || ids_.width() != shadowSize) ids_ = gl::Texture(GL_R32F, shadowSize, shadowSize);
+    if (points_ && points_.width() == width && points_.height() == height) return;
+    points_ = gl::Texture(GL_RGBA32F, width, height);
+    occluders_ = gl::Texture(GL_RGBA32F, width, height);
+    eyeDepth_ = gl::Texture(GL_DEPTH_COMPONENT32F, width, height);
+    seeds_ = gl::Texture(GL_RGBA32F, width, height);
+    visibility_ = gl::Texture(GL_R32F, width, height);
+    eyeFbo_ = gl::Framebuffer::create();
+    eyeFbo_.attach(GL_COLOR_ATTACHMENT0, points_);
+    eyeFbo_.attach(GL_COLOR_ATTACHMENT1, occluders_);
+    eyeFbo_.attach(GL_DEPTH_ATTACHMENT, eyeDepth_);
+    eyeFbo_.setDrawBuffers(2);
+    eyeFbo_.check("JFA-E eye pass");
+    seedsFbo_ = gl::Framebuffer::create();
+    seedsFbo_.attach(GL_COLOR_ATTACHMENT0, seeds_);
+    seedsFbo_.setDrawBuffers(1);
+    seedsFbo_.check("JFA-E boundary seeds");
+    visibilityFbo_ = gl::Framebuffer::create();
+    visibilityFbo_.attach(GL_COLOR_ATTACHMENT0, visibility_);
+    visibilityFbo_.setDrawBuffers(1);
+    visibilityFbo_.check("JFA-E visibility");
+}
+
+EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, PassTimer* timer) {
+    if (in.shadow.receivers == nullptr)
+        throw std::invalid_argument("JFA-E needs the shadow map's receiver positions");
+    // The pass count is the thesis' for a 512² frame; a smaller frame (a window being resized)
+    // cannot use steps beyond its size, so the count is capped there rather than refused.
+    // Validates before any GL work.
+    const int passes = std::min(in.passes, eyeSoftMaxPasses(in.width, in.height));
+    const jfa::Plan plan = eyeSoftPlan(passes, in.standardFlooding, in.width, in.height);
+    const int shadowSize = in.shadow.depth.width();
+    resize(in.width, in.height, shadowSize);
+
+    // Phase 2a (object-ID fix only): which object the light's centre sees at each texel.
+    if (in.settings.objectIdFix) {
+        if (timer) timer->begin("occluder ids");
+        gl::Framebuffer fbo = gl::Framebuffer::create();
+        fbo.attach(GL_COLOR_ATTACHMENT0, ids_);
+        fbo.attach(GL_DEPTH_ATTACHMENT, in.shadow.depth);
+        fbo.setDrawBuffers(1);
+        fbo.check("JFA-E occluder ids");
+        const float none = -1.0f;
+        glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, &none);
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+        glViewport(0, 0, shadowSize, shadowSize);
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LEQUAL);
+        glDepthMask(GL_FALSE);
+        glDisable(GL_CULL_FACE);
+        lightIds_.set("uLightViewProj", in.shadow.lightViewProj);
+        lightIds_.set("uShadowWarp", in.shadow.warp);
+        lightIds_.set("uSlopeBias", in.shadowSettings.slopeBias);
+        lightIds_.set("uConstantBias", in.shadowSettings.constantBias);
+        in.scene.draw(lightIds_, GpuScene::Uniforms::Material);
+        glDepthMask(GL_TRUE);
+        glDepthFunc(GL_LESS);
+        glBindTextureUnit(0, 0);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        if (timer) timer->end();
+    }
+
+    // Phase 2: hard shadows from the camera, with positions and occluders.
+    if (timer) timer->begin("eye hard shadows");
+    {
+        const float clear[4] = {0.0f, 0.0f, 0.0f, -1.0f};
+        const float far = 1.0f;
+        glClearNamedFramebufferfv(eyeFbo_.id(), GL_COLOR, 0, clear);
+        glClearNamedFramebufferfv(eyeFbo_.id(), GL_COLOR, 1, clear);
+        glClearNamedFramebufferfv(eyeFbo_.id(), GL_DEPTH, 0, &far);
+        glBindFramebuffer(GL_FRAMEBUFFER, eyeFbo_.id());
+        glViewport(0, 0, in.width, in.height);
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LESS);
+        glDepthMask(GL_TRUE);
+        glDisable(GL_CULL_FACE); // as the forward pass: both faces, the same visible surfaces
+        eyePass_.set("uViewProj", in.camera.proj * in.camera.view);
+        eyePass_.set("uHaveObjectIds", in.settings.objectIdFix ? 1 : 0);
+        bindShadowMap(eyePass_, in.shadow);
+        glBindTextureUnit(2, in.shadow.receivers->id());
+        glBindTextureUnit(3, ids_.id());
+        in.scene.draw(eyePass_, GpuScene::Uniforms::Geometry);
+        for (GLuint unit : {0u, 1u, 2u, 3u}) glBindTextureUnit(unit, 0);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    }
+    if (timer) timer->end();
+
+    // Phase 3: boundary pixels become seeds with their occluders.
+    if (timer) timer->begin("boundaries");
+    {
+        const BoundaryThreshold th = boundaryThreshold(in.settings, in.camera.proj, in.height);
+        glBindFramebuffer(GL_FRAMEBUFFER, seedsFbo_.id());
+        glViewport(0, 0, in.width, in.height);
+        glDisable(GL_DEPTH_TEST);
+        boundary_.set("uEye", in.camera.eye);
+        boundary_.set("uAbsolute2", th.absolute2);
+        boundary_.set("uRelative2", th.relative2);
+        glBindTextureUnit(0, points_.id());
+        glBindTextureUnit(1, occluders_.id());
+        drawFullscreen(boundary_, emptyVao_);
+        glBindTextureUnit(0, 0);
+        glBindTextureUnit(1, 0);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    }
+    if (timer) timer->end();
+
+    // Phase 4: flood the occluders through the penumbrae, in eye space.
+    if (timer) timer->begin("flood");
+    EyeSoftCriterion criterion;
+    criterion.light = in.light;
+    criterion.objectIdFix = in.settings.objectIdFix;
+    criterion.midpointFix = in.settings.midpointFix;
+    criterion.pointsTexture = points_.id();
+    criterion.occludersTexture = occluders_.id();
+    const gl::Texture& flooded = kernel_.run(plan, seeds_, criterion);
+    glBindTextureUnit(2, 0);
+    glBindTextureUnit(3, 0);
+    if (timer) timer->end();
+
+    // Phase 5: visibility per pixel.
+    if (timer) timer->begin("composite");
+    glBindFramebuffer(GL_FRAMEBUFFER, visibilityFbo_.id());
+    glViewport(0, 0, in.width, in.height);
+    glDisable(GL_DEPTH_TEST);
+    setDiskLightUniforms(composite_, in.light);
+    glBindTextureUnit(0, points_.id());
+    glBindTextureUnit(1, flooded.id());
+    drawFullscreen(composite_, emptyVao_);
+    glBindTextureUnit(0, 0);
+    glBindTextureUnit(1, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (timer) timer->end();
+    return {points_, occluders_, seeds_, flooded, visibility_, kernel_.passesRun()};
+}
+
+} // namespace fl

@@ -1,0 +1,38 @@
+#version 450 core
+// JFA-E phase 3 (thesis §5.4.1, "Locating Occluders"): a pixel in hard shadow is a boundary
+// pixel if one of its 8 neighbours is lit and nearer in 3D than the threshold (a lit pixel
+// across a depth jump is another surface, not the other side of a shadow edge). A boundary
+// pixel becomes a seed: its occluder's position, and w = its pixel index + 1 (the midpoint
+// check needs to know where an occluder entered the flood; its object id is read there too).
+// Same as fl::eyeBoundarySeeds on the CPU.
+layout(binding = 0) uniform sampler2D uEyePoints;
+layout(binding = 1) uniform sampler2D uEyeOccluders;
+uniform vec3 uEye;
+// A neighbour at squared distance d2 counts when d2 < uAbsolute2 + uRelative2 * |p - eye|^2.
+uniform float uAbsolute2;
+uniform float uRelative2;
+
+layout(location = 0) out vec4 oSeed;
+
+void main() {
+    ivec2 t = ivec2(gl_FragCoord.xy);
+    ivec2 size = textureSize(uEyePoints, 0);
+    vec4 self = texelFetch(uEyePoints, t, 0);
+    precise vec3 toEye = self.xyz - uEye;
+    precise float e2 = toEye.x * toEye.x + toEye.y * toEye.y + toEye.z * toEye.z;
+    precise float limit2 = uAbsolute2 + uRelative2 * e2;
+    bool boundary = false;
+    for (int j = -1; j <= 1; ++j) {
+        for (int i = -1; i <= 1; ++i) {
+            ivec2 q = t + ivec2(i, j);
+            bool inside = all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, size));
+            vec4 n = texelFetch(uEyePoints, clamp(q, ivec2(0), size - 1), 0);
+            precise vec3 d = n.xyz - self.xyz;
+            precise float d2 = d.x * d.x + d.y * d.y + d.z * d.z;
+            boundary = boundary || (inside && n.w == 0.0 && d2 < limit2);
+        }
+    }
+    vec3 o = texelFetch(uEyeOccluders, t, 0).xyz;
+    float index = float(t.y * size.x + t.x + 1);
+    oSeed = self.w == 1.0 && boundary ? vec4(o, index) : vec4(0.0, 0.0, -1.0, 0.0);
+}

@@ -1,0 +1,24 @@
+#version 450 core
+// JFA-E phase 5 (thesis §5.4.1, "Generating Final Image"): a pixel that holds an occluder after
+// the flood is in penumbra; its intensity is recomputed at its own world position with the
+// inside flag (inner penumbrae see the part of the light away from the centre). Otherwise the
+// hard shadow decides: 0 inside, 1 lit (and 1 for background). Same as fl::eyeSoftVisibility.
+#include "disk_light.glsl"
+
+layout(binding = 0) uniform sampler2D uEyePoints;
+layout(binding = 1) uniform sampler2D uFlooded;
+
+layout(location = 0) out float oVisibility;
+
+void main() {
+    ivec2 t = ivec2(gl_FragCoord.xy);
+    vec4 r = texelFetch(uEyePoints, t, 0);
+    vec4 c = texelFetch(uFlooded, t, 0);
+    bool inside = r.w == 1.0;
+    float v = inside ? 0.0 : 1.0;
+    if (r.w >= 0.0 && c.w != 0.0) {
+        float intensity = occluderIntensity(r.xyz, c.xyz, inside);
+        v = intensity < 0.0 ? v : intensity;
+    }
+    oVisibility = v;
+}

@@ -1,0 +1,51 @@
+#version 450 core
+// JFA-E flooding criterion (thesis §5.2, §5.4), bit for bit fl::EyeSoftCriterion on the CPU.
+// A cell is an occluder point (xyz) and w = the index + 1 of the boundary pixel it was seeded
+// at (w = 0 empty). Grid point p is the eye pixel whose world position (uEyePoints) receives.
+// Ranking: inside the hard shadow the thesis keeps the highest intensity, outside the lowest;
+// both are the occluder whose ray from p meets the light's plane nearest the centre (intensity
+// inside = segmentFraction(|cq| / r), falling in |cq|; outside = 1 - that, rising), so one key,
+// |cq|^2, smaller is better, serves both. Ties go to the smaller x, y, z, then w.
+// Accepted only if the ray from p through the occluder reaches the light (else p is umbra or
+// lit, and must not pass the occluder on), and with the thesis' two jump-too-far fixes (§5.4.2):
+//  - object ID: a hard-shadowed p takes only occluders of the object that occludes p itself
+//    (its own occluder's id, uEyeOccluders.w); lit pixels are not restricted, since they have
+//    no occluder and the wrong penumbrae the fix is for are inner ones;
+//  - midpoint: the pixel midway between the occluder's boundary pixel and p must be a surface
+//    whose ray through the occluder reaches the light too (it would have a penumbra intensity).
+#include "disk_light.glsl"
+
+layout(binding = 2) uniform sampler2D uEyePoints;
+layout(binding = 3) uniform sampler2D uEyeOccluders;
+uniform int uObjectIdFix;
+uniform int uMidpointFix;
+
+bool jfaEmpty(vec4 c) { return c.w == 0.0; }
+
+// Occluders are not sites at pixels: the half-resolution expansion copies them verbatim.
+ivec2 jfaSeedPixel(vec4 c) { return ivec2(-1); }
+
+bool jfaAccept(ivec2 p, vec4 c) {
+    vec4 r = texelFetch(uEyePoints, p, 0);
+    ivec2 size = textureSize(uEyePoints, 0);
+    int index = int(c.w) - 1;
+    ivec2 s = ivec2(index % size.x, index / size.x);
+    bool ok = r.w >= 0.0 && penumbraHit(r.xyz, c.xyz) >= 0.0;
+    if (ok && uObjectIdFix != 0 && r.w == 1.0)
+        ok = texelFetch(uEyeOccluders, p, 0).w == texelFetch(uEyeOccluders, s, 0).w;
+    if (ok && uMidpointFix != 0) {
+        vec4 m = texelFetch(uEyePoints, (p + s) / 2, 0);
+        ok = m.w >= 0.0 && penumbraHit(m.xyz, c.xyz) >= 0.0;
+    }
+    return ok;
+}
+
+bool jfaBetter(ivec2 p, vec4 a, vec4 b) {
+    vec3 r = texelFetch(uEyePoints, p, 0).xyz;
+    float da = penumbraHit(r, a.xyz);
+    float db = penumbraHit(r, b.xyz);
+    bool tieWins = a.x < b.x ||
+                   (a.x == b.x && (a.y < b.y || (a.y == b.y && (a.z < b.z ||
+                                                                (a.z == b.z && a.w < b.w)))));
+    return da < db || (da == db && tieWins);
+}

@@ -1,0 +1,35 @@
+#version 450 core
+// JFA-E phase 2 (thesis §5.4.1, "Generating Hard Shadows"): the scene from the camera, storing
+// per pixel its world position with the hard-shadow flag in alpha (1 shadowed, 0 lit; the clear
+// value -1 marks background), and its occluder: the surface the light's centre sees at the
+// pixel's shadow-map texel (the receiver position the shadow pass stored there) with that
+// surface's object id. Phase 3 records the occluder of boundary pixels from here, so a boundary
+// pixel's occluder is by construction the surface that puts it in hard shadow, not a guess from
+// the shadow map's silhouettes (Arvo et al.'s condition (2), which the thesis drops).
+#include "shadow_lookup.glsl"
+
+in vec3 vWorld;
+in vec3 vNormal;
+in vec2 vTexcoord;
+
+layout(binding = 2) uniform sampler2D uReceivers;
+layout(binding = 3) uniform sampler2D uLightObjectIds;
+uniform int uHaveObjectIds;
+
+layout(location = 0) out vec4 oPoint;
+layout(location = 1) out vec4 oOccluder;
+
+void main() {
+    // The same test as forward shading's hardShadow(), so radius 0 reproduces it exactly.
+    float lit = hardShadow(vWorld);
+    oPoint = vec4(vWorld, lit < 0.5 ? 1.0 : 0.0);
+    vec3 uvz;
+    oOccluder = vec4(0.0, 0.0, 0.0, -1.0);
+    if (shadowCoord(vWorld, uvz)) {
+        // The texel a NEAREST lookup of uShadowMap reads.
+        ivec2 size = textureSize(uReceivers, 0);
+        ivec2 t = clamp(ivec2(uvz.xy * vec2(size)), ivec2(0), size - 1);
+        float id = uHaveObjectIds != 0 ? texelFetch(uLightObjectIds, t, 0).r : -1.0;
+        oOccluder = vec4(texelFetch(uReceivers, t, 0).xyz, id);
+    }
+}
