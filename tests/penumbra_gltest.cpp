@@ -58,37 +58,41 @@ BoxSetup boxScene() {
 TEST_F(PenumbraTest, SilhouettesAndFloodMatchTheCpuReference) {
     const BoxSetup s = boxScene();
     const ShaderLibrary shaders;
-    for (ShadowMethod method : {ShadowMethod::JfaL, ShadowMethod::FloodL}) {
-        RenderSettings settings;
-        settings.shadow.size = 128;
-        settings.method = method;
-        settings.penumbra.passes = 4;
-        Renderer r(shaders, s.scene, settings);
-        r.resize(64, 64);
-        r.render(s.camera);
-        ASSERT_NE(r.penumbraMap(), nullptr);
-        const ReceiverGrid receivers = readReceivers(*r.shadow()->receivers);
-        const jfa::Grid gpuSeeds = jfa::readGrid(*r.seeds());
-        const float threshold = 0.001f * s.scene.bounds.radius();
-        const jfa::Grid cpuSeeds = silhouetteSeeds(receivers, r.disk(), threshold);
-        ASSERT_EQ(gpuSeeds, cpuSeeds) << "silhouette seeds differ";
-        EXPECT_GT(nonEmpty(cpuSeeds), 50u) << "the box must have a silhouette";
+    // Both providers: the flood runs in shadow-map space, whichever warp made it.
+    for (ShadowMapProvider provider : {ShadowMapProvider::Uniform, ShadowMapProvider::Tsm})
+        for (ShadowMethod method : {ShadowMethod::JfaL, ShadowMethod::FloodL}) {
+            RenderSettings settings;
+            settings.shadow.size = 128;
+            settings.shadow.provider = provider;
+            settings.method = method;
+            settings.penumbra.passes = 4;
+            Renderer r(shaders, s.scene, settings);
+            r.resize(64, 64);
+            r.render(s.camera);
+            ASSERT_NE(r.penumbraMap(), nullptr);
+            const ReceiverGrid receivers = readReceivers(*r.shadow()->receivers);
+            const jfa::Grid gpuSeeds = jfa::readGrid(*r.seeds());
+            const float threshold = 0.001f * s.scene.bounds.radius();
+            const jfa::Grid cpuSeeds = silhouetteSeeds(receivers, r.disk(), threshold);
+            ASSERT_EQ(gpuSeeds, cpuSeeds) << "silhouette seeds differ";
+            EXPECT_GT(nonEmpty(cpuSeeds), 50u) << "the box must have a silhouette";
 
-        PenumbraCriterion criterion;
-        criterion.light = r.disk();
-        criterion.receivers = &receivers;
-        PenumbraSettings ps = settings.penumbra;
-        ps.standardFlooding = method == ShadowMethod::FloodL;
-        const jfa::Grid cpuMap = jfa::flood(penumbraPlan(ps, 128), cpuSeeds, criterion);
-        const jfa::Grid gpuMap = jfa::readGrid(*r.penumbraMap());
-        std::size_t differ = 0;
-        for (std::size_t i = 0; i < cpuMap.cells.size(); ++i)
-            differ += !(cpuMap.cells[i] == gpuMap.cells[i]);
-        EXPECT_EQ(differ, 0u) << methodName(method);
-        EXPECT_GT(nonEmpty(cpuMap), nonEmpty(cpuSeeds)) << "the flood must spread occluders";
-        std::printf("%s: %zu seeds, %zu penumbra-map texels\n",
-                    std::string(methodName(method)).c_str(), nonEmpty(cpuSeeds), nonEmpty(cpuMap));
-    }
+            PenumbraCriterion criterion;
+            criterion.light = r.disk();
+            criterion.receivers = &receivers;
+            PenumbraSettings ps = settings.penumbra;
+            ps.standardFlooding = method == ShadowMethod::FloodL;
+            const jfa::Grid cpuMap = jfa::flood(penumbraPlan(ps, 128), cpuSeeds, criterion);
+            const jfa::Grid gpuMap = jfa::readGrid(*r.penumbraMap());
+            std::size_t differ = 0;
+            for (std::size_t i = 0; i < cpuMap.cells.size(); ++i)
+                differ += !(cpuMap.cells[i] == gpuMap.cells[i]);
+            EXPECT_EQ(differ, 0u) << methodName(method) << " on " << providerName(provider);
+            EXPECT_GT(nonEmpty(cpuMap), nonEmpty(cpuSeeds)) << "the flood must spread occluders";
+            std::printf("%s: %zu seeds, %zu penumbra-map texels\n",
+                        std::string(methodName(method)).c_str(), nonEmpty(cpuSeeds),
+                        nonEmpty(cpuMap));
+        }
 }
 
 // The default scene's light (radius 0.3, 24 units away) casts penumbrae of only a few
