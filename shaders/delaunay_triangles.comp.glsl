@@ -1,0 +1,143 @@
+#version 450 core
+// Step G6 (thesis §6.3.2), buildTriangles in geometry/DiscreteTriangles.h: one invocation per
+// corner row (the thesis' one CUDA thread per row) walks the row's G5 chain from vertex to
+// vertex and makes one triangle per three-colour vertex, two per four-colour vertex. A row first
+// counts what it will write, reserves that many vertices and triangles with one atomicAdd each
+// (rows land in any order, every row's records contiguous and in chain order) and notes where in
+// `rows`, so the host restores the CPU's row-major order by copying blocks, without a sort.
+#include "delaunay_common.glsl"
+
+layout(local_size_x = 64) in;
+
+layout(binding = 0) uniform usampler2D uIds;     // G3's texture
+layout(binding = 1) uniform usampler2D uCorners; // G4's cases
+layout(binding = 2) uniform isampler2D uChain;   // G5's chain
+layout(std430, binding = 0) readonly buffer Pixels { ivec2 pixels[]; };
+// Reservation counters and TriangleStats (three-colour, four-colour, degenerate, clockwise).
+layout(std430, binding = 1) buffer Counters {
+    uint vertexCount;
+    uint triangleCount;
+    uint stats[4];
+};
+// Per corner row: first vertex, vertices, first triangle, triangles.
+layout(std430, binding = 2) writeonly buffer Rows { uvec4 rows[]; };
+// Per vertex: x, case, colours of pixels 1-4.
+layout(std430, binding = 3) writeonly buffer Vertices { uint vertexData[]; };
+// Per triangle: three site ids (counterclockwise), the row-local index of its vertex.
+layout(std430, binding = 4) writeonly buffer Triangles { uvec4 triangles[]; };
+uniform ivec2 uSize;
+uniform int uVertexCapacity;
+uniform int uTriangleCapacity;
+
+// Twice the signed area of pixel triangle (a, b, c); coordinates below 2^13 keep it in 32 bits.
+int orient(ivec2 a, ivec2 b, ivec2 c) {
+    return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
+
+// A 64-bit integer as two 32-bit halves (GL 4.5 has no 64-bit integers without an extension).
+struct Int64 {
+    int hi;
+    uint lo;
+};
+
+Int64 mul64(int a, int b) {
+    int hi, lo;
+    imulExtended(a, b, hi, lo);
+    return Int64(hi, uint(lo));
+}
+
+Int64 add64(Int64 a, Int64 b) {
+    uint carry;
+    uint lo = uaddCarry(a.lo, b.lo, carry);
+    return Int64(a.hi + b.hi + int(carry), lo);
+}
+
+// Sign of pixelInCircle (> 0: d strictly inside the circle through counterclockwise a, b, c),
+// exact: lifts and 2x2 minors stay below 2^27, products below 2^54, the sum below 2^56.
+int inCircleSign(ivec2 a, ivec2 b, ivec2 c, ivec2 d) {
+    ivec2 ad = a - d, bd = b - d, cd = c - d;
+    int alift = ad.x * ad.x + ad.y * ad.y;
+    int blift = bd.x * bd.x + bd.y * bd.y;
+    int clift = cd.x * cd.x + cd.y * cd.y;
+    Int64 s = mul64(alift, bd.x * cd.y - cd.x * bd.y);
+    s = add64(s, mul64(blift, cd.x * ad.y - ad.x * cd.y));
+    s = add64(s, mul64(clift, ad.x * bd.y - bd.x * ad.y));
+    return s.hi < 0 ? -1 : (s.hi > 0 || s.lo != 0u ? 1 : 0);
+}
+
+uint gThree = 0u, gFour = 0u, gDegenerate = 0u, gClockwise = 0u;
+
+void emit(uint slot, uint a, uint b, uint c, uint localVertex) {
+    int o = orient(pixels[a], pixels[b], pixels[c]);
+    gDegenerate += uint(o == 0);
+    gClockwise += uint(o < 0);
+    if (slot < uint(uTriangleCapacity)) triangles[slot] = uvec4(a, b, c, localVertex);
+}
+
+// Emits the vertex's triangles from `slot` on; returns how many (as the CPU's MeshBuilder).
+uint vertexTriangles(uint kind, uvec4 col, uint slot, uint localVertex) {
+    if (kind != kCaseFour) {
+        ++gThree;
+        // The three colours counterclockwise around the corner, the repeated one skipped.
+        uvec3 t = kind == kCaseThreeA ? col.xzw : (kind == kCaseThreeB ? col.xyw : col.xyz);
+        emit(slot, t.x, t.y, t.z, localVertex);
+        return 1u;
+    }
+    ++gFour;
+    // Case 3: the diagonal whose triangles are both counterclockwise; if both are, the one
+    // passing the empty-circle test (a-c on ties).
+    ivec2 pa = pixels[col.x], pb = pixels[col.y], pc = pixels[col.z], pd = pixels[col.w];
+    bool acValid = orient(pa, pb, pc) > 0 && orient(pa, pc, pd) > 0;
+    bool bdValid = orient(pa, pb, pd) > 0 && orient(pb, pc, pd) > 0;
+    bool useBd = bdValid && !acValid;
+    if (acValid && bdValid) useBd = inCircleSign(pa, pb, pc, pd) > 0;
+    if (useBd) {
+        emit(slot, col.x, col.y, col.w, localVertex);
+        emit(slot + 1u, col.y, col.z, col.w, localVertex);
+    } else {
+        emit(slot, col.x, col.y, col.z, localVertex);
+        emit(slot + 1u, col.x, col.z, col.w, localVertex);
+    }
+    return 2u;
+}
+
+int nextVertex(int x, int y) {
+    return x + 1 < uSize.x ? texelFetch(uChain, ivec2(x + 1, y), 0).r : kNoVertex;
+}
+
+void main() {
+    int y = int(dispatchIndex(64u));
+    // Corner rows 0..h-2; the top row's corners lie on the border.
+    if (y >= uSize.y - 1) return;
+    int first = texelFetch(uChain, ivec2(0, y), 0).r;
+    uint vertices = 0u, tris = 0u;
+    for (int x = first; x != kNoVertex; x = nextVertex(x, y)) {
+        ++vertices;
+        tris += texelFetch(uCorners, ivec2(x, y), 0).r == kCaseFour ? 2u : 1u;
+    }
+    uint v0 = atomicAdd(vertexCount, vertices);
+    uint t0 = atomicAdd(triangleCount, tris);
+    rows[y] = uvec4(v0, vertices, t0, tris);
+    uint v = 0u, t = t0;
+    for (int x = first; x != kNoVertex; x = nextVertex(x, y), ++v) {
+        ivec2 p = ivec2(x, y);
+        uint kind = texelFetch(uCorners, p, 0).r;
+        uvec4 col = uvec4(texelFetch(uIds, p, 0).r, texelFetch(uIds, p + ivec2(1, 0), 0).r,
+                          texelFetch(uIds, p + ivec2(1, 1), 0).r,
+                          texelFetch(uIds, p + ivec2(0, 1), 0).r);
+        uint slot = v0 + v;
+        if (slot < uint(uVertexCapacity)) {
+            vertexData[6u * slot] = uint(x);
+            vertexData[6u * slot + 1u] = kind;
+            vertexData[6u * slot + 2u] = col.x;
+            vertexData[6u * slot + 3u] = col.y;
+            vertexData[6u * slot + 4u] = col.z;
+            vertexData[6u * slot + 5u] = col.w;
+        }
+        t += vertexTriangles(kind, col, t, v);
+    }
+    atomicAdd(stats[0], gThree);
+    atomicAdd(stats[1], gFour);
+    atomicAdd(stats[2], gDegenerate);
+    atomicAdd(stats[3], gClockwise);
+}
