@@ -18,6 +18,8 @@ int main(int argc, char** argv) {
     const Runner view = addViewCommand(app);
     const Runner makeScene = addMakeSceneCommand(app);
     const Runner voronoi = addVoronoiCommand(app);
+    const Runner delaunay = addDelaunayCommand(app);
+    const Runner compare = addCompareCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -29,6 +31,8 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("view")) return view();
         if (app.got_subcommand("make-scene")) return makeScene();
         if (app.got_subcommand("voronoi")) return voronoi();
+        if (app.got_subcommand("delaunay")) return delaunay();
+        if (app.got_subcommand("compare")) return compare();
         const SceneOptions defaults;
         if (fl::displayAvailable()) {
             try {

@@ -1,0 +1,283 @@
+// `floodlight delaunay`: the Delaunay triangulation of a point file by the thesis' pipeline
+// (ch. 6: discrete Voronoi diagram by 1+JFA, G1-G6, completed exactly on the CPU, C1-C4), with
+// the time and counts of every step, an optional exact check, Triangle/OBJ/SVG output and one
+// picture per step.
+
+#include "Commands.h"
+#include "DelaunaySteps.h"
+
+#include <geometry/Delaunay.h>
+#include <geometry/MeshIO.h>
+#include <geometry/MeshSvg.h>
+#include <geometry/PointIO.h>
+#include <geometry/Predicates.h>
+#include <jfa/CpuKernel.h>
+#include <jfa/Plan.h>
+
+// The GL backend arrives separately from this command; without it --backend gl says so.
+#if __has_include(<geometry/GlDiscreteDelaunay.h>)
+#include <geometry/GlDiscreteDelaunay.h>
+#include <gpu/ShaderLibrary.h>
+#include <renderer/EglContext.h>
+#define FLOODLIGHT_HAVE_GL_DELAUNAY 1
+#endif
+
+#include <algorithm>
+#include <chrono>
+#include <iomanip>
+#include <iostream>
+#include <utility>
+
+namespace fl::app {
+
+namespace {
+
+struct DelaunayCliOptions {
+    std::string input;
+    int texture = 0; // 0: defaultTextureSize(points)
+    std::string backend = "cpu";
+    std::string plan = "1+jfa";
+    bool check = false;
+    std::string out; // output prefix; empty: no mesh files
+    std::string format = "all";
+    std::string steps; // picture folder; empty: no pictures
+    int threads = 0;
+};
+
+std::vector<glm::dvec2> readInput(const std::string& file) {
+    try {
+        return geom::readPoints(file);
+    } catch (const geom::PointFileError& e) {
+        throw InputError(e.what()); // already "FILE:LINE: problem"
+    }
+}
+
+// The pipeline's own checks would catch these too, but only with point indices; here the
+// message names the file and says why there is no triangulation.
+void requireTriangulable(const std::vector<glm::dvec2>& points, const std::string& file) {
+    const glm::dvec2 a = points.front();
+    const auto b = std::find_if(points.begin(), points.end(), [&](glm::dvec2 p) { return p != a; });
+    const auto c = b == points.end() ? b : std::find_if(b, points.end(), [&](glm::dvec2 p) {
+        return p != a && p != *b;
+    });
+    if (c == points.end()) {
+        const int distinct = b == points.end() ? 1 : 2;
+        throw InputError(file + ": " + std::to_string(points.size()) + " point(s), " +
+                         std::to_string(distinct) +
+                         " distinct; a triangulation needs at least 3 distinct points");
+    }
+    const bool flat = std::all_of(points.begin(), points.end(),
+                                  [&](glm::dvec2 p) { return geom::orient2dSign(a, *b, p) == 0; });
+    if (flat)
+        throw InputError(file + ": all " + std::to_string(points.size()) +
+                         " points are collinear; they have no triangulation");
+}
+
+// Runs G1-G6 through the GL backend when it is built in; the context lives as long as the
+// returned function.
+std::function<geom::DiscreteDelaunay(const std::vector<glm::dvec2>&,
+                                     const geom::DiscreteDelaunayOptions&)>
+glBackend() {
+#ifdef FLOODLIGHT_HAVE_GL_DELAUNAY
+    // Context, shaders and programs are made once, before the pipeline's clock starts.
+    struct Gl {
+        std::unique_ptr<EglContext> context = EglContext::create();
+        ShaderLibrary shaders;
+        geom::GlDiscreteDelaunay steps{shaders};
+    };
+    auto gl = std::make_shared<Gl>();
+    return
+        [gl](const std::vector<glm::dvec2>& sites, const geom::DiscreteDelaunayOptions& options) {
+            return gl->steps.run(sites, options);
+        };
+#else
+    throw InputError("--backend gl: this build has no GL Delaunay backend; use --backend cpu");
+#endif
+}
+
+void printTimes(const geom::DelaunayResult& r, double checkMs, std::ostream& out) {
+    const geom::DiscreteTimings& g = r.discrete.timings;
+    const geom::CpuTimings& c = r.cpu;
+    const std::pair<const char*, double> rows[] = {
+        {"G1 sites into texture", g.g1},
+        {"G2 flood (discrete Voronoi)", g.g2},
+        {"G3 island removal", g.g3},
+        {"G4 Voronoi vertices", g.g4},
+        {"G5 row chains", g.g5},
+        {"G6 triangles T'", g.g6},
+        {"G1-G6", g.total()},
+        {"C1 convex hull", c.c1},
+        {"C2 shift sites", c.c2},
+        {"C3 insert missing sites", c.c3},
+        {"C4 edge flips", c.c4},
+        {"C1-C4", c.total()},
+        {"total", g.total() + c.total()},
+    };
+    out << "steps (ms):\n" << std::fixed << std::setprecision(3);
+    for (const auto& [name, ms] : rows)
+        out << "  " << std::left << std::setw(28) << name << ms << "\n";
+    if (checkMs >= 0) out << "  " << std::setw(28) << "check" << checkMs << "\n";
+    out << std::defaultfloat << std::right;
+}
+
+void printCounts(const geom::DelaunayResult& r, std::ostream& out) {
+    const geom::DiscreteDelaunay& d = r.discrete;
+    const geom::CpuCounts& c = r.counts;
+    out << "counts:\n"
+        << "  points: " << r.mesh.points.size() << "\n"
+        << "  duplicates: " << c.duplicates << "\n"
+        << "  missing sites: " << d.missing().size() << " (lost their pixel in G1)\n"
+        << "  islands removed: ";
+    if (d.islandsBefore >= 0) out << d.islandsBefore << " components, ";
+    out << d.islands.reassigned << " pixels in " << d.islands.passes << " pass(es)\n"
+        << "  Voronoi vertices: " << d.mesh.vertices.size() << " (" << d.mesh.stats.threeColour
+        << " three-colour, " << d.mesh.stats.fourColour << " four-colour)\n"
+        << "  triangles T': " << d.mesh.triangleCount() << "\n"
+        << "  hull triangles added: " << c.hullTriangles << "\n"
+        << "  shifts: " << c.goodShifts << " good, " << c.badShifts << " bad\n"
+        << "  missing inserted: " << c.missingInserted << "\n"
+        << "  flips: " << c.flips << "\n"
+        << "  triangles: " << r.mesh.triangleCount() << "\n";
+}
+
+void writeMeshFiles(const DelaunayCliOptions& o, const geom::Triangulation& mesh) {
+    const std::filesystem::path prefix = o.out;
+    if (prefix.has_parent_path()) std::filesystem::create_directories(prefix.parent_path());
+    auto named = [&](const char* ext) { return std::filesystem::path(prefix.string() + ext); };
+    const bool all = o.format == "all";
+    if (all || o.format == "node") {
+        geom::writeNodeFile(named(".node"), mesh.points);
+        geom::writeEleFile(named(".ele"), mesh.points, mesh.triangles);
+        std::cout << "wrote " << named(".node").string() << " and " << named(".ele").string()
+                  << " (Triangle format, 0-based)\n";
+    }
+    if (all || o.format == "obj") {
+        geom::writeObjFile(named(".obj"), mesh.points, mesh.triangles);
+        std::cout << "wrote " << named(".obj").string() << "\n";
+    }
+    if (o.format == "svg" || (all && mesh.points.size() <= kMaxPicturePoints)) {
+        geom::writeSvg(named(".svg"), geom::triangulationPicture(mesh.points, mesh.triangles));
+        std::cout << "wrote " << named(".svg").string() << "\n";
+    } else if (all) {
+        std::cout << "skipped " << named(".svg").string() << ": more than " << kMaxPicturePoints
+                  << " points (ask for it with --format svg)\n";
+    }
+}
+
+void checkPlan(const std::string& plan, int size) {
+    try {
+        (void)jfa::parsePlan(plan, size, size);
+    } catch (const std::invalid_argument& e) {
+        throw InputError(std::string("--plan: ") + e.what());
+    }
+}
+
+int runDelaunay(const DelaunayCliOptions& o) {
+    // Usage problems first: a bad plan is reported whatever the input holds (the real texture
+    // size is checked again below).
+    checkPlan(o.plan, o.texture > 0 ? o.texture : kMinAutoTexture);
+    const std::vector<glm::dvec2> points = readInput(o.input);
+    if (points.empty()) throw InputError(o.input + ": no points");
+    requireTriangulable(points, o.input);
+
+    geom::DelaunayOptions options;
+    options.discrete.size =
+        o.texture > 0 ? o.texture : defaultTextureSize(points.size(), o.backend == "gl");
+    options.discrete.plan = o.plan;
+    options.discrete.threads = o.threads;
+    options.discrete.countIslands = true;
+    checkPlan(o.plan, options.discrete.size);
+    const bool pictures = !o.steps.empty() && points.size() <= kMaxPicturePoints;
+    options.keepStages = pictures;
+    if (o.backend == "gl") options.discreteBackend = glBackend();
+
+    std::cout << "input: " << o.input << ", " << points.size() << " points\n"
+              << "texture: " << options.discrete.size << "x" << options.discrete.size
+              << (o.texture > 0 ? " (--texture)" : " (default for the point count and backend)")
+              << ", plan " << o.plan << ", backend " << o.backend;
+    if (o.backend == "cpu") std::cout << ", " << jfa::resolveThreads(o.threads) << " thread(s)";
+    std::cout << "\n";
+
+    const geom::DelaunayResult r = [&] {
+        try {
+            return geom::delaunay(points, options);
+        } catch (const std::invalid_argument& e) {
+            throw InputError(o.input + ": " + e.what());
+        }
+    }();
+
+    double checkMs = -1.0;
+    geom::TriangulationReport report;
+    if (o.check) {
+        const auto t0 = std::chrono::steady_clock::now();
+        report = geom::checkTriangulation(r.mesh);
+        checkMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                      .count();
+    }
+    printTimes(r, checkMs, std::cout);
+    printCounts(r, std::cout);
+    if (o.check) {
+        std::cout << "check: " << (report.ok() ? "ok" : "FAILED") << "\n"
+                  << report.summary() << (report.summary().ends_with('\n') ? "" : "\n");
+    }
+
+    if (!o.out.empty()) writeMeshFiles(o, r.mesh);
+    if (!o.steps.empty()) {
+        if (pictures)
+            writeStepPictures(o.steps, points, r, std::cout);
+        else
+            std::cout << "steps: " << points.size() << " points (more than " << kMaxPicturePoints
+                      << "): step pictures skipped, they would be unreadable; use a subset\n";
+    }
+    if (o.check && !report.ok()) {
+        std::cerr << "error: " << o.input << ": the triangulation failed --check ("
+                  << report.problemCount << " problem(s), listed above)\n";
+        return 1;
+    }
+    return 0;
+}
+
+} // namespace
+
+int defaultTextureSize(std::size_t points, bool glBackend) {
+    const double texels = (glBackend ? kTexelsPerSiteGl : kTexelsPerSiteCpu) * double(points);
+    int n = kMinAutoTexture;
+    while (n < kMaxAutoTexture && double(n) * double(n) < texels) n *= 2;
+    return n;
+}
+
+Runner addDelaunayCommand(CLI::App& app) {
+    CLI::App* cmd = app.add_subcommand(
+        "delaunay",
+        "Delaunay triangulation of a point file by 1+JFA + exact repair (thesis ch. 6)");
+    auto o = std::make_shared<DelaunayCliOptions>();
+    cmd->add_option("IN", o->input, "Points: .node (Triangle), .txt/.xy ('x y'), .bin/.f64")
+        ->required();
+    cmd->add_option("--texture", o->texture,
+                    "Texture side N for G1-G6 (default: the smallest power of two with N^2 >= "
+                    "K x points, in " +
+                        std::to_string(kMinAutoTexture) + ".." + std::to_string(kMaxAutoTexture) +
+                        "; K = " + std::to_string(int(kTexelsPerSiteCpu)) +
+                        " for cpu (measured), " + std::to_string(int(kTexelsPerSiteGl)) +
+                        " for gl (thesis 6.5))")
+        ->check(CLI::Range(2, geom::kMaxDiscreteSize));
+    cmd->add_option("--backend", o->backend, "G1-G6 on cpu or gl (needs a GL 4.5 context)")
+        ->check(CLI::IsMember({"cpu", "gl"}))
+        ->capture_default_str();
+    cmd->add_option("--plan", o->plan, "G2's flood plan (1+jfa, jfa, jfa+1, ...)")
+        ->capture_default_str();
+    cmd->add_flag("--check", o->check,
+                  "Verify the result exactly (structure, convex hull, empty circles); exit 1 if "
+                  "it fails");
+    cmd->add_option("--out", o->out, "Output prefix: PREFIX.node + PREFIX.ele, .obj, .svg");
+    cmd->add_option("--format", o->format, "Which outputs --out writes")
+        ->check(CLI::IsMember({"node", "obj", "svg", "all"}))
+        ->capture_default_str();
+    cmd->add_option("--steps", o->steps, "Folder for one SVG per step (01_sites ... 09_flipped)");
+    cmd->add_option("--threads", o->threads, "Worker threads for G1-G6 (0: all)")
+        ->check(CLI::Range(0, 1024))
+        ->capture_default_str();
+    return [o] { return runDelaunay(*o); };
+}
+
+} // namespace fl::app

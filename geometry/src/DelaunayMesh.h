@@ -1,0 +1,133 @@
+#pragma once
+// Private to the Delaunay pipeline (Delaunay*.cpp): the triangulation that the CPU steps C1-C3
+// edit in place, with the few local operations they are made of. Layout as Triangulation.h
+// (three vertices per slot, counterclockwise, halfedges opposite), plus:
+//   - vertexEdge: per point one outgoing halfedge, so a site's fan is found in O(degree);
+//   - free slots: a removed triangle leaves its slot for the next added one, so nothing
+//     allocates per triangle; compact() squeezes them out before C4.
+//
+// Validity argument used throughout (the "degree argument"): a mesh that is a combinatorial
+// disk (edge- and vertex-manifold, connected, one boundary cycle, V - E + F = 1), whose triangles
+// are all strictly counterclockwise, and whose boundary cycle is a convex polygon turning once
+// around, is a triangulation of its vertices: every point off the edges is covered by as many
+// triangles as the boundary winds around it, i.e. exactly once inside the hull and never outside.
+// isTriangulation() checks exactly these conditions in O(n); every local edit below keeps them.
+
+#include <geometry/Predicates.h>
+
+#include "DelaunayPredicates.h"
+#include <geometry/Triangulation.h>
+
+#include <glm/glm.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace fl::geom::detail {
+
+/// Marks a free slot (its first vertex) in WorkMesh::triangles.
+inline constexpr std::uint32_t kFreeSlot = 0xffffffffu;
+
+/// Where point location ended.
+struct Location {
+    enum class Kind : std::uint8_t {
+        Inside,   // strictly inside triangle `id`
+        OnEdge,   // strictly inside the edge of halfedge `id`
+        OnVertex, // on vertex `id` (the mesh already has a vertex at that position)
+        Outside,  // outside the hull, strictly beyond the boundary halfedge `id`
+    };
+    Kind kind = Kind::Inside;
+    std::uint32_t id = 0;
+};
+
+/// b lies strictly between a and c on their common line (caller knows they are collinear).
+[[nodiscard]] bool strictlyBetween(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c);
+/// The boundary turn a -> b -> c is allowed on a convex hull: left, or straight on.
+[[nodiscard]] bool convexTurn(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c);
+
+class WorkMesh {
+  public:
+    /// A mesh without triangles over `pts` (positions may change later: C2 moves sites).
+    explicit WorkMesh(std::vector<glm::dvec2> pts);
+
+    std::vector<glm::dvec2> points;
+    std::vector<std::uint32_t> triangles;
+    std::vector<std::uint32_t> halfedges;
+    std::vector<std::uint32_t> vertexEdge; // an outgoing halfedge per point, or kNoHalfedge
+
+    /// Replaces the triangles (no free slots) and derives halfedges and vertexEdge (a hull
+    /// vertex gets its outgoing boundary halfedge). False, leaving the mesh unusable, unless the
+    /// triangles form an edge- and vertex-manifold surface: no directed edge twice, no edge in
+    /// three triangles, each vertex's triangles one fan.
+    bool setTriangles(std::vector<std::uint32_t> tris);
+    /// The rest of the degree argument on the current positions, for a manifold mesh without
+    /// free slots: triangles strictly counterclockwise, V - E + F = 1, one boundary cycle that
+    /// is convex and turns once; and points 0 .. required - 1 all used.
+    [[nodiscard]] bool isTriangulation(std::size_t required) const;
+
+    [[nodiscard]] bool inMesh(std::uint32_t v) const { return vertexEdge[v] != kNoHalfedge; }
+    [[nodiscard]] glm::dvec2 at(std::uint32_t v) const { return points[v]; }
+    /// A live triangle, for walks that have no better start.
+    [[nodiscard]] std::uint32_t anyTriangle() const { return lastTriangle_; }
+    /// Number of live triangles.
+    [[nodiscard]] std::size_t liveTriangles() const {
+        return triangles.size() / 3 - freeSlots_.size();
+    }
+
+    /// v's outgoing halfedges counterclockwise around v; on the hull the first one is v's
+    /// outgoing boundary halfedge (v -> next hull vertex). Returns whether v is on the hull.
+    bool fan(std::uint32_t v, std::vector<std::uint32_t>& out) const;
+    /// The boundary halfedge that follows boundary halfedge e (starts where e ends).
+    [[nodiscard]] std::uint32_t nextBoundary(std::uint32_t e) const;
+    /// The boundary halfedge that precedes boundary halfedge e (ends where e starts).
+    [[nodiscard]] std::uint32_t prevBoundary(std::uint32_t e) const;
+
+    /// Locates q by a stochastic visibility walk from `start` (exact orientations; the random
+    /// choice of the first edge keeps it from cycling in non-Delaunay meshes), falling back to a
+    /// scan of all triangles if it takes unreasonably long.
+    Location locate(glm::dvec2 q, std::uint32_t start);
+    /// Inserts point v at points[v] where `where` says (not OnVertex): splits the triangle or
+    /// the edge, or joins v to the hull edges that see it. With `delaunay`, restores the
+    /// Delaunay property around v by flips (the incremental algorithm; used by the fallback).
+    void insert(std::uint32_t v, Location where, bool delaunay);
+    /// Removes vertex v and re-triangulates its star: interior -> ear clipping of its link
+    /// polygon (star-shaped around v's position); on the hull -> a Graham scan over its link
+    /// chain restores the convex hull. Returns false, changing nothing, if no triangle would
+    /// be left around some neighbour (only tiny meshes with collinear remainders).
+    bool removeVertex(std::uint32_t v);
+    /// Moves the live triangles to the front, dropping free slots (before C4 and at the end).
+    void compact();
+    /// Step C4: Lawson flips (TriangulationFlip.h, as legalize()) until every edge is locally
+    /// Delaunay; returns the number of flips. One sweep over the halfedges tests each edge, and
+    /// a flip's four outer edges are re-tested at once from a small stack, so no list of all
+    /// edges is built. Leaves vertexEdge stale: the last edit.
+    std::size_t makeDelaunay();
+
+  private:
+    std::uint32_t addTriangle(std::uint32_t a, std::uint32_t b, std::uint32_t c);
+    void freeTriangle(std::uint32_t t);
+    void link(std::uint32_t a, std::uint32_t b);
+    void touch(std::uint32_t t); // vertexEdge of t's three vertices := their halfedges in t
+    void insertInside(std::uint32_t t, std::uint32_t v);
+    void insertOnEdge(std::uint32_t e, std::uint32_t v);
+    void insertOutside(std::uint32_t e, std::uint32_t v);
+    void restoreDelaunay();
+    bool needsFlip(std::uint32_t e) const;
+    void removeInterior(std::uint32_t v, glm::dvec2 pv);
+    bool removeOnHull(std::uint32_t v);
+    Location scanLocate(glm::dvec2 q) const;
+    int orient(std::uint32_t a, std::uint32_t b, glm::dvec2 q) const {
+        return fastOrientSign(points[a], points[b], q);
+    }
+
+    std::vector<std::uint32_t> freeSlots_;
+    std::vector<std::uint32_t> pending_; // halfedges to re-check (delaunay insertion)
+    std::uint32_t lastTriangle_ = 0;
+    std::uint32_t random_ = 2463534242u; // xorshift32: deterministic "random" walk choices
+    // Scratch for fan() and removeVertex(), kept to avoid allocations per site.
+    std::vector<std::uint32_t> star_, poly_, outer_, prevIdx_, nextIdx_;
+    std::vector<std::uint8_t> covered_;
+};
+
+} // namespace fl::geom::detail

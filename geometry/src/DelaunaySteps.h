@@ -1,0 +1,46 @@
+#pragma once
+// Private to the Delaunay pipeline: the CPU steps C1-C3 of the thesis (§6.3.3) and the fallback,
+// each in its own file (DelaunayHull.cpp, DelaunayShift.cpp, DelaunayInsert.cpp); the driver
+// (Delaunay.cpp) runs them in order, times them and keeps the stages.
+
+#include "DelaunayMesh.h"
+
+#include <geometry/DiscreteDelaunay.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace fl::geom::detail {
+
+/// C1: walks the border of the G3 texture counterclockwise from the lowest site and, Graham-
+/// style, appends a triangle to `tris` for every clockwise turn of three consecutive border
+/// sites (pixel positions, exact integers). Returns the number added, or nothing when the
+/// discrete result carries no texture to walk.
+std::optional<std::size_t> completeHull(const DiscreteDelaunay& discrete,
+                                        std::vector<std::uint32_t>& tris);
+
+/// What C2 did.
+struct ShiftStats {
+    std::size_t good = 0;              // moved in place (cases 1a, 4a)
+    std::size_t bad = 0;               // removed and re-inserted (1b-3, 4b), deferred included
+    std::vector<std::uint32_t> deferred; // landed on a not yet shifted site: C3 inserts them
+    bool stuck = false;                // a removal would have emptied the mesh (fallback)
+};
+
+/// C2: moves every site in `order` from its current position in `mesh` to targets[v].
+ShiftStats shiftSites(WorkMesh& mesh, const std::vector<glm::dvec2>& targets,
+                      const std::vector<std::uint32_t>& order);
+
+/// C3: inserts each site of `sites` at mesh.points[site], locating it by a walk that starts at
+/// `near[i]` (the site that kept its pixel) when that one is in the mesh.
+void insertSites(WorkMesh& mesh, const std::vector<std::uint32_t>& sites,
+                 const std::vector<std::uint32_t>& near);
+
+/// The fallback when the discrete result cannot be completed (too few or collinear pixels, a
+/// T' that fails the degree argument, a removal with nothing left): the incremental Delaunay
+/// algorithm over `sites` (distinct, not all collinear) at mesh.points, in the order given.
+void rebuild(WorkMesh& mesh, const std::vector<std::uint32_t>& sites);
+
+} // namespace fl::geom::detail
