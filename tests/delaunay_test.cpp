@@ -123,7 +123,6 @@ TEST(Delaunay, ClusteredPointsMatchTheReference) {
     for (const int size : {64, 512}) expectSameAsReference(clustered(4000, 9), size);
 }
 
-
 std::vector<dvec2> gridPoints(int w, int h, double step) {
     std::vector<dvec2> pts;
     for (int y = 0; y < h; ++y)
@@ -291,6 +290,61 @@ TEST(Delaunay, RepairsRatherThanRebuilds) {
     EXPECT_EQ(f.counts.rebuilds, 1u);
 }
 
+// Regression: the sites' start positions came from TextureMapping::toWorld, whose rounding bent
+// collinear diagonal pixel runs (on the hull of nearly collinear input) into reflex chains, so
+// T' + C1 failed certification and every such input fell back to rebuild().
+TEST(Delaunay, DiagonalPixelHullsStayConvexInWorldCoordinates) {
+    jfa::SplitMix64 rng(1);
+    std::vector<dvec2> pts(250);
+    for (dvec2& p : pts) {
+        const double x = rng.unit();
+        p = dvec2(x, 0.5 * x + 1e-12 * rng.unit());
+    }
+    for (const int size : {64, 150}) {
+        const DelaunayResult r = run(pts, size);
+        expectValid(r, pts);
+        EXPECT_EQ(r.counts.rebuilds, 0u) << "size " << size;
+    }
+}
+
+// Regression: a zero-area triangle of G6 (a four-colour corner whose both diagonals are flat or
+// clockwise, §6.4) failed certification; it is flipped away before it now.
+TEST(Delaunay, FlatTriangleOfAFourColourCornerIsFlippedAway) {
+    jfa::SplitMix64 rng(2);
+    std::vector<dvec2> pts(200);
+    for (dvec2& p : pts) {
+        const double a = 2.0 * std::numbers::pi * rng.unit();
+        p = dvec2(std::cos(a), std::sin(a));
+    }
+    const DelaunayResult r = run(pts, 32);
+    ASSERT_GT(r.discrete.mesh.stats.degenerate, 0);
+    expectValid(r, pts);
+    EXPECT_EQ(r.counts.rebuilds, 0u);
+}
+
+TEST(DelaunayMesh, FastPredicatesAgreeWithTheLibrary) {
+    jfa::SplitMix64 rng(21);
+    const auto compare = [](dvec2 a, dvec2 b, dvec2 c, dvec2 d) {
+        ASSERT_EQ(detail::fastOrientSign(a, b, c), orient2dSign(a, b, c));
+        ASSERT_EQ(detail::fastIncircleSign(a, b, c, d), incircleSign(a, b, c, d));
+    };
+    for (int i = 0; i < 20000; ++i) {
+        const auto pick = [&] {
+            switch (i % 4) {
+            case 0:
+                return dvec2(rng.unit(), rng.unit()); // generic
+            case 1:
+                return dvec2(double(rng.below(4)), double(rng.below(4))); // cocircular
+            case 2:
+                return dvec2(rng.unit(), rng.unit()) * 0x1p-1060; // subnormal
+            default:
+                return dvec2(rng.unit() - 0.5, rng.unit() - 0.5) * 0x1p1000; // huge
+            }
+        };
+        compare(pick(), pick(), pick(), pick());
+    }
+}
+
 // --- the private mesh's local edits ---------------------------------------------------------
 
 // A triangulation of `pts` (some collinear, some on the hull) as a WorkMesh.
@@ -344,8 +398,10 @@ TEST(DelaunayMesh, ShiftingSitesKeepsATriangulation) {
         std::vector<dvec2> targets = pts;
         for (std::size_t i = 0; i < targets.size(); ++i) {
             const double r = rng.unit();
-            if (r < 0.1 && i > 0) targets[i] = pts[rng.below(i)]; // onto an earlier old position
-            else targets[i] += dvec2(rng.unit() - 0.5, rng.unit() - 0.5) * (r < 0.6 ? 1.0 : 2.5);
+            if (r < 0.1 && i > 0)
+                targets[i] = pts[rng.below(i)]; // onto an earlier old position
+            else
+                targets[i] += dvec2(rng.unit() - 0.5, rng.unit() - 0.5) * (r < 0.6 ? 1.0 : 2.5);
         }
         std::sort(targets.begin(), targets.end(),
                   [](dvec2 a, dvec2 b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });

@@ -3,17 +3,28 @@
 //
 // Indices: the backend runs on all input points, so its indices are the input indices; exact
 // duplicates always share a pixel, so they are among its missing sites and are simply not
-// inserted by C3 (duplicateOf names the point each one repeats).
+// inserted by C3 (duplicateOf names the point each one repeats). The CPU steps renumber the
+// sites in spatial order (Numbering) and map back at the end.
+//
+// Certification: T' + C1 is trusted only after WorkMesh checks the degree argument on it
+// (DelaunayMesh.h), on the exact pixel grid C2 starts from (PixelGrid). §6.4 proves it holds
+// for a correct discrete Voronoi diagram; JFA errors or degenerate corners could break it, and
+// then (as for inputs whose pixels are collinear) the incremental fallback takes over: slower,
+// never wrong. After that every edit is a local one proven to keep a triangulation.
 #include <geometry/Delaunay.h>
 
 #include <geometry/Predicates.h>
 
 #include "DelaunaySteps.h"
 
+#include <jfa/CpuKernel.h>
+
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -21,8 +32,8 @@
 namespace fl::geom {
 namespace {
 
-using glm::dvec2;
 using detail::WorkMesh;
+using glm::dvec2;
 
 class Stopwatch {
   public:
@@ -57,16 +68,14 @@ void requireTriangulable(const std::vector<dvec2>& points) {
     if (!points.empty()) {
         const dvec2 a = points.front();
         const auto b = std::find_if(points.begin(), points.end(), [&](dvec2 p) { return p != a; });
-        if (b != points.end() && std::any_of(b, points.end(), [&](dvec2 c) {
-                return orient2dSign(a, *b, c) != 0;
-            }))
+        if (b != points.end() &&
+            std::any_of(b, points.end(), [&](dvec2 c) { return orient2dSign(a, *b, c) != 0; }))
             return;
     }
     std::vector<dvec2> sorted = points;
     const auto less = [](dvec2 p, dvec2 q) { return p.x != q.x ? p.x < q.x : p.y < q.y; };
     std::sort(sorted.begin(), sorted.end(), less);
-    const auto distinct =
-        std::size_t(std::unique(sorted.begin(), sorted.end()) - sorted.begin());
+    const auto distinct = std::size_t(std::unique(sorted.begin(), sorted.end()) - sorted.begin());
     if (distinct < 3)
         throw std::invalid_argument("delaunay: needs at least 3 distinct points, got " +
                                     std::to_string(distinct) + " (of " +
@@ -77,7 +86,8 @@ void requireTriangulable(const std::vector<dvec2>& points) {
 
 // Fills duplicateOf from G1's missing sites (equal points share a pixel, and the pixel's keeper
 // has the lowest index there); returns the number of duplicates.
-std::size_t findDuplicates(const std::vector<dvec2>& points, const std::vector<MissingSite>& missing,
+std::size_t findDuplicates(const std::vector<dvec2>& points,
+                           const std::vector<MissingSite>& missing,
                            std::vector<std::uint32_t>& duplicateOf) {
     duplicateOf.resize(points.size());
     for (std::uint32_t i = 0; i < points.size(); ++i) duplicateOf[i] = i;
@@ -114,11 +124,11 @@ std::size_t findDuplicates(const std::vector<dvec2>& points, const std::vector<M
 // nearly sequentially; with input indices (random for random input) each access would be a
 // cache miss at a million points.
 struct Numbering {
-    std::vector<std::uint32_t> inputOf; // local -> input index
-    std::vector<std::uint32_t> localOf; // input -> local index (kNoHalfedge: not a site)
-    std::size_t kept = 0;               // locals [0, kept) are S'
-    std::vector<std::uint32_t> missing; // local index of each missing site (after `kept`)
-    std::vector<std::uint32_t> keeper;  // local index of the site that took its pixel
+    std::vector<std::uint32_t> inputOf;   // local -> input index
+    std::vector<std::uint32_t> localOf;   // input -> local index (kNoHalfedge: not a site)
+    std::size_t kept = 0;                 // locals [0, kept) are S'
+    std::vector<std::uint32_t> missing;   // local index of each missing site (after `kept`)
+    std::vector<std::uint32_t> keeper;    // local index of the site that took its pixel
     std::vector<std::uint32_t> triangles; // T' + C1 in local indices
 };
 
@@ -156,6 +166,32 @@ Numbering number(const std::vector<std::uint32_t>& tPrime, const std::vector<std
     }
     return num;
 }
+
+// Where C2 starts: each site of S' at its pixel, in world coordinates, on an exact grid
+// base + pixel * h. The mapping's own inverse (TextureMapping::toWorld) rounds, and rounding can
+// turn collinear pixels (a hull edge along a diagonal) into a slightly reflex chain, or flip a
+// thin triangle, so the certified T' + C1 would no longer be a triangulation there. On the grid
+// every orientation is h^2 times the pixels' one, exactly: base and h are multiples of a power
+// of two u chosen so that every grid point is an integer multiple of u below 2^53 u, hence a
+// double. h is 1 / scale rounded to a multiple of u (relative error ~2^-37 for ordinary data),
+// so the grid sits where the pixels are, up to far less than a pixel.
+class PixelGrid {
+  public:
+    PixelGrid(const TextureMapping& m, dvec2 lo, dvec2 hi) {
+        const double reach = std::max({std::fabs(lo.x), std::fabs(lo.y), std::fabs(hi.x),
+                                       std::fabs(hi.y), std::numeric_limits<double>::min()});
+        u_ = std::max(std::ldexp(1.0, std::ilogb(reach) - 49),
+                      std::numeric_limits<double>::denorm_min());
+        h_ = std::max(std::round(1.0 / m.scale / u_), 1.0) * u_;
+        base_ = {snap(m.origin.x - m.offset.x / m.scale), snap(m.origin.y - m.offset.y / m.scale)};
+    }
+    [[nodiscard]] dvec2 at(glm::ivec2 pixel) const { return base_ + dvec2(pixel) * h_; }
+
+  private:
+    [[nodiscard]] double snap(double v) const { return std::round(v / u_) * u_; }
+    double u_, h_;
+    dvec2 base_;
+};
 
 // All sites in boustrophedon pixel order: short walks for the fallback's insertions.
 std::vector<std::uint32_t> pixelOrder(const Numbering& num, const SnappedSites& snapped) {
@@ -235,26 +271,32 @@ DelaunayResult delaunay(const std::vector<dvec2>& points, const DelaunayOptions&
     Numbering num = number(tPrime, hull, snapped, r.duplicateOf);
     // Every site at its final position (C2's targets), and where C2 starts from: the sites of
     // S' at their pixels, in world coordinates.
+    const PixelGrid grid(snapped.mapping, halved ? lo * 0.5 : lo, halved ? hi * 0.5 : hi);
     std::vector<dvec2> target(num.inputOf.size()), start(num.inputOf.size());
-    for (std::size_t l = 0; l < target.size(); ++l) {
-        if (l + 16 < target.size()) {
-            __builtin_prefetch(&points[num.inputOf[l + 16]]);
-            __builtin_prefetch(&snapped.pixels[num.inputOf[l + 16]]);
+    std::atomic<bool> finite = true;
+    jfa::parallelRows(int(target.size()), options.discrete.threads, [&](int begin, int end, int) {
+        for (auto l = std::size_t(begin); l < std::size_t(end); ++l) {
+            if (l + 16 < std::size_t(end)) {
+                __builtin_prefetch(&points[num.inputOf[l + 16]]);
+                __builtin_prefetch(&snapped.pixels[num.inputOf[l + 16]]);
+            }
+            const std::uint32_t i = num.inputOf[l];
+            target[l] = points[i];
+            if (l >= num.kept) {
+                start[l] = target[l];
+            } else {
+                start[l] = grid.at(snapped.pixels[i]);
+                if (halved) start[l] *= 2.0;
+                if (!std::isfinite(start[l].x) || !std::isfinite(start[l].y)) finite = false;
+            }
         }
-        const std::uint32_t i = num.inputOf[l];
-        target[l] = points[i];
-        if (l >= num.kept) {
-            start[l] = target[l];
-        } else {
-            start[l] = snapped.mapping.toWorld(dvec2(snapped.pixels[i]));
-            if (halved) start[l] *= 2.0;
-        }
-    }
-    WorkMesh mesh(std::move(start));
+    });
+    WorkMesh mesh(std::move(start), options.discrete.threads);
     // The degree argument certifies T' + C1 as a triangulation of S' on those positions;
     // anything else goes to the fallback.
-    const bool certified = added && num.kept >= 3 &&
+    const bool certified = added && finite && num.kept >= 3 &&
                            mesh.setTriangles(std::move(num.triangles)) &&
+                           (r.discrete.mesh.stats.degenerate == 0 || mesh.flipFlatTriangles()) &&
                            mesh.isTriangulation(num.kept);
     bool rebuilt = false;
     const auto fallback = [&] {

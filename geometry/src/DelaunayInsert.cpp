@@ -22,9 +22,8 @@ void insertSites(WorkMesh& mesh, const std::vector<std::uint32_t>& sites,
             s < mesh.points.size() && mesh.inMesh(s) ? mesh.vertexEdge[s] / 3 : mesh.anyTriangle();
         const Location where = mesh.locate(mesh.points[t], start);
         if (where.kind == Location::Kind::OnVertex)
-            throw std::logic_error("delaunay: site " + std::to_string(t) +
-                                   " coincides with site " + std::to_string(where.id) +
-                                   " after deduplication");
+            throw std::logic_error("delaunay: site " + std::to_string(t) + " coincides with site " +
+                                   std::to_string(where.id) + " after deduplication");
         mesh.insert(t, where, false);
     }
 }
@@ -37,8 +36,7 @@ void rebuild(WorkMesh& mesh, const std::vector<std::uint32_t>& sites) {
     while (third < sites.size() &&
            fastOrientSign(mesh.points[a], mesh.points[b], mesh.points[sites[third]]) == 0)
         ++third;
-    if (third == sites.size())
-        throw std::logic_error("delaunay: the fallback got collinear sites");
+    if (third == sites.size()) throw std::logic_error("delaunay: the fallback got collinear sites");
     const std::uint32_t c = sites[third];
     if (fastOrientSign(mesh.points[a], mesh.points[b], mesh.points[c]) > 0)
         mesh.setTriangles({a, b, c});

@@ -49,7 +49,9 @@ struct Location {
 class WorkMesh {
   public:
     /// A mesh without triangles over `pts` (positions may change later: C2 moves sites).
-    explicit WorkMesh(std::vector<glm::dvec2> pts);
+    /// `threads` (0 = all hardware threads) run the per-vertex and read-only passes of
+    /// setTriangles and isTriangulation; results never depend on it.
+    explicit WorkMesh(std::vector<glm::dvec2> pts, int threads = 1);
 
     std::vector<glm::dvec2> points;
     std::vector<std::uint32_t> triangles;
@@ -61,6 +63,12 @@ class WorkMesh {
     /// triangles form an edge- and vertex-manifold surface: no directed edge twice, no edge in
     /// three triangles, each vertex's triangles one fan.
     bool setTriangles(std::vector<std::uint32_t> tris);
+    /// Flips away zero-area triangles (G6 may make one at a four-colour corner, §6.4): the edge
+    /// with the flat triangle's third vertex strictly inside it is flipped, which gives two
+    /// counterclockwise triangles whenever the triangle across lies strictly on its other side.
+    /// False if some flat triangle cannot be fixed that way (it lies on the hull, or its
+    /// neighbour is flat too in the wrong way).
+    bool flipFlatTriangles();
     /// The rest of the degree argument on the current positions, for a manifold mesh without
     /// free slots: triangles strictly counterclockwise, V - E + F = 1, one boundary cycle that
     /// is convex and turns once; and points 0 .. required - 1 all used.
@@ -101,7 +109,8 @@ class WorkMesh {
     /// Step C4: Lawson flips (TriangulationFlip.h, as legalize()) until every edge is locally
     /// Delaunay; returns the number of flips. One sweep over the halfedges tests each edge, and
     /// a flip's four outer edges are re-tested at once from a small stack, so no list of all
-    /// edges is built. Leaves vertexEdge stale: the last edit.
+    /// edges is built. Needs compact() first; leaves
+    /// vertexEdge stale (the last edit).
     std::size_t makeDelaunay();
 
   private:
@@ -121,6 +130,7 @@ class WorkMesh {
         return fastOrientSign(points[a], points[b], q);
     }
 
+    int threads_ = 1;
     std::vector<std::uint32_t> freeSlots_;
     std::vector<std::uint32_t> pending_; // halfedges to re-check (delaunay insertion)
     std::uint32_t lastTriangle_ = 0;

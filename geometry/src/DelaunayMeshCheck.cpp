@@ -2,7 +2,12 @@
 // (DelaunayMesh.h) that certifies the mesh C1 hands to C2.
 #include "DelaunayMesh.h"
 
+#include "TriangulationFlip.h"
+
+#include <jfa/CpuKernel.h>
+
 #include <algorithm>
+#include <atomic>
 #include <bit>
 #include <utility>
 
@@ -18,7 +23,9 @@ namespace {
 // when every entry has at most one such j, no j serves two entries (else an edge has three
 // triangles or a directed edge repeats), and the entries form a single fan (one cycle, or one
 // path: else a is a pinch point). Both functions link the twins and return the most clockwise
-// entry (the boundary one, if any), or kNoHalfedge if the star is not sound.
+// entry (the boundary one, if any), or kNoHalfedge if the star is not sound. Each star writes
+// only its own outgoing halfedges' twins, so stars can be processed in parallel; when all are
+// sound, b's star pairs b -> a with a -> b exactly as a's star pairs them the other way.
 
 // Up to 32 triangles (all but extreme vertices): bit masks, no branches in the inner loop.
 constexpr std::size_t kSmallStar = 32;
@@ -55,11 +62,7 @@ std::uint32_t smallStar(const std::vector<std::uint32_t>& tris, std::vector<std:
     }
     if (seen != k) return kNoHalfedge;
     for (std::size_t i = 0; i < k; ++i)
-        if (cw[i] != kNoHalfedge) {
-            const std::uint32_t twin = prevHalfedge(entries[cw[i]]);
-            half[entries[i]] = twin;
-            half[twin] = entries[i];
-        }
+        if (cw[i] != kNoHalfedge) half[entries[i]] = prevHalfedge(entries[cw[i]]);
     return start;
 }
 
@@ -73,8 +76,8 @@ std::uint32_t largeStar(const std::vector<std::uint32_t>& tris, std::vector<std:
     std::uint32_t start = 0, open = 0;
     for (std::size_t i = 0; i < k; ++i) {
         const std::uint32_t b = tris[nextHalfedge(entries[i])];
-        auto it = std::lower_bound(byC.begin(), byC.end(),
-                                   std::pair<std::uint32_t, std::uint32_t>{b, 0});
+        auto it =
+            std::lower_bound(byC.begin(), byC.end(), std::pair<std::uint32_t, std::uint32_t>{b, 0});
         if (it == byC.end() || it->first != b) {
             start = std::uint32_t(i);
             ++open;
@@ -91,11 +94,7 @@ std::uint32_t largeStar(const std::vector<std::uint32_t>& tris, std::vector<std:
         if (++seen > k) return kNoHalfedge;
     if (seen != k) return kNoHalfedge;
     for (std::size_t i = 0; i < k; ++i)
-        if (cw[i] != kNoHalfedge) {
-            const std::uint32_t twin = prevHalfedge(entries[cw[i]]);
-            half[entries[i]] = twin;
-            half[twin] = entries[i];
-        }
+        if (cw[i] != kNoHalfedge) half[entries[i]] = prevHalfedge(entries[cw[i]]);
     return start;
 }
 
@@ -121,14 +120,46 @@ bool WorkMesh::setTriangles(std::vector<std::uint32_t> tris) {
     }
     halfedges.assign(count, kNoHalfedge);
     vertexEdge.assign(n, kNoHalfedge);
-    for (std::uint32_t a = 0; a < n; ++a) {
-        const std::uint32_t* entries = out.data() + first[a];
-        const std::size_t k = first[a + 1] - first[a];
-        if (k == 0) continue;
-        const std::uint32_t start = k <= kSmallStar ? smallStar(triangles, halfedges, entries, k)
-                                                    : largeStar(triangles, halfedges, entries, k);
-        if (start == kNoHalfedge) return false; // overlapping or pinched triangles
-        vertexEdge[a] = entries[start];
+    std::atomic<bool> sound = true;
+    jfa::parallelRows(int(n), threads_, [&](int begin, int end, int) {
+        for (auto a = std::uint32_t(begin); a < std::uint32_t(end); ++a) {
+            const std::uint32_t* entries = out.data() + first[a];
+            const std::size_t k = first[a + 1] - first[a];
+            if (k == 0) continue;
+            const std::uint32_t start = k <= kSmallStar
+                                            ? smallStar(triangles, halfedges, entries, k)
+                                            : largeStar(triangles, halfedges, entries, k);
+            if (start == kNoHalfedge) {
+                sound = false; // overlapping or pinched triangles
+                return;
+            }
+            vertexEdge[a] = entries[start];
+        }
+    });
+    return sound;
+}
+
+bool WorkMesh::flipFlatTriangles() {
+    const auto noBoundaryTracking = [](std::uint32_t) {};
+    for (std::uint32_t t = 0; 3 * t < triangles.size(); ++t) {
+        const std::uint32_t e0 = 3 * t;
+        if (fastOrientSign(points[triangles[e0]], points[triangles[e0 + 1]],
+                           points[triangles[e0 + 2]]) != 0)
+            continue;
+        std::uint32_t e = kNoHalfedge;
+        for (std::uint32_t k = e0; k < e0 + 3; ++k)
+            if (strictlyBetween(points[triangles[k]], points[triangles[prevHalfedge(k)]],
+                                points[triangles[nextHalfedge(k)]]))
+                e = k;
+        if (e == kNoHalfedge || halfedges[e] == kNoHalfedge) return false;
+        const std::uint32_t o = halfedges[e];
+        flip(triangles, halfedges, e, noBoundaryTracking);
+        for (const std::uint32_t h : {e, o})
+            if (fastOrientSign(points[triangles[h]], points[triangles[nextHalfedge(h)]],
+                               points[triangles[prevHalfedge(h)]]) <= 0)
+                return false;
+        touch(e / 3);
+        touch(o / 3);
     }
     return true;
 }
@@ -137,10 +168,14 @@ bool WorkMesh::isTriangulation(std::size_t required) const {
     if (!freeSlots_.empty() || triangles.empty() || halfedges.size() != triangles.size())
         return false;
     const auto count = static_cast<std::uint32_t>(triangles.size());
-    for (std::uint32_t e = 0; e < count; e += 3)
-        if (fastOrientSign(points[triangles[e]], points[triangles[e + 1]], points[triangles[e + 2]]) <=
-            0)
-            return false;
+    std::atomic<bool> positive = true;
+    jfa::parallelRows(int(count / 3), threads_, [&](int begin, int end, int) {
+        for (auto e = 3 * std::uint32_t(begin); e < 3 * std::uint32_t(end) && positive; e += 3)
+            if (fastOrientSign(points[triangles[e]], points[triangles[e + 1]],
+                               points[triangles[e + 2]]) <= 0)
+                positive = false;
+    });
+    if (!positive) return false;
     std::size_t used = 0;
     for (std::size_t v = 0; v < points.size(); ++v)
         if (vertexEdge[v] != kNoHalfedge) ++used;

@@ -74,7 +74,8 @@ void WorkMesh::removeInterior(std::uint32_t v, dvec2 pv) {
     if (remaining == 4) {
         // pv on both diagonals: split along whichever gives two counterclockwise triangles.
         const std::uint32_t j = nextIdx_[i], m = nextIdx_[j], l = prevIdx_[i];
-        if (fastOrientSign(pos(i), pos(j), pos(m)) > 0 && fastOrientSign(pos(i), pos(m), pos(l)) > 0) {
+        if (fastOrientSign(pos(i), pos(j), pos(m)) > 0 &&
+            fastOrientSign(pos(i), pos(m), pos(l)) > 0) {
             cut(j); // (i, j, m), leaving (m, l, i)
         } else if (fastOrientSign(pos(l), pos(i), pos(j)) > 0 &&
                    fastOrientSign(pos(j), pos(m), pos(l)) > 0) {

@@ -64,20 +64,18 @@ Quick quickShiftTest(const WorkMesh& mesh, std::uint32_t v, dvec2 q) {
 }
 
 // The exact good-shift test for site v moving to q (see the file comment).
-bool isGoodShift(const WorkMesh& mesh, std::uint32_t v, dvec2 q, bool hull,
-                 const std::vector<std::uint32_t>& fan) {
+bool isGoodShift(const WorkMesh& mesh, dvec2 q, bool hull, const std::vector<std::uint32_t>& fan) {
     const auto& tris = mesh.triangles;
     for (const std::uint32_t e : fan) {
         const std::uint32_t a = tris[nextHalfedge(e)], b = tris[prevHalfedge(e)];
         if (fastOrientSign(q, mesh.at(a), mesh.at(b)) <= 0) return false;
     }
     if (!hull) return true;
-    const std::uint32_t out = fan.front();                 // v -> x, on the boundary
-    const std::uint32_t in = prevHalfedge(fan.back());     // w -> v, on the boundary
+    const std::uint32_t out = fan.front();             // v -> x, on the boundary
+    const std::uint32_t in = prevHalfedge(fan.back()); // w -> v, on the boundary
     const std::uint32_t x = tris[nextHalfedge(out)], w = tris[in];
     const std::uint32_t xNext = tris[nextHalfedge(mesh.nextBoundary(out))];
     const std::uint32_t wPrev = tris[mesh.prevBoundary(in)];
-    (void)v;
     return convexTurn(mesh.at(w), q, mesh.at(x)) && convexTurn(mesh.at(wPrev), mesh.at(w), q) &&
            convexTurn(q, mesh.at(x), mesh.at(xNext));
 }
@@ -94,9 +92,12 @@ ShiftStats shiftSites(WorkMesh& mesh, const std::vector<dvec2>& targets,
             ++stats.good;
             continue;
         }
-        const Quick quick = quickShiftTest(mesh, v, q);
-        if (quick == Quick::Good ||
-            (quick == Quick::Open && isGoodShift(mesh, v, q, mesh.fan(v, fan), fan))) {
+        Quick quick = quickShiftTest(mesh, v, q);
+        if (quick == Quick::Open) {
+            const bool hull = mesh.fan(v, fan);
+            quick = isGoodShift(mesh, q, hull, fan) ? Quick::Good : Quick::Bad;
+        }
+        if (quick == Quick::Good) {
             mesh.points[v] = q;
             ++stats.good;
             continue;

@@ -23,10 +23,10 @@ std::optional<std::size_t> completeHull(const DiscreteDelaunay& discrete,
 
 /// What C2 did.
 struct ShiftStats {
-    std::size_t good = 0;              // moved in place (cases 1a, 4a)
-    std::size_t bad = 0;               // removed and re-inserted (1b-3, 4b), deferred included
+    std::size_t good = 0;                // moved in place (cases 1a, 4a)
+    std::size_t bad = 0;                 // removed and re-inserted (1b-3, 4b), deferred included
     std::vector<std::uint32_t> deferred; // landed on a not yet shifted site: C3 inserts them
-    bool stuck = false;                // a removal would have emptied the mesh (fallback)
+    bool stuck = false;                  // a removal would have emptied the mesh (fallback)
 };
 
 /// C2: moves every site in `order` from its current position in `mesh` to targets[v].

@@ -5,9 +5,11 @@
 //   C1 complete the convex hull by the boundary walk;
 //   C2 shift every site from its pixel to its continuous position (Fig. 6.9, cases 1a-4b);
 //   C3 insert the missing sites near the site that took their pixel;
-//   C4 flip edges until every edge is locally Delaunay (Triangulation.h: legalize).
-// Every decision uses the exact predicates (Predicates.h); the result passes
-// checkTriangulation() or the pipeline throws.
+//   C4 flip edges until every edge is locally Delaunay (the flips of Triangulation.h's
+//      legalize, run as one sweep over the edges).
+// Every decision uses the exact predicates (Predicates.h), and every CPU step keeps a valid
+// triangulation (geometry/src/DelaunayMesh.h has the argument); with `check` the result is also
+// verified by checkTriangulation(), and the pipeline throws if that fails.
 
 #include <geometry/DiscreteDelaunay.h>
 #include <geometry/Triangulation.h>
