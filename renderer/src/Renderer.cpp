@@ -65,9 +65,15 @@ std::string_view methodName(ShadowMethod m) {
     }
 }
 
+std::span<const ShadowMethod> allShadowMethods() {
+    static constexpr ShadowMethod kAll[] = {ShadowMethod::Hard, ShadowMethod::JfaL,
+                                            ShadowMethod::FloodL, ShadowMethod::JfaE,
+                                            ShadowMethod::FloodE};
+    return kAll;
+}
+
 std::optional<ShadowMethod> parseMethod(std::string_view name) {
-    for (ShadowMethod m : {ShadowMethod::Hard, ShadowMethod::JfaL, ShadowMethod::FloodL,
-                           ShadowMethod::JfaE, ShadowMethod::FloodE})
+    for (ShadowMethod m : allShadowMethods())
         if (name == methodName(m)) return m;
     return std::nullopt;
 }

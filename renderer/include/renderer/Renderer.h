@@ -19,6 +19,7 @@
 #include <geometry/Framing.h>
 
 #include <optional>
+#include <span>
 
 namespace fl {
 
@@ -32,6 +33,8 @@ enum class ShadowMethod {
 };
 /// "hard", "jfa-l", "flood-l", "jfa-e", "flood-e".
 std::string_view methodName(ShadowMethod m);
+/// Every method, in the order the window cycles through them.
+std::span<const ShadowMethod> allShadowMethods();
 /// Parses a method name; nullopt if unknown.
 std::optional<ShadowMethod> parseMethod(std::string_view name);
 
