@@ -193,8 +193,8 @@ int runChild(const ChildOptions& o) {
                 << " c2=" << c.c2 << " c3=" << c.c3 << " c4=" << c.c4;
         }
         res << " texture=" << opt.discrete.size << " missing=" << r.discrete.missing().size()
-            << " flips=" << r.counts.flips << " badshifts=" << r.counts.badShifts
-            << " triangles=" << r.mesh.triangleCount();
+            << " flips=" << r.counts.flips + r.counts.insertFlips
+            << " badshifts=" << r.counts.badShifts << " triangles=" << r.mesh.triangleCount();
         if (o.check) res << " checkok=" << (fl::geom::checkTriangulation(r.mesh).ok() ? 1 : 0);
         writeTriangles(o.trianglesOut, canonical(ourTriangles(r.mesh)));
     }

@@ -172,6 +172,39 @@ TEST(DelaunayCli, InputsWithoutATriangulationAreInputErrors) {
     }
 }
 
+// The bad-input list of issue 8 through the CLI, case by case: exit code 1 with a message that
+// names the file and the line (or the problem), or a documented exact result.
+TEST(DelaunayCli, BadInputSweepOfTheIssue) {
+    const std::string data = (dataDir() / "data" / "points").string() + "/";
+    const std::pair<std::string, std::string> rejected[] = {
+        {writeText("one.txt", "0 0\n").string(), "at least 3 distinct points"},
+        {writeText("all_same.txt", "2 2\n2 2\n2 2\n2 2\n").string(), "at least 3 distinct"},
+        {writeText("vertical.txt", "1 0\n1 5\n1 -2\n1 0\n1 7\n").string(), "collinear"},
+        {writeText("inf.txt", "0 0\n1 0\n0 1\n-inf 2\n").string(), "inf.txt:4:"},
+        {data + "inf_on_line_4.txt", "inf_on_line_4.txt:4:"},
+        {data + "overflow_on_line_5.txt", "overflow_on_line_5.txt:5:"},
+        {data + "too_few_values_on_line_5.node", "too_few_values_on_line_5.node:5:"},
+        {data + "too_many_values_on_line_3.node", "too_many_values_on_line_3.node:3:"},
+        {data + "dimension_3_on_line_2.node", "dimension_3_on_line_2.node:"},
+        {data + "non_consecutive_index_on_line_4.node", "non_consecutive_index_on_line_4.node:4:"},
+        {writeText("cut.node", "4 2 0 0\n0 0 0\n1 1 0\n2 0 1\n3 1").string(), "cut.node:"},
+    };
+    for (const auto& [file, message] : rejected) {
+        const Outcome r = run("delaunay " + file);
+        EXPECT_EQ(r.code, 1) << file << "\n" << r.output;
+        EXPECT_NE(r.output.find(message), std::string::npos) << file << "\n" << r.output;
+        EXPECT_EQ(r.output.find("terminate"), std::string::npos) << r.output; // no crash
+    }
+    // Documented exact results: duplicates are left out (DuplicatesAreCountedAndLeftOut), and
+    // coordinates from 1e-300 to 1e300 triangulate exactly (--check runs the exact checker).
+    const auto wide = writeText("wide.txt", "1e-300 0\n1e300 0\n0 1e300\n-1e300 -1e300\n"
+                                            "1e-300 1e-300\n-1e-300 2e-300\n5e-301 -1e-300\n");
+    const Outcome r = run("delaunay " + wide.string() + " --check --texture 64");
+    EXPECT_EQ(r.code, 0) << r.output;
+    EXPECT_NE(r.output.find("check: ok"), std::string::npos) << r.output;
+    EXPECT_EQ(printed(r.output, "triangles"), 9) << r.output; // 2n - 2 - hull(3)
+}
+
 TEST(DelaunayCli, BadFlagsAreUsageErrors) {
     const std::string in = sample("grid10x10.txt");
     for (const char* flags : {"--texture 0", "--texture 100000", "--texture abc",

@@ -135,7 +135,8 @@ void printCounts(const geom::DelaunayResult& r, std::ostream& out) {
         << "  triangles T': " << d.mesh.triangleCount() << "\n"
         << "  hull triangles added: " << c.hullTriangles << "\n"
         << "  shifts: " << c.goodShifts << " good, " << c.badShifts << " bad\n"
-        << "  missing inserted: " << c.missingInserted << "\n"
+        << "  missing inserted: " << c.missingInserted << " (" << c.insertFlips << " flips, "
+        << c.walkSteps << " walk steps)\n"
         << "  flips: " << c.flips << "\n"
         << "  triangles: " << r.mesh.triangleCount() << "\n";
 }

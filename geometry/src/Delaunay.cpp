@@ -325,8 +325,13 @@ DelaunayResult delaunay(const std::vector<dvec2>& points, const DelaunayOptions&
 
     // C3: first the sites C2 had to leave out, then the missing ones, each from its keeper.
     if (!rebuilt) {
-        detail::insertSites(mesh, deferred, deferred);
-        detail::insertSites(mesh, num.missing, num.keeper);
+        std::vector<std::uint32_t> toInsert = deferred, near = deferred;
+        toInsert.insert(toInsert.end(), num.missing.begin(), num.missing.end());
+        near.insert(near.end(), num.keeper.begin(), num.keeper.end());
+        const std::size_t steps0 = mesh.walkSteps, flips0 = mesh.insertFlips;
+        detail::insertSites(mesh, toInsert, near);
+        r.counts.walkSteps = mesh.walkSteps - steps0;
+        r.counts.insertFlips = mesh.insertFlips - flips0;
         r.counts.missingInserted = num.missing.size();
     }
     r.cpu.c3 = clock.lap();

@@ -4,8 +4,11 @@
 // category process in Step C2", and then: t in a triangle (cases 1, 2) -> split it; t outside the
 // mesh (cases 3, 4) -> connect it to the hull edge(s) it sees and locally fix the hull. Here the
 // walk starts in s's fan and the insertion handles all of these, plus t exactly on an edge
-// (split the edge: two triangles become four, or one on the hull becomes two). No flips yet:
-// C4 restores the Delaunay property for all of them at once.
+// (split the edge: two triangles become four, or one on the hull becomes two). Unlike the
+// thesis, each insertion is followed by Lawson flips around the new site, in a BRIO/Hilbert
+// order (DelaunayOrder.cpp): inserting without flips and leaving them all to C4 was quadratic
+// when many sites share few pixels (kuzmin, two-lines), as every walk then crossed a fan of
+// ever thinner triangles and C4 had to undo them with cascades of flips.
 #include "DelaunaySteps.h"
 
 #include <stdexcept>
@@ -15,16 +18,36 @@ namespace fl::geom::detail {
 
 void insertSites(WorkMesh& mesh, const std::vector<std::uint32_t>& sites,
                  const std::vector<std::uint32_t>& near) {
-    for (std::size_t i = 0; i < sites.size(); ++i) {
+    std::vector<std::uint32_t> order(sites.size());
+    for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+    {
+        std::vector<glm::dvec2> at(sites.size());
+        for (std::size_t i = 0; i < sites.size(); ++i) at[i] = mesh.points[sites[i]];
+        insertionOrder(at, order);
+    }
+    const auto distance2 = [](glm::dvec2 a, glm::dvec2 b) {
+        const glm::dvec2 d = a - b;
+        return d.x * d.x + d.y * d.y;
+    };
+    std::uint32_t previous = kNoHalfedge;
+    for (const std::uint32_t i : order) {
         const std::uint32_t t = sites[i];
+        const glm::dvec2 q = mesh.points[t];
+        std::uint32_t from = previous;
         const std::uint32_t s = near[i];
+        if (s < mesh.points.size() && mesh.inMesh(s) &&
+            (from == kNoHalfedge || distance2(mesh.points[s], q) < distance2(mesh.points[from], q)))
+            from = s;
         const std::uint32_t start =
-            s < mesh.points.size() && mesh.inMesh(s) ? mesh.vertexEdge[s] / 3 : mesh.anyTriangle();
-        const Location where = mesh.locate(mesh.points[t], start);
+            from != kNoHalfedge ? mesh.vertexEdge[from] / 3 : mesh.anyTriangle();
+        const Location where = mesh.locate(q, start);
         if (where.kind == Location::Kind::OnVertex)
             throw std::logic_error("delaunay: site " + std::to_string(t) + " coincides with site " +
                                    std::to_string(where.id) + " after deduplication");
-        mesh.insert(t, where, false);
+        // With flips: the mesh around each new site stays (nearly) Delaunay, so the walks stay
+        // short and C4 has little left; without them clustered sites pile up in skinny fans.
+        mesh.insert(t, where, true);
+        previous = t;
     }
 }
 

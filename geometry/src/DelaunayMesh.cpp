@@ -103,6 +103,7 @@ Location WorkMesh::locate(dvec2 q, std::uint32_t start) {
     // A walk longer than a scan of everything is not worth continuing.
     const std::size_t stepLimit = 1024 + liveTriangles();
     for (std::size_t step = 0; step < stepLimit; ++step) {
+        ++walkSteps;
         random_ ^= random_ << 13;
         random_ ^= random_ >> 17;
         random_ ^= random_ << 5;
@@ -268,6 +269,7 @@ void WorkMesh::restoreDelaunay() {
         if (halfedges[e] == kNoHalfedge || !needsFlip(e)) continue;
         const std::uint32_t o = halfedges[e];
         flip(triangles, halfedges, e, noBoundaryTracking);
+        ++insertFlips;
         touch(e / 3);
         touch(o / 3);
         pending_.insert(pending_.end(), {e, prevHalfedge(e), o, prevHalfedge(o)});

@@ -57,6 +57,8 @@ class WorkMesh {
     std::vector<std::uint32_t> triangles;
     std::vector<std::uint32_t> halfedges;
     std::vector<std::uint32_t> vertexEdge; // an outgoing halfedge per point, or kNoHalfedge
+    std::size_t walkSteps = 0;             // triangles visited by locate() so far (work counter)
+    std::size_t insertFlips = 0;           // flips made by insert(..., delaunay = true) so far
 
     /// Replaces the triangles (no free slots) and derives halfedges and vertexEdge (a hull
     /// vertex gets its outgoing boundary halfedge). False, leaving the mesh unusable, unless the

@@ -5,12 +5,11 @@
 // certain; otherwise it calls the library predicate, which decides exactly. So the signs are the
 // library's, just cheaper to get.
 //
-// Why not call the library directly: its filter adds an underflow term of order 2^-1050, i.e.
-// arithmetic on subnormal doubles, which costs ~30 ns per incircle call on the development
-// machines (5 ns without). Here that term is avoided by answering only when the determinant is
-// far above the underflow range: |det| > 2^-900 and the operands (lifts, minors) below 2^140,
-// so the library's underflow term (< 2^-1050 * 2^141) is under half of |det|, and the other
-// half covers the rounding bound.
+// The library's filter now has the same fast path (Predicates.cpp, kFastFloor); these inline
+// copies only save the call in the CPU steps' hot loops. The bound: answer only when the
+// determinant is far above the underflow range, |det| > 2^-900 and the operands (lifts, minors)
+// below 2^140, so the library's underflow term (< 2^-1050 * 2^141) is under half of |det|, and
+// the other half covers the rounding bound.
 
 #include <geometry/Predicates.h>
 

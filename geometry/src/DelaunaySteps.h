@@ -33,10 +33,16 @@ struct ShiftStats {
 ShiftStats shiftSites(WorkMesh& mesh, const std::vector<glm::dvec2>& targets,
                       const std::vector<std::uint32_t>& order);
 
-/// C3: inserts each site of `sites` at mesh.points[site], locating it by a walk that starts at
-/// `near[i]` (the site that kept its pixel) when that one is in the mesh.
+/// C3: inserts each site of `sites` at mesh.points[site] by the incremental Delaunay algorithm
+/// (Lawson flips around each new site), in insertionOrder(); each locate walk starts at the
+/// previously inserted site or at `near[i]` (the site that kept its pixel), whichever is nearer.
 void insertSites(WorkMesh& mesh, const std::vector<std::uint32_t>& sites,
                  const std::vector<std::uint32_t>& near);
+
+/// Reorders `order` (indices into points, distinct positions) into a biased randomized
+/// insertion order whose rounds follow a Hilbert curve: short walks, linear expected work.
+/// Deterministic.
+void insertionOrder(const std::vector<glm::dvec2>& points, std::vector<std::uint32_t>& order);
 
 /// The fallback when the discrete result cannot be completed (too few or collinear pixels, a
 /// T' that fails the degree argument, a removal with nothing left): the incremental Delaunay

@@ -47,6 +47,8 @@ struct CpuCounts {
     std::size_t goodShifts = 0;      // C2: sites moved without a local repair
     std::size_t badShifts = 0;       // C2: sites whose move needed a repair (cases of Fig. 6.9)
     std::size_t missingInserted = 0; // C3
+    std::size_t insertFlips = 0;     // C3: Lawson flips around the inserted sites
+    std::size_t walkSteps = 0;       // C3: triangles its point-location walks visited
     std::size_t duplicates = 0;      // input points equal to an earlier point (not inserted)
     std::size_t flips = 0;           // C4
     std::size_t rebuilds = 0; // 1 when T' + C1 was no triangulation of S' (too few or collinear

@@ -1,0 +1,113 @@
+// Regression fixtures of the Delaunay pipeline (geometry/Delaunay.h), each named after the bug it
+// reproduces, at sizes small enough for a unit test. The work counters (C3's walk steps and
+// flips, C4's flips) are deterministic, so a bound on them catches a return of quadratic
+// behaviour without timing anything.
+#include <geometry/Delaunay.h>
+
+#include <jfa/Sites.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+namespace fl::geom {
+namespace {
+
+using glm::dvec2;
+using Tri = std::array<std::uint32_t, 3>;
+
+std::vector<Tri> triangleSet(const std::vector<std::uint32_t>& tris) {
+    std::vector<Tri> out;
+    for (std::size_t i = 0; i + 2 < tris.size(); i += 3) {
+        Tri t{tris[i], tris[i + 1], tris[i + 2]};
+        std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+        out.push_back(t);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+DelaunayResult run(const std::vector<dvec2>& points, int size) {
+    DelaunayOptions options;
+    options.discrete.size = size;
+    options.check = true; // throws if the result is not the Delaunay triangulation
+    return delaunay(points, options);
+}
+
+// The bench's kuzmin disc: heavy-tailed, so the bounding box is huge and nearly every site
+// shares the few centre pixels.
+std::vector<dvec2> kuzmin(std::size_t n, std::uint64_t seed) {
+    jfa::SplitMix64 rng(seed);
+    std::vector<dvec2> pts(n);
+    for (dvec2& p : pts) {
+        const double u = rng.unit(), v = rng.unit();
+        const double r = std::sqrt(1.0 / ((1.0 - u) * (1.0 - u)) - 1.0);
+        p = dvec2(r * std::cos(2.0 * std::numbers::pi * v),
+                  r * std::sin(2.0 * std::numbers::pi * v));
+    }
+    return pts;
+}
+
+// The bench's two-lines: half on y = x, half on y = 1 - x, exactly collinear.
+std::vector<dvec2> twoLines(std::size_t n, std::uint64_t seed) {
+    jfa::SplitMix64 rng(seed);
+    std::vector<dvec2> pts(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const double u = rng.unit();
+        pts[i] = dvec2(u, i % 2 == 0 ? u : 1.0 - u);
+    }
+    return pts;
+}
+
+// Linear work: per inserted site a bounded number of walk steps and flips (the expected values
+// of a randomized incremental insertion are small constants; the bounds leave a wide margin).
+void expectLinearWork(const DelaunayResult& r, std::size_t n) {
+    const std::size_t inserted = std::max<std::size_t>(r.counts.missingInserted, 1);
+    EXPECT_LT(r.counts.walkSteps, 40 * inserted) << "C3 walks";
+    EXPECT_LT(r.counts.insertFlips + r.counts.flips, 12 * n) << "C3 + C4 flips";
+}
+
+// Bug: C3 inserted the missing sites without flips, each located from the site that kept its
+// pixel, in pixel order. On kuzmin nearly all sites share the centre pixels, so each walk
+// crossed a fan of ever thinner triangles: quadratic C3 (12.5 s at 100k points).
+TEST(DelaunayRegression, KuzminSitesCrowdingOnePixelInsertInLinearWork) {
+    const std::vector<dvec2> pts = kuzmin(6000, 3);
+    const DelaunayResult r = run(pts, 64);
+    EXPECT_EQ(r.counts.rebuilds, 0u);
+    EXPECT_GT(r.counts.missingInserted, 3000u); // the crowding the bug needs
+    expectLinearWork(r, pts.size());
+    EXPECT_EQ(triangleSet(r.mesh.triangles), triangleSet(delaunayReference(pts).triangles));
+}
+
+// Bug: on two crossing lines of exactly collinear sites the flip-free C3 left long skinny fans
+// that C4 undid with cascades of flips: 319M flips at 100k points.
+TEST(DelaunayRegression, TwoCrossingLinesNeedNoFlipCascades) {
+    const std::vector<dvec2> pts = twoLines(6000, 4);
+    for (const int size : {32, 128}) {
+        const DelaunayResult r = run(pts, size);
+        EXPECT_EQ(r.counts.rebuilds, 0u) << "size " << size;
+        EXPECT_GT(r.counts.missingInserted, 4000u) << "size " << size;
+        expectLinearWork(r, pts.size());
+    }
+}
+
+// The same for a gaussian cloud at a texture far too small: many sites per pixel everywhere.
+TEST(DelaunayRegression, OvercrowdedPixelsOfAGaussianCloudInsertInLinearWork) {
+    jfa::SplitMix64 rng(9);
+    std::vector<dvec2> pts(6000);
+    for (dvec2& p : pts) {
+        const double r = std::sqrt(-2.0 * std::log(1.0 - rng.unit()));
+        const double a = 2.0 * std::numbers::pi * rng.unit();
+        p = dvec2(r * std::cos(a), r * std::sin(a));
+    }
+    const DelaunayResult r = run(pts, 16);
+    expectLinearWork(r, pts.size());
+    EXPECT_EQ(triangleSet(r.mesh.triangles), triangleSet(delaunayReference(pts).triangles));
+}
+
+} // namespace
+} // namespace fl::geom
