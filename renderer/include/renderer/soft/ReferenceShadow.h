@@ -1,0 +1,83 @@
+#pragma once
+// Ground truth for the soft-shadow methods: the disk light's visibility estimated by N point
+// lights on the disk. For each of N stratified disk samples a depth map is rendered from that
+// point (a perspective volume fitted to the scene, as for the scene's own point light, with the
+// same depth bias) and every eye pixel adds its hard visibility from that map; the sum / N is the
+// visible fraction of the disk. The samples are the centres of an a x b grid (a the largest
+// divisor of N not above sqrt(N)) mapped onto the disk by Shirley-Chiu's concentric map, so
+// N = 1 is the disk centre and the result equals the hard method there (point and spot lights;
+// a directional light's disk is sampled with perspective maps from the disk, so N = 1 is not its
+// hard shadow). The estimate's error: shadow-map discretisation per sample (texel size at the
+// map resolution) plus sampling error, measured by comparing N with 2N (referenceSamplingError).
+
+#include <gpu/Gl.h>
+#include <gpu/PassTimer.h>
+#include <gpu/Program.h>
+#include <gpu/ShaderLibrary.h>
+#include <renderer/GpuScene.h>
+#include <renderer/ImageIO.h>
+#include <renderer/passes/ShadowMapPass.h>
+#include <renderer/soft/DiskLight.h>
+
+#include <geometry/Aabb.h>
+
+#include <vector>
+
+namespace fl {
+
+struct CameraView;
+
+struct ReferenceSettings {
+    int samples = 256;  // N point lights on the disk (>= 1)
+    int mapSize = 2048; // texels per side of each point light's depth map
+};
+
+/// The N sample points on the disk (world space), in the order they are rendered.
+std::vector<glm::vec3> referenceDiskSamples(const DiskLight& disk, int samples);
+
+/// Difference between two visibility images of one frame (e.g. N and 2N samples), over the
+/// pixels where `mask` (same size) is > 0.5, or all pixels with an empty mask.
+struct VisibilityDifference {
+    double rmse = 0.0;
+    double maxAbs = 0.0;
+    std::size_t pixels = 0;
+};
+VisibilityDifference visibilityDifference(const FloatImage& a, const FloatImage& b,
+                                          const FloatImage& mask = {});
+
+class ReferenceShadowPass {
+  public:
+    explicit ReferenceShadowPass(const ShaderLibrary& shaders);
+
+    struct Inputs {
+        const GpuScene& scene;
+        const CameraView& camera;
+        const geom::Aabb& sceneBounds; // each sample's volume is fitted to these
+        const DiskLight& light;
+        const ShadowMapSettings& shadowSettings; // depth bias
+        const ReferenceSettings& settings;
+        int width, height; // frame size
+    };
+    struct Outputs {
+        const gl::Texture& visibility; // R32F: lit samples / N
+        const gl::Texture& points;     // RGBA32F: world position, w = 1 (0 background)
+    };
+    /// Renders the N maps and accumulates; `timer` times "reference eye", "reference maps" and
+    /// "reference resolve". Throws std::invalid_argument for samples < 1 or a bad map size.
+    Outputs execute(const Inputs& in, PassTimer* timer = nullptr);
+
+  private:
+    void resize(int width, int height, int mapSize);
+
+    gl::Program eye_, depth_, accumulate_, resolve_;
+    gl::VertexArray emptyVao_;
+    gl::Texture points_, eyeDepth_, sum_, visibility_, map_;
+    gl::Framebuffer eyeFbo_, sumFbo_, visibilityFbo_, mapFbo_;
+};
+
+/// Renders the frame's reference visibility with `samples` and with 2 x `samples` and returns
+/// their difference over surface pixels: the reference's own sampling error at `samples`.
+VisibilityDifference referenceSamplingError(ReferenceShadowPass& pass,
+                                            ReferenceShadowPass::Inputs in, int samples);
+
+} // namespace fl

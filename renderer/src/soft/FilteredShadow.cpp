@@ -1,0 +1,229 @@
+#include <renderer/soft/FilteredShadow.h>
+
+#include <renderer/passes/ForwardPass.h>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace fl {
+
+std::optional<PcssPreset> parsePcssPreset(std::string_view text) {
+    if (text == "16/16") return PcssPreset{16, 16};
+    if (text == "16/24") return PcssPreset{16, 24};
+    if (text == "32/64") return PcssPreset{32, 64};
+    return std::nullopt;
+}
+
+std::vector<glm::vec2> vogelDisk(int count) {
+    std::vector<glm::vec2> out;
+    const double golden = 3.14159265358979323846 * (3.0 - std::sqrt(5.0));
+    for (int i = 0; i < count; ++i) {
+        // Radius sqrt((i + 0.5) / n): each point stands for an equal area of the disk.
+        const double r = std::sqrt((i + 0.5) / count);
+        const double a = golden * i;
+        out.emplace_back(static_cast<float>(r * std::cos(a)), static_cast<float>(r * std::sin(a)));
+    }
+    return out;
+}
+
+std::vector<glm::vec2> pcfOffsets(int kernel) {
+    std::vector<glm::vec2> out;
+    const float half = 0.5f * static_cast<float>(kernel - 1);
+    for (int j = 0; j < kernel; ++j)
+        for (int i = 0; i < kernel; ++i)
+            out.emplace_back(static_cast<float>(i) - half, static_cast<float>(j) - half);
+    return out;
+}
+
+namespace {
+
+glm::vec3 unproject(const glm::mat4& invProj, glm::vec3 ndc) {
+    const glm::vec4 v = invProj * glm::vec4(ndc, 1.0f);
+    return glm::vec3(v) / v.w;
+}
+
+struct Tap {
+    float lit;
+    float stored;
+};
+
+// Same operations as tap() in shaders/filtered_shadow.frag.glsl.
+Tap tap(const FilterFrame& f, const glm::mat4& invProj, glm::vec2 s, glm::vec3 pv, glm::vec3 nv,
+        float receiverNdcZ) {
+    const glm::vec4 m = f.warp * glm::vec4(s, receiverNdcZ, 1.0f);
+    if (m.w <= 0.0f) return {1.0f, 1.0f};
+    const glm::vec2 uv = glm::vec2(m) / m.w * 0.5f + 0.5f;
+    if (uv.x < 0.0f || uv.y < 0.0f || uv.x > 1.0f || uv.y > 1.0f) return {1.0f, 1.0f};
+    const int tx = std::clamp(static_cast<int>(std::floor(uv.x * f.size)), 0, f.size - 1);
+    const int ty = std::clamp(static_cast<int>(std::floor(uv.y * f.size)), 0, f.size - 1);
+    const float stored = f.depth[static_cast<std::size_t>(ty) * f.size + tx];
+    const glm::vec3 a = unproject(invProj, {s, -1.0f});
+    const glm::vec3 b = unproject(invProj, {s, 1.0f});
+    const float den = glm::dot(nv, b - a);
+    float ref = receiverNdcZ * 0.5f + 0.5f;
+    if (std::abs(den) > 1e-6f * glm::length(b - a)) {
+        const float t = glm::dot(nv, pv - a) / den;
+        if (t > 0.0f && t < 1.0f) {
+            const glm::vec4 c = f.lightProj * glm::vec4(a + t * (b - a), 1.0f);
+            ref = c.z / c.w * 0.5f + 0.5f;
+        }
+    }
+    return {ref <= stored ? 1.0f : 0.0f, stored};
+}
+
+glm::vec4 diskThrough(const FilterFrame& f, glm::vec3 pv, glm::vec3 cv, float d) {
+    const float dR = -pv.z, dC = -cv.z;
+    const float k = (dR - d) / std::max(dR - dC, 1e-6f);
+    const glm::vec3 x = pv + (cv - pv) * k;
+    const glm::vec4 clip = f.lightProj * glm::vec4(x, 1.0f);
+    const float r = f.disk.radius * std::max(k, 0.0f);
+    return {clip.x / clip.w, clip.y / clip.w, f.lightProj[0][0] * r / clip.w,
+            f.lightProj[1][1] * r / clip.w};
+}
+
+} // namespace
+
+std::vector<float> readDepthMap(const gl::Texture& depth) {
+    std::vector<float> out(static_cast<std::size_t>(depth.width()) * depth.height());
+    glGetTextureImage(depth.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
+                      static_cast<GLsizei>(out.size() * sizeof(float)), out.data());
+    return out;
+}
+
+float filteredVisibility(const FilterFrame& f, glm::vec3 p, glm::vec3 n) {
+    const glm::mat4 invProj = glm::inverse(f.lightProj);
+    const glm::vec3 pv = glm::vec3(f.lightView * glm::vec4(p, 1.0f));
+    const glm::vec3 nv = glm::mat3(f.lightView) * n;
+    const glm::vec4 clip = f.lightProj * glm::vec4(pv, 1.0f);
+    if (clip.w <= 0.0f) return 1.0f;
+    const glm::vec3 ndc = glm::vec3(clip) / clip.w;
+    auto filter = [&](glm::vec2 centre, glm::vec2 scale) {
+        float lit = 0.0f;
+        for (glm::vec2 t : f.taps) lit += tap(f, invProj, centre + scale * t, pv, nv, ndc.z).lit;
+        return lit / static_cast<float>(f.taps.size());
+    };
+    if (f.mode == FilterFrame::Mode::Pcf) return filter(glm::vec2(ndc), glm::vec2(1.0f));
+    const glm::vec3 cv = glm::vec3(f.lightView * glm::vec4(f.disk.center, 1.0f));
+    const glm::vec4 search = diskThrough(f, pv, cv, f.searchDepth);
+    float blockers = 0.0f, depthSum = 0.0f;
+    for (glm::vec2 b : f.blockerTaps) {
+        const Tap r =
+            tap(f, invProj, glm::vec2(search) + glm::vec2(search.z, search.w) * b, pv, nv, ndc.z);
+        if (r.lit == 0.0f) {
+            blockers += 1.0f;
+            depthSum += -unproject(invProj, {0.0f, 0.0f, 2.0f * r.stored - 1.0f}).z;
+        }
+    }
+    if (blockers == 0.0f) return 1.0f;
+    const glm::vec4 fd = diskThrough(f, pv, cv, depthSum / blockers);
+    return filter(glm::vec2(fd), glm::vec2(fd.z, fd.w));
+}
+
+FilteredShadowPass::FilteredShadowPass(const ShaderLibrary& shaders)
+    : program_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "forward.vert.glsl"},
+                                            {GL_FRAGMENT_SHADER, "filtered_shadow.frag.glsl"}})) {
+    GLuint id = 0;
+    glCreateSamplers(1, &id);
+    rawDepth_ = gl::Handle<gl::detail::SamplerDeleter>(id);
+    glSamplerParameteri(id, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glSamplerParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
+void FilteredShadowPass::resize(int width, int height) {
+    if (visibility_ && visibility_.width() == width && visibility_.height() == height) return;
+    visibility_ = gl::Texture(GL_R32F, width, height);
+    points_ = gl::Texture(GL_RGBA32F, width, height);
+    normals_ = gl::Texture(GL_RGBA32F, width, height);
+    depth_ = gl::Texture(GL_DEPTH_COMPONENT32F, width, height);
+    fbo_ = gl::Framebuffer::create();
+    fbo_.attach(GL_COLOR_ATTACHMENT0, visibility_);
+    fbo_.attach(GL_COLOR_ATTACHMENT1, points_);
+    fbo_.attach(GL_COLOR_ATTACHMENT2, normals_);
+    fbo_.attach(GL_DEPTH_ATTACHMENT, depth_);
+    fbo_.setDrawBuffers(3);
+    fbo_.check("filtered shadows");
+}
+
+FilterFrame FilteredShadowPass::frame(const Inputs& in) const {
+    FilterFrame f;
+    f.mode = in.pcss ? FilterFrame::Mode::Pcss : FilterFrame::Mode::Pcf;
+    f.lightView = in.lightVolume.view;
+    f.lightProj = in.lightVolume.proj;
+    f.warp = in.shadow.warp;
+    f.disk = in.light;
+    // The blocker search looks through the near plane, but never at or behind the disk.
+    const float diskDepth = -(in.lightVolume.view * glm::vec4(in.light.center, 1.0f)).z;
+    f.searchDepth = std::max(in.lightVolume.znear, diskDepth + 1e-3f * in.lightVolume.znear);
+    const int k = in.settings.pcfKernel;
+    if (in.pcss) {
+        f.taps = vogelDisk(in.settings.pcss.filterSamples);
+        f.blockerTaps = vogelDisk(in.settings.pcss.blockerSamples);
+    } else {
+        // One uniform-map texel is 2 / size in NDC.
+        const float texel = 2.0f / static_cast<float>(in.shadow.depth.width());
+        for (glm::vec2 o : pcfOffsets(k)) f.taps.push_back(o * texel);
+    }
+    f.size = in.shadow.depth.width();
+    return f;
+}
+
+FilteredShadowPass::Outputs FilteredShadowPass::execute(const Inputs& in, PassTimer* timer) {
+    const FilteredShadowSettings& s = in.settings;
+    if (s.pcfKernel < 1 || s.pcfKernel > kMaxPcfKernel)
+        throw std::invalid_argument("PCF kernel " + std::to_string(s.pcfKernel) +
+                                    " is outside [1, " + std::to_string(kMaxPcfKernel) + "]");
+    if (s.pcss.blockerSamples < 1 || s.pcss.blockerSamples > 64 || s.pcss.filterSamples < 1 ||
+        s.pcss.filterSamples > 225)
+        throw std::invalid_argument("PCSS sample counts must be in [1, 64] / [1, 225]");
+    resize(in.width, in.height);
+    if (timer) timer->begin(in.pcss ? "blocker search+filter" : "pcf filter");
+    const FilterFrame f = frame(in);
+    const float none[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    const float lit = 1.0f, far = 1.0f;
+    glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, &lit);
+    glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 1, none);
+    glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 2, none);
+    glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &far);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    glViewport(0, 0, in.width, in.height);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_CULL_FACE); // as the forward pass: both faces, the same visible surfaces
+    const GLuint id = program_.id();
+    program_.set("uViewProj", in.camera.proj * in.camera.view);
+    program_.set("uLightView", f.lightView);
+    program_.set("uLightProj", f.lightProj);
+    program_.set("uInvLightProj", glm::inverse(f.lightProj));
+    program_.set("uShadowWarp", f.warp);
+    program_.set("uPcss", in.pcss ? 1 : 0);
+    program_.set("uDiskCenter", f.disk.center);
+    program_.set("uDiskRadius", f.disk.radius);
+    program_.set("uSearchDepth", f.searchDepth);
+    program_.set("uTapCount", static_cast<int>(f.taps.size()));
+    glProgramUniform2fv(id, glGetUniformLocation(id, "uTaps"), static_cast<GLsizei>(f.taps.size()),
+                        glm::value_ptr(f.taps[0]));
+    program_.set("uBlockerCount", static_cast<int>(f.blockerTaps.size()));
+    if (!f.blockerTaps.empty())
+        glProgramUniform2fv(id, glGetUniformLocation(id, "uBlockerTaps"),
+                            static_cast<GLsizei>(f.blockerTaps.size()),
+                            glm::value_ptr(f.blockerTaps[0]));
+    glBindTextureUnit(4, in.shadow.depth.id());
+    glBindSampler(4, rawDepth_.id());
+    in.scene.draw(program_, GpuScene::Uniforms::Geometry);
+    glBindSampler(4, 0);
+    glBindTextureUnit(4, 0);
+    glBindTextureUnit(0, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (timer) timer->end();
+    return {visibility_, points_, normals_};
+}
+
+} // namespace fl

@@ -1,0 +1,220 @@
+#include <renderer/soft/ReferenceShadow.h>
+
+#include <renderer/passes/ForwardPass.h>
+
+#include <geometry/Framing.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace fl {
+
+std::vector<glm::vec3> referenceDiskSamples(const DiskLight& disk, int samples) {
+    if (samples < 1)
+        throw std::invalid_argument("reference samples must be >= 1, got " +
+                                    std::to_string(samples));
+    int rows = 1;
+    for (int d = 1; d * d <= samples; ++d)
+        if (samples % d == 0) rows = d;
+    const int cols = samples / rows;
+    // An orthonormal basis of the disk's plane.
+    const glm::vec3 n = glm::normalize(disk.normal);
+    const glm::vec3 helper = std::abs(n.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+    const glm::vec3 t = glm::normalize(glm::cross(n, helper));
+    const glm::vec3 b = glm::cross(n, t);
+    constexpr double kQuarterPi = 0.78539816339744830962;
+    std::vector<glm::vec3> out;
+    for (int j = 0; j < rows; ++j)
+        for (int i = 0; i < cols; ++i) {
+            // Cell centre in [-1, 1]^2, then Shirley-Chiu's concentric map (area preserving,
+            // so the strata stay equal-area on the disk).
+            const double u = 2.0 * (i + 0.5) / cols - 1.0;
+            const double v = 2.0 * (j + 0.5) / rows - 1.0;
+            double x = 0.0, y = 0.0;
+            if (u != 0.0 || v != 0.0) {
+                double r = 0.0, phi = 0.0;
+                if (std::abs(u) > std::abs(v)) {
+                    r = u;
+                    phi = kQuarterPi * (v / u);
+                } else {
+                    r = v;
+                    phi = 2.0 * kQuarterPi - kQuarterPi * (u / v);
+                }
+                x = r * std::cos(phi);
+                y = r * std::sin(phi);
+            }
+            if (x == 0.0 && y == 0.0) {
+                out.push_back(disk.center); // exactly the centre (N = 1 is the hard shadow)
+                continue;
+            }
+            out.push_back(disk.center +
+                          disk.radius * (static_cast<float>(x) * t + static_cast<float>(y) * b));
+        }
+    return out;
+}
+
+VisibilityDifference visibilityDifference(const FloatImage& a, const FloatImage& b,
+                                          const FloatImage& mask) {
+    if (a.data.size() != b.data.size() || (!mask.data.empty() && mask.data.size() != a.data.size()))
+        throw std::invalid_argument("visibilityDifference: images of different sizes");
+    VisibilityDifference d;
+    double sum2 = 0.0;
+    for (std::size_t i = 0; i < a.data.size(); ++i) {
+        if (!mask.data.empty() && !(mask.data[i] > 0.5f)) continue;
+        const double e = static_cast<double>(a.data[i]) - static_cast<double>(b.data[i]);
+        sum2 += e * e;
+        d.maxAbs = std::max(d.maxAbs, std::abs(e));
+        ++d.pixels;
+    }
+    d.rmse = d.pixels ? std::sqrt(sum2 / static_cast<double>(d.pixels)) : 0.0;
+    return d;
+}
+
+namespace {
+void drawFullscreen(const gl::Program& program, const gl::VertexArray& vao) {
+    glUseProgram(program.id());
+    glBindVertexArray(vao.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+    glUseProgram(0);
+}
+} // namespace
+
+ReferenceShadowPass::ReferenceShadowPass(const ShaderLibrary& shaders)
+    : eye_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "forward.vert.glsl"},
+                                        {GL_FRAGMENT_SHADER, "reference_eye.frag.glsl"}})),
+      depth_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "shadow_depth.vert.glsl"},
+                                          {GL_FRAGMENT_SHADER, "shadow_depth.frag.glsl"}})),
+      accumulate_(
+          gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
+                                       {GL_FRAGMENT_SHADER, "reference_accumulate.frag.glsl"}})),
+      resolve_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
+                                            {GL_FRAGMENT_SHADER, "reference_resolve.frag.glsl"}})),
+      emptyVao_(gl::VertexArray::create()) {}
+
+void ReferenceShadowPass::resize(int width, int height, int mapSize) {
+    if (!map_ || map_.width() != mapSize) {
+        // As ShadowMapPass: NEAREST and a LEQUAL comparison, so one sample is the hard test.
+        map_ = gl::Texture(GL_DEPTH_COMPONENT32F, mapSize, mapSize);
+        map_.setSampling(GL_NEAREST, GL_NEAREST);
+        glTextureParameteri(map_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+        glTextureParameteri(map_.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+        mapFbo_ = gl::Framebuffer::create();
+        mapFbo_.attach(GL_DEPTH_ATTACHMENT, map_);
+        mapFbo_.setDrawBuffers(0);
+        mapFbo_.check("reference depth map");
+    }
+    if (points_ && points_.width() == width && points_.height() == height) return;
+    points_ = gl::Texture(GL_RGBA32F, width, height);
+    eyeDepth_ = gl::Texture(GL_DEPTH_COMPONENT32F, width, height);
+    sum_ = gl::Texture(GL_R32F, width, height);
+    visibility_ = gl::Texture(GL_R32F, width, height);
+    eyeFbo_ = gl::Framebuffer::create();
+    eyeFbo_.attach(GL_COLOR_ATTACHMENT0, points_);
+    eyeFbo_.attach(GL_DEPTH_ATTACHMENT, eyeDepth_);
+    eyeFbo_.setDrawBuffers(1);
+    eyeFbo_.check("reference eye pass");
+    sumFbo_ = gl::Framebuffer::create();
+    sumFbo_.attach(GL_COLOR_ATTACHMENT0, sum_);
+    sumFbo_.setDrawBuffers(1);
+    sumFbo_.check("reference sum");
+    visibilityFbo_ = gl::Framebuffer::create();
+    visibilityFbo_.attach(GL_COLOR_ATTACHMENT0, visibility_);
+    visibilityFbo_.setDrawBuffers(1);
+    visibilityFbo_.check("reference visibility");
+}
+
+ReferenceShadowPass::Outputs ReferenceShadowPass::execute(const Inputs& in, PassTimer* timer) {
+    const std::vector<glm::vec3> samples = referenceDiskSamples(in.light, in.settings.samples);
+    GLint maxSize = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+    if (in.settings.mapSize < 16 || in.settings.mapSize > maxSize)
+        throw std::invalid_argument("reference map size " + std::to_string(in.settings.mapSize) +
+                                    " is outside [16, " + std::to_string(maxSize) + "]");
+    resize(in.width, in.height, in.settings.mapSize);
+
+    // The visible surfaces' world positions, rasterised as the forward pass does.
+    if (timer) timer->begin("reference eye");
+    const float none[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    const float far = 1.0f;
+    glClearNamedFramebufferfv(eyeFbo_.id(), GL_COLOR, 0, none);
+    glClearNamedFramebufferfv(eyeFbo_.id(), GL_DEPTH, 0, &far);
+    glBindFramebuffer(GL_FRAMEBUFFER, eyeFbo_.id());
+    glViewport(0, 0, in.width, in.height);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_CULL_FACE);
+    eye_.set("uViewProj", in.camera.proj * in.camera.view);
+    in.scene.draw(eye_, GpuScene::Uniforms::Geometry);
+    if (timer) timer->end();
+
+    // One depth map per disk sample, each added to the sum.
+    if (timer) timer->begin("reference maps");
+    glClearNamedFramebufferfv(sumFbo_.id(), GL_COLOR, 0, none);
+    depth_.set("uShadowWarp", glm::mat4(1.0f));
+    depth_.set("uSlopeBias", in.shadowSettings.slopeBias);
+    depth_.set("uConstantBias", in.shadowSettings.constantBias);
+    accumulate_.set("uShadowWarp", glm::mat4(1.0f));
+    for (const glm::vec3& q : samples) {
+        // The volume the scene's own point light at q would get (Renderer's lightVolume()).
+        const glm::mat4 viewProj = geom::fitPerspectiveLight(in.sceneBounds, q).viewProj();
+        glBindFramebuffer(GL_FRAMEBUFFER, mapFbo_.id());
+        glViewport(0, 0, map_.width(), map_.height());
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LESS);
+        glDepthMask(GL_TRUE);
+        glClearNamedFramebufferfv(mapFbo_.id(), GL_DEPTH, 0, &far);
+        depth_.set("uLightViewProj", viewProj);
+        in.scene.draw(depth_, GpuScene::Uniforms::Geometry);
+
+        glBindFramebuffer(GL_FRAMEBUFFER, sumFbo_.id());
+        glViewport(0, 0, in.width, in.height);
+        glDisable(GL_DEPTH_TEST);
+        glEnable(GL_BLEND);
+        glBlendEquation(GL_FUNC_ADD);
+        glBlendFunc(GL_ONE, GL_ONE);
+        accumulate_.set("uLightViewProj", viewProj);
+        glBindTextureUnit(0, points_.id());
+        glBindTextureUnit(1, map_.id());
+        drawFullscreen(accumulate_, emptyVao_);
+        glDisable(GL_BLEND);
+    }
+    glBlendFunc(GL_ONE, GL_ZERO); // the default
+    glBindTextureUnit(1, 0);
+    if (timer) timer->end();
+
+    if (timer) timer->begin("reference resolve");
+    glBindFramebuffer(GL_FRAMEBUFFER, visibilityFbo_.id());
+    glViewport(0, 0, in.width, in.height);
+    resolve_.set("uSamples", static_cast<float>(samples.size()));
+    glBindTextureUnit(0, sum_.id());
+    glBindTextureUnit(1, points_.id());
+    drawFullscreen(resolve_, emptyVao_);
+    glBindTextureUnit(0, 0);
+    glBindTextureUnit(1, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (timer) timer->end();
+    return {visibility_, points_};
+}
+
+VisibilityDifference referenceSamplingError(ReferenceShadowPass& pass,
+                                            ReferenceShadowPass::Inputs in, int samples) {
+    ReferenceSettings s = in.settings;
+    s.samples = samples;
+    ReferenceShadowPass::Inputs a{in.scene,          in.camera, in.sceneBounds, in.light,
+                                  in.shadowSettings, s,         in.width,       in.height};
+    const ReferenceShadowPass::Outputs out = pass.execute(a);
+    const FloatImage va = readTexture(out.visibility, 1);
+    FloatImage mask = readTexture(out.points, 4);
+    FloatImage surface{mask.width, mask.height, 1, {}};
+    for (std::size_t i = 3; i < mask.data.size(); i += 4) surface.data.push_back(mask.data[i]);
+    s.samples = 2 * samples;
+    ReferenceShadowPass::Inputs b{in.scene,          in.camera, in.sceneBounds, in.light,
+                                  in.shadowSettings, s,         in.width,       in.height};
+    const FloatImage vb = readTexture(pass.execute(b).visibility, 1);
+    return visibilityDifference(va, vb, surface);
+}
+
+} // namespace fl

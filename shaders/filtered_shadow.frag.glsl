@@ -1,0 +1,111 @@
+#version 450 core
+// PCF / PCSS visibility per eye pixel (renderer/soft/FilteredShadow.h has the method; the CPU
+// reference fl::filteredVisibility does the same operations). Taps are points of the light's
+// unwarped NDC plane, looked up through the provider's warp, compared with the receiver-plane
+// depth along the light's ray through the tap.
+in vec3 vWorld;
+in vec3 vNormal;
+in vec2 vTexcoord;
+
+layout(location = 0) out float oVisibility;
+layout(location = 1) out vec4 oPoint;
+layout(location = 2) out vec4 oNormal;
+
+// The depth texture through a sampler without comparison (stored depths are read).
+layout(binding = 4) uniform sampler2D uDepth;
+uniform mat4 uLightView;
+uniform mat4 uLightProj;
+uniform mat4 uInvLightProj;
+uniform mat4 uShadowWarp;
+uniform int uPcss; // 0 PCF, 1 PCSS
+uniform vec3 uDiskCenter;
+uniform float uDiskRadius;
+uniform float uSearchDepth;
+uniform int uTapCount;
+uniform vec2 uTaps[225];
+uniform int uBlockerCount;
+uniform vec2 uBlockerTaps[64];
+
+// View-space point of NDC (x, y, z) of the light.
+vec3 unproject(vec3 ndc) {
+    vec4 v = uInvLightProj * vec4(ndc, 1.0);
+    return v.xyz / v.w;
+}
+
+// Light-view depth (distance along the light's axis) of a stored window-space depth.
+float viewDepth(float z) { return -unproject(vec3(0.0, 0.0, 2.0 * z - 1.0)).z; }
+
+// One tap at light NDC point s for the receiver plane (pv, nv) in view space: x = 1 lit,
+// 0 shadowed; y = the stored depth (1 when off the map).
+vec2 tap(vec2 s, vec3 pv, vec3 nv, float receiverNdcZ) {
+    vec4 m = uShadowWarp * vec4(s, receiverNdcZ, 1.0);
+    if (m.w <= 0.0) return vec2(1.0, 1.0);
+    vec2 uv = m.xy / m.w * 0.5 + 0.5;
+    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return vec2(1.0, 1.0);
+    ivec2 size = textureSize(uDepth, 0);
+    ivec2 texel = clamp(ivec2(floor(uv * vec2(size))), ivec2(0), size - 1);
+    float stored = texelFetch(uDepth, texel, 0).r;
+    // The light's ray through s: from its near-plane point to its far-plane point.
+    vec3 a = unproject(vec3(s, -1.0));
+    vec3 b = unproject(vec3(s, 1.0));
+    float den = dot(nv, b - a);
+    float ref = receiverNdcZ * 0.5 + 0.5;
+    if (abs(den) > 1e-6 * length(b - a)) {
+        float t = dot(nv, pv - a) / den;
+        if (t > 0.0 && t < 1.0) {
+            vec4 c = uLightProj * vec4(a + t * (b - a), 1.0);
+            ref = c.z / c.w * 0.5 + 0.5;
+        }
+    }
+    return vec2(ref <= stored ? 1.0 : 0.0, stored);
+}
+
+// Centre (NDC xy) and NDC radii of the disk light seen from pv through the plane at depth d.
+vec4 diskThrough(vec3 pv, vec3 cv, float d) {
+    float dR = -pv.z, dC = -cv.z;
+    float k = (dR - d) / max(dR - dC, 1e-6);
+    vec3 x = pv + (cv - pv) * k;
+    vec4 clip = uLightProj * vec4(x, 1.0);
+    float r = uDiskRadius * max(k, 0.0);
+    return vec4(clip.xy / clip.w, vec2(uLightProj[0][0], uLightProj[1][1]) * r / clip.w);
+}
+
+float filtered(vec3 world, vec3 n) {
+    vec3 pv = (uLightView * vec4(world, 1.0)).xyz;
+    vec3 nv = mat3(uLightView) * n;
+    vec4 clip = uLightProj * vec4(pv, 1.0);
+    if (clip.w <= 0.0) return 1.0;
+    vec3 ndc = clip.xyz / clip.w;
+    if (uPcss == 0) {
+        float lit = 0.0;
+        for (int i = 0; i < uTapCount; ++i) lit += tap(ndc.xy + uTaps[i], pv, nv, ndc.z).x;
+        return lit / float(uTapCount);
+    }
+    vec3 cv = (uLightView * vec4(uDiskCenter, 1.0)).xyz;
+    // Blocker search: the disk seen through the nearest plane an occluder can lie in.
+    vec4 search = diskThrough(pv, cv, uSearchDepth);
+    float blockers = 0.0, depthSum = 0.0;
+    for (int i = 0; i < uBlockerCount; ++i) {
+        vec2 r = tap(search.xy + search.zw * uBlockerTaps[i], pv, nv, ndc.z);
+        if (r.x == 0.0) {
+            blockers += 1.0;
+            depthSum += viewDepth(r.y);
+        }
+    }
+    if (blockers == 0.0) return 1.0;
+    // Filter: the disk seen through the mean blocker depth (penumbra by similar triangles).
+    vec4 f = diskThrough(pv, cv, depthSum / blockers);
+    float lit = 0.0;
+    for (int i = 0; i < uTapCount; ++i) lit += tap(f.xy + f.zw * uTaps[i], pv, nv, ndc.z).x;
+    return lit / float(uTapCount);
+}
+
+void main() {
+    // The receiver plane from the triangle (screen derivatives; its orientation does not matter,
+    // only the plane is used). Degenerate derivatives fall back to the shading normal.
+    vec3 n = cross(dFdx(vWorld), dFdy(vWorld));
+    n = length(n) > 0.0 ? normalize(n) : normalize(vNormal);
+    oVisibility = filtered(vWorld, n);
+    oPoint = vec4(vWorld, 1.0);
+    oNormal = vec4(n, 0.0);
+}

@@ -1,0 +1,15 @@
+#version 450 core
+// Ground truth, one disk sample: the hard visibility of each eye pixel's surface from this
+// sample's depth map (the same test as every method's hardShadow()), added to the sum by
+// additive blending.
+#include "shadow_lookup.glsl"
+
+layout(binding = 0) uniform sampler2D uPoints;
+
+layout(location = 0) out float oLit;
+
+void main() {
+    vec4 p = texelFetch(uPoints, ivec2(gl_FragCoord.xy), 0);
+    if (p.w == 0.0) discard;
+    oLit = hardShadow(p.xyz);
+}

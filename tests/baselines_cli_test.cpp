@@ -1,0 +1,72 @@
+// The floodlight binary with the baseline methods (pcf, pcss, reference): they render, and their
+// options reject bad values with a usage error naming the option.
+
+#include "TestPaths.h"
+
+#include <renderer/ImageIO.h>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <sys/wait.h>
+
+namespace fl::test {
+namespace {
+
+struct Outcome {
+    int code;
+    std::string output; // stdout and stderr together
+};
+
+Outcome run(const std::string& args) {
+    const std::string cmd = std::string(FLOODLIGHT_BINARY) + " " + args + " 2>&1";
+    FILE* pipe = popen(cmd.c_str(), "r");
+    if (!pipe) return {-1, "popen failed"};
+    std::string out;
+    std::array<char, 4096> buf{};
+    while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) out.append(buf.data(), n);
+    const int status = pclose(pipe);
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), out};
+}
+
+TEST(BaselinesCli, EachBaselineRendersWithItsPhases) {
+    const auto dir = outputDir("cli_baselines");
+    struct Case {
+        const char* args;
+        const char* phase; // printed by the timer
+    };
+    for (const Case& c :
+         {Case{"--method pcf --pcf-kernel 5", "pcf filter"},
+          Case{"--method pcss --pcss-preset 32/64 --shadow-map tsm", "blocker search+filter"},
+          Case{"--method reference --reference-samples 4 --reference-map-size 256",
+               "reference maps"}}) {
+        const Outcome r =
+            run(std::string("render --width 64 --height 48 --shadow-map-size 256 ") +
+                "--light-radius 1.5 " + c.args + " --out " + dir.string() + " --name f");
+        ASSERT_EQ(r.code, 0) << c.args << "\n" << r.output;
+        EXPECT_NE(r.output.find(c.phase), std::string::npos) << c.args << "\n" << r.output;
+        int w = 0, h = 0;
+        for (const ExrChannel& ch : readExr(dir / "f.exr", w, h))
+            for (float v : ch.values) ASSERT_TRUE(std::isfinite(v)) << c.args << " " << ch.name;
+        EXPECT_EQ(w, 64);
+        EXPECT_EQ(h, 48);
+    }
+}
+
+TEST(BaselinesCli, BadBaselineOptionsAreUsageErrors) {
+    for (const char* args :
+         {"--pcf-kernel 0", "--pcf-kernel 16", "--pcf-kernel x", "--pcss-preset 8/8",
+          "--pcss-preset 16", "--reference-samples 0", "--reference-samples -3",
+          "--reference-map-size 8", "--reference-map-size 100000"}) {
+        const Outcome r =
+            run(std::string("render ") + args + " --out " + outputDir("cli_baselines").string());
+        EXPECT_EQ(r.code, 2) << args << "\n" << r.output;
+        const std::string option = std::string(args).substr(0, std::string(args).find(' '));
+        EXPECT_NE(r.output.find(option), std::string::npos) << args << "\n" << r.output;
+    }
+}
+
+} // namespace
+} // namespace fl::test

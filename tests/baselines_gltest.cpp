@@ -1,0 +1,263 @@
+// The baselines on the GPU: PCF and PCSS against their CPU reference on both shadow-map
+// providers, the ground truth against hard shadows (N = 1, radius 0) and against a CPU ray cast
+// to the same disk samples, its sampling error shrinking with N, and the goldens.
+
+#include "GlTest.h"
+#include "ImageCompare.h"
+#include "TestPaths.h"
+#include "TestScenes.h"
+
+#include <renderer/Capture.h>
+#include <renderer/GltfLoader.h>
+#include <renderer/Renderer.h>
+#include <renderer/soft/FilteredShadow.h>
+#include <renderer/soft/ReferenceShadow.h>
+
+#include <cmath>
+#include <cstdio>
+
+namespace fl::test {
+namespace {
+
+class BaselinesTest : public GlTest {};
+
+const std::filesystem::path kDefaultAsset =
+    std::filesystem::path(FLOODLIGHT_SOURCE_DIR) / "assets" / "default.glb";
+// As penumbra_gltest: the default light's own radius casts penumbrae under a texel.
+constexpr float kTestRadius = 1.5f;
+
+FrameImages renderDefault(ShadowMethod method, float radius, int mapSize,
+                          const ReferenceSettings& reference = {}, int size = 256) {
+    Scene scene = loadGltf(kDefaultAsset);
+    scene.light->radius = radius;
+    const ShaderLibrary shaders;
+    RenderSettings settings;
+    settings.shadow.size = mapSize;
+    settings.method = method;
+    settings.reference = reference;
+    Renderer r(shaders, scene, settings);
+    r.resize(size, size);
+    r.render(makeCameraView(scene, {}, 1.0f));
+    return readFrame(r);
+}
+
+// PCF / PCSS on the GPU against filteredVisibility() on the CPU, per pixel, from the read-back
+// shadow map and the pass' own per-pixel inputs (position, receiver normal). The CPU rounds
+// differently (no fused multiply-add, its own matrix products), which can flip a tap whose
+// reference depth is within rounding of the stored depth or whose coordinate is within rounding
+// of a texel edge: one flipped PCF tap moves a pixel by 1/taps, a flipped PCSS blocker moves the
+// filter radius too. So: at most 0.5% of surface pixels may differ by more than 1e-5, and the
+// mean difference must stay under 1e-3.
+void compareFilterWithCpu(ShadowMapProvider provider, bool pcss) {
+    Scene scene = loadGltf(kDefaultAsset);
+    scene.light->radius = kTestRadius;
+    const ShaderLibrary shaders;
+    const GpuScene gpu(scene);
+    const Light light = sceneLight(scene);
+    const DiskLight disk = makeDiskLight(light, scene.bounds);
+    const geom::ViewVolume volume = lightVolume(scene, light);
+    const CameraView camera = makeCameraView(scene, {}, 1.0f);
+    ShadowMapSettings ss;
+    ss.size = 512;
+    ss.provider = provider;
+    ShadowMapPass shadowPass(shaders);
+    const ShadowMapPass::Outputs shadow =
+        shadowPass.execute({gpu, volume, ss, camera.view, camera.proj, scene.bounds, false});
+    FilteredShadowSettings fs;
+    fs.pcfKernel = 5;
+    fs.pcss = PcssPreset{16, 24};
+    FilteredShadowPass pass(shaders);
+    const int size = 128;
+    const FilteredShadowPass::Inputs in{gpu, camera, shadow, volume, disk, fs, pcss, size, size};
+    const FilteredShadowPass::Outputs out = pass.execute(in);
+    FilterFrame f = pass.frame(in);
+    f.depth = readDepthMap(shadow.depth);
+    const FloatImage vis = readTexture(out.visibility, 1);
+    const FloatImage points = readTexture(out.points, 4);
+    const FloatImage normals = readTexture(out.normals, 4);
+    std::size_t surface = 0, differ = 0, partial = 0;
+    double sumAbs = 0.0, maxAbs = 0.0;
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            if (points.at(x, y, 3) == 0.0f) continue;
+            ++surface;
+            const glm::vec3 p(points.at(x, y, 0), points.at(x, y, 1), points.at(x, y, 2));
+            const glm::vec3 n(normals.at(x, y, 0), normals.at(x, y, 1), normals.at(x, y, 2));
+            const float cpu = filteredVisibility(f, p, n);
+            const float gpuV = vis.at(x, y, 0);
+            const double d = std::abs(static_cast<double>(cpu) - gpuV);
+            sumAbs += d;
+            maxAbs = std::max(maxAbs, d);
+            differ += d > 1e-5;
+            partial += gpuV > 0.0f && gpuV < 1.0f;
+        }
+    std::printf("%s %s: %zu surface pixels, %zu partial, %zu differ > 1e-5, mean %.2e max %.3f\n",
+                std::string(providerName(provider)).c_str(), pcss ? "pcss" : "pcf", surface,
+                partial, differ, sumAbs / static_cast<double>(surface), maxAbs);
+    ASSERT_GT(surface, 5000u);
+    ASSERT_GT(partial, 200u) << "the view must show filtered edges";
+    EXPECT_LE(static_cast<double>(differ), 0.005 * static_cast<double>(surface));
+    EXPECT_LT(sumAbs / static_cast<double>(surface), 1e-3);
+}
+
+TEST_F(BaselinesTest, PcfMatchesCpuReferenceUniform) {
+    compareFilterWithCpu(ShadowMapProvider::Uniform, false);
+}
+TEST_F(BaselinesTest, PcfMatchesCpuReferenceTsm) {
+    compareFilterWithCpu(ShadowMapProvider::Tsm, false);
+}
+TEST_F(BaselinesTest, PcssMatchesCpuReferenceUniform) {
+    compareFilterWithCpu(ShadowMapProvider::Uniform, true);
+}
+TEST_F(BaselinesTest, PcssMatchesCpuReferenceTsm) {
+    compareFilterWithCpu(ShadowMapProvider::Tsm, true);
+}
+
+TEST_F(BaselinesTest, ReferenceWithOneSampleIsTheHardShadow) {
+    ReferenceSettings rs;
+    rs.samples = 1;
+    rs.mapSize = 512; // the hard method's map size: the same map
+    const FrameImages hard = renderDefault(ShadowMethod::Hard, kTestRadius, 512, {}, 128);
+    const FrameImages ref = renderDefault(ShadowMethod::Reference, kTestRadius, 512, rs, 128);
+    EXPECT_EQ(hard.visibility.data, ref.visibility.data);
+}
+
+TEST_F(BaselinesTest, ReferenceWithZeroRadiusIsTheHardShadow) {
+    ReferenceSettings rs;
+    rs.samples = 9;
+    rs.mapSize = 512;
+    const FrameImages hard = renderDefault(ShadowMethod::Hard, 0.0f, 512, {}, 128);
+    const FrameImages ref = renderDefault(ShadowMethod::Reference, 0.0f, 512, rs, 128);
+    EXPECT_EQ(hard.visibility.data, ref.visibility.data);
+    std::size_t shadowed = 0;
+    for (float v : hard.visibility.data) shadowed += v == 0.0f;
+    EXPECT_GT(shadowed, 100u);
+}
+
+// A box on a ground plane under a point light of radius 1: the ground truth per pixel against
+// a CPU ray cast from the pixel's surface point to the same disk samples. Each sample's map
+// decides a point within about a texel (and the depth bias) of a shadow edge differently from
+// the exact ray, so a pixel can be off by a few 1/N; pixels elsewhere must agree exactly.
+struct BoxScene {
+    Scene scene;
+    DiskLight disk;
+    CameraView camera;
+};
+BoxScene boxScene() {
+    BoxScene b;
+    b.scene = groundAndBox(3.0f, {-0.5f, 0.0f, -0.5f}, {0.5f, 1.0f, 0.5f}, {0.3f, -1, 0.2f});
+    b.scene.light->type = Light::Type::Point;
+    b.scene.light->position = {-1.0f, 5.0f, -0.6f};
+    b.scene.light->radius = 1.0f;
+    b.disk = makeDiskLight(*b.scene.light, b.scene.bounds);
+    CameraSpec spec;
+    spec.kind = CameraSpec::Kind::LookAt;
+    spec.eye = {3.0f, 4.0f, 4.5f};
+    b.camera = makeCameraView(b.scene, spec, 1.0f);
+    return b;
+}
+
+TEST_F(BaselinesTest, ReferenceMatchesCpuRayCastToTheSameSamples) {
+    const BoxScene b = boxScene();
+    const ShaderLibrary shaders;
+    const GpuScene gpu(b.scene);
+    ReferenceSettings rs;
+    rs.samples = 16;
+    rs.mapSize = 2048;
+    const ShadowMapSettings ss{};
+    ReferenceShadowPass pass(shaders);
+    const int size = 96;
+    const ReferenceShadowPass::Outputs out =
+        pass.execute({gpu, b.camera, b.scene.bounds, b.disk, ss, rs, size, size});
+    const FloatImage vis = readTexture(out.visibility, 1);
+    const FloatImage points = readTexture(out.points, 4);
+    const std::vector<glm::vec3> samples = referenceDiskSamples(b.disk, rs.samples);
+    std::size_t surface = 0, partial = 0, exact = 0, within = 0;
+    double sumAbs = 0.0;
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            if (points.at(x, y, 3) == 0.0f) continue;
+            ++surface;
+            const glm::vec3 p(points.at(x, y, 0), points.at(x, y, 1), points.at(x, y, 2));
+            float lit = 0.0f;
+            for (const glm::vec3& q : samples) {
+                Light l = *b.scene.light;
+                l.position = q;
+                lit += rayCastVisibility(b.scene, l, p);
+            }
+            const float cpu = lit / static_cast<float>(samples.size());
+            const float d = std::abs(cpu - vis.at(x, y, 0));
+            partial += cpu > 0.0f && cpu < 1.0f;
+            exact += d == 0.0f;
+            within += d <= 2.0f / static_cast<float>(rs.samples) + 1e-6f;
+            sumAbs += d;
+        }
+    std::printf("%zu surface pixels, %zu partial, %zu exact, %zu within 2/N, mean |d| %.4f\n",
+                surface, partial, exact, within, sumAbs / static_cast<double>(surface));
+    ASSERT_GT(partial, 100u) << "the view must show penumbrae";
+    EXPECT_GE(static_cast<double>(exact), 0.95 * static_cast<double>(surface));
+    EXPECT_GE(static_cast<double>(within), 0.995 * static_cast<double>(surface));
+    EXPECT_LT(sumAbs / static_cast<double>(surface), 0.005);
+}
+
+// The estimate converges: N against 2N differs less at N = 16 than at N = 2.
+TEST_F(BaselinesTest, ReferenceSamplingErrorShrinksWithN) {
+    const BoxScene b = boxScene();
+    const ShaderLibrary shaders;
+    const GpuScene gpu(b.scene);
+    ReferenceSettings rs;
+    rs.mapSize = 1024;
+    const ShadowMapSettings ss{};
+    ReferenceShadowPass pass(shaders);
+    const ReferenceShadowPass::Inputs in{gpu, b.camera, b.scene.bounds, b.disk, ss, rs, 64, 64};
+    const VisibilityDifference coarse = referenceSamplingError(pass, in, 2);
+    const VisibilityDifference fine = referenceSamplingError(pass, in, 16);
+    std::printf("N=2 vs 4: rmse %.4f max %.3f; N=16 vs 32: rmse %.4f max %.3f\n", coarse.rmse,
+                coarse.maxAbs, fine.rmse, fine.maxAbs);
+    EXPECT_GT(coarse.rmse, 0.0);
+    EXPECT_LT(fine.rmse, 0.5 * coarse.rmse);
+}
+
+TEST_F(BaselinesTest, BadSettingsAreRejected) {
+    const BoxScene b = boxScene();
+    const ShaderLibrary shaders;
+    const GpuScene gpu(b.scene);
+    ReferenceSettings rs;
+    rs.samples = 0;
+    const ShadowMapSettings ss{};
+    ReferenceShadowPass pass(shaders);
+    EXPECT_THROW((void)pass.execute({gpu, b.camera, b.scene.bounds, b.disk, ss, rs, 16, 16}),
+                 std::invalid_argument);
+    RenderSettings settings;
+    settings.method = ShadowMethod::Pcf;
+    settings.filtered.pcfKernel = 0;
+    Renderer r(shaders, b.scene, settings);
+    r.resize(16, 16);
+    EXPECT_THROW(r.render(b.camera), std::invalid_argument);
+}
+
+// Image regression at 256² with a 512² map, light radius 1.5 (the penumbra goldens' set-up);
+// tolerances as for those goldens: another driver may round shading and flip comparisons at
+// float precision. The ground truth uses 64 samples and 1024² maps to stay a few seconds.
+TEST_F(BaselinesTest, Goldens) {
+    ReferenceSettings rs;
+    rs.samples = 64;
+    rs.mapSize = 1024;
+    for (ShadowMethod m : {ShadowMethod::Pcf, ShadowMethod::Pcss, ShadowMethod::Reference}) {
+        const FrameImages f = renderDefault(m, kTestRadius, 512, rs);
+        const std::string name = "default_256_" + std::string(methodName(m));
+        Tolerance colour;
+        colour.maxAbs = 255;
+        colour.meanAbs = 1.5;
+        colour.pixelThreshold = 16;
+        colour.maxPercentOver = 1.0;
+        const CompareResult c = compareWithGolden(toSrgb8(f.color), name + "_colour", colour);
+        EXPECT_TRUE(c.pass) << c.report;
+        const CompareResult v =
+            compareWithGolden(visibilityToGrey(f.visibility), name + "_visibility", colour);
+        EXPECT_TRUE(v.pass) << v.report;
+    }
+}
+
+} // namespace
+} // namespace fl::test
