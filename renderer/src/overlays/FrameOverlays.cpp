@@ -1,0 +1,259 @@
+// The overlays of the renderer's last frame: shadow map, seeds, penumbra map, the flood pass by
+// pass, the Voronoi diagram / distance transform of the seeds, and JFA vs standard flooding.
+
+#include "OverlayState.h"
+
+#include <renderer/overlays/SiteDiagram.h>
+#include <renderer/soft/EyeSoftShadow.h>
+#include <renderer/soft/PenumbraCriterion.h>
+#include <renderer/soft/PenumbraMap.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+
+namespace fl::overlay {
+
+namespace {
+
+std::string percent(std::int64_t n, std::int64_t total) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3f%%", total > 0 ? 100.0 * double(n) / double(total) : 0.0);
+    return buf;
+}
+
+// Where the soft method of the last frame keeps its seeds and flood: light space (JFA-L,
+// flood-L: the shadow map's grid) or eye space (JFA-E, flood-E: the frame's pixels).
+struct Soft {
+    const gl::Texture* seeds = nullptr;
+    const gl::Texture* flooded = nullptr;
+    const gl::Texture* receivers = nullptr; // light: receiver positions; eye: EyeImage::points
+    const gl::Texture* occluders = nullptr; // eye only
+    bool eye = false;
+    bool standardFlooding = false;
+};
+
+std::optional<Soft> softOf(const Renderer& r) {
+    const ShadowMethod m = r.settings().method;
+    if ((m == ShadowMethod::JfaL || m == ShadowMethod::FloodL) && r.seeds() && r.shadow())
+        return Soft{r.seeds(), r.penumbraMap(), r.shadow()->receivers,
+                    nullptr,   false,           m == ShadowMethod::FloodL};
+    if ((m == ShadowMethod::JfaE || m == ShadowMethod::FloodE) && r.eyeSoft()) {
+        const EyeSoftShadowPass::Outputs& e = *r.eyeSoft();
+        return Soft{&e.seeds, &e.flooded, &e.points, &e.occluders, true, m == ShadowMethod::FloodE};
+    }
+    return std::nullopt;
+}
+
+std::string timing(const SiteDiagram& d) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "GL flood + read-back %.1f ms, exact diagram (CPU) %.1f ms",
+                  d.floodMs, d.exactMs);
+    return buf;
+}
+
+const std::string kNeedsSoft = "needs a soft method's last frame (jfa-l, flood-l, jfa-e, flood-e)";
+
+glm::ivec4 viewportOf(const Soft& soft, const Frame& f) {
+    return soft.eye ? glm::ivec4(0, 0, f.width, f.height) : squareViewport(f.width, f.height);
+}
+
+// The frame's flood plan, with JFA or standard flooding.
+jfa::Plan framePlan(const Renderer& r, const Soft& soft, bool standardFlooding) {
+    const RenderSettings& st = r.settings();
+    if (soft.eye) {
+        const int w = soft.seeds->width(), h = soft.seeds->height();
+        return eyeSoftPlan(std::min(st.penumbra.passes, eyeSoftMaxPasses(w, h)), standardFlooding,
+                           w, h);
+    }
+    PenumbraSettings ps = st.penumbra;
+    ps.standardFlooding = standardFlooding;
+    return penumbraPlan(ps, soft.seeds->width());
+}
+
+// Runs `plan` on the frame's seeds with the frame's criterion; the texture is the kernel's.
+const gl::Texture& floodFrame(State& s, const Renderer& r, const Soft& soft,
+                              const jfa::Plan& plan) {
+    if (soft.eye) {
+        EyeSoftCriterion c;
+        c.light = r.disk();
+        c.objectIdFix = r.settings().eyeSoft.objectIdFix;
+        c.midpointFix = r.settings().eyeSoft.midpointFix;
+        c.pointsTexture = soft.receivers->id();
+        c.occludersTexture = soft.occluders->id();
+        const gl::Texture& out = s.eyeKernel.run(plan, *soft.seeds, c);
+        glBindTextureUnit(2, 0);
+        glBindTextureUnit(3, 0);
+        return out;
+    }
+    PenumbraCriterion c;
+    c.light = r.disk();
+    c.receiverTexture = soft.receivers->id();
+    const gl::Texture& out = s.penumbraKernel.run(plan, *soft.seeds, c);
+    glBindTextureUnit(2, 0);
+    return out;
+}
+
+std::int64_t nonEmpty(const jfa::Grid& g) {
+    return std::count_if(g.cells.begin(), g.cells.end(),
+                         [](const jfa::Cell& c) { return c.w != 0.0f; });
+}
+
+} // namespace
+
+Lines drawShadowMap(State& s, const Frame& f) {
+    const ShadowMapPass::Outputs* sh = f.renderer.shadow();
+    if (!sh) return {"no frame rendered yet"};
+    const glm::ivec4 vp = squareViewport(f.width, f.height);
+    f.bindTarget();
+    s.canvas.drawGrid({GridMode::Depth, &sh->depth}, vp);
+    s.result.viewport = vp;
+    s.result.drawn = true;
+    return {"shadow map " + std::to_string(sh->depth.width()) + "^2 (" +
+                std::string(providerName(sh->provider)) + "), light depth: near bright, far dark",
+            "black: nothing seen"};
+}
+
+Lines drawSeeds(State& s, const Frame& f) {
+    const std::optional<Soft> soft = softOf(f.renderer);
+    if (!soft) return {kNeedsSoft};
+    const glm::ivec4 vp = viewportOf(*soft, f);
+    s.result.grid = jfa::readGrid(*soft->seeds);
+    f.bindTarget();
+    s.canvas.drawGrid({GridMode::Seeds, soft->seeds}, vp);
+    s.result.viewport = vp;
+    s.result.drawn = true;
+    return {std::string(soft->eye ? "boundary seeds (eye space, JFA-E phase 3): "
+                                  : "silhouette seeds (light space, JFA-L phase 2): ") +
+            std::to_string(nonEmpty(s.result.grid)) + " seeds"};
+}
+
+Lines drawPenumbraMap(State& s, const Frame& f) {
+    const std::optional<Soft> soft = softOf(f.renderer);
+    if (!soft) return {kNeedsSoft};
+    const glm::ivec4 vp = viewportOf(*soft, f);
+    s.result.grid = jfa::readGrid(*soft->flooded);
+    GridDraw g{GridMode::Occluder, soft->flooded, soft->receivers};
+    g.eyeSpace = soft->eye;
+    g.light = &f.renderer.disk();
+    f.bindTarget();
+    s.canvas.drawGrid(g, vp);
+    s.result.viewport = vp;
+    s.result.drawn = true;
+    return {std::string(soft->eye ? "eye-space flood (JFA-E phase 4)" : "penumbra map (JFA-L)") +
+                ": " + std::to_string(nonEmpty(s.result.grid)) + " texels hold an occluder",
+            "colour: light fraction from the occluder (dark 0 .. pale 1); grey: none"};
+}
+
+Lines drawFloodPasses(State& s, const Frame& f) {
+    const std::optional<Soft> soft = softOf(f.renderer);
+    if (!soft) return {kNeedsSoft};
+    const jfa::Plan full = framePlan(f.renderer, *soft, soft->standardFlooding);
+    const int total = full.passCount();
+    int& k = f.controls.floodPass;
+    if (k > total) k = total;
+    if (k < -1) k = -1;
+    const int shown = k < 0 ? total : k;
+    const jfa::Plan plan = truncatePlan(full, shown);
+    const gl::Texture& out = floodFrame(s, f.renderer, *soft, plan);
+    s.result.grid = jfa::readGrid(out);
+    const glm::ivec4 vp = viewportOf(*soft, f);
+    GridDraw g{GridMode::Occluder, &out, soft->receivers};
+    g.eyeSpace = soft->eye;
+    g.light = &f.renderer.disk();
+    f.bindTarget();
+    s.canvas.drawGrid(g, vp);
+    s.result.viewport = vp;
+    s.result.drawn = true;
+    const std::vector<int> steps = full.steps();
+    std::string step =
+        shown == 0 ? "seeds only" : "last step " + std::to_string(steps[std::size_t(shown - 1)]);
+    return {full.name() + ": after " + std::to_string(shown) + " of " + std::to_string(total) +
+                " passes (" + step + ")",
+            std::to_string(nonEmpty(s.result.grid)) + " texels hold an occluder"};
+}
+
+Lines drawSiteDiagram(State& s, const Frame& f, bool distance) {
+    const std::optional<Soft> soft = softOf(f.renderer);
+    if (!soft) return {kNeedsSoft};
+    const jfa::Grid sites = sitesFromSeeds(jfa::readGrid(*soft->seeds));
+    const jfa::Plan plan = variantPlan(f.controls.variant, sites.width, sites.height);
+    SiteDiagram d = floodSites(s.siteKernel, plan, sites);
+    const gl::Texture grid = jfa::uploadGrid(d.flooded);
+    const gl::Texture mask = uploadMask(d.errors, sites.width, sites.height);
+    GridDraw g{distance ? GridMode::Distance : GridMode::Voronoi, &grid, nullptr, &mask};
+    g.scale = std::max(d.maxDistance, 1.0f);
+    const glm::ivec4 vp = viewportOf(*soft, f);
+    f.bindTarget();
+    s.canvas.drawGrid(g, vp);
+    s.result.grid = std::move(d.flooded);
+    s.result.mask = std::move(d.errors);
+    s.result.count = d.errorCount;
+    s.result.viewport = vp;
+    s.result.drawn = true;
+    return {std::string(distance ? "distance transform" : "Voronoi diagram") + " of the " +
+                std::to_string(d.sites) + (soft->eye ? " boundary" : " silhouette") + " seeds, " +
+                plan.describe(),
+            "errors vs exact (red): " + std::to_string(d.errorCount) + " (" +
+                percent(d.errorCount, std::int64_t(sites.cells.size())) + ")",
+            timing(d)};
+}
+
+Lines drawJfaVsFlood(State& s, const Frame& f) {
+    const std::optional<Soft> soft = softOf(f.renderer);
+    if (!soft) return {kNeedsSoft};
+    // The other method's flood of the same seeds: JFA for a flood-L/E frame, else standard
+    // flooding (2^passes - 1 step-1 passes: the cost of this overlay, see the benchmarks).
+    const jfa::Plan plan = framePlan(f.renderer, *soft, !soft->standardFlooding);
+    // Everything the reference flood depends on besides the seeds: the camera (eye-space
+    // points), the shadow map's matrices (receivers), the light, the plan and the criterion.
+    std::vector<float> key;
+    const auto add = [&](const float* v, std::size_t n) { key.insert(key.end(), v, v + n); };
+    const ShadowMapPass::Outputs& sh = *f.renderer.shadow();
+    for (const glm::mat4* m : {&f.camera.view, &f.camera.proj, &sh.lightViewProj, &sh.warp})
+        add(&(*m)[0][0], 16);
+    const DiskLight& disk = f.renderer.disk();
+    add(&disk.center.x, 3);
+    add(&disk.normal.x, 3);
+    key.push_back(disk.radius);
+    key.push_back(float(plan.passCount()));
+    key.push_back(soft->eye ? 1.0f : 0.0f);
+    key.push_back(f.renderer.settings().eyeSoft.objectIdFix ? 1.0f : 0.0f);
+    key.push_back(f.renderer.settings().eyeSoft.midpointFix ? 1.0f : 0.0f);
+    jfa::Grid seeds = jfa::readGrid(*soft->seeds);
+    ReferenceCache& cache = s.reference;
+    const bool reused = cache.key == key && cache.seeds == seeds;
+    if (!reused) {
+        const auto t0 = std::chrono::steady_clock::now();
+        cache.reference = jfa::readGrid(floodFrame(s, f.renderer, *soft, plan));
+        cache.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                       .count();
+        cache.texture = jfa::uploadGrid(cache.reference);
+        cache.key = std::move(key);
+        cache.seeds = std::move(seeds);
+    }
+    const gl::Texture& other = cache.texture;
+    const double ms = cache.ms;
+    s.result.reference = cache.reference;
+    s.result.grid = jfa::readGrid(*soft->flooded);
+    s.result.mask.assign(s.result.grid.cells.size(), 0);
+    for (std::size_t i = 0; i < s.result.mask.size(); ++i)
+        s.result.mask[i] = s.result.grid.cells[i] == s.result.reference.cells[i] ? 0 : 1;
+    s.result.count = std::count(s.result.mask.begin(), s.result.mask.end(), std::uint8_t(1));
+    const glm::ivec4 vp = viewportOf(*soft, f);
+    f.bindTarget();
+    s.canvas.drawGrid({GridMode::Diff, soft->flooded, &other}, vp);
+    s.result.viewport = vp;
+    s.result.drawn = true;
+    char msText[32];
+    std::snprintf(msText, sizeof msText, "%.1f ms", ms);
+    return {std::string("frame's ") + (soft->standardFlooding ? "flood" : "JFA") + " vs " +
+                plan.name() + ": " + std::to_string(s.result.count) +
+                " texels hold another "
+                "occluder (" +
+                percent(s.result.count, std::int64_t(s.result.mask.size())) + ")",
+            "red: differ; grey: same occluder; reference flood + read-back took " +
+                std::string(msText) + (reused ? " (reused: same seeds and view)" : "")};
+}
+
+} // namespace fl::overlay

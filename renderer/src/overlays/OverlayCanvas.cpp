@@ -1,0 +1,125 @@
+#include <renderer/overlays/OverlayCanvas.h>
+
+#include <renderer/soft/PenumbraCriterion.h>
+
+#include <algorithm>
+#include <array>
+
+namespace fl::overlay {
+
+namespace {
+
+// Saves what the overlays change (viewport, depth test, blending, point size) and restores it.
+class StateGuard {
+  public:
+    StateGuard() {
+        glGetIntegerv(GL_VIEWPORT, viewport_.data());
+        depth_ = glIsEnabled(GL_DEPTH_TEST);
+        blend_ = glIsEnabled(GL_BLEND);
+        pointSize_ = glIsEnabled(GL_PROGRAM_POINT_SIZE);
+        glGetIntegerv(GL_CURRENT_PROGRAM, &program_);
+        glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vao_);
+        glDisable(GL_DEPTH_TEST);
+        glDisable(GL_BLEND);
+    }
+    StateGuard(const StateGuard&) = delete;
+    StateGuard& operator=(const StateGuard&) = delete;
+    ~StateGuard() {
+        glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
+        if (depth_) glEnable(GL_DEPTH_TEST);
+        if (blend_) glEnable(GL_BLEND);
+        if (pointSize_)
+            glEnable(GL_PROGRAM_POINT_SIZE);
+        else
+            glDisable(GL_PROGRAM_POINT_SIZE);
+        glUseProgram(GLuint(program_));
+        glBindVertexArray(GLuint(vao_));
+    }
+
+  private:
+    std::array<GLint, 4> viewport_{};
+    GLboolean depth_ = GL_FALSE, blend_ = GL_FALSE, pointSize_ = GL_FALSE;
+    GLint program_ = 0, vao_ = 0;
+};
+
+} // namespace
+
+glm::ivec4 squareViewport(int w, int h) {
+    const int side = std::max(1, std::min(w, h));
+    return {(w - side) / 2, (h - side) / 2, side, side};
+}
+
+gl::Texture uploadMask(const std::vector<std::uint8_t>& mask, int width, int height) {
+    gl::Texture t(GL_R8, width, height);
+    std::vector<std::uint8_t> bytes(mask.size());
+    std::transform(mask.begin(), mask.end(), bytes.begin(),
+                   [](std::uint8_t v) { return std::uint8_t(v ? 255 : 0); });
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTextureSubImage2D(t.id(), 0, 0, 0, width, height, GL_RED, GL_UNSIGNED_BYTE, bytes.data());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    return t;
+}
+
+OverlayCanvas::OverlayCanvas(const ShaderLibrary& shaders)
+    : grid_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
+                                         {GL_FRAGMENT_SHADER, "overlay_grid.frag.glsl"}})),
+      lines_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "overlay_lines.vert.glsl"},
+                                          {GL_FRAGMENT_SHADER, "overlay_lines.frag.glsl"}})),
+      emptyVao_(gl::VertexArray::create()), linesVao_(gl::VertexArray::create()) {
+    GLuint s = 0;
+    glCreateSamplers(1, &s);
+    nearest_ = gl::Handle<gl::detail::SamplerDeleter>(s);
+    glSamplerParameteri(s, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glSamplerParameteri(s, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glSamplerParameteri(s, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    glEnableVertexArrayAttrib(linesVao_.id(), 0);
+    glEnableVertexArrayAttrib(linesVao_.id(), 1);
+    glVertexArrayAttribFormat(linesVao_.id(), 0, 2, GL_FLOAT, GL_FALSE, offsetof(Vertex, ndc));
+    glVertexArrayAttribFormat(linesVao_.id(), 1, 4, GL_FLOAT, GL_FALSE, offsetof(Vertex, colour));
+    glVertexArrayAttribBinding(linesVao_.id(), 0, 0);
+    glVertexArrayAttribBinding(linesVao_.id(), 1, 0);
+}
+
+void OverlayCanvas::drawGrid(const GridDraw& g, glm::ivec4 viewport) const {
+    if (g.a == nullptr) return;
+    StateGuard guard;
+    glViewport(viewport.x, viewport.y, viewport.z, viewport.w);
+    grid_.set("uMode", int(g.mode));
+    glProgramUniform4i(grid_.id(), grid_.location("uViewport"), viewport.x, viewport.y, viewport.z,
+                       viewport.w);
+    grid_.set("uScale", std::max(g.scale, 1e-6f));
+    grid_.set("uLightSpace", g.lightSpace ? 1 : 0);
+    grid_.set("uEyeSpace", g.eyeSpace ? 1 : 0);
+    grid_.set("uWarp", g.warp);
+    if (g.light != nullptr) setDiskLightUniforms(grid_, *g.light);
+    const std::array<const gl::Texture*, 3> units{g.a, g.b != nullptr ? g.b : g.a,
+                                                  g.c != nullptr ? g.c : nullptr};
+    for (GLuint u = 0; u < 3; ++u) {
+        glBindTextureUnit(u, units[u] != nullptr ? units[u]->id() : 0);
+        glBindSampler(u, nearest_.id());
+    }
+    glUseProgram(grid_.id());
+    glBindVertexArray(emptyVao_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    for (GLuint u = 0; u < 3; ++u) {
+        glBindTextureUnit(u, 0);
+        glBindSampler(u, 0);
+    }
+}
+
+void OverlayCanvas::drawVertices(std::span<const Vertex> vertices, GLenum primitive,
+                                 glm::ivec4 viewport, float pointSize) const {
+    if (vertices.empty()) return;
+    StateGuard guard;
+    glViewport(viewport.x, viewport.y, viewport.z, viewport.w);
+    const gl::Buffer buffer(GLsizeiptr(vertices.size_bytes()), vertices.data());
+    glVertexArrayVertexBuffer(linesVao_.id(), 0, buffer.id(), 0, sizeof(Vertex));
+    glEnable(GL_PROGRAM_POINT_SIZE);
+    lines_.set("uPointSize", pointSize);
+    glUseProgram(lines_.id());
+    glBindVertexArray(linesVao_.id());
+    glDrawArrays(primitive, 0, GLsizei(vertices.size()));
+    glVertexArrayVertexBuffer(linesVao_.id(), 0, 0, 0, sizeof(Vertex));
+}
+
+} // namespace fl::overlay

@@ -1,0 +1,66 @@
+// `floodlight render --overlay NAME`: writes the overlay picture beside the frame, rejects an
+// unknown name with one clear message.
+
+#include "TestPaths.h"
+
+#include <renderer/ImageIO.h>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <sys/wait.h>
+
+namespace fl::test {
+namespace {
+
+struct Outcome {
+    int code;
+    std::string output; // stdout and stderr together
+};
+
+Outcome run(const std::string& args) {
+    const std::string cmd = std::string(FLOODLIGHT_BINARY) + " " + args + " 2>&1";
+    FILE* pipe = popen(cmd.c_str(), "r");
+    if (!pipe) return {-1, "popen failed"};
+    std::string out;
+    std::array<char, 4096> buf{};
+    while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) out.append(buf.data(), n);
+    const int status = pclose(pipe);
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), out};
+}
+
+TEST(OverlayCli, RenderWritesTheOverlayPicture) {
+    const auto dir = outputDir("overlay_cli");
+    const auto png = dir / "f.overlay-voronoi.png";
+    std::filesystem::remove(png);
+    const Outcome r = run("render --width 64 --height 48 --shadow-map-size 128 --method jfa-l "
+                          "--overlay voronoi --variant 1 --name f --out " +
+                          dir.string());
+    ASSERT_EQ(r.code, 0) << r.output;
+    EXPECT_NE(r.output.find("Voronoi diagram of the"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("JFA+1"), std::string::npos) << r.output;
+    const ByteImage img = readPng(png);
+    EXPECT_EQ(img.width, 64);
+    EXPECT_EQ(img.height, 48);
+}
+
+TEST(OverlayCli, UnknownOverlayIsOneClearError) {
+    const auto dir = outputDir("overlay_cli");
+    const Outcome r = run("render --width 32 --height 32 --overlay bogus --out " + dir.string());
+    EXPECT_NE(r.code, 0) << r.output;
+    EXPECT_NE(r.output.find("unknown overlay 'bogus'"), std::string::npos) << r.output;
+}
+
+TEST(OverlayCli, HardFrameSaysWhatTheOverlayNeeds) {
+    const auto dir = outputDir("overlay_cli");
+    const Outcome r = run("render --width 32 --height 32 --shadow-map-size 64 --overlay seeds "
+                          "--name h --out " +
+                          dir.string());
+    EXPECT_EQ(r.code, 0) << r.output;
+    EXPECT_NE(r.output.find("needs a soft method"), std::string::npos) << r.output;
+}
+
+} // namespace
+} // namespace fl::test
