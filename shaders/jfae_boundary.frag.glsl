@@ -1,6 +1,6 @@
 #version 450 core
 // JFA-E phase 3 (thesis §5.4.1, "Locating Occluders"): a pixel in hard shadow is a boundary
-// pixel if one of its 8 neighbours is lit and nearer in 3D than the threshold (a lit pixel
+// pixel if one of its 8 neighbours is lit by the depth test (w = 0, not "outside the map") and nearer in 3D than the threshold (a lit pixel
 // across a depth jump is another surface, not the other side of a shadow edge). A boundary
 // pixel becomes a seed: its occluder's position, and w = its pixel index + 1 (the midpoint
 // check needs to know where an occluder entered the flood; its object id is read there too).

@@ -1,7 +1,7 @@
 #version 450 core
 // JFA-E phase 2 (thesis §5.4.1, "Generating Hard Shadows"): the scene from the camera, storing
-// per pixel its world position with the hard-shadow flag in alpha (1 shadowed, 0 lit; the clear
-// value -1 marks background), and its occluder: the surface the light's centre sees at the
+// per pixel its world position with the hard-shadow flag in alpha (1 shadowed, 0 lit, 2 lit
+// because outside the shadow map; the clear value -1 marks background), and its occluder: the surface the light's centre sees at the
 // pixel's shadow-map texel (the receiver position the shadow pass stored there) with that
 // surface's object id. Phase 3 records the occluder of boundary pixels from here, so a boundary
 // pixel's occluder is by construction the surface that puts it in hard shadow, not a guess from
@@ -22,10 +22,14 @@ layout(location = 1) out vec4 oOccluder;
 void main() {
     // The same test as forward shading's hardShadow(), so radius 0 reproduces it exactly.
     float lit = hardShadow(vWorld);
-    oPoint = vec4(vWorld, lit < 0.5 ? 1.0 : 0.0);
     vec3 uvz;
+    bool inMap = shadowCoord(vWorld, uvz);
+    // Lit outside the map (2) is lit by convention, not by a depth test: it is no evidence of a
+    // shadow edge, so phase 3 does not count it (a light inside an object would otherwise get a
+    // false penumbra along the edge of the map's coverage).
+    oPoint = vec4(vWorld, lit < 0.5 ? 1.0 : (inMap ? 0.0 : 2.0));
     oOccluder = vec4(0.0, 0.0, 0.0, -1.0);
-    if (shadowCoord(vWorld, uvz)) {
+    if (inMap) {
         // The texel a NEAREST lookup of uShadowMap reads.
         ivec2 size = textureSize(uReceivers, 0);
         ivec2 t = clamp(ivec2(uvz.xy * vec2(size)), ivec2(0), size - 1);

@@ -47,7 +47,8 @@ inline constexpr float kBoundaryFootprints = 6.0f;
 struct EyeImage {
     int width = 0;
     int height = 0;
-    /// xyz world position; w = 1 in hard shadow, 0 lit, -1 no surface (background).
+    /// xyz world position; w = 1 in hard shadow, 0 lit, 2 lit because outside the shadow map
+    /// (no evidence of a shadow edge for phase 3), -1 no surface (background).
     std::vector<glm::vec4> points;
     /// xyz the occluder point (shadow-map receiver at the pixel's texel); w its object id, -1
     /// when unknown (no surface, outside the map, or the object-ID fix is off).

@@ -1,0 +1,126 @@
+// Soft shadows on bad or extreme input (issue 5): a huge disk light and a light inside an
+// object give finite visibility in [0, 1] from every method, with the answers that can be known.
+
+#include "GlTest.h"
+#include "TestScenes.h"
+
+#include <renderer/Capture.h>
+#include <renderer/Renderer.h>
+
+#include <cmath>
+#include <iostream>
+
+namespace fl::test {
+namespace {
+
+class SoftBadInputTest : public GlTest {};
+
+constexpr ShadowMethod kSoftMethods[] = {ShadowMethod::JfaL, ShadowMethod::FloodL,
+                                         ShadowMethod::JfaE, ShadowMethod::FloodE};
+
+// A unit box on a 6 x 6 ground, a spot light above it looking down, a camera from the side.
+Scene spotScene(glm::vec3 lightPosition, float radius) {
+    Scene scene = groundAndBox(3.0f, {-0.5f, 0.0f, -0.5f}, {0.5f, 1.0f, 0.5f}, {0.3f, -1, 0.2f});
+    scene.light->type = Light::Type::Spot;
+    scene.light->position = lightPosition;
+    scene.light->direction = glm::normalize(glm::vec3(0.1f, -1.0f, 0.05f));
+    scene.light->radius = radius;
+    return scene;
+}
+
+CameraView sideCamera(const Scene& scene) {
+    CameraSpec spec;
+    spec.kind = CameraSpec::Kind::LookAt;
+    spec.eye = {3.0f, 3.5f, 4.5f};
+    spec.target = {0.0f, 0.3f, 0.0f};
+    return makeCameraView(scene, spec, 1.0f);
+}
+
+FrameImages renderFrame(const Scene& scene, ShadowMethod method) {
+    const ShaderLibrary shaders;
+    RenderSettings settings;
+    settings.shadow.size = 256;
+    settings.method = method;
+    Renderer r(shaders, scene, settings);
+    r.resize(64, 64);
+    r.render(sideCamera(scene));
+    return readFrame(r);
+}
+
+FloatImage renderVisibility(const Scene& scene, ShadowMethod method) {
+    return renderFrame(scene, method).visibility;
+}
+
+void expectFiniteUnit(const FloatImage& v, std::string_view what) {
+    for (float x : v.data) {
+        ASSERT_TRUE(std::isfinite(x)) << what;
+        ASSERT_GE(x, 0.0f) << what;
+        ASSERT_LE(x, 1.0f) << what;
+    }
+}
+
+// A disk far larger than the scene: every occluder's ray reaches it, so every pixel the flood
+// covers gets an intensity, and the composites must stay finite and in [0, 1]. What cannot be
+// kept is the width of the penumbra (wider than the 63-texel reach): the flooded region ends
+// there. JFA-L keeps the hard-shadow pixels at 0 (thesis §5.3.1: "hard-shadowed -> 0"), so the
+// count of zeros equals the hard method's.
+TEST_F(SoftBadInputTest, HugeLightRadiusStaysFiniteAndKeepsTheUmbra) {
+    const Scene huge = spotScene({0.3f, 6.0f, 0.2f}, 1.0e4f);
+    const FloatImage hard = renderVisibility(huge, ShadowMethod::Hard);
+    std::size_t hardZeros = 0;
+    for (float x : hard.data) hardZeros += x == 0.0f;
+    ASSERT_GT(hardZeros, 0u) << "the test view must see the box's hard shadow";
+    for (ShadowMethod m : kSoftMethods) {
+        const FloatImage v = renderVisibility(huge, m);
+        expectFiniteUnit(v, methodName(m));
+        if (m == ShadowMethod::JfaL || m == ShadowMethod::FloodL) {
+            std::size_t zeros = 0;
+            for (float x : v.data) zeros += x == 0.0f;
+            EXPECT_EQ(zeros, hardZeros) << methodName(m);
+        }
+        // A disk of radius 1e4 around a point 6 units above a unit box: any lit pixel near the
+        // box sees the box cover part of the disk, so some pixels must be partly lit.
+        std::size_t partial = 0;
+        for (float x : v.data) partial += x > 0.0f && x < 1.0f;
+        EXPECT_GT(partial, 0u) << methodName(m);
+    }
+}
+
+// The light inside the box: every ray from outside to the light crosses the box, so every
+// light-facing surface outside it is in the umbra. JFA-L and flood-L must give exactly the hard
+// shadows (no silhouette exists in a map that sees only the box's inside).
+// JFA-E has a known limitation here, measured and bounded rather than hidden: the box's faces
+// pass the depth test (each is its own nearest surface to the light) while facing away from it,
+// and the thesis' boundary test (a shadowed pixel with a lit neighbour) has no facing condition,
+// so the ground pixels touching the box's base become boundary seeds and get a penumbra: 32 of
+// the 4,096 pixels' colours differ (one pixel wide along the base). A facing condition removes
+// them, but it also removes the default scene's umbra holes that jfae_gltest shows the
+// jump-too-far fixes remove, so it is not applied. The bound is that one-pixel band: fewer than
+// 48 pixels (the base's visible outline is about 40 pixels long at 64²).
+TEST_F(SoftBadInputTest, LightInsideAnObjectShadowsEverythingOutside) {
+    const Scene inside = spotScene({0.0f, 0.5f, 0.0f}, 0.2f);
+    const FrameImages hard = renderFrame(inside, ShadowMethod::Hard);
+    expectFiniteUnit(hard.visibility, "hard");
+    std::size_t zeros = 0;
+    for (float x : hard.visibility.data) zeros += x == 0.0f;
+    EXPECT_GT(zeros, hard.visibility.data.size() / 8) << "the ground in view must be shadowed";
+    for (ShadowMethod m : kSoftMethods) {
+        const FrameImages f = renderFrame(inside, m);
+        expectFiniteUnit(f.visibility, methodName(m));
+        if (m == ShadowMethod::JfaL || m == ShadowMethod::FloodL) {
+            EXPECT_EQ(f.visibility.data, hard.visibility.data) << methodName(m);
+            EXPECT_EQ(f.color.data, hard.color.data) << methodName(m);
+            continue;
+        }
+        std::size_t differ = 0;
+        for (std::size_t i = 0; i < f.color.data.size(); i += 4)
+            differ += f.color.data[i] != hard.color.data[i] ||
+                      f.color.data[i + 1] != hard.color.data[i + 1] ||
+                      f.color.data[i + 2] != hard.color.data[i + 2];
+        EXPECT_LT(differ, 48u) << methodName(m);
+        std::cout << methodName(m) << " colour differs at " << differ << " pixels\n";
+    }
+}
+
+} // namespace
+} // namespace fl::test
