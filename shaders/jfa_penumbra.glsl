@@ -21,49 +21,15 @@ float penumbraKey(vec3 receiver, vec3 o) {
     return o == receiver ? uintBitsToFloat(0x7f7fffffu) : penumbraHit(receiver, o);
 }
 
-// Memo. The kernel (jfa_select.glsl) calls jfaAccept(p, c) right before jfaBetter(p, c, best),
-// and `best` is the winner of an earlier call at the same p: keeping p's receiver, the key of the
-// last candidate and the key of the last winner spares two of every three texel fetches and
-// penumbraKey evaluations (the criterion, not the kernel, dominated the pass). Keys are looked up
-// by the cell's value, so they are the same numbers recomputing would give: CPU and GL agree bit
-// for bit as before.
-ivec2 gMemoP = ivec2(-1);
-vec4 gMemoReceiver;
-const vec4 kNoCell = vec4(0.0, 0.0, 0.0, -7.0); // equals no cell (w is 0 or 1)
-vec4 gLastCell = kNoCell;
-float gLastKey;
-vec4 gBestCell = kNoCell;
-float gBestKey;
-
-vec4 memoReceiver(ivec2 p) {
-    if (p != gMemoP) {
-        gMemoP = p;
-        gMemoReceiver = texelFetch(uPenumbraPositions, p, 0);
-        gLastCell = kNoCell;
-        gBestCell = kNoCell;
-    }
-    return gMemoReceiver;
-}
-
-float memoKey(ivec2 p, vec4 c) {
-    vec3 r = memoReceiver(p).xyz;
-    if (c == gLastCell) return gLastKey;
-    if (c == gBestCell) return gBestKey;
-    gLastCell = c;
-    gLastKey = penumbraKey(r, c.xyz);
-    return gLastKey;
-}
-
 bool jfaAccept(ivec2 p, vec4 c) {
-    return memoReceiver(p).w != 0.0 && memoKey(p, c) >= 0.0;
+    vec4 receiver = texelFetch(uPenumbraPositions, p, 0);
+    return receiver.w != 0.0 && penumbraKey(receiver.xyz, c.xyz) >= 0.0;
 }
 
 bool jfaBetter(ivec2 p, vec4 a, vec4 b) {
-    float da = memoKey(p, a);
-    float db = memoKey(p, b);
+    vec3 r = texelFetch(uPenumbraPositions, p, 0).xyz;
+    float da = penumbraKey(r, a.xyz);
+    float db = penumbraKey(r, b.xyz);
     bool tieWins = a.x < b.x || (a.x == b.x && (a.y < b.y || (a.y == b.y && a.z < b.z)));
-    bool aWins = da < db || (da == db && tieWins);
-    gBestCell = aWins ? a : b; // the kernel keeps the winner as its best
-    gBestKey = aWins ? da : db;
-    return aWins;
+    return da < db || (da == db && tieWins);
 }

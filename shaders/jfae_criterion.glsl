@@ -25,42 +25,12 @@ bool jfaEmpty(vec4 c) { return c.w == 0.0; }
 // Occluders are not sites at pixels: the half-resolution expansion copies them verbatim.
 ivec2 jfaSeedPixel(vec4 c) { return ivec2(-1); }
 
-// Memo, as in jfa_penumbra.glsl: jfaAccept(p, c) comes right before jfaBetter(p, c, best) and
-// `best` won an earlier call at p, so p's point and the keys of the last candidate and the last
-// winner are kept (looked up by the cell's value: the same numbers, bit for bit).
-ivec2 gMemoP = ivec2(-1);
-vec4 gMemoPoint;
-const vec4 kNoCell = vec4(0.0, 0.0, 0.0, -7.0); // equals no cell (w >= 0)
-vec4 gLastCell = kNoCell;
-float gLastKey;
-vec4 gBestCell = kNoCell;
-float gBestKey;
-
-vec4 memoPoint(ivec2 p) {
-    if (p != gMemoP) {
-        gMemoP = p;
-        gMemoPoint = texelFetch(uEyePoints, p, 0);
-        gLastCell = kNoCell;
-        gBestCell = kNoCell;
-    }
-    return gMemoPoint;
-}
-
-float memoKey(ivec2 p, vec4 c) {
-    vec3 r = memoPoint(p).xyz;
-    if (c == gLastCell) return gLastKey;
-    if (c == gBestCell) return gBestKey;
-    gLastCell = c;
-    gLastKey = penumbraHit(r, c.xyz);
-    return gLastKey;
-}
-
 bool jfaAccept(ivec2 p, vec4 c) {
-    vec4 r = memoPoint(p);
+    vec4 r = texelFetch(uEyePoints, p, 0);
     ivec2 size = textureSize(uEyePoints, 0);
     int index = int(c.w) - 1;
     ivec2 s = ivec2(index % size.x, index / size.x);
-    bool ok = r.w >= 0.0 && memoKey(p, c) >= 0.0;
+    bool ok = r.w >= 0.0 && penumbraHit(r.xyz, c.xyz) >= 0.0;
     if (ok && uObjectIdFix != 0 && r.w == 1.0)
         ok = texelFetch(uEyeOccluders, p, 0).w == texelFetch(uEyeOccluders, s, 0).w;
     if (ok && uMidpointFix != 0) {
@@ -71,13 +41,11 @@ bool jfaAccept(ivec2 p, vec4 c) {
 }
 
 bool jfaBetter(ivec2 p, vec4 a, vec4 b) {
-    float da = memoKey(p, a);
-    float db = memoKey(p, b);
+    vec3 r = texelFetch(uEyePoints, p, 0).xyz;
+    float da = penumbraHit(r, a.xyz);
+    float db = penumbraHit(r, b.xyz);
     bool tieWins = a.x < b.x ||
                    (a.x == b.x && (a.y < b.y || (a.y == b.y && (a.z < b.z ||
                                                                 (a.z == b.z && a.w < b.w)))));
-    bool aWins = da < db || (da == db && tieWins);
-    gBestCell = aWins ? a : b; // the kernel keeps the winner as its best
-    gBestKey = aWins ? da : db;
-    return aWins;
+    return da < db || (da == db && tieWins);
 }
