@@ -8,7 +8,7 @@ packages=(
   libglfw3-dev libglm-dev libtinygltf-dev libopenexr-dev nlohmann-json3-dev libstb-dev
   libepoxy-dev libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
   libgtest-dev libbenchmark-dev libcli11-dev
-  xvfb xauth assimp-testmodels
+  xvfb xauth assimp-testmodels chromium
 )
 
 missing=()

@@ -27,8 +27,13 @@ glm::vec3 catmullRom(glm::vec3 p0, glm::vec3 p1, glm::vec3 p2, glm::vec3 p3, flo
 
 } // namespace
 
-CameraPath::CameraPath(std::vector<CameraKey> keys, float yfovDegrees)
-    : keys_(std::move(keys)), yfovDegrees_(yfovDegrees) {
+const char* interpolationName(PathInterpolation i) {
+    return i == PathInterpolation::Linear ? "linear" : "catmull-rom";
+}
+
+CameraPath::CameraPath(std::vector<CameraKey> keys, float yfovDegrees,
+                       PathInterpolation interpolation)
+    : keys_(std::move(keys)), yfovDegrees_(yfovDegrees), interpolation_(interpolation) {
     if (keys_.size() < 2) throw std::invalid_argument("a camera path needs at least two keys");
     for (std::size_t i = 0; i < keys_.size(); ++i)
         if (glm::length(keys_[i].target - keys_[i].eye) < 1e-6f)
@@ -41,6 +46,11 @@ CameraKey CameraPath::keyAt(float t) const {
     const float u = std::clamp(t, 0.0f, 1.0f) * static_cast<float>(segments);
     const int i = std::min(static_cast<int>(u), segments - 1);
     const float f = u - static_cast<float>(i);
+    if (interpolation_ == PathInterpolation::Linear) {
+        const CameraKey& a = keys_[static_cast<std::size_t>(i)];
+        const CameraKey& b = keys_[static_cast<std::size_t>(i) + 1];
+        return {glm::mix(a.eye, b.eye, f), glm::mix(a.target, b.target, f)};
+    }
     // End keys are mirrored so the curve starts and ends at the first and last key.
     auto at = [&](int k) -> const CameraKey& {
         return keys_[static_cast<std::size_t>(std::clamp(k, 0, segments))];
@@ -109,6 +119,56 @@ glm::vec3 readVec3(const nlohmann::json& j, const std::string& where) {
 
 } // namespace
 
+namespace {
+
+CameraPath cameraPathFromJson(const nlohmann::json& j) {
+    if (!j.is_object()) throw std::runtime_error("expected an object with \"keys\"");
+    float fov = 50.0f;
+    if (j.contains("fov")) {
+        if (!j["fov"].is_number()) throw std::runtime_error("fov: expected a number");
+        fov = j["fov"].get<float>();
+        if (!(fov >= 1.0f && fov <= 170.0f))
+            throw std::runtime_error("fov: must be between 1 and 170 degrees");
+    }
+    PathInterpolation interpolation = PathInterpolation::CatmullRom;
+    if (j.contains("interpolation")) {
+        const nlohmann::json& i = j["interpolation"];
+        if (i == "linear")
+            interpolation = PathInterpolation::Linear;
+        else if (i != "catmull-rom")
+            throw std::runtime_error("interpolation: expected \"catmull-rom\" or \"linear\"");
+    }
+    if (!j.contains("keys") || !j["keys"].is_array())
+        throw std::runtime_error("keys: missing (an array of {eye, target})");
+    std::vector<CameraKey> keys;
+    for (std::size_t i = 0; i < j["keys"].size(); ++i) {
+        const nlohmann::json& k = j["keys"][i];
+        const std::string where = "keys[" + std::to_string(i) + "]";
+        if (!k.is_object() || !k.contains("eye") || !k.contains("target"))
+            throw std::runtime_error(where + ": expected {\"eye\": [..], \"target\": [..]}");
+        keys.push_back(
+            {readVec3(k["eye"], where + ".eye"), readVec3(k["target"], where + ".target")});
+    }
+    if (keys.size() < 2) throw std::runtime_error("keys: at least two keys needed");
+    return CameraPath(std::move(keys), fov, interpolation);
+}
+
+} // namespace
+
+CameraPath parseCameraPath(const std::string& jsonText) {
+    nlohmann::json j;
+    try {
+        j = nlohmann::json::parse(jsonText);
+    } catch (const nlohmann::json::parse_error& e) {
+        throw std::runtime_error(std::string("not valid JSON: ") + e.what());
+    }
+    try {
+        return cameraPathFromJson(j);
+    } catch (const std::invalid_argument& e) {
+        throw std::runtime_error(e.what()); // the constructor's message names the key
+    }
+}
+
 CameraPath readCameraPath(const std::filesystem::path& file) {
     const std::string name = file.string();
     std::ifstream in(file);
@@ -120,26 +180,7 @@ CameraPath readCameraPath(const std::filesystem::path& file) {
         throw std::runtime_error(name + ": not valid JSON: " + e.what());
     }
     try {
-        if (!j.is_object()) throw std::runtime_error("expected an object with \"keys\"");
-        float fov = 50.0f;
-        if (j.contains("fov")) {
-            if (!j["fov"].is_number()) throw std::runtime_error("fov: expected a number");
-            fov = j["fov"].get<float>();
-            if (!(fov >= 1.0f && fov <= 170.0f))
-                throw std::runtime_error("fov: must be between 1 and 170 degrees");
-        }
-        if (!j.contains("keys") || !j["keys"].is_array())
-            throw std::runtime_error("keys: missing (an array of {eye, target})");
-        std::vector<CameraKey> keys;
-        for (std::size_t i = 0; i < j["keys"].size(); ++i) {
-            const nlohmann::json& k = j["keys"][i];
-            const std::string where = "keys[" + std::to_string(i) + "]";
-            if (!k.is_object() || !k.contains("eye") || !k.contains("target"))
-                throw std::runtime_error(where + ": expected {\"eye\": [..], \"target\": [..]}");
-            keys.push_back(
-                {readVec3(k["eye"], where + ".eye"), readVec3(k["target"], where + ".target")});
-        }
-        return CameraPath(std::move(keys), fov);
+        return cameraPathFromJson(j);
     } catch (const std::exception& e) {
         throw std::runtime_error(name + ": " + e.what());
     }
@@ -148,6 +189,7 @@ CameraPath readCameraPath(const std::filesystem::path& file) {
 void writeCameraPath(const std::filesystem::path& file, const CameraPath& path) {
     nlohmann::json j;
     j["fov"] = path.yfovDegrees();
+    j["interpolation"] = interpolationName(path.interpolation());
     j["keys"] = nlohmann::json::array();
     for (const CameraKey& k : path.keys())
         j["keys"].push_back({{"eye", {k.eye.x, k.eye.y, k.eye.z}},

@@ -1,7 +1,8 @@
 #pragma once
 // Smooth camera paths for walkthroughs: keyframes (eye, target) interpolated with centripetal-
-// free uniform Catmull-Rom splines, sampled at a fixed frame count. Measurements of temporal
-// behaviour (TSM continuity, flicker) need a camera that moves smoothly over a static scene.
+// free uniform Catmull-Rom splines (or piecewise linearly), sampled at a fixed frame count.
+// Measurements of temporal behaviour (TSM continuity, flicker) need a camera that moves smoothly
+// over a static scene.
 
 #include <renderer/Scene.h>
 #include <renderer/passes/ForwardPass.h>
@@ -16,11 +17,17 @@ struct CameraKey {
     glm::vec3 target{0.0f};
 };
 
+/// How the path runs between keys: a C1 spline, or straight segments (kinks at the keys).
+enum class PathInterpolation { CatmullRom, Linear };
+/// "catmull-rom" or "linear".
+const char* interpolationName(PathInterpolation i);
+
 class CameraPath {
   public:
     /// At least two keys; throws std::invalid_argument otherwise or if a key's eye equals its
     /// target.
-    explicit CameraPath(std::vector<CameraKey> keys, float yfovDegrees = 50.0f);
+    explicit CameraPath(std::vector<CameraKey> keys, float yfovDegrees = 50.0f,
+                        PathInterpolation interpolation = PathInterpolation::CatmullRom);
     /// The camera at parameter t in [0, 1] (clamped): passes through every key, C1-continuous.
     [[nodiscard]] CameraKey keyAt(float t) const;
     /// The camera view at t for a picture of the given aspect; near/far from the scene bounds.
@@ -29,16 +36,22 @@ class CameraPath {
     [[nodiscard]] CameraView frame(int i, int n, const geom::Aabb& bounds, float aspect) const;
     [[nodiscard]] const std::vector<CameraKey>& keys() const { return keys_; }
     [[nodiscard]] float yfovDegrees() const { return yfovDegrees_; }
+    [[nodiscard]] PathInterpolation interpolation() const { return interpolation_; }
 
   private:
     std::vector<CameraKey> keys_;
     float yfovDegrees_;
+    PathInterpolation interpolation_;
 };
 
-/// Reads a camera path from JSON: {"fov": degrees (optional, default 50), "keys": [{"eye":
-/// [x, y, z], "target": [x, y, z]}, ...]} with at least two keys. Throws std::runtime_error
-/// "FILE: FIELD: problem" for a missing or malformed field.
+/// Reads a camera path from JSON: {"fov": degrees (optional, default 50), "interpolation":
+/// "catmull-rom" | "linear" (optional), "keys": [{"eye": [x, y, z], "target": [x, y, z]}, ...]}
+/// with at least two keys. Throws std::runtime_error "FILE: FIELD: problem" for a missing or
+/// malformed field.
 CameraPath readCameraPath(const std::filesystem::path& file);
+/// The same from JSON text (e.g. an object inside a capture script); other members of the object
+/// are ignored. Throws std::runtime_error "FIELD: problem".
+CameraPath parseCameraPath(const std::string& jsonText);
 
 /// Writes a path in the format readCameraPath reads (temporary name, then rename).
 void writeCameraPath(const std::filesystem::path& file, const CameraPath& path);

@@ -1,0 +1,187 @@
+// The CSV and the JSON summary of a capture run.
+
+#include "CaptureResults.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace fl::app {
+
+namespace {
+
+// Every phase any run timed, in the order first seen (absent phases read 0 in a row).
+std::vector<std::string> allPhases(const CaptureResults& r) {
+    std::vector<std::string> names;
+    for (const MethodRun& m : r.runs)
+        for (const FrameRow& row : m.rows)
+            for (const auto& [name, ms] : row.phasesMs)
+                if (std::find(names.begin(), names.end(), name) == names.end())
+                    names.push_back(name);
+    return names;
+}
+
+double phaseMs(const FrameRow& row, const std::string& name) {
+    double ms = 0.0;
+    for (const auto& [n, v] : row.phasesMs)
+        if (n == name) ms += v;
+    return ms;
+}
+
+std::string csvField(std::string s) {
+    std::replace(s.begin(), s.end(), ' ', '_');
+    std::replace(s.begin(), s.end(), ',', ';');
+    return s;
+}
+
+} // namespace
+
+std::string safeName(const std::string& label) {
+    std::string out;
+    for (char c : label) {
+        if (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.')
+            out += c;
+        else if (c == '/')
+            out += '-';
+        else if (c == ':' || c == ' ')
+            out += out.empty() || out.back() == '_' ? "" : "_";
+    }
+    return out.empty() ? "method" : out;
+}
+
+double medianOf(std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
+std::string resultsCsv(const CaptureResults& r) {
+    const std::vector<std::string> phases = allPhases(r);
+    std::ostringstream csv;
+    csv << "frame,method,width,height,rmse,rmse_penumbra,penumbra_pixels,misclassified_percent,"
+           "width_method_px,width_reference_px,width_error_px,added_flicker,dI_lt_0.05,"
+           "dI_0.05_0.1,dI_0.1_0.2,dI_ge_0.2,frame_ms";
+    for (const std::string& p : phases) csv << "," << csvField(p) << "_ms";
+    csv << "\n" << std::setprecision(6);
+    for (const MethodRun& m : r.runs)
+        for (const FrameRow& row : m.rows) {
+            const FrameMetrics& f = row.metrics;
+            csv << row.frame << "," << csvField(m.label) << "," << m.width << "," << m.height << ","
+                << f.rmse << "," << f.rmsePenumbra << "," << f.penumbraPixels << ","
+                << 100.0 * f.misclassified << "," << f.widthMethod << "," << f.widthReference << ","
+                << f.widthError << ",";
+            if (row.flicker) csv << *row.flicker;
+            for (int k = 0; k < 4; ++k) {
+                csv << ",";
+                if (row.deltaBuckets) csv << 100.0 * (*row.deltaBuckets)[static_cast<size_t>(k)];
+            }
+            csv << "," << row.frameMs;
+            for (const std::string& p : phases) csv << "," << phaseMs(row, p);
+            csv << "\n";
+        }
+    return csv.str();
+}
+
+nlohmann::json resultsSummary(const CaptureResults& r) {
+    const CaptureScript& s = *r.script;
+    nlohmann::json j;
+    j["script"] = s.file.string();
+    j["scene"] = r.sceneName;
+    j["context"] = r.context;
+    j["frames"] = s.frames;
+    j["resolutions"] = nlohmann::json::array();
+    for (const auto& [w, h] : s.resolutions) j["resolutions"].push_back({w, h});
+    j["shadowMap"] = {{"provider", s.shadowMapProvider}, {"size", s.shadowMapSize}};
+    j["jfaPasses"] = s.jfaPasses;
+    j["reference"] = {{"samples", s.reference.samples},
+                      {"mapSize", s.reference.mapSize},
+                      {"medianFrameMs", medianOf(r.referenceFrameMs)}};
+    j["definitions"] = {
+        {"penumbra", "reference visibility in (0.02, 0.98)"},
+        {"classes", "umbra <= 0.02, lit >= 0.98, penumbra between"},
+        {"rmse", "pooled over all pixels of all frames"},
+        {"rmsePenumbra", "pooled over the reference's penumbra pixels of all frames"},
+        {"width", "median over pixels with 0.1 <= v <= 0.9 of 0.8 / |grad v|, pixels"},
+        {"addedFlicker", "mean |v_t - v_t-1| of the method minus that of the reference"}};
+    const std::vector<std::string> phases = allPhases(r);
+    nlohmann::json methods = nlohmann::json::array();
+    std::optional<double> hardMs;
+    for (const MethodRun& m : r.runs)
+        if (m.spec.method == ShadowMethod::Hard && !hardMs) {
+            std::vector<double> t;
+            for (const FrameRow& row : m.rows) t.push_back(row.frameMs);
+            hardMs = medianOf(t);
+        }
+    for (const MethodRun& m : r.runs) {
+        double sq = 0.0, sqPen = 0.0, miscl = 0.0, widthErr = 0.0, flick = 0.0;
+        double pixels = 0.0, penPixels = 0.0, wm = 0.0, wr = 0.0;
+        int flickN = 0;
+        std::array<double, 4> buckets{};
+        int bucketN = 0;
+        std::vector<double> frameMs;
+        for (const FrameRow& row : m.rows) {
+            const FrameMetrics& f = row.metrics;
+            sq += f.sumSquared;
+            sqPen += f.sumSquaredPenumbra;
+            pixels += static_cast<double>(f.pixels);
+            penPixels += static_cast<double>(f.penumbraPixels);
+            miscl += f.misclassified;
+            widthErr += std::abs(f.widthError);
+            wm += f.widthMethod;
+            wr += f.widthReference;
+            if (row.flicker) {
+                flick += *row.flicker;
+                ++flickN;
+            }
+            if (row.deltaBuckets) {
+                for (std::size_t k = 0; k < 4; ++k) buckets[k] += (*row.deltaBuckets)[k];
+                ++bucketN;
+            }
+            frameMs.push_back(row.frameMs);
+        }
+        const double n = std::max<double>(1.0, static_cast<double>(m.rows.size()));
+        nlohmann::json e;
+        e["label"] = m.label;
+        e["method"] = std::string(methodName(m.spec.method));
+        e["width"] = m.width;
+        e["height"] = m.height;
+        e["frames"] = m.rows.size();
+        e["rmse"] = pixels > 0 ? std::sqrt(sq / pixels) : 0.0;
+        e["rmsePenumbra"] = penPixels > 0 ? std::sqrt(sqPen / penPixels) : 0.0;
+        e["meanPenumbraPixels"] = penPixels / n;
+        e["misclassifiedPercent"] = 100.0 * miscl / n;
+        e["meanAbsWidthErrorPx"] = widthErr / n;
+        e["meanWidthPx"] = wm / n;
+        e["meanReferenceWidthPx"] = wr / n;
+        e["addedFlicker"] = flickN > 0 ? flick / flickN : 0.0;
+        e["medianFrameMs"] = medianOf(frameMs);
+        if (hardMs && *hardMs > 0) e["frameTimeOverHard"] = medianOf(frameMs) / *hardMs;
+        nlohmann::json ph = nlohmann::json::object();
+        for (const std::string& p : phases) {
+            std::vector<double> v;
+            bool any = false;
+            for (const FrameRow& row : m.rows) {
+                v.push_back(phaseMs(row, p));
+                for (const auto& pr : row.phasesMs) any = any || pr.first == p;
+            }
+            if (any) ph[p] = medianOf(v);
+        }
+        e["medianPhaseMs"] = ph;
+        e["worstFrame"] = m.worstFrame;
+        e["worstFrameRmse"] = m.worstRmse;
+        if (bucketN > 0) {
+            e["deltaBucketsAgainst"] = m.counterpart;
+            e["meanShareDelta"] = {{"below0.05", buckets[0] / bucketN},
+                                   {"0.05to0.1", buckets[1] / bucketN},
+                                   {"0.1to0.2", buckets[2] / bucketN},
+                                   {"atLeast0.2", buckets[3] / bucketN}};
+        }
+        methods.push_back(e);
+    }
+    j["methods"] = methods;
+    j["complete"] = true;
+    return j;
+}
+
+} // namespace fl::app

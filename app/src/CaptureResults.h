@@ -1,0 +1,68 @@
+#pragma once
+// What a capture run measured, handed from the run (CaptureCommand.cpp) to the outputs
+// (CaptureOutput.cpp: CSV, JSON summary) and the HTML report (Report*.cpp).
+
+#include "CaptureScript.h"
+
+#include <renderer/ImageIO.h>
+#include <renderer/Metrics.h>
+
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace fl::app {
+
+/// One frame of one method (one CSV row).
+struct FrameRow {
+    int frame = 0;
+    FrameMetrics metrics;
+    std::optional<double> flicker; // added flicker since the previous frame (none on frame 0)
+    /// |dI| buckets against the standard-flooding counterpart (thesis Fig. 5.4(a)), for JFA
+    /// methods whose counterpart is in the script.
+    std::optional<std::array<double, 4>> deltaBuckets;
+    std::vector<std::pair<std::string, double>> phasesMs; // per-pass times, in pass order
+    double frameMs = 0.0;
+};
+
+/// Every frame of one method at one resolution, and its worst frame's pictures.
+struct MethodRun {
+    std::string label; // "pcss:16/24", with " @WxH" when the script has several resolutions
+    MethodSpec spec;
+    int width = 0, height = 0;
+    std::string counterpart; // label of the standard-flooding run its dI buckets are against
+    std::vector<FrameRow> rows;
+    int worstFrame = -1;
+    double worstRmse = -1.0;
+    FloatImage worstMethod, worstReference; // visibility
+};
+
+struct CaptureResults {
+    const CaptureScript* script = nullptr;
+    std::string context; // GL renderer description
+    std::string sceneName;
+    std::vector<MethodRun> runs;
+    std::vector<double> referenceFrameMs; // the ground truth's own time, every frame
+};
+
+/// Folder-safe form of a label ("pcss:16/24 @64x64" -> "pcss_16-24_64x64").
+std::string safeName(const std::string& label);
+
+/// The CSV: one row per frame x method.
+std::string resultsCsv(const CaptureResults& r);
+/// The JSON summary: per method, pooled RMSEs, mean misclassification, width error, added
+/// flicker, median per-phase and frame times, time relative to `hard`.
+nlohmann::json resultsSummary(const CaptureResults& r);
+/// Median of a list (0 for an empty list).
+double medianOf(std::vector<double> v);
+
+/// The report: one self-contained HTML file (inline SVG charts, images linked relatively from
+/// `imageDir`, which the caller has written: IMAGEDIR/worst_SAFENAME.png).
+std::string reportHtml(const CaptureResults& r, const nlohmann::json& summary,
+                       const std::string& imageDir);
+
+} // namespace fl::app

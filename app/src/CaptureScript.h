@@ -1,0 +1,74 @@
+#pragma once
+// Capture scripts (`floodlight capture SCRIPT.json`): the scene, the camera path, an optional
+// light path and radius, the resolutions, the shadow-map provider, the reference's settings and
+// the methods, each with its own options. Format (every field but "methods" and "camera" is
+// optional; paths are relative to the script's folder):
+//   {"scene": "default" | "FILE.glb",
+//    "camera": {"frames": N, "path": "default"}            // the walkthrough of `compare`
+//            | {"frames": N, "file": "PATH.json"}          // a camera-path file (CameraPath.h)
+//            | {"frames": N, "fov": deg, "interpolation": "catmull-rom" | "linear",
+//               "keys": [{"eye": [x,y,z], "target": [x,y,z]}, ...]},
+//    "light": {"radius": R, "keys": [[x,y,z], ...]},        // keys: positions, piecewise linear
+//    "resolutions": [[W, H], ...],                         // default [[512, 512]]
+//    "shadowMap": {"provider": "uniform" | "tsm", "size": S},
+//    "jfaPasses": P,
+//    "reference": {"samples": N, "mapSize": S},
+//    "methods": ["hard", "pcss:16/24", "pcf:5", {"method": "jfa-l", "passes": 7, "label": ".."}],
+//    "saveFrames": true}                                   // PNG + EXR per frame x method
+// Every problem is reported as "FILE: FIELD: problem".
+
+#include <renderer/CameraPath.h>
+#include <renderer/Renderer.h>
+
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace fl::app {
+
+/// A malformed or incomplete script: the message names the file and the field.
+class CaptureScriptError : public std::runtime_error {
+  public:
+    using std::runtime_error::runtime_error;
+};
+
+/// One row of the results: a method with its options.
+struct MethodSpec {
+    std::string label; // unique: "jfa-l", "pcss:16/24", or the script's "label"
+    ShadowMethod method = ShadowMethod::Hard;
+    std::optional<int> passes;      // jfa-l / flood-l / jfa-e / flood-e
+    std::optional<int> pcfKernel;   // pcf
+    std::optional<PcssPreset> pcss; // pcss
+    std::string presetText;         // as written ("16/24"), for labels
+};
+
+struct CaptureScript {
+    std::filesystem::path file;
+    std::filesystem::path scene; // empty = the default scene
+    int frames = 0;
+    std::optional<CameraPath> camera; // nullopt: the default walkthrough from the scene camera
+    std::optional<float> lightRadius;
+    std::vector<glm::vec3> lightKeys; // empty: the scene's light stays where it is
+    std::vector<std::pair<int, int>> resolutions;
+    std::string shadowMapProvider = "uniform";
+    int shadowMapSize = 1024;
+    int jfaPasses = 6;
+    ReferenceSettings reference;
+    std::vector<MethodSpec> methods;
+    bool saveFrames = true;
+};
+
+/// Parses a script's JSON text; `file` names it in messages and anchors relative paths.
+CaptureScript parseCaptureScript(const std::string& text, const std::filesystem::path& file);
+/// Reads and parses a script file; throws CaptureScriptError.
+CaptureScript readCaptureScript(const std::filesystem::path& file);
+
+/// The light position at frame i of n along the script's light keys (piecewise linear).
+glm::vec3 lightPositionAt(const std::vector<glm::vec3>& keys, int i, int n);
+
+/// `base` with the method and its options applied.
+RenderSettings settingsFor(const RenderSettings& base, const MethodSpec& m);
+
+} // namespace fl::app

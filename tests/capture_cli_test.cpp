@@ -1,0 +1,209 @@
+// `floodlight capture`: a short run of examples/capture/short.json on the default scene (3
+// frames, 64x64, every kind of method, a 16-sample ground truth) writes every frame, the CSV, the
+// summary and a report that headless Chromium loads with every chart drawn; bad input is one
+// clear message, exit code 1 and no summary or report left behind.
+
+#include "TestPaths.h"
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <sys/wait.h>
+
+namespace fl::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Outcome {
+    int code;
+    std::string output; // stdout and stderr together
+};
+
+Outcome shell(const std::string& cmd) {
+    FILE* pipe = popen((cmd + " 2>&1").c_str(), "r");
+    if (!pipe) return {-1, "popen failed"};
+    std::string out;
+    std::array<char, 4096> buf{};
+    while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) out.append(buf.data(), n);
+    const int status = pclose(pipe);
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), out};
+}
+
+Outcome capture(const fs::path& script, const fs::path& out) {
+    return shell(std::string(FLOODLIGHT_BINARY) + " capture " + script.string() + " --out " +
+                 out.string());
+}
+
+fs::path example(const char* name) {
+    return dataDir().parent_path() / "examples" / "capture" / name;
+}
+
+std::string readText(const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+const char* kMethods[] = {"hard", "pcf_3", "pcss_16-24", "jfa-l", "flood-l", "jfa-e", "flood-e"};
+constexpr int kFrames = 3;
+
+void checkFiles(const fs::path& dir) {
+    for (const char* f : {"frames.csv", "summary.json", "report.html"})
+        EXPECT_TRUE(fs::is_regular_file(dir / f)) << f;
+    std::vector<std::string> who(std::begin(kMethods), std::end(kMethods));
+    who.push_back("reference");
+    for (const std::string& m : who)
+        for (int i = 0; i < kFrames; ++i) {
+            const fs::path stem = dir / "frames" / "64x64" / m / ("frame_0000" + std::to_string(i));
+            for (const char* ext : {".png", ".visibility.png", ".exr"})
+                EXPECT_TRUE(fs::is_regular_file(stem.string() + ext)) << stem << ext;
+        }
+    for (const char* m : kMethods)
+        EXPECT_TRUE(fs::is_regular_file(dir / "report" / ("worst_" + std::string(m) + ".png")))
+            << m;
+    for (const auto& e : fs::recursive_directory_iterator(dir))
+        EXPECT_EQ(e.path().string().find(".tmp"), std::string::npos) << e.path();
+}
+
+void checkCsv(const fs::path& dir) {
+    std::istringstream csv(readText(dir / "frames.csv"));
+    std::string header, line;
+    std::getline(csv, header);
+    EXPECT_EQ(header.rfind("frame,method,width,height,rmse,rmse_penumbra,", 0), 0u) << header;
+    int rows = 0;
+    while (std::getline(csv, line)) ++rows;
+    EXPECT_EQ(rows, kFrames * static_cast<int>(std::size(kMethods)));
+}
+
+void checkSummary(const fs::path& dir) {
+    const auto j = nlohmann::json::parse(readText(dir / "summary.json"));
+    EXPECT_EQ(j["frames"], kFrames);
+    EXPECT_EQ(j["reference"]["samples"], 16);
+    EXPECT_TRUE(j["complete"].get<bool>());
+    ASSERT_EQ(j["methods"].size(), std::size(kMethods));
+    for (const auto& m : j["methods"]) {
+        for (const char* f :
+             {"rmse", "rmsePenumbra", "misclassifiedPercent", "meanAbsWidthErrorPx", "addedFlicker",
+              "medianFrameMs", "frameTimeOverHard", "medianPhaseMs", "worstFrame"})
+            EXPECT_TRUE(m.contains(f)) << m["label"] << " lacks " << f;
+        // With a 1.5 light radius every method differs somewhat from a 16-sample ground truth,
+        // and none is wildly off.
+        EXPECT_GT(m["rmse"].get<double>(), 0.0) << m["label"];
+        EXPECT_LT(m["rmse"].get<double>(), 0.5) << m["label"];
+    }
+    // JFA methods carry the thesis' |dI| buckets against their standard-flooding counterpart.
+    for (const auto& m : j["methods"]) {
+        if (m["method"] == "jfa-l" || m["method"] == "jfa-e") {
+            EXPECT_TRUE(m.contains("meanShareDelta")) << m["label"];
+        }
+    }
+}
+
+void checkReportInChromium(const fs::path& dir, const std::string& chromium) {
+    const fs::path profile = outputDir("capture_chromium_profile");
+    const Outcome r =
+        shell("timeout 120 " + chromium +
+              " --headless --no-sandbox --disable-gpu --user-data-dir=" + profile.string() +
+              " --dump-dom file://" + fs::absolute(dir / "report.html").string());
+    ASSERT_EQ(r.code, 0) << r.output.substr(0, 2000);
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(r.output, m, std::regex("data-charts-ok=\"(\\d+)/(\\d+)\"")))
+        << "the report's check script did not run:\n"
+        << r.output.substr(0, 2000);
+    // 3 error curves, 2 |dI| charts (jfa-l, jfa-e), time per phase, cost against error.
+    EXPECT_EQ(m[1], m[2]) << "charts drawn / charts";
+    EXPECT_EQ(std::stoi(m[2]), 7);
+    ASSERT_TRUE(std::regex_search(r.output, m, std::regex("data-images-ok=\"(\\d+)/(\\d+)\"")));
+    EXPECT_EQ(m[1], m[2]) << "images shown / images";
+    EXPECT_EQ(std::stoi(m[2]), static_cast<int>(std::size(kMethods)));
+}
+
+// One run (about 20 s on llvmpipe), every check on its outputs; the report check needs Chromium.
+TEST(CaptureRun, ShortScriptWritesEverythingAndTheReportShowsEveryChart) {
+    const fs::path dir = outputDir("capture_short");
+    fs::remove_all(dir);
+    const Outcome r = capture(example("short.json"), dir);
+    ASSERT_EQ(r.code, 0) << r.output;
+    EXPECT_NE(r.output.find("wrote"), std::string::npos) << r.output;
+    checkFiles(dir);
+    checkCsv(dir);
+    checkSummary(dir);
+    const std::string chromium = FLOODLIGHT_CHROMIUM;
+    if (chromium.empty())
+        GTEST_SKIP() << "the files are checked; chromium not found for the report (scripts/"
+                        "setup.sh installs it)";
+    checkReportInChromium(dir, chromium);
+}
+
+// Writes a script into the test's folder.
+fs::path scriptFile(const std::string& name, const std::string& text) {
+    const fs::path p = outputDir("capture_bad") / name;
+    std::ofstream(p) << text;
+    return p;
+}
+
+void expectCleanFailure(const Outcome& r, const std::string& named, const fs::path& out) {
+    EXPECT_EQ(r.code, 1) << r.output;
+    EXPECT_NE(r.output.find(named), std::string::npos) << "expected '" << named << "' in\n"
+                                                       << r.output;
+    EXPECT_FALSE(fs::exists(out / "report.html")) << out;
+    EXPECT_FALSE(fs::exists(out / "summary.json")) << out;
+}
+
+TEST(CaptureBadInput, ScriptErrorsNameTheField) {
+    const fs::path out = outputDir("capture_bad") / "out";
+    const std::string camera = R"("camera": {"frames": 3, "path": "default"})";
+    expectCleanFailure(
+        capture(scriptFile("unknown.json", "{" + camera + R"(, "methods": ["hard", "vsm"]})"), out),
+        "methods[1]: unknown method \"vsm\"", out);
+    expectCleanFailure(
+        capture(scriptFile("zero.json",
+                           R"({"camera": {"frames": 0, "path": "default"}, "methods": ["hard"]})"),
+                out),
+        "camera.frames", out);
+    expectCleanFailure(capture(scriptFile("incomplete.json", "{" + camera + "}"), out),
+                       "methods: missing", out);
+    expectCleanFailure(capture(scriptFile("broken.json", "{" + camera), out), "not valid JSON",
+                       out);
+    expectCleanFailure(capture(outputDir("capture_bad") / "absent.json", out), "absent.json", out);
+    // JFA-E's 6 default passes reach 63 pixels: more than an 8x8 frame holds.
+    expectCleanFailure(
+        capture(scriptFile("eye.json",
+                           "{" + camera + R"(, "resolutions": [[8, 8]], "methods": ["jfa-e"]})"),
+                out),
+        "jfaPasses at 8x8", out);
+}
+
+TEST(CaptureBadInput, UnwritableFolderIsOneClearError) {
+    // A regular file where a folder is needed cannot be written into, even by root.
+    const fs::path blocker = outputDir("capture_bad") / "a-file";
+    std::ofstream(blocker) << "x";
+    const Outcome r = capture(example("short.json"), blocker / "out");
+    expectCleanFailure(r, "--out " + (blocker / "out").string(), blocker / "out");
+}
+
+TEST(CaptureBadInput, FailedRunLeavesNoOldReportBehind) {
+    // An earlier run's report and summary in the folder; this run fails (its scene is missing)
+    // after the folder was prepared: neither may be left looking like this run's results.
+    const fs::path out = outputDir("capture_bad") / "stale";
+    fs::create_directories(out);
+    std::ofstream(out / "report.html") << "<html>old</html>";
+    std::ofstream(out / "summary.json") << "{}";
+    const Outcome r =
+        capture(scriptFile("missing_scene.json",
+                           R"({"scene": "nowhere.glb", "camera": {"frames": 2, "path": "default"},
+                       "methods": ["hard"]})"),
+                out);
+    expectCleanFailure(r, "nowhere.glb", out);
+}
+
+} // namespace
+} // namespace fl::test

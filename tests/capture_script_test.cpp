@@ -1,0 +1,200 @@
+// Capture scripts (app/src/CaptureScript.h): the formats they accept, the options methods carry,
+// and a message naming the field for every malformed or missing one.
+
+#include "CaptureScript.h"
+#include "TestPaths.h"
+
+#include <gtest/gtest.h>
+
+namespace fl::app {
+namespace {
+
+const std::filesystem::path kFile = "/scripts/test.json";
+
+CaptureScript parse(const std::string& text) {
+    return parseCaptureScript(text, kFile);
+}
+
+// A minimal valid script with `extra` members added (leading comma included by the caller).
+std::string script(const std::string& extra = "",
+                   const std::string& methods = R"(["hard", "jfa-l"])") {
+    return R"({"camera": {"frames": 3, "path": "default"}, "methods": )" + methods + extra + "}";
+}
+
+TEST(CaptureScript, MinimalScriptHasDefaults) {
+    const CaptureScript s = parse(script());
+    EXPECT_EQ(s.frames, 3);
+    EXPECT_FALSE(s.camera); // the default walkthrough
+    EXPECT_TRUE(s.scene.empty());
+    ASSERT_EQ(s.resolutions.size(), 1u);
+    EXPECT_EQ(s.resolutions[0], std::make_pair(512, 512));
+    EXPECT_EQ(s.shadowMapProvider, "uniform");
+    EXPECT_EQ(s.reference.samples, ReferenceSettings{}.samples);
+    ASSERT_EQ(s.methods.size(), 2u);
+    EXPECT_EQ(s.methods[1].method, ShadowMethod::JfaL);
+    EXPECT_EQ(s.methods[1].label, "jfa-l");
+    EXPECT_TRUE(s.saveFrames);
+}
+
+TEST(CaptureScript, EveryField) {
+    const CaptureScript s = parse(R"({
+      "scene": "scenes/room.glb",
+      "camera": {"frames": 10, "fov": 40, "interpolation": "linear",
+                 "keys": [{"eye": [0, 1, 5], "target": [0, 0, 0]},
+                          {"eye": [5, 1, 0], "target": [0, 0, 0]}]},
+      "light": {"radius": 0.5, "keys": [[0, 10, 0], [5, 10, 0]]},
+      "resolutions": [[64, 48], [128, 128]],
+      "shadowMap": {"provider": "tsm", "size": 512},
+      "jfaPasses": 5,
+      "reference": {"samples": 16, "mapSize": 256},
+      "methods": ["pcss:16/24", {"method": "pcss", "preset": "32/64"}, "pcf:5",
+                  {"method": "jfa-l", "passes": 4, "label": "jfa-l short"}, "flood-e:3",
+                  "reference"],
+      "saveFrames": false})");
+    EXPECT_EQ(s.scene, std::filesystem::path("/scripts/scenes/room.glb"));
+    ASSERT_TRUE(s.camera);
+    EXPECT_EQ(s.camera->interpolation(), PathInterpolation::Linear);
+    EXPECT_EQ(s.camera->yfovDegrees(), 40.0f);
+    EXPECT_EQ(s.frames, 10);
+    EXPECT_EQ(*s.lightRadius, 0.5f);
+    ASSERT_EQ(s.lightKeys.size(), 2u);
+    EXPECT_EQ(lightPositionAt(s.lightKeys, 0, 11), glm::vec3(0, 10, 0));
+    EXPECT_EQ(lightPositionAt(s.lightKeys, 5, 11), glm::vec3(2.5f, 10, 0));
+    EXPECT_EQ(lightPositionAt(s.lightKeys, 10, 11), glm::vec3(5, 10, 0));
+    EXPECT_EQ(s.resolutions[1], std::make_pair(128, 128));
+    EXPECT_EQ(s.shadowMapProvider, "tsm");
+    EXPECT_EQ(s.shadowMapSize, 512);
+    EXPECT_EQ(s.jfaPasses, 5);
+    EXPECT_EQ(s.reference.samples, 16);
+    EXPECT_EQ(s.reference.mapSize, 256);
+    EXPECT_FALSE(s.saveFrames);
+    ASSERT_EQ(s.methods.size(), 6u);
+    EXPECT_EQ(s.methods[0].label, "pcss:16/24");
+    EXPECT_EQ(s.methods[0].pcss->filterSamples, 24);
+    EXPECT_EQ(s.methods[1].label, "pcss:32/64");
+    EXPECT_EQ(s.methods[1].pcss->blockerSamples, 32);
+    EXPECT_EQ(*s.methods[2].pcfKernel, 5);
+    EXPECT_EQ(s.methods[3].label, "jfa-l short");
+    EXPECT_EQ(*s.methods[3].passes, 4);
+    EXPECT_EQ(*s.methods[4].passes, 3);
+    EXPECT_EQ(s.methods[5].method, ShadowMethod::Reference);
+
+    // The options reach the render settings.
+    const RenderSettings pcss = settingsFor(RenderSettings{}, s.methods[1]);
+    EXPECT_EQ(pcss.method, ShadowMethod::Pcss);
+    EXPECT_EQ(pcss.filtered.pcss.filterSamples, 64);
+    EXPECT_EQ(settingsFor(RenderSettings{}, s.methods[2]).filtered.pcfKernel, 5);
+    EXPECT_EQ(settingsFor(RenderSettings{}, s.methods[3]).penumbra.passes, 4);
+}
+
+TEST(CaptureScript, CameraFromAFile) {
+    const auto dir = test::outputDir("capture_script");
+    writeCameraPath(dir / "path.json",
+                    CameraPath({{{0, 1, 2}, {0, 0, 0}}, {{2, 1, 0}, {0, 0, 0}}}));
+    const CaptureScript s =
+        parseCaptureScript(R"({"camera": {"frames": 2, "file": "path.json"}, "methods": ["hard"]})",
+                           dir / "script.json");
+    ASSERT_TRUE(s.camera);
+    EXPECT_EQ(s.camera->keys().size(), 2u);
+}
+
+TEST(CaptureScript, LinearInterpolationIsPiecewiseStraight) {
+    const CameraPath p({{{0, 0, 0}, {0, 0, -1}}, {{2, 0, 0}, {2, 0, -1}}, {{2, 2, 0}, {2, 2, -1}}},
+                       50.0f, PathInterpolation::Linear);
+    EXPECT_NEAR(glm::length(p.keyAt(0.25f).eye - glm::vec3(1, 0, 0)), 0.0f, 1e-6f);
+    EXPECT_NEAR(glm::length(p.keyAt(0.75f).eye - glm::vec3(2, 1, 0)), 0.0f, 1e-6f);
+}
+
+struct Bad {
+    std::string text;
+    std::string field; // the message must name it
+};
+
+TEST(CaptureScript, EveryMalformedFieldIsNamed) {
+    const std::vector<Bad> cases = {
+        {"{", "not valid JSON"},
+        {"[1, 2]", "script"},
+        {R"({"methods": ["hard"]})", "camera"},
+        {R"({"camera": {"path": "default"}, "methods": ["hard"]})", "camera.frames"},
+        {R"({"camera": {"frames": 0, "path": "default"}, "methods": ["hard"]})", "camera.frames"},
+        {R"({"camera": {"frames": "3", "path": "default"}, "methods": ["hard"]})", "camera.frames"},
+        {R"({"camera": {"frames": 3, "path": "spiral"}, "methods": ["hard"]})", "camera.path"},
+        {R"({"camera": {"frames": 3}, "methods": ["hard"]})", "camera"},
+        {R"({"camera": {"frames": 3, "file": "/nonexistent.json"}, "methods": ["hard"]})",
+         "camera.file"},
+        {R"({"camera": {"frames": 3, "keys": [{"eye": [0, 0, 0]}]}, "methods": ["hard"]})",
+         "camera.keys[0]"},
+        {R"({"camera": {"frames": 3, "interpolation": "cubic", "keys": []},
+             "methods": ["hard"]})",
+         "camera.interpolation"},
+        {R"({"camera": {"frames": 3, "path": "default", "speed": 2}, "methods": ["hard"]})",
+         "camera.speed"},
+        {R"({"camera": {"frames": 3, "path": "default"}})", "methods"},
+        {script(R"(, "light": {"radius": -1})"), "light.radius"},
+        {script(R"(, "light": {"keys": [[0, 1]]})"), "light.keys[0]"},
+        {script(R"(, "resolutions": [[64]])"), "resolutions[0]"},
+        {script(R"(, "resolutions": [[64, 0]])"), "resolutions[0][1]"},
+        {script(R"(, "resolutions": [])"), "resolutions"},
+        {script(R"(, "shadowMap": {"provider": "cascaded"})"), "shadowMap.provider"},
+        {script(R"(, "shadowMap": {"size": 4})"), "shadowMap.size"},
+        {script(R"(, "jfaPasses": 99)"), "jfaPasses"},
+        {script(R"(, "jfaPasses": 10, "shadowMap": {"size": 256})"), "jfaPasses"},
+        {script(R"(, "reference": {"samples": 0})"), "reference.samples"},
+        {script(R"(, "reference": {"mapSize": "big"})"), "reference.mapSize"},
+        {script(R"(, "saveFrames": "yes")"), "saveFrames"},
+        {script(R"(, "frames": 3)"), "script.frames"},
+        {script("", R"([])"), "methods"},
+        {script("", R"("hard")"), "methods"},
+        {script("", R"(["hard", "vsm"])"), "methods[1]"},
+        {script("", R"(["pcss:8/8"])"), "methods[0].preset"},
+        {script("", R"(["pcf:big"])"), "methods[0]"},
+        {script("", R"(["pcf:99"])"), "methods[0].kernel"},
+        {script("", R"([{"preset": "16/24"}])"), "methods[0].method"},
+        {script("", R"([{"method": "hard", "preset": "16/24"}])"), "methods[0].preset"},
+        {script("", R"([{"method": "pcf", "passes": 3}])"), "methods[0].passes"},
+        {script("", R"([{"method": "pcf", "colour": 3}])"), "methods[0].colour"},
+        {script("", R"(["hard", "hard"])"), "methods[1]"},
+        {script("", R"([42])"), "methods[0]"},
+    };
+    for (const Bad& c : cases) {
+        try {
+            (void)parse(c.text);
+            ADD_FAILURE() << "accepted: " << c.text;
+        } catch (const CaptureScriptError& e) {
+            const std::string msg = e.what();
+            EXPECT_NE(msg.find(kFile.string()), std::string::npos) << msg;
+            EXPECT_NE(msg.find(c.field), std::string::npos)
+                << "expected '" << c.field << "' in: " << msg;
+        }
+    }
+}
+
+TEST(CaptureScript, MissingFileIsNamed) {
+    try {
+        (void)readCaptureScript("/nonexistent/capture.json");
+        ADD_FAILURE() << "no error";
+    } catch (const CaptureScriptError& e) {
+        EXPECT_NE(std::string(e.what()).find("/nonexistent/capture.json"), std::string::npos);
+    }
+}
+
+TEST(CaptureScript, ShippedExamplesParse) {
+    for (const char* name : {"short.json", "walkthrough.json", "medium.json"}) {
+        const auto file = test::dataDir().parent_path() / "examples" / "capture" / name;
+        const CaptureScript s = readCaptureScript(file);
+        EXPECT_GE(s.frames, 1) << name;
+        bool hasJfa = false, hasFlood = false;
+        for (const MethodSpec& m : s.methods) {
+            hasJfa = hasJfa || m.method == ShadowMethod::JfaL;
+            hasFlood = hasFlood || m.method == ShadowMethod::FloodL;
+        }
+        EXPECT_TRUE(hasJfa && hasFlood) << name << ": the |dI| chart needs both";
+    }
+    EXPECT_EQ(readCaptureScript(test::dataDir().parent_path() / "examples" / "capture" /
+                                "walkthrough.json")
+                  .frames,
+              462);
+}
+
+} // namespace
+} // namespace fl::app

@@ -1,0 +1,136 @@
+// Capture metrics (renderer/Metrics.h) on synthetic images with known answers: RMSE, penumbra
+// RMSE, misclassification, the 10-90% width of ramps of known width, and added flicker.
+
+#include <renderer/Metrics.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+namespace fl {
+namespace {
+
+FloatImage image(int w, int h, const std::function<float(int, int)>& f) {
+    FloatImage img{w, h, 1, std::vector<float>(static_cast<std::size_t>(w) * h)};
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) img.data[static_cast<std::size_t>(y) * w + x] = f(x, y);
+    return img;
+}
+
+// A linear ramp from 0 to 1 over `width` pixels along the unit direction (dx, dy), centred on
+// the picture's centre; its exact 10-90% width is 0.8 * width.
+FloatImage ramp(int size, double width, double dx, double dy) {
+    return image(size, size, [=](int x, int y) {
+        const double s = ((x + 0.5 - size / 2.0) * dx + (y + 0.5 - size / 2.0) * dy) / width;
+        return static_cast<float>(std::clamp(s + 0.5, 0.0, 1.0));
+    });
+}
+
+FloatImage constant(int w, int h, float v) {
+    return image(w, h, [=](int, int) { return v; });
+}
+
+TEST(Metrics, Classes) {
+    EXPECT_EQ(classifyVisibility(0.0f), ShadowClass::Umbra);
+    EXPECT_EQ(classifyVisibility(0.02f), ShadowClass::Umbra);
+    EXPECT_EQ(classifyVisibility(0.021f), ShadowClass::Penumbra);
+    EXPECT_EQ(classifyVisibility(0.5f), ShadowClass::Penumbra);
+    EXPECT_EQ(classifyVisibility(0.979f), ShadowClass::Penumbra);
+    EXPECT_EQ(classifyVisibility(0.98f), ShadowClass::Lit);
+    EXPECT_EQ(classifyVisibility(1.0f), ShadowClass::Lit);
+}
+
+TEST(Metrics, RampWidthsAlongEachAxisAndTheDiagonal) {
+    const double diag = 1.0 / std::sqrt(2.0);
+    for (double w : {2.0, 3.0, 4.0, 5.5, 8.0, 16.0, 32.0}) {
+        EXPECT_NEAR(transitionWidth(ramp(96, w, 1, 0)), 0.8 * w, 1e-4 * w) << "x, width " << w;
+        EXPECT_NEAR(transitionWidth(ramp(96, w, 0, 1)), 0.8 * w, 1e-4 * w) << "y, width " << w;
+        EXPECT_NEAR(transitionWidth(ramp(96, w, -diag, diag)), 0.8 * w, 1e-3 * w)
+            << "diagonal, width " << w;
+    }
+}
+
+TEST(Metrics, StepEdgeAndFlatImagesHaveNoWidth) {
+    EXPECT_EQ(transitionWidth(image(32, 32, [](int x, int) { return x < 16 ? 0.0f : 1.0f; })), 0.0);
+    EXPECT_EQ(transitionWidth(constant(16, 16, 1.0f)), 0.0);
+    // A half-lit plateau has no transition either (its gradient is zero).
+    EXPECT_EQ(transitionWidth(constant(16, 16, 0.5f)), 0.0);
+}
+
+TEST(Metrics, WidthIsRobustToNoiseAndToAHardEdgeElsewhere) {
+    // A 16-pixel ramp in the left half, a hard edge in the right half, and +-0.01 noise: the
+    // median still finds 0.8 * 16 within 10%.
+    const FloatImage clean = ramp(128, 16.0, 1, 0);
+    FloatImage noisy = image(128, 128, [&](int x, int y) {
+        const float n = 0.01f * static_cast<float>(((x * 7 + y * 13) % 5) - 2) / 2.0f;
+        const float v = y < 64 ? clean.at(x, y, 0) : (x < 64 ? 0.0f : 1.0f);
+        return std::clamp(v + n, 0.0f, 1.0f);
+    });
+    EXPECT_NEAR(transitionWidth(noisy), 12.8, 1.28);
+}
+
+TEST(Metrics, StepAgainstRampWidthErrorAndRmse) {
+    // Method: a hard edge at the centre; reference: an 8-pixel ramp around it.
+    const int n = 64;
+    const FloatImage ref = ramp(n, 8.0, 1, 0);
+    const FloatImage step = image(n, n, [=](int x, int) { return x < n / 2 ? 0.0f : 1.0f; });
+    const FrameMetrics f = compareWithReference(step, ref);
+    EXPECT_NEAR(f.widthReference, 6.4, 1e-4);
+    EXPECT_EQ(f.widthMethod, 0.0);
+    EXPECT_NEAR(f.widthError, -6.4, 1e-4);
+    // Per row the ramp's values are (k + 0.5) / 8, k = 0..7; the step differs by those below
+    // 0.5 on the left and 1 - value on the right: |d| = 1/16, 3/16, 5/16, 7/16 twice each.
+    const double rowSq = 2.0 * (1.0 + 9.0 + 25.0 + 49.0) / 256.0;
+    EXPECT_NEAR(f.rmse, std::sqrt(rowSq / n), 1e-6);
+    // Penumbra pixels of the reference: all 8 ramp pixels of each row (0.0625 .. 0.9375).
+    EXPECT_EQ(f.penumbraPixels, static_cast<std::size_t>(8 * n));
+    EXPECT_NEAR(f.rmsePenumbra, std::sqrt(rowSq / 8.0), 1e-6);
+    // The step has no penumbra: all 8 ramp pixels per row are misclassified.
+    EXPECT_NEAR(f.misclassified, 8.0 / n, 1e-12);
+}
+
+TEST(Metrics, KnownRmseAndMisclassification) {
+    // 4 pixels: reference umbra, penumbra, penumbra, lit; the method is 0.1 brighter, which
+    // moves pixel 0 (0 -> 0.1) into penumbra and pixel 2 (0.9 -> 1.0) to lit.
+    const FloatImage ref{4, 1, 1, {0.0f, 0.5f, 0.9f, 0.9f + 0.09f}};
+    const FloatImage m{4, 1, 1, {0.1f, 0.6f, 1.0f, 1.0f + 0.08f}};
+    const FrameMetrics f = compareWithReference(m, ref);
+    EXPECT_NEAR(f.rmse, std::sqrt((0.01 + 0.01 + 0.01 + 0.0081) / 4.0), 1e-6);
+    EXPECT_EQ(f.penumbraPixels, 2u); // 0.5 and 0.9; 0.99 is lit
+    EXPECT_NEAR(f.rmsePenumbra, 0.1, 1e-6);
+    EXPECT_DOUBLE_EQ(f.misclassified, 0.5);
+}
+
+TEST(Metrics, IdenticalImagesHaveNoError) {
+    const FloatImage a = ramp(32, 6.0, 0, 1);
+    const FrameMetrics f = compareWithReference(a, a);
+    EXPECT_EQ(f.rmse, 0.0);
+    EXPECT_EQ(f.rmsePenumbra, 0.0);
+    EXPECT_EQ(f.misclassified, 0.0);
+    EXPECT_EQ(f.widthError, 0.0);
+    EXPECT_GT(f.penumbraPixels, 0u);
+}
+
+TEST(Metrics, AddedFlicker) {
+    // The reference is static; the method toggles one pixel of four: it adds 0.25 of flicker.
+    const FloatImage still = constant(2, 2, 0.5f);
+    const FloatImage a{2, 2, 1, {0.0f, 0.5f, 0.5f, 0.5f}};
+    const FloatImage b{2, 2, 1, {1.0f, 0.5f, 0.5f, 0.5f}};
+    EXPECT_DOUBLE_EQ(meanAbsoluteChange(a, b), 0.25);
+    EXPECT_DOUBLE_EQ(addedFlicker(a, b, still, still), 0.25);
+    // Moving exactly as the reference does adds nothing; changing less is negative.
+    EXPECT_DOUBLE_EQ(addedFlicker(a, b, a, b), 0.0);
+    EXPECT_DOUBLE_EQ(addedFlicker(still, still, a, b), -0.25);
+}
+
+TEST(Metrics, MismatchedSizesThrow) {
+    EXPECT_THROW((void)compareWithReference(constant(2, 2, 0.0f), constant(3, 2, 0.0f)),
+                 std::invalid_argument);
+    EXPECT_THROW((void)meanAbsoluteChange(constant(2, 2, 0.0f), constant(2, 1, 0.0f)),
+                 std::invalid_argument);
+}
+
+} // namespace
+} // namespace fl
