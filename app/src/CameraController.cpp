@@ -83,48 +83,34 @@ void CameraController::onScroll(double dy) {
         distance_ = std::clamp(distance_ * std::pow(0.9f, static_cast<float>(dy)), 1e-3f * radius_,
                                10.0f * radius_);
     } else {
-        target_ += forward() * static_cast<float>(dy) * 0.05f * radius_;
+        // Fly: the wheel sets the speed (x1.25 per notch) rather than moving.
+        flySpeed_ =
+            std::clamp(flySpeed_ * std::pow(1.25f, static_cast<float>(dy)), 1.0f / 64.0f, 64.0f);
     }
 }
 
+CameraKey CameraController::pose() const {
+    return {target_ - forward() * distance_, target_};
+}
+
 void CameraController::update(GLFWwindow* window, float dt) {
+    update([window](int key) { return glfwGetKey(window, key) == GLFW_PRESS; }, dt);
+}
+
+void CameraController::update(const std::function<bool(int)>& held, float dt) {
     if (mode_ != Mode::Fly) return;
-    const bool fast = glfwGetKey(window, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS;
-    const float speed = radius_ * 0.5f * (fast ? 4.0f : 1.0f) * dt;
+    const bool fast = held(GLFW_KEY_LEFT_SHIFT) || held(GLFW_KEY_RIGHT_SHIFT);
+    const float speed = radius_ * 0.5f * flySpeed_ * (fast ? 4.0f : 1.0f) * dt;
     const glm::vec3 f = forward();
     const glm::vec3 right = glm::normalize(glm::cross(f, glm::vec3(0, 1, 0)));
     glm::vec3 move(0.0f);
-    if (glfwGetKey(window, GLFW_KEY_W) == GLFW_PRESS) move += f;
-    if (glfwGetKey(window, GLFW_KEY_S) == GLFW_PRESS) move -= f;
-    if (glfwGetKey(window, GLFW_KEY_D) == GLFW_PRESS) move += right;
-    if (glfwGetKey(window, GLFW_KEY_A) == GLFW_PRESS) move -= right;
-    if (glfwGetKey(window, GLFW_KEY_E) == GLFW_PRESS) move.y += 1.0f;
-    if (glfwGetKey(window, GLFW_KEY_Q) == GLFW_PRESS) move.y -= 1.0f;
+    if (held(GLFW_KEY_W)) move += f;
+    if (held(GLFW_KEY_S)) move -= f;
+    if (held(GLFW_KEY_D)) move += right;
+    if (held(GLFW_KEY_A)) move -= right;
+    if (held(GLFW_KEY_E)) move.y += 1.0f;
+    if (held(GLFW_KEY_Q)) move.y -= 1.0f;
     target_ += move * speed;
-}
-
-void CameraController::attach(GLFWwindow* window) {
-    glfwSetWindowUserPointer(window, this);
-    glfwSetCursorPosCallback(window, [](GLFWwindow* w, double x, double y) {
-        auto* self = static_cast<CameraController*>(glfwGetWindowUserPointer(w));
-        const bool left = glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
-        const bool right = glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS ||
-                           glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS;
-        if (!left && !right)
-            self->releaseCursor();
-        else
-            self->onCursor(x, y, left, right);
-    });
-    glfwSetScrollCallback(window, [](GLFWwindow* w, double, double dy) {
-        static_cast<CameraController*>(glfwGetWindowUserPointer(w))->onScroll(dy);
-    });
-    glfwSetKeyCallback(window, [](GLFWwindow* w, int key, int, int action, int) {
-        if (action != GLFW_PRESS) return;
-        auto* self = static_cast<CameraController*>(glfwGetWindowUserPointer(w));
-        if (key == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(w, GLFW_TRUE);
-        if (key == GLFW_KEY_TAB) self->toggleMode();
-        if (key == GLFW_KEY_R) self->reset();
-    });
 }
 
 } // namespace fl::app

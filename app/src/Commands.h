@@ -19,6 +19,9 @@ Runner addVoronoiCommand(CLI::App& app);
 Runner addDelaunayCommand(CLI::App& app);
 /// `floodlight compare`: a soft-shadow method against its standard-flooding reference.
 Runner addCompareCommand(CLI::App& app);
+/// `floodlight capture`: a capture script with every method and the ground truth, CSV, JSON
+/// summary and HTML report.
+Runner addCaptureCommand(CLI::App& app);
 /// `floodlight make-scene`: writes a generated scene as .glb.
 Runner addMakeSceneCommand(CLI::App& app);
 

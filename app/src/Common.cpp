@@ -2,6 +2,7 @@
 
 #include <renderer/SceneGenerator.h>
 
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 
@@ -17,8 +18,17 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool sceneAsOption) {
         cmd.add_option("--scene", o.scene, "glTF 2.0 scene (.gltf/.glb); default: built-in scene");
     else
         cmd.add_option("scene", o.scene, "glTF 2.0 scene (.gltf/.glb); default: built-in scene");
-    cmd.add_option("--light-radius", o.lightRadius, "Disk light radius in scene units")
-        ->check(CLI::PositiveNumber);
+    // 0 is allowed: a point light, for which every soft method gives exactly the hard shadows.
+    cmd.add_option("--light-radius", o.lightRadius,
+                   "Disk light radius in scene units (0 = a point light: hard shadows)")
+        ->check(CLI::Validator(
+            [](const std::string& text) -> std::string {
+                double v = 0.0;
+                if (!CLI::detail::lexical_cast(text, v) || !std::isfinite(v) || v < 0.0)
+                    return "must be a finite number >= 0, got '" + text + "'";
+                return {};
+            },
+            "RADIUS>=0"));
     cmd.add_option("--shader-dir", o.shaderDir,
                    "Load shaders from this folder instead of the binary");
     cmd.add_option("--shadow-map-size", o.shadowMapSize, "Shadow map texels per side")
@@ -31,9 +41,30 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool sceneAsOption) {
     cmd.add_option("--method", o.method,
                    "Shadow method: hard, jfa-l (JFA penumbra map, thesis 5.3), flood-l (its "
                    "standard-flooding reference), jfa-e (JFA in eye space, thesis 5.4), flood-e "
-                   "(its standard-flooding reference)")
-        ->check(CLI::IsMember({"hard", "jfa-l", "flood-l", "jfa-e", "flood-e"}))
+                   "(its standard-flooding reference), pcf, pcss (baselines), reference "
+                   "(ground truth: N point-light maps over the disk)")
+        ->check(CLI::IsMember(
+            {"hard", "jfa-l", "flood-l", "jfa-e", "flood-e", "pcf", "pcss", "reference"}))
         ->capture_default_str();
+    cmd.add_option("--pcf-kernel", o.pcfKernel,
+                   "pcf: taps per side of the kernel (N x N depth comparisons one uniform-map "
+                   "texel apart, in the light's unwarped plane)")
+        ->check(CLI::Range(1, kMaxPcfKernel))
+        ->capture_default_str();
+    cmd.add_option("--pcss-preset", o.pcssPreset, "pcss: blocker-search/filter samples")
+        ->check(CLI::IsMember({"16/16", "16/24", "32/64"}))
+        ->capture_default_str();
+    cmd.add_option("--reference-samples", o.referenceSamples,
+                   "reference: point lights (shadow maps) over the disk light")
+        ->check(CLI::Range(1, 65536))
+        ->capture_default_str();
+    cmd.add_option("--reference-map-size", o.referenceMapSize,
+                   "reference: texels per side of each point light's shadow map")
+        ->check(CLI::Range(16, kMaxShadowMapSize))
+        ->capture_default_str();
+    cmd.add_flag("--full-jfa", o.fullJfa,
+                 "Full JFA: as many passes as the grid allows (log2 of the shadow-map size for "
+                 "-l, of the frame for -e), instead of --jfa-passes");
     cmd.add_option("--jfa-passes", o.jfaPasses,
                    "Flooding passes of jfa-l / flood-l / jfa-e / flood-e: penumbrae up to 2^N - 1 "
                    "shadow-map texels (-l) or pixels (-e) wide; 1 to log2(size)")
@@ -111,21 +142,43 @@ ShaderLibrary makeShaderLibrary(const SceneOptions& o) {
     }
 }
 
+void checkEyePasses(const SceneOptions& o, const RenderSettings& s, int width, int height) {
+    if (o.fullJfa || (s.method != ShadowMethod::JfaE && s.method != ShadowMethod::FloodE)) return;
+    try {
+        (void)eyeSoftPlan(s.penumbra.passes, false, width, height);
+    } catch (const std::invalid_argument& e) {
+        throw InputError(std::string("--jfa-passes: ") + e.what());
+    }
+}
+
 RenderSettings makeRenderSettings(const SceneOptions& o) {
     RenderSettings s;
     s.shadow.size = o.shadowMapSize;
     s.shadow.provider = parseProvider(o.shadowMap).value_or(ShadowMapProvider::Uniform);
     s.method = parseMethod(o.method).value_or(ShadowMethod::Hard);
     s.penumbra.passes = o.jfaPasses;
-    // Validated here so that a bad count is one clear input error before any rendering.
-    try {
-        (void)penumbraPlan(s.penumbra, s.shadow.size);
-    } catch (const std::invalid_argument& e) {
-        throw InputError(std::string("--jfa-passes: ") + e.what());
+    const bool eyeSpace = s.method == ShadowMethod::JfaE || s.method == ShadowMethod::FloodE;
+    if (o.fullJfa) {
+        // Full JFA: steps down from half the grid. JFA-E's grid is the frame, whose size is only
+        // known per frame: the largest count is capped there (EyeSoftShadowPass::execute).
+        int full = 0;
+        while ((2 << full) <= s.shadow.size) ++full;
+        s.penumbra.passes = eyeSpace ? 13 : full;
     }
+    // Validated here so that a bad count is one clear input error before any rendering (the
+    // eye-space methods are checked against the frame: checkEyePasses).
+    if (!eyeSpace) try {
+            (void)penumbraPlan(s.penumbra, s.shadow.size);
+        } catch (const std::invalid_argument& e) {
+            throw InputError(std::string("--jfa-passes: ") + e.what());
+        }
     s.eyeSoft.objectIdFix = !o.noObjectIdFix;
     s.eyeSoft.midpointFix = !o.noMidpointFix;
     s.eyeSoft.boundaryThreshold = o.boundaryThreshold;
+    s.filtered.pcfKernel = o.pcfKernel;
+    s.filtered.pcss = parsePcssPreset(o.pcssPreset).value_or(PcssPreset{});
+    s.reference.samples = o.referenceSamples;
+    s.reference.mapSize = o.referenceMapSize;
     s.shadow.slopeBias = o.slopeBias;
     s.shadow.constantBias = o.constantBias;
     s.timing = o.timing == "query"    ? TimingMode::Query

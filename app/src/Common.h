@@ -29,11 +29,17 @@ struct SceneOptions {
     std::string shaderDir;            // --shader-dir
     int shadowMapSize = 1024;
     std::string shadowMap = "uniform"; // provider: uniform | tsm
-    std::string method = "hard";       // hard | jfa-l | flood-l | jfa-e | flood-e
+    std::string method = "hard";       // hard | jfa-l | flood-l | jfa-e | flood-e | pcf | pcss |
+                                       // reference
     int jfaPasses = 6;                 // JFA-L / flood-L reach: 2^passes - 1 texels
+    bool fullJfa = false;              // --full-jfa: log2(grid size) passes
     bool noObjectIdFix = false;        // JFA-E: first jump-too-far fix off
     bool noMidpointFix = false;        // JFA-E: second jump-too-far fix off
     float boundaryThreshold = 0.0f;    // JFA-E boundary distance; 0 = automatic
+    int pcfKernel = 3;                 // pcf: kernel x kernel taps
+    std::string pcssPreset = "16/24";  // pcss: blocker/filter samples
+    int referenceSamples = 256;        // reference: point lights over the disk
+    int referenceMapSize = 2048;       // reference: texels per side of each map
     float slopeBias = 2.0f;
     float constantBias = 2.0f;
     std::string timing = "auto";
@@ -55,6 +61,9 @@ Scene loadScene(const SceneOptions& o);
 /// The shader library for --shader-dir (or the embedded shaders); throws InputError.
 ShaderLibrary makeShaderLibrary(const SceneOptions& o);
 RenderSettings makeRenderSettings(const SceneOptions& o);
+/// JFA-E / flood-E flood the frame: their pass count must fit a width x height frame; throws
+/// InputError naming the valid range (the other methods are checked by makeRenderSettings).
+void checkEyePasses(const SceneOptions& o, const RenderSettings& s, int width, int height);
 CameraSpec makeCameraSpec(const SceneOptions& o);
 /// The camera the options ask for at width x height; throws InputError (e.g. no such camera).
 CameraView initialCamera(const Scene& scene, const SceneOptions& o, int width, int height);

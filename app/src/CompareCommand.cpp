@@ -86,6 +86,7 @@ int runCompare(const CompareRequest& r) {
     const ShaderLibrary shaders = makeShaderLibrary(r.scene);
     RenderSettings settings = makeRenderSettings(r.scene);
     settings.method = method;
+    checkEyePasses(r.scene, settings, r.width, r.height);
     Renderer methodRenderer(shaders, scene, settings);
     settings.method = reference;
     Renderer referenceRenderer(shaders, scene, settings);

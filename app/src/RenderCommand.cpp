@@ -3,6 +3,7 @@
 #include <renderer/Capture.h>
 #include <renderer/EglContext.h>
 #include <renderer/ShadowStats.h>
+#include <renderer/overlays/OverlayCapture.h>
 
 #include <iomanip>
 #include <iostream>
@@ -18,6 +19,8 @@ struct RenderRequest {
     std::string aliasingMap; // --aliasing-map FILE.exr
     bool sideBySide = false; // --side-by-side: uniform and TSM, plus comparison pictures
     int width = 512, height = 512;
+    std::string overlay;      // --overlay NAME: also write NAME.overlay-MODE.png
+    OverlayControls controls; // --variant, --flood-pass, --delaunay-step
 };
 
 void printShadowStats(const ShadowMapStats& s, std::ostream& out) {
@@ -39,11 +42,12 @@ std::filesystem::path withSuffix(const std::filesystem::path& p, std::string_vie
 struct ProviderResult {
     FrameImages frame;
     FloatImage diagnostics;
+    std::optional<OverlayCapture> overlay;
 };
 
 ProviderResult renderWith(const ShaderLibrary& shaders, const Scene& scene,
-                          const CameraView& camera, RenderSettings settings, int width,
-                          int height) {
+                          const CameraView& camera, RenderSettings settings, int width, int height,
+                          const RenderRequest& request) {
     settings.diagnostics = true;
     Renderer renderer(shaders, scene, settings);
     renderer.resize(width, height);
@@ -56,7 +60,15 @@ ProviderResult renderWith(const ShaderLibrary& shaders, const Scene& scene,
                   << ")";
     std::cout << ", frame " << width << "x" << height << ":\n";
     printTimings(renderer, std::cout);
-    return {readFrame(renderer), readTexture(*renderer.diagnostics(), 4)};
+    ProviderResult result{readFrame(renderer), readTexture(*renderer.diagnostics(), 4), {}};
+    if (!request.overlay.empty()) {
+        OverlayRenderer overlays(shaders);
+        OverlayControls controls = request.controls;
+        result.overlay = captureOverlay(overlays, *parseOverlay(request.overlay), renderer, camera,
+                                        controls, width, height);
+        for (const std::string& line : result.overlay->hud) std::cout << "  " << line << "\n";
+    }
+    return result;
 }
 
 int renderHeadless(const RenderRequest& r) {
@@ -67,6 +79,7 @@ int renderHeadless(const RenderRequest& r) {
               << "scene: " << scene.source << " (" << scene.triangleCount() << " triangles)\n";
     const ShaderLibrary shaders = makeShaderLibrary(r.scene);
     const RenderSettings base = makeRenderSettings(r.scene);
+    checkEyePasses(r.scene, base, r.width, r.height);
     std::vector<ShadowMapProvider> providers{base.shadow.provider};
     if (r.sideBySide) providers = {ShadowMapProvider::Uniform, ShadowMapProvider::Tsm};
 
@@ -74,7 +87,7 @@ int renderHeadless(const RenderRequest& r) {
     for (ShadowMapProvider p : providers) {
         RenderSettings settings = base;
         settings.shadow.provider = p;
-        results.push_back(renderWith(shaders, scene, camera, settings, r.width, r.height));
+        results.push_back(renderWith(shaders, scene, camera, settings, r.width, r.height, r));
         printShadowStats(summarizeShadowDiagnostics(results.back().diagnostics), std::cout);
     }
     // Every image is checked and encoded before anything is written, and each file is
@@ -85,6 +98,12 @@ int renderHeadless(const RenderRequest& r) {
             r.sideBySide ? r.name + "." + std::string(providerName(providers[i])) : r.name;
         const CapturePaths paths = writeFrame(results[i].frame, r.out, stem);
         written.insert(written.end(), {paths.png, paths.visibilityPng, paths.exr});
+        if (results[i].overlay) {
+            const std::filesystem::path o =
+                std::filesystem::path(r.out) / (stem + ".overlay-" + r.overlay + ".png");
+            writePng(o, results[i].overlay->image);
+            written.push_back(o);
+        }
         if (!r.aliasingMap.empty()) {
             const std::filesystem::path a =
                 r.sideBySide ? withSuffix(r.aliasingMap, providerName(providers[i]))
@@ -140,6 +159,27 @@ Runner addRenderCommand(CLI::App& app) {
     cmd->add_flag("--side-by-side", s->sideBySide,
                   "Render with the uniform and the TSM provider and write NAME.uniform-vs-tsm.png "
                   "(colour), .visibility.png and .footprint.png (heat map) side by side");
+    std::string overlayNames;
+    for (OverlayMode m : allOverlayModes())
+        if (m != OverlayMode::None)
+            overlayNames += (overlayNames.empty() ? "" : ", ") + std::string(overlayName(m));
+    cmd->add_option("--overlay", s->overlay,
+                    "Also write NAME.overlay-MODE.png: the frame's overlay picture, one of " +
+                        overlayNames)
+        ->check([](const std::string& v) {
+            const std::optional<OverlayMode> m = parseOverlay(v);
+            return m && *m != OverlayMode::None ? std::string() : "unknown overlay '" + v + "'";
+        });
+    cmd->add_option(
+           "--variant", s->controls.variant,
+           "Overlay: JFA variant index (0 JFA, 1 JFA+1, 2 JFA+2, 3 JFA^2, 4 1+JFA, 5 half)")
+        ->check(CLI::Range(0, 5));
+    cmd->add_option("--flood-pass", s->controls.floodPass,
+                    "Overlay flood-passes: show the state after this many passes (-1 = all)")
+        ->check(CLI::Range(-1, 1 << 20));
+    cmd->add_option("--delaunay-step", s->controls.delaunayStep,
+                    "Overlay delaunay: stage index 0-8 (sites .. flipped)")
+        ->check(CLI::Range(0, 8));
     return [s] { return renderHeadless(*s); };
 }
 

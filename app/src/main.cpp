@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
     const Runner voronoi = addVoronoiCommand(app);
     const Runner delaunay = addDelaunayCommand(app);
     const Runner compare = addCompareCommand(app);
+    const Runner capture = addCaptureCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -33,6 +34,7 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("voronoi")) return voronoi();
         if (app.got_subcommand("delaunay")) return delaunay();
         if (app.got_subcommand("compare")) return compare();
+        if (app.got_subcommand("capture")) return capture();
         const SceneOptions defaults;
         if (fl::displayAvailable()) {
             try {

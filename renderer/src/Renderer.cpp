@@ -60,15 +60,21 @@ std::string_view methodName(ShadowMethod m) {
         return "jfa-e";
     case ShadowMethod::FloodE:
         return "flood-e";
+    case ShadowMethod::Pcf:
+        return "pcf";
+    case ShadowMethod::Pcss:
+        return "pcss";
+    case ShadowMethod::Reference:
+        return "reference";
     default:
         return "hard";
     }
 }
 
 std::span<const ShadowMethod> allShadowMethods() {
-    static constexpr ShadowMethod kAll[] = {ShadowMethod::Hard, ShadowMethod::JfaL,
-                                            ShadowMethod::FloodL, ShadowMethod::JfaE,
-                                            ShadowMethod::FloodE};
+    static constexpr ShadowMethod kAll[] = {
+        ShadowMethod::Hard,   ShadowMethod::JfaL, ShadowMethod::FloodL, ShadowMethod::JfaE,
+        ShadowMethod::FloodE, ShadowMethod::Pcf,  ShadowMethod::Pcss,   ShadowMethod::Reference};
     return kAll;
 }
 
@@ -99,9 +105,19 @@ geom::ViewVolume lightVolume(const Scene& scene, const Light& light) {
 Renderer::Renderer(const ShaderLibrary& shaders, const Scene& scene, const RenderSettings& settings)
     : settings_(settings), scene_(scene), light_(sceneLight(scene)), sceneBounds_(scene.bounds),
       disk_(makeDiskLight(light_, scene.bounds)), lightVolume_(lightVolume(scene, light_)),
-      shadowPass_(shaders), penumbraPass_(shaders), eyeSoftPass_(shaders), forwardPass_(shaders),
-      diagnosticsPass_(shaders), presentPass_(shaders), timer_(settings.timing) {
+      shadowPass_(shaders), penumbraPass_(shaders), eyeSoftPass_(shaders), filteredPass_(shaders),
+      referencePass_(shaders), forwardPass_(shaders), diagnosticsPass_(shaders),
+      presentPass_(shaders), timer_(settings.timing) {
     gl::throwIfErrors("renderer set-up");
+}
+
+void Renderer::setLight(const Light& light) {
+    light_ = light;
+    disk_ = makeDiskLight(light_, sceneBounds_);
+    lightVolume_ = light_.type == Light::Type::Directional
+                       ? geom::fitDirectionalLight(sceneBounds_, light_.direction)
+                       : geom::fitPerspectiveLight(sceneBounds_, light_.position);
+    diagnosticsPass_.reset(); // a moved light changes the map: nothing to compare with
 }
 
 void Renderer::resize(int width, int height) {
@@ -149,11 +165,26 @@ void Renderer::render(const CameraView& camera) {
             {scene_, camera, shadow, settings_.shadow, disk_, settings_.eyeSoft,
              settings_.penumbra.passes, settings_.method == ShadowMethod::FloodE, width_, height_},
             &timer_));
+    // 2-3''. Baselines: PCF / PCSS filter the map per eye pixel; the ground truth renders its
+    //        own N maps over the disk. Either way a visibility texture for step 4.
+    const gl::Texture* baseline = nullptr;
+    if (settings_.method == ShadowMethod::Pcf || settings_.method == ShadowMethod::Pcss)
+        baseline = &filteredPass_
+                        .execute({scene_, camera, shadow, lightVolume_, disk_, settings_.filtered,
+                                  settings_.method == ShadowMethod::Pcss, width_, height_},
+                                 &timer_)
+                        .visibility;
+    if (settings_.method == ShadowMethod::Reference)
+        baseline = &referencePass_
+                        .execute({scene_, camera, sceneBounds_, disk_, settings_.shadow,
+                                  settings_.reference, width_, height_},
+                                 &timer_)
+                        .visibility;
     // 4. Forward shading with the method's visibility.
     timer_.begin("forward");
     const ForwardPass::Outputs fwd =
         forwardPass_.execute({scene_, camera, light_, shadow, penumbraMap_, &disk_,
-                              eyeSoft_ ? &eyeSoft_->visibility : nullptr});
+                              eyeSoft_ ? &eyeSoft_->visibility : baseline});
     timer_.end();
     // 5. Diagnostics: texel footprint and the previous frame's visibility (measurement only).
     diagnostics_ = nullptr;

@@ -2,6 +2,7 @@
 // The frame, as numbered steps: 1. shadow map from the light (uniform or TSM provider);
 // 2. (JFA-L, flood-L) silhouettes and 3. the flooded penumbra map, or (JFA-E, flood-E) the eye
 // hard-shadow image, its boundary seeds, the eye-space flood and the visibility composite;
+// or (PCF, PCSS) the filtered map per eye pixel, or (reference) N disk-sample maps accumulated;
 // 4. forward shading with the method's visibility; 5. (optional) shadow-map diagnostics;
 // 6. (window only) present. Owns the passes and the uploaded scene.
 
@@ -14,7 +15,9 @@
 #include <renderer/passes/ShadowMapPass.h>
 #include <renderer/soft/DiskLight.h>
 #include <renderer/soft/EyeSoftShadow.h>
+#include <renderer/soft/FilteredShadow.h>
 #include <renderer/soft/PenumbraMap.h>
+#include <renderer/soft/ReferenceShadow.h>
 
 #include <geometry/Framing.h>
 
@@ -25,13 +28,16 @@ namespace fl {
 
 /// The shadow methods.
 enum class ShadowMethod {
-    Hard,   // one shadow-map test (the light's centre)
-    JfaL,   // thesis §5.3: penumbra map by jump flooding in light space
-    FloodL, // the same phases with standard flooding (the reference for JFA-L)
-    JfaE,   // thesis §5.4: occluders jump-flooded in eye space from the hard-shadow image
-    FloodE, // the same phases with standard flooding (the reference for JFA-E)
+    Hard,      // one shadow-map test (the light's centre)
+    JfaL,      // thesis §5.3: penumbra map by jump flooding in light space
+    FloodL,    // the same phases with standard flooding (the reference for JFA-L)
+    JfaE,      // thesis §5.4: occluders jump-flooded in eye space from the hard-shadow image
+    FloodE,    // the same phases with standard flooding (the reference for JFA-E)
+    Pcf,       // baseline: percentage-closer filtering, a k x k kernel (FilteredShadow.h)
+    Pcss,      // baseline: percentage-closer soft shadows (FilteredShadow.h)
+    Reference, // ground truth: N point-light shadow maps over the disk (ReferenceShadow.h)
 };
-/// "hard", "jfa-l", "flood-l", "jfa-e", "flood-e".
+/// "hard", "jfa-l", "flood-l", "jfa-e", "flood-e", "pcf", "pcss", "reference".
 std::string_view methodName(ShadowMethod m);
 /// Every method, in the order the window cycles through them.
 std::span<const ShadowMethod> allShadowMethods();
@@ -41,9 +47,11 @@ std::optional<ShadowMethod> parseMethod(std::string_view name);
 struct RenderSettings {
     ShadowMapSettings shadow;
     ShadowMethod method = ShadowMethod::Hard;
-    PenumbraSettings penumbra; // JFA-L / flood-L (standardFlooding is set from the method);
-                               // JFA-E / flood-E take its pass count
-    EyeSoftSettings eyeSoft;   // JFA-E / flood-E: the jump-too-far fixes, boundary threshold
+    PenumbraSettings penumbra;       // JFA-L / flood-L (standardFlooding is set from the method);
+                                     // JFA-E / flood-E take its pass count
+    EyeSoftSettings eyeSoft;         // JFA-E / flood-E: the jump-too-far fixes, boundary threshold
+    FilteredShadowSettings filtered; // PCF kernel, PCSS preset
+    ReferenceSettings reference;     // ground truth: samples, map size
     TimingMode timing = TimingMode::Auto;
     bool diagnostics = false; // run step 3 (texel footprint and temporal continuity)
 };
@@ -102,6 +110,9 @@ class Renderer {
     void resetDiagnostics() { diagnosticsPass_.reset(); }
     [[nodiscard]] const PassTimer& timer() const { return timer_; }
     [[nodiscard]] const Light& light() const { return light_; }
+    /// Replaces the light (e.g. moved from the window): recomputes the disk light and the light's
+    /// view volume from the scene bounds; the next render() uses it.
+    void setLight(const Light& light);
     [[nodiscard]] int width() const { return width_; }
     [[nodiscard]] int height() const { return height_; }
 
@@ -115,6 +126,8 @@ class Renderer {
     ShadowMapPass shadowPass_;
     PenumbraMapPass penumbraPass_;
     EyeSoftShadowPass eyeSoftPass_;
+    FilteredShadowPass filteredPass_;
+    ReferenceShadowPass referencePass_;
     ForwardPass forwardPass_;
     ShadowDiagnosticsPass diagnosticsPass_;
     PresentPass presentPass_;

@@ -1,0 +1,314 @@
+// The viewer's actions (what the key table's entries do), the HUD text, screenshots, the live
+// comparison with standard flooding, and the outputs written on exit.
+
+#include "Viewer.h"
+
+#include <renderer/CameraPath.h>
+#include <renderer/Capture.h>
+#include <renderer/ImageIO.h>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+namespace fl::app {
+
+namespace {
+
+constexpr float kLightStep = 0.0872665f; // 5 degrees per key press
+
+template <typename T>
+std::size_t indexOf(std::span<const T> all, T value) {
+    const auto it = std::find(all.begin(), all.end(), value);
+    return it == all.end() ? 0 : static_cast<std::size_t>(it - all.begin());
+}
+
+template <typename T>
+T cycle(std::span<const T> all, T value, int delta) {
+    const auto n = static_cast<long>(all.size());
+    const long i = (static_cast<long>(indexOf(all, value)) + delta + n) % n;
+    return all[static_cast<std::size_t>(i)];
+}
+
+int log2Floor(int v) {
+    int n = 0;
+    while ((1 << (n + 1)) <= v) ++n;
+    return n;
+}
+
+std::string fixed(double v, int digits) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+    return buf;
+}
+
+} // namespace
+
+void Viewer::act(Action a) {
+    RenderSettings s = renderer_->settings();
+    const int maxPasses = log2Floor(s.shadow.size);
+    switch (a) {
+    case Action::None:
+        return;
+    case Action::Quit:
+        glfwSetWindowShouldClose(window_->handle(), GLFW_TRUE);
+        return;
+    case Action::NextMethod:
+    case Action::PrevMethod:
+        s.method = cycle(allShadowMethods(), s.method, a == Action::NextMethod ? 1 : -1);
+        stats_.reset();
+        break;
+    case Action::ToggleProvider:
+        s.shadow.provider = s.shadow.provider == ShadowMapProvider::Uniform
+                                ? ShadowMapProvider::Tsm
+                                : ShadowMapProvider::Uniform;
+        break;
+    case Action::ShadowMapSmaller:
+        s.shadow.size = std::max(256, s.shadow.size / 2);
+        s.penumbra.passes = std::min(s.penumbra.passes, log2Floor(s.shadow.size));
+        break;
+    case Action::ShadowMapLarger:
+        s.shadow.size = std::min(4096, s.shadow.size * 2);
+        break;
+    case Action::FewerPasses:
+        s.penumbra.passes = std::max(1, s.penumbra.passes - 1);
+        break;
+    case Action::MorePasses:
+        s.penumbra.passes = std::min(maxPasses, s.penumbra.passes + 1);
+        break;
+    case Action::NextVariant: {
+        const auto n = static_cast<int>(OverlayRenderer::variantNames().size());
+        if (n > 0) overlayControls_.variant = (overlayControls_.variant + 1) % n;
+        return;
+    }
+    case Action::NextOverlay:
+    case Action::PrevOverlay:
+        overlayMode_ = cycle(allOverlayModes(), overlayMode_, a == Action::NextOverlay ? 1 : -1);
+        return;
+    case Action::StepBack:
+    case Action::StepForward: {
+        const int d = a == Action::StepForward ? 1 : -1;
+        if (overlayMode_ == OverlayMode::Delaunay) {
+            const auto n = static_cast<int>(OverlayRenderer::delaunayStageNames().size());
+            overlayControls_.delaunayStep =
+                std::clamp(overlayControls_.delaunayStep + d, 0, std::max(n - 1, 0));
+        } else {
+            // Flood passes: -1 shows the finished flood; the overlay clamps a count past the
+            // plan's end to "all passes", so stepping back from -1 starts at the last one.
+            int& p = overlayControls_.floodPass;
+            if (d > 0)
+                p = p < 0 ? 0 : p + 1;
+            else
+                p = p < 0 ? (1 << 20) : std::max(0, p - 1);
+        }
+        return;
+    }
+    case Action::NewPoints:
+        overlayControls_.regenerate = true; // the overlay picks a new seed and clears clicks
+        return;
+    case Action::ToggleHelp:
+        showHelp_ = !showHelp_;
+        return;
+    case Action::ToggleHud:
+        showHud_ = !showHud_;
+        return;
+    case Action::Screenshot:
+        pendingScreenshots_.push_back("");
+        return;
+    case Action::Stats:
+        statsRequested_ = true;
+        return;
+    case Action::ToggleCameraMode:
+        controller_->toggleMode();
+        return;
+    case Action::ResetView:
+        controller_->reset();
+        return;
+    case Action::LightLeft:
+    case Action::LightRight:
+        moveLight(a == Action::LightLeft ? -kLightStep : kLightStep, 0.0f);
+        return;
+    case Action::LightUp:
+    case Action::LightDown:
+        moveLight(0.0f, a == Action::LightUp ? kLightStep : -kLightStep);
+        return;
+    case Action::LightSmaller:
+    case Action::LightLarger:
+        scaleLight(a == Action::LightLarger ? 1.25f : 0.8f);
+        return;
+    }
+    renderer_->setSettings(s);
+    std::cout << "method " << methodName(s.method) << ", shadow map "
+              << providerName(s.shadow.provider) << " " << s.shadow.size << "^2, JFA passes "
+              << s.penumbra.passes << "\n";
+}
+
+void Viewer::moveLight(float dAzimuth, float dElevation) {
+    Light l = renderer_->light();
+    const glm::vec3 c = scene_.bounds.center();
+    // Point/spot lights move on a sphere around the scene centre; a directional light turns.
+    const glm::vec3 offset = l.type == Light::Type::Directional
+                                 ? -l.direction * std::max(scene_.bounds.radius(), 1e-3f)
+                                 : l.position - c;
+    const float r = glm::length(offset);
+    if (r <= 0.0f) return;
+    float elevation = std::asin(std::clamp(offset.y / r, -1.0f, 1.0f));
+    float azimuth = std::atan2(offset.x, offset.z);
+    elevation = std::clamp(elevation + dElevation, 0.0872665f, 1.5533f); // 5..89 degrees
+    azimuth += dAzimuth;
+    const glm::vec3 dir(std::cos(elevation) * std::sin(azimuth), std::sin(elevation),
+                        std::cos(elevation) * std::cos(azimuth));
+    l.direction = -dir;
+    if (l.type != Light::Type::Directional) l.position = c + dir * r;
+    renderer_->setLight(l);
+    stats_.reset();
+}
+
+void Viewer::scaleLight(float factor) {
+    Light l = renderer_->light();
+    const float r = std::max(scene_.bounds.radius(), 1e-3f);
+    l.radius = std::clamp(l.radius * factor, 1e-4f * r, 0.5f * r);
+    renderer_->setLight(l);
+    stats_.reset();
+}
+
+void Viewer::setMessage(const std::string& text, bool error) {
+    message_ = text;
+    messageUntil_ = glfwGetTime() + (error ? 10.0 : 4.0);
+}
+
+void Viewer::renderWithStats(const CameraView& view) {
+    // The reference first, so that the method's frame is the one presented.
+    const RenderSettings method = renderer_->settings();
+    RenderSettings reference = method;
+    reference.method = *floodReference(method.method);
+    renderer_->setSettings(reference);
+    renderer_->render(view);
+    const double referenceMs = renderer_->timer().frameMs();
+    const FloatImage flood = readTexture(renderer_->visibility(), 1);
+    renderer_->setSettings(method);
+    renderer_->render(view);
+    // Standard flooding costs 2^n / n times the JFA passes (10x at 6 passes): space the periodic
+    // comparisons so that they add at most ~10% to the frame time on average (on llvmpipe a
+    // 1024^2 flood-l frame takes tens of seconds, so there they come far apart; G still works).
+    const double methodMs = std::max(renderer_->timer().frameMs(), 1e-3);
+    nextStatsFrame_ =
+        rendered_ + std::max(options_.statsEvery,
+                             static_cast<int>(std::min(1e6, 10.0 * referenceMs / methodMs)));
+    stats_ = compareSoftShadows(readTexture(renderer_->visibility(), 1), flood);
+    statsMethod_ = method.method;
+    statsFrame_ = rendered_;
+    if (statsRequested_) // asked for with G: also on stdout (the periodic ones only in the HUD)
+        std::cout << methodName(method.method) << " vs " << methodName(reference.method)
+                  << ": parity differs " << fixed(100.0 * stats_->parityShare, 3)
+                  << "% of pixels, |dI|<0.05 " << fixed(100.0 * stats_->deltaBuckets[0], 2)
+                  << "% of penumbra pixels, max |dI| " << fixed(stats_->maxDelta, 3) << "\n";
+    statsRequested_ = false;
+}
+
+std::vector<std::string> Viewer::hudLines(const std::vector<std::string>& overlay) const {
+    const RenderSettings& s = renderer_->settings();
+    const auto methods = allShadowMethods();
+    std::vector<std::string> lines;
+    lines.push_back(
+        "method " + std::string(methodName(s.method)) + " (" +
+        std::to_string(indexOf(methods, s.method) + 1) + "/" + std::to_string(methods.size()) +
+        ")   shadow map " + std::string(providerName(s.shadow.provider)) + " " +
+        std::to_string(s.shadow.size) + "^2   JFA passes " + std::to_string(s.penumbra.passes) +
+        "   light radius " + fixed(renderer_->light().radius, 3));
+    std::string times = fixed(renderer_->timer().frameMs(), 1) + " ms/frame, " + fixed(fps_, 1) +
+                        " FPS (" + renderer_->timer().modeName() + "):";
+    for (const PassTime& p : renderer_->timer().passes())
+        times += " " + p.name + " " + fixed(p.ms, 1);
+    lines.push_back(times);
+    if (stats_ && statsMethod_ == s.method) {
+        lines.push_back("vs " + std::string(methodName(*floodReference(s.method))) + " (frame " +
+                        std::to_string(statsFrame_) + "): parity differs " +
+                        fixed(100.0 * stats_->parityShare, 3) + "% of pixels, |dI|<0.05 " +
+                        fixed(100.0 * stats_->deltaBuckets[0], 2) + "% of penumbra pixels, max " +
+                        fixed(stats_->maxDelta, 3));
+    }
+    lines.push_back("camera " +
+                    std::string(controller_->mode() == CameraController::Mode::Orbit
+                                    ? "orbit"
+                                    : "fly x" + fixed(controller_->flySpeed(), 2)) +
+                    "   overlay " + std::string(overlayName(overlayMode_)));
+    lines.insert(lines.end(), overlay.begin(), overlay.end());
+    if (!message_.empty() && glfwGetTime() < messageUntil_) lines.push_back(message_);
+    if (showHelp_) {
+        lines.push_back("");
+        const std::vector<std::string> help = helpLines();
+        lines.insert(lines.end(), help.begin(), help.end());
+    } else {
+        lines.push_back("H: help");
+    }
+    return lines;
+}
+
+std::string Viewer::expandName(const std::string& name) const {
+    auto replace = [](std::string s, const std::string& key, std::string_view value) {
+        for (std::size_t at; (at = s.find(key)) != std::string::npos;)
+            s.replace(at, key.size(), value);
+        return s;
+    };
+    std::string out = replace(name, "{method}", methodName(renderer_->settings().method));
+    out = replace(out, "{overlay}", overlayName(overlayMode_));
+    return replace(out, "{provider}", providerName(renderer_->settings().shadow.provider));
+}
+
+void Viewer::screenshot(const std::string& name, glm::ivec2 size) {
+    std::string stem = expandName(name);
+    if (stem.empty()) { // the key: the next free numbered name
+        do {
+            char buf[32];
+            std::snprintf(buf, sizeof buf, "capture-%04d-", ++captureCounter_);
+            stem = buf + std::string(methodName(renderer_->settings().method));
+        } while (std::filesystem::exists(options_.captureDir / (stem + ".png")));
+    }
+    try {
+        std::filesystem::create_directories(options_.captureDir);
+        // The window image first: it is the back buffer, which the frame read-back leaves alone.
+        writePng(options_.captureDir / (stem + ".window.png"),
+                 readDefaultFramebuffer(size.x, size.y));
+        const CapturePaths p = writeFrame(readFrame(*renderer_), options_.captureDir, stem);
+        std::cout << "wrote " << p.png.string() << ", " << p.exr.string() << "\n";
+        setMessage("wrote " + p.png.string() + " and .exr", false);
+    } catch (const std::exception& e) {
+        std::cerr << "error: screenshot " << stem << ": " << e.what() << "\n";
+        setMessage(std::string("! screenshot failed: ") + e.what(), true);
+    }
+}
+
+void Viewer::recordPose(bool force) {
+    if (options_.record.empty()) return;
+    if (!force && (rendered_ - 1) % std::max(options_.recordEvery, 1) != 0) return;
+    const CameraKey k = controller_->pose();
+    const float eps = 1e-4f * std::max(scene_.bounds.radius(), 1e-3f);
+    // A key only when the camera moved, so standing still records no zero-length segments.
+    if (!recorded_.empty() && glm::length(recorded_.back().eye - k.eye) < eps &&
+        glm::length(recorded_.back().target - k.target) < eps)
+        return;
+    recorded_.push_back(k);
+}
+
+void Viewer::writeOutputs() {
+    if (!options_.record.empty()) {
+        std::vector<CameraKey> keys = recorded_;
+        if (keys.empty()) keys.push_back(controller_->pose());
+        if (keys.size() < 2) keys.push_back(keys.back()); // a camera that never moved
+        writeCameraPath(options_.record, CameraPath(keys, glm::degrees(controller_->yfov())));
+        std::cout << "recorded " << keys.size() << " camera keys to " << options_.record << "\n";
+    }
+    if (!options_.fpsLog.empty()) {
+        writeTextFile(options_.fpsLog, "frame,method,provider,shadow_size,jfa_passes,overlay,width,"
+                                       "height,render_ms,loop_ms,stats\n" +
+                                           fpsRows_);
+        std::cout << "wrote " << options_.fpsLog << "\n";
+    }
+}
+
+} // namespace fl::app

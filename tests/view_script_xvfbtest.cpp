@@ -1,0 +1,191 @@
+// `floodlight view` driven by --script under Xvfb (ctest runs this through xvfb-run): every
+// shadow method and every overlay reached from the keyboard and compared with goldens, the HUD
+// drawn, minimise / resize to 0x0 and back, a bad dropped file, and --record's camera path.
+
+#include "ImageCompare.h"
+#include "TestPaths.h"
+
+#include <renderer/CameraPath.h>
+#include <renderer/GltfLoader.h>
+#include <renderer/Renderer.h>
+#include <renderer/overlays/Overlay.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+namespace fl::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct ViewRun {
+    int code = -1;
+    std::string output; // stdout and stderr
+};
+
+// Runs the viewer at 256 x 192 on the default scene with `script`; screenshots go to `dir`.
+// Small sizes keep the session within seconds on llvmpipe (flood-l is 63 passes; the reference
+// method is given 16 point lights instead of its default).
+ViewRun runView(const fs::path& dir, const std::string& script, const std::string& extra = {}) {
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const fs::path scriptFile = dir / "session.script", log = dir / "output.txt";
+    std::ofstream(scriptFile) << script;
+    const std::string cmd = std::string(FLOODLIGHT_BINARY) +
+                            " view --width 256 --height 192 --shadow-map-size 512 "
+                            "--reference-samples 16 --no-hud --stats-every 0 --script '" +
+                            scriptFile.string() + "' --screenshot-dir '" + dir.string() + "' " +
+                            extra + " > '" + log.string() + "' 2>&1";
+    ViewRun r;
+    const int status = std::system(cmd.c_str());
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    std::ifstream in(log);
+    std::ostringstream text;
+    text << in.rdbuf();
+    r.output = text.str();
+    return r;
+}
+
+// Same tolerances as golden_gltest's colour goldens, for the same reasons: bit-exact on the
+// machine that made them; another driver may round shading by a few steps and flip shadow tests
+// within float precision at single pixels, so any pixel may differ but the mean stays under 1.5
+// steps and under 1% of pixels differ by more than 16. A wrong method, overlay, camera or light
+// changes far more than that.
+Tolerance frameTolerance() {
+    Tolerance tol;
+    tol.maxAbs = 255;
+    tol.meanAbs = 1.5;
+    tol.pixelThreshold = 16;
+    tol.maxPercentOver = 1.0;
+    return tol;
+}
+
+void expectGolden(const fs::path& file, const std::string& golden) {
+    ASSERT_TRUE(fs::exists(file)) << file << " was not written";
+    const CompareResult c = compareWithGolden(readPng(file), golden, frameTolerance());
+    EXPECT_TRUE(c.pass) << golden << ": " << c.report;
+}
+
+std::string dashToUnderscore(std::string_view name) {
+    std::string s(name);
+    std::replace(s.begin(), s.end(), '-', '_');
+    return s;
+}
+
+TEST(ViewScript, EveryMethodAndOverlayFromTheKeyboard) {
+    const fs::path dir = outputDir("view_script") / "session";
+    const auto methods = allShadowMethods();
+    const auto overlays = allOverlayModes();
+    std::ostringstream s;
+    // Each method: M, then a screenshot of the frame that follows (named by the viewer's state,
+    // so a key that failed to switch shows up as a missing file).
+    s << "screenshot method-{method}\nwait 1\n";
+    for (std::size_t i = 1; i < methods.size(); ++i)
+        s << "key M\nscreenshot method-{method}\nwait 1\n";
+    // Back to the first method, then forward to jfa-l (the overlays need its penumbra map).
+    s << "key M\n";
+    const auto jfaL = std::find(methods.begin(), methods.end(), ShadowMethod::JfaL);
+    ASSERT_NE(jfaL, methods.end());
+    for (auto it = methods.begin(); it != jfaL; ++it) s << "key M\n";
+    s << "wait 1\n";
+    for (std::size_t i = 1; i < overlays.size(); ++i) {
+        s << "key O\n";
+        if (overlays[i] == OverlayMode::VoronoiPlayground) s << "click 40 40\nclick 200 150\n";
+        if (overlays[i] == OverlayMode::FloodPasses) s << "key .\nkey .\n"; // after 2 passes
+        s << "screenshot overlay-{overlay}\nwait 1\n";
+    }
+    // Other settings: overlay off, TSM, a smaller map, fewer passes, light moved and larger.
+    s << "key O\nkey T\nkey [\nkey -\nkey LEFT\nkey UP\nkey X\nscreenshot tweaked\nwait 1\n";
+    s << "key G\nwait 1\n"; // live comparison with flood-l
+    s << "key F1\nscreenshot hud\nwait 1\nkey H\nscreenshot help\nwait 1\nquit\n"; // HUD, help
+    const ViewRun r = runView(dir, s.str());
+    ASSERT_EQ(r.code, 0) << r.output;
+
+    for (ShadowMethod m : methods)
+        expectGolden(dir / ("method-" + std::string(methodName(m)) + ".png"),
+                     "view_method_" + dashToUnderscore(methodName(m)));
+    for (std::size_t i = 1; i < overlays.size(); ++i)
+        expectGolden(dir / ("overlay-" + std::string(overlayName(overlays[i])) + ".window.png"),
+                     "view_overlay_" + dashToUnderscore(overlayName(overlays[i])));
+    expectGolden(dir / "tweaked.png", "view_tweaked");
+    EXPECT_NE(r.output.find("method jfa-l, shadow map tsm 256^2, JFA passes 5"), std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("vs flood-l"), std::string::npos) << r.output;
+
+    // The HUD: the same frame as "tweaked", with the box in the top-left corner only.
+    const ByteImage plain = readPng(dir / "tweaked.window.png");
+    const ByteImage hud = readPng(dir / "hud.window.png");
+    ASSERT_EQ(plain.data.size(), hud.data.size());
+    auto regionDiffers = [&](int x0, int y0, int x1, int y1) {
+        int differing = 0;
+        for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x)
+                for (int c = 0; c < 3; ++c) {
+                    const std::size_t i = (std::size_t(y) * plain.width + x) * 4 + c;
+                    differing += plain.data[i] != hud.data[i];
+                }
+        return differing;
+    };
+    EXPECT_GT(regionDiffers(0, 0, 64, 32), 64 * 32); // box and text
+    EXPECT_EQ(regionDiffers(0, plain.height - 8, plain.width, plain.height), 0);
+    // H adds the help below: the bottom rows change too.
+    const ByteImage help = readPng(dir / "help.window.png");
+    ASSERT_EQ(help.data.size(), hud.data.size());
+    EXPECT_FALSE(std::equal(help.data.end() - help.width * 4 * 8, help.data.end(),
+                            hud.data.end() - hud.width * 4 * 8));
+}
+
+TEST(ViewScript, SurvivesMinimiseResizeAndABadDrop) {
+    const fs::path dir = outputDir("view_script") / "resize";
+    fs::create_directories(dir.parent_path());
+    const fs::path bad = outputDir("view_script") / "bad.glb";
+    std::ofstream(bad) << "not a glTF file";
+    const std::string asset = std::string(FLOODLIGHT_SOURCE_DIR) + "/assets/default.glb";
+    const ViewRun r = runView(dir, "wait 2\nresize 0 0\nwait 3\nresize 1 1\nwait 1\n"
+                                   "resize 200 150\nwait 2\nscreenshot after-resize\nwait 1\n"
+                                   "drop /nonexistent/scene.glb\nwait 1\ndrop " +
+                                       bad.string() +
+                                       "\nwait 1\nscreenshot after-bad-drop\nwait 1\n"
+                                       "drop " +
+                                       asset + "\nwait 1\nscreenshot after-good-drop\n");
+    ASSERT_EQ(r.code, 0) << r.output;
+    EXPECT_NE(r.output.find("cannot open /nonexistent/scene.glb"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("cannot open " + bad.string()), std::string::npos) << r.output;
+    const ByteImage resized = readPng(dir / "after-resize.window.png");
+    EXPECT_EQ(resized.width, 200);
+    EXPECT_EQ(resized.height, 150);
+    // A failed drop keeps the scene: the next frame is the same picture.
+    const ByteImage kept = readPng(dir / "after-bad-drop.png");
+    EXPECT_TRUE(kept.data == readPng(dir / "after-resize.png").data);
+    // A good drop loads it (the same default scene, from its file).
+    EXPECT_TRUE(fs::exists(dir / "after-good-drop.png"));
+    EXPECT_NE(r.output.find("scene: " + asset), std::string::npos) << r.output;
+}
+
+TEST(ViewScript, RecordWritesTheWalkedPath) {
+    const fs::path dir = outputDir("view_script") / "record";
+    const fs::path path = dir / "walk.json";
+    const ViewRun r =
+        runView(dir, "wait 2\nkey TAB\nhold W 12\ndrag left 100 100 160 110 4\nwait 6\n",
+                "--record '" + path.string() + "' --record-every 4");
+    ASSERT_EQ(r.code, 0) << r.output;
+    const CameraPath walked = readCameraPath(path);
+    ASSERT_GE(walked.keys().size(), 3u);
+    // It starts where the view starts (the scene's camera) and ends somewhere else.
+    LoadOptions lo;
+    const Scene scene = loadGltf(std::string(FLOODLIGHT_SOURCE_DIR) + "/assets/default.glb", lo);
+    const glm::vec3 start = makeCameraView(scene, {}, 256.0f / 192.0f).eye;
+    const float tol = 1e-3f * scene.bounds.radius();
+    EXPECT_LT(glm::length(walked.keys().front().eye - start), tol);
+    EXPECT_GT(glm::length(walked.keys().back().eye - start), 0.05f * scene.bounds.radius());
+    // Written atomically: no temporary file left beside it.
+    for (const auto& e : fs::directory_iterator(dir))
+        EXPECT_EQ(e.path().string().find(".tmp"), std::string::npos) << e.path();
+}
+
+} // namespace
+} // namespace fl::test
