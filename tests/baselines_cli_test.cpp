@@ -1,6 +1,7 @@
 // The floodlight binary with the baseline methods (pcf, pcss, reference): they render, and their
 // options reject bad values with a usage error naming the option.
 
+#include "CliRun.h"
 #include "TestPaths.h"
 
 #include <renderer/ImageIO.h>
@@ -15,20 +16,8 @@
 namespace fl::test {
 namespace {
 
-struct Outcome {
-    int code;
-    std::string output; // stdout and stderr together
-};
-
 Outcome run(const std::string& args) {
-    const std::string cmd = std::string(FLOODLIGHT_BINARY) + " " + args + " 2>&1";
-    FILE* pipe = popen(cmd.c_str(), "r");
-    if (!pipe) return {-1, "popen failed"};
-    std::string out;
-    std::array<char, 4096> buf{};
-    while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) out.append(buf.data(), n);
-    const int status = pclose(pipe);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), out};
+    return runCommand(std::string(FLOODLIGHT_BINARY) + " " + args);
 }
 
 TEST(BaselinesCli, EachBaselineRendersWithItsPhases) {

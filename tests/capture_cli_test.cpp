@@ -3,6 +3,7 @@
 // summary and a report that headless Chromium loads with every chart drawn; bad input is one
 // clear message, exit code 1 and no summary or report left behind.
 
+#include "CliRun.h"
 #include "TestPaths.h"
 
 #include <gtest/gtest.h>
@@ -21,20 +22,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Outcome {
-    int code;
-    std::string output; // stdout and stderr together
-};
-
-Outcome shell(const std::string& cmd) {
-    FILE* pipe = popen((cmd + " 2>&1").c_str(), "r");
-    if (!pipe) return {-1, "popen failed"};
-    std::string out;
-    std::array<char, 4096> buf{};
-    while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) out.append(buf.data(), n);
-    const int status = pclose(pipe);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), out};
-}
+Outcome shell(const std::string& cmd) { return runCommand(cmd); }
 
 Outcome capture(const fs::path& script, const fs::path& out) {
     return shell(std::string(FLOODLIGHT_BINARY) + " capture " + script.string() + " --out " +

@@ -1,5 +1,6 @@
 // The floodlight binary: exit codes and messages for bad input, and what `render` writes.
 
+#include "CliRun.h"
 #include "TestPaths.h"
 
 #include <renderer/ImageIO.h>
@@ -16,20 +17,8 @@
 namespace fl::test {
 namespace {
 
-struct Outcome {
-    int code;
-    std::string output; // stdout and stderr together
-};
-
 Outcome run(const std::string& args) {
-    const std::string cmd = std::string(FLOODLIGHT_BINARY) + " " + args + " 2>&1";
-    FILE* pipe = popen(cmd.c_str(), "r");
-    if (!pipe) return {-1, "popen failed"};
-    std::string out;
-    std::array<char, 4096> buf{};
-    while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) out.append(buf.data(), n);
-    const int status = pclose(pipe);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), out};
+    return runCommand(std::string(FLOODLIGHT_BINARY) + " " + args);
 }
 
 TEST(Cli, HelpExitsZero) {

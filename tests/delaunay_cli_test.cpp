@@ -2,6 +2,7 @@
 // printed counts match the files written, --steps writes every picture, and bad input or flags
 // give one clear message and exit code 1 (input) or 2 (usage).
 
+#include "CliRun.h"
 #include "TestPaths.h"
 
 #include <geometry/PointIO.h>
@@ -20,20 +21,8 @@
 namespace fl::test {
 namespace {
 
-struct Outcome {
-    int code;
-    std::string output; // stdout and stderr together
-};
-
 Outcome run(const std::string& args, const std::string& env = {}) {
-    const std::string cmd = env + " " + std::string(FLOODLIGHT_BINARY) + " " + args + " 2>&1";
-    FILE* pipe = popen(cmd.c_str(), "r");
-    if (!pipe) return {-1, "popen failed"};
-    std::string out;
-    std::array<char, 4096> buf{};
-    while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) out.append(buf.data(), n);
-    const int status = pclose(pipe);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), out};
+    return runCommand(env + " " + std::string(FLOODLIGHT_BINARY) + " " + args);
 }
 
 std::string sample(const char* name) {
