@@ -22,7 +22,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-Outcome shell(const std::string& cmd) { return runCommand(cmd); }
+Outcome shell(const std::string& cmd) {
+    return runCommand(cmd);
+}
 
 Outcome capture(const fs::path& script, const fs::path& out) {
     return shell(std::string(FLOODLIGHT_BINARY) + " capture " + script.string() + " --out " +

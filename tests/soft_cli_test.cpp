@@ -54,11 +54,10 @@ TEST(SoftCli, ZeroLightRadiusRendersTheHardShadows) {
 
 TEST(SoftCli, BadLightRadiusIsAUsageError) {
     for (const char* v : {"-1", "nan", "inf", "wide"}) {
-        const Outcome r = run(std::string("render --method jfa-l --light-radius ") + v +
-                              " --out " + outputDir("soft_cli").string());
+        const Outcome r = run(std::string("render --method jfa-l --light-radius ") + v + " --out " +
+                              outputDir("soft_cli").string());
         EXPECT_EQ(r.code, 2) << v << "\n" << r.output;
-        EXPECT_NE(r.output.find("--light-radius: must be a finite number >= 0"),
-                  std::string::npos)
+        EXPECT_NE(r.output.find("--light-radius: must be a finite number >= 0"), std::string::npos)
             << r.output;
     }
 }
@@ -67,8 +66,8 @@ TEST(SoftCli, BadLightRadiusIsAUsageError) {
 // beyond log2 of the grid (the shadow map for -l, the frame for -e) an input error naming the
 // valid range. --full-jfa takes the largest count.
 TEST(SoftCli, PassCountsOutsideTheGridAreRejected) {
-    const std::string out = " --width 32 --height 32 --shadow-map-size 256 --out " +
-                            outputDir("soft_cli").string();
+    const std::string out =
+        " --width 32 --height 32 --shadow-map-size 256 --out " + outputDir("soft_cli").string();
     EXPECT_EQ(run("render --method jfa-l --jfa-passes 0" + out).code, 2);
     Outcome r = run("render --jfa-passes 9 --method jfa-l" + out);
     EXPECT_EQ(r.code, 1) << r.output;
@@ -116,8 +115,8 @@ TEST(SoftCli, CompareWritesCsvSummaryAndTheWorstFrame) {
 
 TEST(SoftCli, CompareNeedsAJumpFloodingMethod) {
     const auto dir = freshDir("soft_cli_compare_bad");
-    const Outcome r = run("compare --method hard --frames 2 --width 32 --height 32 --out " +
-                          dir.string());
+    const Outcome r =
+        run("compare --method hard --frames 2 --width 32 --height 32 --out " + dir.string());
     EXPECT_EQ(r.code, 1) << r.output;
     EXPECT_NE(r.output.find("no standard-flooding reference"), std::string::npos) << r.output;
     EXPECT_FALSE(std::filesystem::exists(dir / "summary.json"));
