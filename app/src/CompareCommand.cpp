@@ -53,7 +53,7 @@ double passMs(const Renderer& r, const std::string& name) {
 
 // Every phase either method may time (absent phases read 0).
 const char* kPhases[] = {"shadow map", "silhouettes", "occluder ids", "eye hard shadows",
-                         "boundaries", "flood", "composite", "forward"};
+                         "boundaries", "flood",       "composite",    "forward"};
 
 std::string csvHeader() {
     std::string h = "frame,penumbra_reference,penumbra_method,dI_lt_0.05,dI_0.05_0.1,dI_0.1_0.2,"
