@@ -377,9 +377,7 @@ TEST_F(OverlayTest, PictureGoldens) {
     // a mode that runs a flood kernel (which binds its own framebuffers and viewports).
     {
         const gl::Texture target(GL_RGBA8, 64, 32);
-        gl::Framebuffer fbo = gl::Framebuffer::create();
-        fbo.attach(GL_COLOR_ATTACHMENT0, target);
-        fbo.setDrawBuffers(1);
+        const gl::Framebuffer fbo = gl::Framebuffer::forColor(target, "test target");
         glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
         glViewport(3, 4, 50, 20);
         glEnable(GL_DEPTH_TEST);

@@ -47,6 +47,14 @@ Framebuffer Framebuffer::create() {
     return Framebuffer(id);
 }
 
+Framebuffer Framebuffer::forColor(const Texture& color, const char* what) {
+    Framebuffer fbo = create();
+    fbo.attach(GL_COLOR_ATTACHMENT0, color);
+    fbo.setDrawBuffers(1);
+    fbo.check(what);
+    return fbo;
+}
+
 void Framebuffer::attach(GLenum attachment, const Texture& tex) {
     glNamedFramebufferTexture(id(), attachment, tex.id(), 0);
 }

@@ -67,10 +67,7 @@ const gl::Texture& GlFloodKernel::otherTexture(int width, int height, const gl::
     if (inserted) {
         for (int i = 0; i < 2; ++i) {
             pair.tex[i] = gl::Texture(GL_RGBA32F, width, height);
-            pair.fbo[i] = gl::Framebuffer::create();
-            pair.fbo[i].attach(GL_COLOR_ATTACHMENT0, pair.tex[i]);
-            pair.fbo[i].setDrawBuffers(1);
-            pair.fbo[i].check("jfa ping-pong");
+            pair.fbo[i] = gl::Framebuffer::forColor(pair.tex[i], "jfa ping-pong");
         }
     }
     return current == &pair.tex[0] ? pair.tex[1] : pair.tex[0];

@@ -106,6 +106,9 @@ class Framebuffer : public Handle<detail::FramebufferDeleter> {
   public:
     /// Creates an empty framebuffer (no attachments yet).
     static Framebuffer create();
+    /// A checked framebuffer drawing into `color` alone (attachment 0, no depth); throws GlError
+    /// naming `what` if it is incomplete.
+    static Framebuffer forColor(const Texture& color, const char* what);
     /// Attaches level 0 of `tex` at `attachment` (GL_COLOR_ATTACHMENTi / GL_DEPTH_ATTACHMENT).
     void attach(GLenum attachment, const Texture& tex);
     /// Sets the draw buffers to COLOR_ATTACHMENT0..count-1 (0 = none).

@@ -9,10 +9,7 @@ namespace fl {
 OverlayCapture captureOverlay(OverlayRenderer& overlays, OverlayMode mode, const Renderer& renderer,
                               const CameraView& camera, OverlayControls& controls, int w, int h) {
     const gl::Texture target(GL_RGBA8, w, h);
-    gl::Framebuffer fbo = gl::Framebuffer::create();
-    fbo.attach(GL_COLOR_ATTACHMENT0, target);
-    fbo.setDrawBuffers(1);
-    fbo.check("overlay capture");
+    const gl::Framebuffer fbo = gl::Framebuffer::forColor(target, "overlay capture");
     glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
     glViewport(0, 0, w, h);
     const float black[4] = {0.0f, 0.0f, 0.0f, 1.0f};

@@ -16,14 +16,19 @@ ShadowMapPass::ShadowMapPass(const ShaderLibrary& shaders)
     : program_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "shadow_depth.vert.glsl"},
                                             {GL_FRAGMENT_SHADER, "shadow_depth.frag.glsl"}})) {}
 
-void ShadowMapPass::resize(int size) {
-    if (depth_ && depth_.width() == size) return;
-    depth_ = gl::Texture(GL_DEPTH_COMPONENT32F, size, size);
+gl::Texture makeShadowDepthTexture(int size) {
+    gl::Texture depth(GL_DEPTH_COMPONENT32F, size, size);
     // Hard shadows compare one texel: NEAREST keeps the test binary (LINEAR would give
     // hardware 2x2 PCF, a different method).
-    depth_.setSampling(GL_NEAREST, GL_NEAREST);
-    glTextureParameteri(depth_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-    glTextureParameteri(depth_.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    depth.setSampling(GL_NEAREST, GL_NEAREST);
+    glTextureParameteri(depth.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glTextureParameteri(depth.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    return depth;
+}
+
+void ShadowMapPass::resize(int size) {
+    if (depth_ && depth_.width() == size) return;
+    depth_ = makeShadowDepthTexture(size);
     fbo_ = gl::Framebuffer::create();
     fbo_.attach(GL_DEPTH_ATTACHMENT, depth_);
     fbo_.setDrawBuffers(0);

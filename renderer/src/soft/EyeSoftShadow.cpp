@@ -168,14 +168,8 @@ void EyeSoftShadowPass::resize(int width, int height, int shadowSize) {
     eyeFbo_.attach(GL_DEPTH_ATTACHMENT, eyeDepth_);
     eyeFbo_.setDrawBuffers(2);
     eyeFbo_.check("JFA-E eye pass");
-    seedsFbo_ = gl::Framebuffer::create();
-    seedsFbo_.attach(GL_COLOR_ATTACHMENT0, seeds_);
-    seedsFbo_.setDrawBuffers(1);
-    seedsFbo_.check("JFA-E boundary seeds");
-    visibilityFbo_ = gl::Framebuffer::create();
-    visibilityFbo_.attach(GL_COLOR_ATTACHMENT0, visibility_);
-    visibilityFbo_.setDrawBuffers(1);
-    visibilityFbo_.check("JFA-E visibility");
+    seedsFbo_ = gl::Framebuffer::forColor(seeds_, "JFA-E boundary seeds");
+    visibilityFbo_ = gl::Framebuffer::forColor(visibility_, "JFA-E visibility");
 }
 
 EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, PassTimer* timer) {

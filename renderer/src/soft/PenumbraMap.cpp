@@ -73,10 +73,7 @@ PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, PassTimer* t
     const jfa::Plan plan = penumbraPlan(in.settings, size); // validates before any GL work
     if (!seeds_ || seeds_.width() != size) {
         seeds_ = gl::Texture(GL_RGBA32F, size, size);
-        fbo_ = gl::Framebuffer::create();
-        fbo_.attach(GL_COLOR_ATTACHMENT0, seeds_);
-        fbo_.setDrawBuffers(1);
-        fbo_.check("silhouette seeds");
+        fbo_ = gl::Framebuffer::forColor(seeds_, "silhouette seeds");
     }
     // Phase 2: silhouettes.
     if (timer) timer->begin("silhouettes");

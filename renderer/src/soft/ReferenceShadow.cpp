@@ -95,11 +95,8 @@ ReferenceShadowPass::ReferenceShadowPass(const ShaderLibrary& shaders)
 
 void ReferenceShadowPass::resize(int width, int height, int mapSize) {
     if (!map_ || map_.width() != mapSize) {
-        // As ShadowMapPass: NEAREST and a LEQUAL comparison, so one sample is the hard test.
-        map_ = gl::Texture(GL_DEPTH_COMPONENT32F, mapSize, mapSize);
-        map_.setSampling(GL_NEAREST, GL_NEAREST);
-        glTextureParameteri(map_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-        glTextureParameteri(map_.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+        // The shadow pass's kind of map, so one sample is exactly the hard test.
+        map_ = makeShadowDepthTexture(mapSize);
         mapFbo_ = gl::Framebuffer::create();
         mapFbo_.attach(GL_DEPTH_ATTACHMENT, map_);
         mapFbo_.setDrawBuffers(0);
@@ -115,14 +112,8 @@ void ReferenceShadowPass::resize(int width, int height, int mapSize) {
     eyeFbo_.attach(GL_DEPTH_ATTACHMENT, eyeDepth_);
     eyeFbo_.setDrawBuffers(1);
     eyeFbo_.check("reference eye pass");
-    sumFbo_ = gl::Framebuffer::create();
-    sumFbo_.attach(GL_COLOR_ATTACHMENT0, sum_);
-    sumFbo_.setDrawBuffers(1);
-    sumFbo_.check("reference sum");
-    visibilityFbo_ = gl::Framebuffer::create();
-    visibilityFbo_.attach(GL_COLOR_ATTACHMENT0, visibility_);
-    visibilityFbo_.setDrawBuffers(1);
-    visibilityFbo_.check("reference visibility");
+    sumFbo_ = gl::Framebuffer::forColor(sum_, "reference sum");
+    visibilityFbo_ = gl::Framebuffer::forColor(visibility_, "reference visibility");
 }
 
 ReferenceShadowPass::Outputs ReferenceShadowPass::execute(const Inputs& in, PassTimer* timer) {
@@ -157,6 +148,9 @@ ReferenceShadowPass::Outputs ReferenceShadowPass::execute(const Inputs& in, Pass
     depth_.set("uSlopeBias", in.shadowSettings.slopeBias);
     depth_.set("uConstantBias", in.shadowSettings.constantBias);
     accumulate_.set("uShadowWarp", glm::mat4(1.0f));
+    glBlendEquation(GL_FUNC_ADD);
+    glBlendFunc(GL_ONE, GL_ONE);
+    glBindTextureUnit(0, points_.id());
     for (const glm::vec3& q : samples) {
         // The volume the scene's own point light at q would get (Renderer's lightVolume()).
         const glm::mat4 viewProj = geom::fitPerspectiveLight(in.sceneBounds, q).viewProj();
@@ -171,18 +165,16 @@ ReferenceShadowPass::Outputs ReferenceShadowPass::execute(const Inputs& in, Pass
 
         glBindFramebuffer(GL_FRAMEBUFFER, sumFbo_.id());
         glViewport(0, 0, in.width, in.height);
+        // Depth test and blending alternate with the map pass; the rest is set once above.
         glDisable(GL_DEPTH_TEST);
         glEnable(GL_BLEND);
-        glBlendEquation(GL_FUNC_ADD);
-        glBlendFunc(GL_ONE, GL_ONE);
         accumulate_.set("uLightViewProj", viewProj);
-        glBindTextureUnit(0, points_.id());
         glBindTextureUnit(1, map_.id());
         drawFullscreen(accumulate_, emptyVao_);
         glDisable(GL_BLEND);
+        glBindTextureUnit(1, 0); // the next map pass draws into map_
     }
     glBlendFunc(GL_ONE, GL_ZERO); // the default
-    glBindTextureUnit(1, 0);
     if (timer) timer->end();
 
     if (timer) timer->begin("reference resolve");

@@ -84,4 +84,8 @@ class ShadowMapPass {
 /// uLightViewProj / uShadowWarp uniforms of `program`.
 void bindShadowMap(const gl::Program& program, const ShadowMapPass::Outputs& shadow);
 
+/// A size x size depth map sampled as the hard test reads it (NEAREST, LEQUAL comparison):
+/// the shadow pass's own, and the ground truth's point-light maps.
+gl::Texture makeShadowDepthTexture(int size);
+
 } // namespace fl
