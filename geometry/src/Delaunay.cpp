@@ -13,6 +13,8 @@
 // never wrong. After that every edit is a local one proven to keep a triangulation.
 #include <geometry/Delaunay.h>
 
+#include "Stopwatch.h"
+
 #include <geometry/Predicates.h>
 
 #include "DelaunaySteps.h"
@@ -35,19 +37,7 @@ namespace {
 using detail::WorkMesh;
 using glm::dvec2;
 
-class Stopwatch {
-  public:
-    // Milliseconds since the last call (or construction).
-    double lap() {
-        const auto now = std::chrono::steady_clock::now();
-        const double ms = std::chrono::duration<double, std::milli>(now - last_).count();
-        last_ = now;
-        return ms;
-    }
-
-  private:
-    std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
-};
+using detail::Stopwatch;
 
 std::string coords(dvec2 p) {
     char buf[80];

@@ -1,30 +1,14 @@
 // G1-G6 in a row, timed (thesis §6.3.2).
 #include <geometry/DiscreteDelaunay.h>
 
+#include "Stopwatch.h"
+
 #include <jfa/CpuKernel.h>
 #include <jfa/Plan.h>
 
-#include <chrono>
-
 namespace fl::geom {
 
-namespace {
-
-class Stopwatch {
-  public:
-    // Milliseconds since the last call (or construction).
-    double lap() {
-        const auto now = std::chrono::steady_clock::now();
-        const double ms = std::chrono::duration<double, std::milli>(now - last_).count();
-        last_ = now;
-        return ms;
-    }
-
-  private:
-    std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
-};
-
-} // namespace
+using detail::Stopwatch;
 
 DiscreteDelaunay discreteDelaunay(const std::vector<glm::dvec2>& sites,
                                   const DiscreteDelaunayOptions& options) {
