@@ -1,7 +1,7 @@
 // The baselines beside the JFA methods on the default scene, side by side in one process: per
 // method the frame time (min/median over timed frames, methods interleaved frame by frame) and
 // its ratio to hard shadows, and the visibility error against the ground truth (RMSE and max
-// |d| over surface pixels). With --sampling-error the ground truth's own sampling error: N
+// |d| over receivers). With --sampling-error the ground truth's own sampling error: N
 // against 2N samples.
 
 #include <renderer/Capture.h>
@@ -96,10 +96,9 @@ int main(int argc, char** argv) {
                 if (i >= 2) e.ms.push_back(e.renderer->timer().frameMs());
             }
         for (Entry& e : entries) e.visibility = fl::readTexture(e.renderer->visibility(), 1);
-        // Surface pixels: alpha of the colour (0 where nothing was drawn).
-        const fl::FloatImage colour = fl::readTexture(entries.front().renderer->color(), 4);
-        fl::FloatImage mask{colour.width, colour.height, 1, {}};
-        for (std::size_t i = 3; i < colour.data.size(); i += 4) mask.data.push_back(colour.data[i]);
+        // Receivers: visible surfaces facing the light (renderer/Metrics.h), the same in every
+        // method's frame.
+        const fl::FloatImage mask = fl::readTexture(entries.front().renderer->receivers(), 1);
 
         const double hardMedian = median(entries.front().ms);
         std::printf("default scene %dx%d, map %dx%d, light radius %.2f, reference N=%d at %dx%d\n",
@@ -122,7 +121,7 @@ int main(int argc, char** argv) {
             const fl::FloatImage twice = fl::readTexture(reference.renderer->visibility(), 1);
             const fl::VisibilityDifference d =
                 fl::visibilityDifference(reference.visibility, twice, mask);
-            std::printf("reference sampling error, N=%d vs 2N=%d over %zu surface pixels: RMSE "
+            std::printf("reference sampling error, N=%d vs 2N=%d over %zu receivers: RMSE "
                         "%.5f, max |d| %.4f\n",
                         samples, 2 * samples, d.pixels, d.rmse, d.maxAbs);
         }

@@ -16,6 +16,9 @@ in vec2 vTexcoord;
 
 layout(location = 0) out vec4 oColor;
 layout(location = 1) out float oVisibility;
+// 1 where the visible surface faces the light (Lambert > 0): the pixels whose visibility changes
+// the image. Error metrics are measured over these only (renderer/Metrics.h).
+layout(location = 2) out float oReceiver;
 
 layout(binding = 0) uniform sampler2D uBaseColorTexture;
 uniform vec4 uBaseColor;
@@ -46,4 +49,5 @@ void main() {
     vec3 color = base.rgb * (ambient + uLightColor * lambert * visibility);
     oColor = vec4(color, 1.0);
     oVisibility = visibility;
+    oReceiver = lambert > 0.0 ? 1.0 : 0.0;
 }

@@ -80,7 +80,7 @@ TEST(Cli, RenderWritesPngAndExrAndNoTemporaries) {
         names.push_back(c.name);
         for (float v : c.values) ASSERT_TRUE(std::isfinite(v)) << c.name;
     }
-    EXPECT_EQ(names, (std::vector<std::string>{"A", "B", "G", "R", "visibility"}));
+    EXPECT_EQ(names, (std::vector<std::string>{"A", "B", "G", "R", "receiver", "visibility"}));
     int files = 0;
     for (const auto& e : std::filesystem::directory_iterator(dir)) {
         ++files;

@@ -132,5 +132,57 @@ TEST(Metrics, MismatchedSizesThrow) {
                  std::invalid_argument);
 }
 
+// Pixels outside the receiver mask (back faces, sky) do not count: a method that differs from
+// the reference only there has no error, and the pixel counts are the mask's.
+TEST(Metrics, OnlyReceiversCount) {
+    const FloatImage ref = image(8, 4, [](int x, int) { return x < 4 ? 0.0f : 0.5f; });
+    const FloatImage method = image(8, 4, [](int x, int) { return x < 4 ? 1.0f : 0.5f; });
+    const FloatImage mask = image(8, 4, [](int x, int) { return x < 4 ? 0.0f : 1.0f; });
+    const FrameMetrics masked = compareWithReference(method, ref, mask);
+    EXPECT_EQ(masked.pixels, 16u);
+    EXPECT_EQ(masked.penumbraPixels, 16u);
+    EXPECT_EQ(masked.rmse, 0.0);
+    EXPECT_EQ(masked.misclassified, 0.0);
+    const FrameMetrics all = compareWithReference(method, ref);
+    EXPECT_EQ(all.pixels, 32u);
+    EXPECT_NEAR(all.rmse, std::sqrt(0.5), 1e-12);
+    EXPECT_NEAR(all.misclassified, 0.5, 1e-12);
+    EXPECT_THROW((void)compareWithReference(method, ref, constant(4, 4, 1.0f)),
+                 std::invalid_argument);
+}
+
+// A ramp next to non-receivers keeps its width: the estimator does not take a slope from a
+// neighbour that is not a receiver (here the left half is a back face at 0).
+TEST(Metrics, WidthIgnoresNeighboursOutsideTheReceivers) {
+    const int n = 64;
+    const double width = 8.0;
+    FloatImage v = ramp(n, width, 1, 0);
+    FloatImage mask = constant(n, n, 1.0f);
+    // Cut the ramp past its middle: left of column 33 the surface turns away and reads 0, so
+    // each row keeps two ramp pixels in [0.1, 0.9] (v = 0.69, 0.81).
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < 33; ++x) {
+            v.data[static_cast<std::size_t>(y) * n + x] = 0.0f;
+            mask.data[static_cast<std::size_t>(y) * n + x] = 0.0f;
+        }
+    EXPECT_NEAR(transitionWidth(v, mask), 0.8 * width, 1e-4);
+    // Without the mask the step from 0 to the ramp's middle is taken for a steep slope.
+    EXPECT_LT(transitionWidth(v), 0.8 * width - 1.0);
+}
+
+TEST(Metrics, FlickerCountsReceiversInBothFrames) {
+    const FloatImage a = constant(4, 1, 0.0f);
+    const FloatImage b = image(4, 1, [](int x, int) { return x == 0 ? 1.0f : 0.0f; });
+    const FloatImage maskA = image(4, 1, [](int x, int) { return x < 2 ? 1.0f : 0.0f; });
+    const FloatImage maskB = image(4, 1, [](int x, int) { return x == 0 || x == 3 ? 1.0f : 0.0f; });
+    const FloatImage both = bothReceivers(maskA, maskB);
+    EXPECT_EQ(both.data, (std::vector<float>{1.0f, 0.0f, 0.0f, 0.0f}));
+    EXPECT_EQ(meanAbsoluteChange(a, b, both), 1.0);
+    EXPECT_EQ(meanAbsoluteChange(a, b), 0.25);
+    EXPECT_EQ(meanAbsoluteChange(a, b, constant(4, 1, 0.0f)), 0.0) << "no receiver: no change";
+    EXPECT_EQ(addedFlicker(a, b, a, a, both), 1.0);
+    EXPECT_EQ(bothReceivers({}, maskB).data, maskB.data);
+}
+
 } // namespace
 } // namespace fl

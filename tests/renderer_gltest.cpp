@@ -94,6 +94,48 @@ TEST_F(RendererTest, OutputsAreFiniteAndBackgroundIsLit) {
     EXPECT_GT(renderer.timer().frameMs(), 0.0);
 }
 
+// The receiver mask (what the capture metrics count) is exactly the visible surfaces facing the
+// light: the ground seen from above is a receiver when the light shines on it from above, and
+// not when the light is below it; the sky never is.
+TEST_F(RendererTest, ReceiversAreTheVisibleSurfacesFacingTheLight) {
+    const ShaderLibrary shaders;
+    CameraSpec spec;
+    spec.kind = CameraSpec::Kind::LookAt;
+    spec.eye = {0.0f, 6.0f, 6.0f};
+    spec.target = {0.0f, 0.0f, 0.0f};
+    spec.yfovDegrees = 50.0f;
+    for (const float up : {-1.0f, 1.0f}) {
+        const Scene scene =
+            groundAndBox(3.0f, {-0.5f, 0.0f, -0.5f}, {0.5f, 1.0f, 0.5f}, {0.3f, up, 0.2f});
+        Renderer renderer(shaders, scene, {});
+        const int w = 96, h = 96;
+        renderer.resize(w, h);
+        const CameraView cam = makeCameraView(scene, spec, 1.0f);
+        renderer.render(cam);
+        const FrameImages frame = readFrame(renderer);
+        ASSERT_EQ(frame.receivers.width, w);
+        ASSERT_EQ(frame.receivers.channels, 1);
+        int sky = 0, ground = 0;
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x)
+                if (frame.color.at(x, y, 3) == 0.0f) {
+                    ++sky;
+                    EXPECT_EQ(frame.receivers.at(x, y, 0), 0.0f) << x << ", " << y;
+                }
+        const float expected = up < 0.0f ? 1.0f : 0.0f; // light travelling down lights the top
+        for (float gx = -2.5f; gx <= 2.5f; gx += 0.5f)
+            for (float gz = 1.0f; gz <= 2.5f; gz += 0.5f) { // in front of the box, seen
+                int x = 0, y = 0;
+                if (!project(cam, w, h, {gx, 0.0f, gz}, x, y)) continue;
+                ++ground;
+                EXPECT_EQ(frame.receivers.at(x, y, 0), expected)
+                    << "ground (" << gx << ", " << gz << "), light y " << up;
+            }
+        EXPECT_GT(sky, 0) << "the view must include sky for the test to mean anything";
+        EXPECT_GT(ground, 20);
+    }
+}
+
 TEST_F(RendererTest, ResizeRejectsZeroSize) {
     const Scene scene = groundAndBox(2.0f, {-0.5f, 0.5f, -0.5f}, {0.5f, 1.0f, 0.5f}, {0, -1, 0});
     const ShaderLibrary shaders;

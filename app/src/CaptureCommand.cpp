@@ -180,7 +180,7 @@ int runCapture(const CaptureRequest& req) {
         const float aspect = static_cast<float>(w) / static_cast<float>(h);
         const fs::path framesDir = dir / "frames" / size;
         std::vector<FloatImage> previous(script.methods.size());
-        FloatImage previousReference;
+        FloatImage previousReference, previousReceivers;
         for (int i = 0; i < script.frames; ++i) {
             if (!script.lightKeys.empty()) {
                 Light light = sceneLight(scene);
@@ -215,10 +215,13 @@ int runCapture(const CaptureRequest& req) {
                 }
                 FrameRow row;
                 row.frame = i;
-                row.metrics = compareWithReference(images[k].visibility, ref.visibility);
+                // Every method sees the same surfaces: the reference's receivers are theirs.
+                row.metrics =
+                    compareWithReference(images[k].visibility, ref.visibility, ref.receivers);
                 if (i > 0)
                     row.flicker = addedFlicker(previous[k], images[k].visibility, previousReference,
-                                               ref.visibility);
+                                               ref.visibility,
+                                               bothReceivers(previousReceivers, ref.receivers));
                 row.phasesMs = phases(r);
                 row.frameMs = r.timer().frameMs();
                 if (row.metrics.rmse > run.worstRmse) {
@@ -226,6 +229,7 @@ int runCapture(const CaptureRequest& req) {
                     run.worstFrame = i;
                     run.worstMethod = images[k].visibility;
                     run.worstReference = ref.visibility;
+                    run.worstReceivers = ref.receivers;
                 }
                 run.rows.push_back(std::move(row));
             }
@@ -239,6 +243,7 @@ int runCapture(const CaptureRequest& req) {
                 previous[k] = std::move(images[k].visibility);
             }
             previousReference = ref.visibility;
+            previousReceivers = ref.receivers;
             progress.step(++done);
         }
     }
@@ -251,7 +256,8 @@ int runCapture(const CaptureRequest& req) {
         writePng(
             imageDir / ("worst_" + safeName(run.label) + ".png"),
             sideBySide({visibilityToGrey(run.worstMethod), visibilityToGrey(run.worstReference),
-                        differencePicture(run.worstMethod, run.worstReference)}));
+                        differencePicture(run.worstMethod, run.worstReference, 4.0f,
+                                          run.worstReceivers)}));
     const nlohmann::json summary = resultsSummary(results);
     try {
         writeTextFile(dir / "summary.json", summary.dump(2) + "\n");

@@ -98,12 +98,15 @@ nlohmann::json resultsSummary(const CaptureResults& r) {
                       {"mapSize", s.reference.mapSize},
                       {"medianFrameMs", medianOf(r.referenceFrameMs)}};
     j["definitions"] = {
-        {"penumbra", "reference visibility in (0.02, 0.98)"},
+        {"receivers", "the pixels counted: visible surfaces facing the light (N.L > 0), where the "
+                      "visibility changes the image"},
+        {"penumbra", "receivers with reference visibility in (0.02, 0.98)"},
         {"classes", "umbra <= 0.02, lit >= 0.98, penumbra between"},
-        {"rmse", "pooled over all pixels of all frames"},
+        {"rmse", "pooled over the receivers of all frames"},
         {"rmsePenumbra", "pooled over the reference's penumbra pixels of all frames"},
-        {"width", "median over pixels with 0.1 <= v <= 0.9 of 0.8 / |grad v|, pixels"},
-        {"addedFlicker", "mean |v_t - v_t-1| of the method minus that of the reference"}};
+        {"width", "median over receivers with 0.1 <= v <= 0.9 of 0.8 / |grad v|, pixels"},
+        {"addedFlicker", "mean |v_t - v_t-1| over receivers in both frames, of the method minus "
+                         "that of the reference"}};
     const std::vector<std::string> phases = allPhases(r);
     nlohmann::json methods = nlohmann::json::array();
     std::optional<double> hardMs;

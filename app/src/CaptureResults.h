@@ -39,6 +39,7 @@ struct MethodRun {
     int worstFrame = -1;
     double worstRmse = -1.0;
     FloatImage worstMethod, worstReference; // visibility
+    FloatImage worstReceivers;              // the pixels its metrics counted
 };
 
 struct CaptureResults {

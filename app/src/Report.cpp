@@ -88,7 +88,7 @@ std::string errorCharts(const CaptureResults& r) {
         flicker.push_back(std::move(f));
     }
     if (all.empty()) return "<p>Only the reference was captured: nothing to compare.</p>";
-    return svg::lineChart("RMSE of visibility per frame (all pixels)", "RMSE", all) +
+    return svg::lineChart("RMSE of visibility per frame (receivers)", "RMSE", all) +
            svg::lineChart("RMSE of visibility per frame (reference penumbra pixels)",
                           "RMSE (penumbra)", pen) +
            svg::lineChart("Added flicker per frame (clamped at 0)", "mean |dV| - reference's",
@@ -163,7 +163,9 @@ std::string reportHtml(const CaptureResults& r, const nlohmann::json& summary,
       << s.reference.samples << " point-light samples over the disk, " << s.reference.mapSize
       << "&sup2; maps, " << fmt(summary["reference"]["medianFrameMs"].get<double>(), 1)
       << " ms per frame (median)</dd><dt>GL</dt><dd>" << escape(r.context) << "</dd></dl>\n"
-      << "<p>Metrics against the reference: penumbra pixels are those the reference has in "
+      << "<p>Metrics against the reference count the receivers only: visible surfaces that "
+         "face the light (N&middot;L &gt; 0), where the visibility changes the image. Penumbra "
+         "pixels are receivers the reference has in "
          "(0.02, 0.98); classes umbra &le; 0.02 &lt; penumbra &lt; 0.98 &le; lit; RMSEs are "
          "pooled over all frames; the 10&ndash;90% width is the median of 0.8/|&nabla;V| over "
          "pixels with 0.1 &le; V &le; 0.9; added flicker is the mean |V<sub>t</sub> &minus; "

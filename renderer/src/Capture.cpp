@@ -6,7 +6,8 @@
 namespace fl {
 
 FrameImages readFrame(const Renderer& renderer) {
-    return {readTexture(renderer.color(), 4), readTexture(renderer.visibility(), 1)};
+    return {readTexture(renderer.color(), 4), readTexture(renderer.visibility(), 1),
+            readTexture(renderer.receivers(), 1)};
 }
 
 ByteImage visibilityToGrey(const FloatImage& v) {
@@ -31,6 +32,7 @@ CapturePaths writeFrame(const FrameImages& frame, const std::filesystem::path& d
     const size_t n = frame.visibility.data.size();
     std::vector<ExrChannel> channels{
         {"R", {}}, {"G", {}}, {"B", {}}, {"A", {}}, {"visibility", frame.visibility.data}};
+    if (!frame.receivers.data.empty()) channels.push_back({"receiver", frame.receivers.data});
     for (int c = 0; c < 4; ++c) {
         channels[static_cast<size_t>(c)].values.resize(n);
         for (size_t i = 0; i < n; ++i)

@@ -16,6 +16,15 @@ void requireSameShape(const FloatImage& a, const FloatImage& b, const char* who)
                                     ": two equally sized 1-channel images needed");
 }
 
+// An empty mask counts every pixel; otherwise it must match the image.
+void requireMaskFor(const FloatImage& image, const FloatImage& mask, const char* who) {
+    if (!mask.data.empty()) requireSameShape(image, mask, who);
+}
+
+bool counts(const FloatImage& mask, std::size_t i) {
+    return mask.data.empty() || mask.data[i] > 0.5f;
+}
+
 // Central differences average out noise; where a neighbour is already saturated (umbra or lit,
 // e.g. the first and last pixel of a linear ramp) the difference towards the other neighbour is
 // the one that sees the slope, so the larger one-sided difference is used there.
@@ -35,21 +44,30 @@ ShadowClass classifyVisibility(float v) {
     return ShadowClass::Penumbra;
 }
 
-double transitionWidth(const FloatImage& img) {
+double transitionWidth(const FloatImage& img, const FloatImage& mask) {
     if (img.channels != 1) throw std::invalid_argument("transitionWidth: 1-channel image needed");
+    requireMaskFor(img, mask, "transitionWidth");
     const int w = img.width, h = img.height;
+    // A neighbour counts only if it is a receiver too: a back face or the sky beside a penumbra
+    // says nothing about the penumbra's slope.
+    auto has = [&](int x, int y) {
+        return x >= 0 && y >= 0 && x < w && y < h &&
+               counts(mask, static_cast<std::size_t>(y) * w + x);
+    };
     std::vector<double> widths;
     // A pixel whose gradient is below this is on a plateau, not on a transition; counting it
     // would report the image size as a width.
     constexpr float kFlat = 1e-4f;
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
+            if (!has(x, y)) continue;
             const float v = img.at(x, y, 0);
             if (v < 0.1f || v > 0.9f) continue;
-            const float gx = axisDerivative(x > 0 ? img.at(x - 1, y, 0) : v, v,
-                                            x + 1 < w ? img.at(x + 1, y, 0) : v, x > 0, x + 1 < w);
-            const float gy = axisDerivative(y > 0 ? img.at(x, y - 1, 0) : v, v,
-                                            y + 1 < h ? img.at(x, y + 1, 0) : v, y > 0, y + 1 < h);
+            const bool l = has(x - 1, y), r = has(x + 1, y), u = has(x, y - 1), d = has(x, y + 1);
+            const float gx =
+                axisDerivative(l ? img.at(x - 1, y, 0) : v, v, r ? img.at(x + 1, y, 0) : v, l, r);
+            const float gy =
+                axisDerivative(u ? img.at(x, y - 1, 0) : v, v, d ? img.at(x, y + 1, 0) : v, u, d);
             const float g = std::sqrt(gx * gx + gy * gy);
             if (g < kFlat) continue;
             widths.push_back(0.8 / static_cast<double>(g));
@@ -61,12 +79,15 @@ double transitionWidth(const FloatImage& img) {
     return *mid;
 }
 
-FrameMetrics compareWithReference(const FloatImage& m, const FloatImage& r) {
+FrameMetrics compareWithReference(const FloatImage& m, const FloatImage& r,
+                                  const FloatImage& mask) {
     requireSameShape(m, r, "compareWithReference");
+    requireMaskFor(m, mask, "compareWithReference");
     FrameMetrics f;
-    f.pixels = m.data.size();
     std::size_t wrongClass = 0;
     for (std::size_t i = 0; i < m.data.size(); ++i) {
+        if (!counts(mask, i)) continue;
+        ++f.pixels;
         const double d = static_cast<double>(m.data[i]) - static_cast<double>(r.data[i]);
         f.sumSquared += d * d;
         const ShadowClass cr = classifyVisibility(r.data[i]);
@@ -82,25 +103,41 @@ FrameMetrics compareWithReference(const FloatImage& m, const FloatImage& r) {
     }
     if (f.penumbraPixels > 0)
         f.rmsePenumbra = std::sqrt(f.sumSquaredPenumbra / static_cast<double>(f.penumbraPixels));
-    f.widthMethod = transitionWidth(m);
-    f.widthReference = transitionWidth(r);
+    f.widthMethod = transitionWidth(m, mask);
+    f.widthReference = transitionWidth(r, mask);
     f.widthError = f.widthMethod - f.widthReference;
     return f;
 }
 
-double meanAbsoluteChange(const FloatImage& previous, const FloatImage& current) {
+double meanAbsoluteChange(const FloatImage& previous, const FloatImage& current,
+                          const FloatImage& mask) {
     requireSameShape(previous, current, "meanAbsoluteChange");
-    if (current.data.empty()) return 0.0;
+    requireMaskFor(current, mask, "meanAbsoluteChange");
     double sum = 0.0;
-    for (std::size_t i = 0; i < current.data.size(); ++i)
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < current.data.size(); ++i) {
+        if (!counts(mask, i)) continue;
         sum += std::abs(static_cast<double>(current.data[i]) - previous.data[i]);
-    return sum / static_cast<double>(current.data.size());
+        ++n;
+    }
+    return n > 0 ? sum / static_cast<double>(n) : 0.0;
 }
 
 double addedFlicker(const FloatImage& methodPrevious, const FloatImage& method,
-                    const FloatImage& referencePrevious, const FloatImage& reference) {
-    return meanAbsoluteChange(methodPrevious, method) -
-           meanAbsoluteChange(referencePrevious, reference);
+                    const FloatImage& referencePrevious, const FloatImage& reference,
+                    const FloatImage& mask) {
+    return meanAbsoluteChange(methodPrevious, method, mask) -
+           meanAbsoluteChange(referencePrevious, reference, mask);
+}
+
+FloatImage bothReceivers(const FloatImage& a, const FloatImage& b) {
+    if (a.data.empty()) return b;
+    if (b.data.empty()) return a;
+    requireSameShape(a, b, "bothReceivers");
+    FloatImage out{a.width, a.height, 1, std::vector<float>(a.data.size())};
+    for (std::size_t i = 0; i < a.data.size(); ++i)
+        out.data[i] = counts(a, i) && counts(b, i) ? 1.0f : 0.0f;
+    return out;
 }
 
 } // namespace fl

@@ -196,6 +196,7 @@ void Renderer::render(const CameraView& camera) {
     timer_.endFrame();
     color_ = &fwd.color;
     visibility_ = &fwd.visibility;
+    receivers_ = &fwd.receivers;
     gl::throwIfErrors("frame");
 }
 

@@ -15,10 +15,11 @@ struct CapturePaths {
     std::filesystem::path exr;
 };
 
-/// The last frame's colour (RGBA linear) and visibility read back from the GPU.
+/// The last frame's colour (RGBA linear), visibility and receiver mask read back from the GPU.
 struct FrameImages {
     FloatImage color;      // 4 channels
     FloatImage visibility; // 1 channel
+    FloatImage receivers;  // 1 channel: 1 where a visible surface faces the light, else 0
 };
 FrameImages readFrame(const Renderer& renderer);
 
@@ -26,8 +27,8 @@ FrameImages readFrame(const Renderer& renderer);
 ByteImage visibilityToGrey(const FloatImage& visibility);
 
 /// Writes DIR/STEM.png (sRGB colour), DIR/STEM.visibility.png (grey) and DIR/STEM.exr (channels R,
-/// G, B, A, visibility; linear float). Throws std::runtime_error if a pixel is not finite or a file
-/// cannot be written.
+/// G, B, A, visibility, and receiver when the frame has its mask; linear float). Throws
+/// std::runtime_error if a pixel is not finite or a file cannot be written.
 CapturePaths writeFrame(const FrameImages& frame, const std::filesystem::path& dir,
                         const std::string& stem);
 

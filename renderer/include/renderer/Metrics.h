@@ -4,17 +4,22 @@
 // (1 = lit, 0 = umbra).
 //
 // Definitions (stated once here, used by the CSV, the JSON summary and the report):
+// - Receivers: the pixels the metrics count, given as a mask (1-channel, > 0.5 counts): the
+//   visible surfaces that face the light (Renderer::receivers()). Elsewhere the visibility does
+//   not change the image (shading multiplies it by N.L <= 0, or there is no surface), and the
+//   methods legitimately disagree there (a depth test vs 256 differently biased maps on a back
+//   face). An empty mask counts every pixel.
 // - Classes: umbra v <= 0.02, lit v >= 0.98, penumbra in between. The 2% margins keep the
 //   reference's Monte-Carlo noise and float rounding from turning lit or umbra pixels into
 //   "penumbra".
-// - Penumbra pixels: pixels the reference classifies as penumbra.
+// - Penumbra pixels: receivers the reference classifies as penumbra.
 // - 10-90% transition width: for a visibility ramp rising from 0 to 1 over W pixels, the
 //   distance between the 10% and 90% levels is 0.8 W = 0.8 / |grad V|. It is estimated at every
-//   pixel with 0.1 <= v <= 0.9 as 0.8 / |grad V|, where each axis' derivative is the central
-//   difference, or, when a neighbour is umbra or lit, the larger one-sided difference (exact on
-//   a linear ramp, also at its ends), and the image's width is the median of these (robust to
-//   depth edges, plateaus and noise). An image with no such pixel (a hard edge, or no shadow) has
-//   width 0.
+//   receiver with 0.1 <= v <= 0.9 as 0.8 / |grad V|, where each axis' derivative is the central
+//   difference, or, when a neighbour is umbra or lit (or not a receiver), the larger one-sided
+//   difference (exact on a linear ramp, also at its ends), and the image's width is the median
+//   of these (robust to depth edges, plateaus and noise). An image with no such pixel (a hard
+//   edge, or no shadow) has width 0.
 
 #include <renderer/ImageIO.h>
 
@@ -33,11 +38,11 @@ enum class ShadowClass : std::uint8_t { Umbra, Penumbra, Lit };
 
 /// One frame of a method against the reference.
 struct FrameMetrics {
-    std::size_t pixels = 0;
-    std::size_t penumbraPixels = 0;  // reference penumbra pixels
-    double sumSquared = 0.0;         // sum of (m - r)^2 over all pixels (for pooled RMSE)
+    std::size_t pixels = 0;          // receivers counted
+    std::size_t penumbraPixels = 0;  // receivers the reference calls penumbra
+    double sumSquared = 0.0;         // sum of (m - r)^2 over the receivers (for pooled RMSE)
     double sumSquaredPenumbra = 0.0; // ... over penumbra pixels
-    double rmse = 0.0;               // over all pixels
+    double rmse = 0.0;               // over the receivers
     double rmsePenumbra = 0.0;       // over penumbra pixels; 0 when there are none
     double misclassified = 0.0;      // share of pixels whose class differs (0..1)
     double widthMethod = 0.0;        // 10-90% transition width, pixels
@@ -45,19 +50,30 @@ struct FrameMetrics {
     double widthError = 0.0; // widthMethod - widthReference, pixels
 };
 
-/// Compares two equally sized 1-channel images; throws std::invalid_argument otherwise.
+/// Compares two equally sized 1-channel images over the receivers (an empty mask: all pixels);
+/// throws std::invalid_argument if the sizes differ.
 [[nodiscard]] FrameMetrics compareWithReference(const FloatImage& method,
-                                                const FloatImage& reference);
+                                                const FloatImage& reference,
+                                                const FloatImage& receivers = {});
 
-/// The 10-90% transition width of a visibility image in pixels (estimator above).
-[[nodiscard]] double transitionWidth(const FloatImage& visibility);
+/// The 10-90% transition width of a visibility image in pixels over the receivers (estimator
+/// above; an empty mask: all pixels).
+[[nodiscard]] double transitionWidth(const FloatImage& visibility,
+                                     const FloatImage& receivers = {});
 
-/// Mean |current - previous| over all pixels (equal sizes, else std::invalid_argument).
-[[nodiscard]] double meanAbsoluteChange(const FloatImage& previous, const FloatImage& current);
+/// Mean |current - previous| over the receivers (an empty mask: all pixels; equal sizes, else
+/// std::invalid_argument). 0 when no pixel counts.
+[[nodiscard]] double meanAbsoluteChange(const FloatImage& previous, const FloatImage& current,
+                                        const FloatImage& receivers = {});
 
-/// Added flicker between two consecutive frames: the method's mean |change| minus the
-/// reference's own (negative when the method changes less than the ground truth does).
+/// Added flicker between two consecutive frames over the receivers: the method's mean |change|
+/// minus the reference's own (negative when the method changes less than the ground truth does).
 [[nodiscard]] double addedFlicker(const FloatImage& methodPrevious, const FloatImage& method,
-                                  const FloatImage& referencePrevious, const FloatImage& reference);
+                                  const FloatImage& referencePrevious, const FloatImage& reference,
+                                  const FloatImage& receivers = {});
+
+/// The pixels that are receivers in both masks (for a change between two frames); an empty
+/// mask stands for all pixels.
+[[nodiscard]] FloatImage bothReceivers(const FloatImage& a, const FloatImage& b);
 
 } // namespace fl

@@ -91,6 +91,9 @@ class Renderer {
 
     [[nodiscard]] const gl::Texture& color() const { return *color_; }
     [[nodiscard]] const gl::Texture& visibility() const { return *visibility_; }
+    /// R8 mask of the last frame: 1 where the visible surface faces the light (its visibility
+    /// changes the image), 0 on back-facing surfaces and background.
+    [[nodiscard]] const gl::Texture& receivers() const { return *receivers_; }
     /// The disk light the soft methods use.
     [[nodiscard]] const DiskLight& disk() const { return disk_; }
     /// JFA-L / flood-L: the last frame's silhouette seeds and penumbra map (nullptr otherwise).
@@ -134,6 +137,7 @@ class Renderer {
     PassTimer timer_;
     const gl::Texture* color_ = nullptr;
     const gl::Texture* visibility_ = nullptr;
+    const gl::Texture* receivers_ = nullptr;
     const gl::Texture* diagnostics_ = nullptr;
     const gl::Texture* seeds_ = nullptr;
     const gl::Texture* penumbraMap_ = nullptr;

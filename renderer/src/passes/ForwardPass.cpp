@@ -21,12 +21,14 @@ void ForwardPass::resize(int width, int height) {
     if (color_ && color_.width() == width && color_.height() == height) return;
     color_ = gl::Texture(GL_RGBA16F, width, height);
     visibility_ = gl::Texture(GL_R32F, width, height);
+    receivers_ = gl::Texture(GL_R8, width, height);
     depth_ = gl::Texture(GL_DEPTH_COMPONENT32F, width, height);
     fbo_ = gl::Framebuffer::create();
     fbo_.attach(GL_COLOR_ATTACHMENT0, color_);
     fbo_.attach(GL_COLOR_ATTACHMENT1, visibility_);
+    fbo_.attach(GL_COLOR_ATTACHMENT2, receivers_);
     fbo_.attach(GL_DEPTH_ATTACHMENT, depth_);
-    fbo_.setDrawBuffers(2);
+    fbo_.setDrawBuffers(3);
     fbo_.check("forward pass");
 }
 
@@ -36,9 +38,11 @@ ForwardPass::Outputs ForwardPass::execute(const Inputs& in) {
     // Sky colour in linear space; alpha 0 marks background for compositing and statistics.
     const float sky[4] = {0.50f, 0.64f, 0.82f, 0.0f};
     const float lit[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+    const float none[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     const float far = 1.0f;
     glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, sky);
     glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 1, lit);
+    glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 2, none);
     glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &far);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
@@ -68,7 +72,7 @@ ForwardPass::Outputs ForwardPass::execute(const Inputs& in) {
     glBindTextureUnit(1, 0);
     glBindTextureUnit(3, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    return {color_, visibility_};
+    return {color_, visibility_, receivers_};
 }
 
 PresentPass::PresentPass(const ShaderLibrary& shaders)

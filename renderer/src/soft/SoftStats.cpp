@@ -39,11 +39,15 @@ SoftStats compareSoftShadows(const FloatImage& m, const FloatImage& r) {
     return s;
 }
 
-ByteImage differencePicture(const FloatImage& m, const FloatImage& r, float gain) {
-    if (m.data.size() != r.data.size()) throw std::invalid_argument("differencePicture: sizes");
+ByteImage differencePicture(const FloatImage& m, const FloatImage& r, float gain,
+                            const FloatImage& receivers) {
+    if (m.data.size() != r.data.size() ||
+        (!receivers.data.empty() && receivers.data.size() != m.data.size()))
+        throw std::invalid_argument("differencePicture: sizes");
     ByteImage out{m.width, m.height, 4, std::vector<std::uint8_t>(m.data.size() * 4, 255)};
     for (std::size_t i = 0; i < m.data.size(); ++i) {
-        const float d = std::min(1.0f, std::abs(m.data[i] - r.data[i]) * gain);
+        const bool counted = receivers.data.empty() || receivers.data[i] > 0.5f;
+        const float d = counted ? std::min(1.0f, std::abs(m.data[i] - r.data[i]) * gain) : 0.0f;
         const auto g = static_cast<std::uint8_t>(std::lround(d * 255.0f));
         out.data[i * 4] = out.data[i * 4 + 1] = out.data[i * 4 + 2] = g;
     }

@@ -1,6 +1,6 @@
 #pragma once
 // Step 2 of a frame: forward shading from the camera with the hard shadow-map test. Writes linear
-// colour and the light's visibility (1 lit, 0 shadowed) per pixel.
+// colour, the light's visibility (1 lit, 0 shadowed) and the light-facing receiver mask per pixel.
 
 #include <gpu/Gl.h>
 #include <gpu/Program.h>
@@ -22,7 +22,7 @@ struct CameraView {
 class ForwardPass {
   public:
     explicit ForwardPass(const ShaderLibrary& shaders);
-    /// (Re)allocates the colour, visibility and depth targets.
+    /// (Re)allocates the colour, visibility, receiver and depth targets.
     void resize(int width, int height);
 
     struct Inputs {
@@ -39,6 +39,7 @@ class ForwardPass {
     struct Outputs {
         const gl::Texture& color;      // RGBA16F linear; alpha 0 where nothing was drawn
         const gl::Texture& visibility; // R32F in [0,1]; 1 for background
+        const gl::Texture& receivers;  // R8: 1 where a surface faces the light, 0 elsewhere
     };
     Outputs execute(const Inputs& in);
 
@@ -46,7 +47,7 @@ class ForwardPass {
     gl::Program program_;         // hard shadows
     gl::Program penumbraProgram_; // visibility from a penumbra map (SOFT_PENUMBRA_MAP)
     gl::Program eyeProgram_;      // visibility from an eye-space texture (SOFT_EYE_VISIBILITY)
-    gl::Texture color_, visibility_, depth_;
+    gl::Texture color_, visibility_, receivers_, depth_;
     gl::Framebuffer fbo_;
 };
 

@@ -32,8 +32,9 @@ struct SoftStats {
 /// otherwise.
 SoftStats compareSoftShadows(const FloatImage& method, const FloatImage& reference);
 
-/// |method - reference| per pixel as a grey picture scaled by `gain` (white = gain^-1 or more).
+/// |method - reference| per pixel as a grey picture scaled by `gain` (white = gain^-1 or more);
+/// black outside `receivers` when a mask is given (the pixels metrics do not count).
 ByteImage differencePicture(const FloatImage& method, const FloatImage& reference,
-                            float gain = 4.0f);
+                            float gain = 4.0f, const FloatImage& receivers = {});
 
 } // namespace fl
