@@ -1,5 +1,7 @@
-// Frame and per-pass times of the hard-shadow renderer on a scene, with peak memory.
-// Prints min and median over --frames frames after --warmup frames, all in one process/context.
+// Frame and per-pass times of the renderer on a scene, with peak memory: hard shadows by default,
+// any shadow method with --method (e.g. the JFA-L / JFA-E flood time against the scene size,
+// thesis Fig. 5.10). Prints min and median over --frames frames after --warmup frames, all in
+// one process/context.
 
 #include <renderer/EglContext.h>
 #include <renderer/GltfLoader.h>
@@ -12,6 +14,7 @@
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <sys/resource.h>
 
 namespace {
@@ -34,7 +37,9 @@ int main(int argc, char** argv) {
     CLI::App app{"floodlight_bench: hard-shadow frame and pass times (min/median) and peak RSS"};
     std::string scenePath;
     std::size_t triangles = 0;
-    int width = 512, height = 512, shadowMap = 1024, frames = 20, warmup = 3;
+    int width = 512, height = 512, shadowMap = 1024, frames = 20, warmup = 3, passes = 6;
+    std::string method = "hard";
+    std::optional<float> lightRadius;
     app.add_option("--scene", scenePath, "glTF scene (default: generated, see --triangles)");
     app.add_option("--triangles", triangles,
                    "Generate the default-style scene with this many triangles");
@@ -45,7 +50,18 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_option("--frames", frames)->check(CLI::Range(1, 100000))->capture_default_str();
     app.add_option("--warmup", warmup)->check(CLI::Range(0, 1000))->capture_default_str();
+    app.add_option("--method", method, "Shadow method (hard, jfa-l, flood-l, jfa-e, ...)")
+        ->capture_default_str();
+    app.add_option("--jfa-passes", passes, "Flooding passes of jfa-l/jfa-e (flood-*: 2^N - 1)")
+        ->check(CLI::Range(1, 13))
+        ->capture_default_str();
+    app.add_option("--light-radius", lightRadius, "Disk light radius (default: the scene's)");
     CLI11_PARSE(app, argc, argv);
+    const std::optional<fl::ShadowMethod> shadowMethod = fl::parseMethod(method);
+    if (!shadowMethod) {
+        std::cerr << "error: --method: unknown shadow method '" << method << "'\n";
+        return 2;
+    }
 
     try {
         fl::Scene scene;
@@ -53,11 +69,14 @@ int main(int argc, char** argv) {
             scene = fl::loadGltf(scenePath);
         else
             scene = fl::generateScene({triangles ? triangles : 6320, 1});
+        if (lightRadius && scene.light) scene.light->radius = *lightRadius;
         const long rssScene = peakRssKiB();
         auto ctx = fl::EglContext::create(false);
         const fl::ShaderLibrary shaders;
         fl::RenderSettings settings;
         settings.shadow.size = shadowMap;
+        settings.method = *shadowMethod;
+        settings.penumbra.passes = passes;
         fl::Renderer renderer(shaders, scene, settings);
         renderer.resize(width, height);
         const fl::CameraView cam =
@@ -72,6 +91,8 @@ int main(int argc, char** argv) {
         }
         std::cout << "context: " << ctx->description() << "\n"
                   << "scene: " << scene.source << ", " << scene.triangleCount() << " triangles\n"
+                  << "method: " << method << ", " << passes << " passes, light radius "
+                  << (scene.light ? scene.light->radius : 0.0f) << "\n"
                   << "frame " << width << "x" << height << ", shadow map " << shadowMap << "^2, "
                   << frames << " frames after " << warmup
                   << " warm-up, timing: " << renderer.timer().modeName() << "\n"
