@@ -157,4 +157,12 @@ void Program::set(const char* name, const glm::mat4& v) const {
     glProgramUniformMatrix4fv(id(), location(name), 1, GL_FALSE, glm::value_ptr(v));
 }
 
+void drawFullscreenTriangle(const Program& program, const VertexArray& emptyVao) {
+    glUseProgram(program.id());
+    glBindVertexArray(emptyVao.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+    glUseProgram(0);
+}
+
 } // namespace fl::gl

@@ -42,6 +42,10 @@ class Program {
     ProgramHandle handle_;
 };
 
+/// Draws one triangle covering the viewport with `program` (fullscreen.vert.glsl makes its
+/// positions from gl_VertexID, so `emptyVao` has no attributes); unbinds both afterwards.
+void drawFullscreenTriangle(const Program& program, const VertexArray& emptyVao);
+
 /// Rewrites a driver info log so that "0:12(5): error" style references name the file and line;
 /// `files` maps #line source-string numbers to file names. Exposed for tests.
 std::string mapInfoLog(const std::string& log, const std::vector<std::string>& files);

@@ -85,11 +85,7 @@ void PresentPass::execute(const gl::Texture& color, int framebufferWidth, int fr
     glViewport(0, 0, framebufferWidth, framebufferHeight);
     glDisable(GL_DEPTH_TEST);
     glBindTextureUnit(0, color.id());
-    glUseProgram(program_.id());
-    glBindVertexArray(emptyVao_.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glBindVertexArray(0);
-    glUseProgram(0);
+    gl::drawFullscreenTriangle(program_, emptyVao_);
     glBindTextureUnit(0, 0);
 }
 

@@ -132,16 +132,6 @@ FloatImage eyeSoftVisibility(const EyeImage& im, const jfa::Grid& flooded, const
     return out;
 }
 
-namespace {
-void drawFullscreen(const gl::Program& program, const gl::VertexArray& vao) {
-    glUseProgram(program.id());
-    glBindVertexArray(vao.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glBindVertexArray(0);
-    glUseProgram(0);
-}
-} // namespace
-
 EyeSoftShadowPass::EyeSoftShadowPass(const ShaderLibrary& shaders)
     : lightIds_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "shadow_depth.vert.glsl"},
                                              {GL_FRAGMENT_SHADER, "jfae_light_id.frag.glsl"}})),
@@ -248,7 +238,7 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, PassTime
         boundary_.set("uRelative2", th.relative2);
         glBindTextureUnit(0, points_.id());
         glBindTextureUnit(1, occluders_.id());
-        drawFullscreen(boundary_, emptyVao_);
+        gl::drawFullscreenTriangle(boundary_, emptyVao_);
         glBindTextureUnit(0, 0);
         glBindTextureUnit(1, 0);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -276,7 +266,7 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, PassTime
     setDiskLightUniforms(composite_, in.light);
     glBindTextureUnit(0, points_.id());
     glBindTextureUnit(1, flooded.id());
-    drawFullscreen(composite_, emptyVao_);
+    gl::drawFullscreenTriangle(composite_, emptyVao_);
     glBindTextureUnit(0, 0);
     glBindTextureUnit(1, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -83,11 +83,7 @@ PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, PassTimer* t
     setDiskLightUniforms(silhouette_, in.light);
     silhouette_.set("uSilhouetteThreshold", in.threshold);
     glBindTextureUnit(0, in.receivers.id());
-    glUseProgram(silhouette_.id());
-    glBindVertexArray(emptyVao_.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glBindVertexArray(0);
-    glUseProgram(0);
+    gl::drawFullscreenTriangle(silhouette_, emptyVao_);
     glBindTextureUnit(0, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (timer) timer->end();

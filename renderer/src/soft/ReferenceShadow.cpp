@@ -71,16 +71,6 @@ VisibilityDifference visibilityDifference(const FloatImage& a, const FloatImage&
     return d;
 }
 
-namespace {
-void drawFullscreen(const gl::Program& program, const gl::VertexArray& vao) {
-    glUseProgram(program.id());
-    glBindVertexArray(vao.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glBindVertexArray(0);
-    glUseProgram(0);
-}
-} // namespace
-
 ReferenceShadowPass::ReferenceShadowPass(const ShaderLibrary& shaders)
     : eye_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "forward.vert.glsl"},
                                         {GL_FRAGMENT_SHADER, "reference_eye.frag.glsl"}})),
@@ -170,7 +160,7 @@ ReferenceShadowPass::Outputs ReferenceShadowPass::execute(const Inputs& in, Pass
         glEnable(GL_BLEND);
         accumulate_.set("uLightViewProj", viewProj);
         glBindTextureUnit(1, map_.id());
-        drawFullscreen(accumulate_, emptyVao_);
+        gl::drawFullscreenTriangle(accumulate_, emptyVao_);
         glDisable(GL_BLEND);
         glBindTextureUnit(1, 0); // the next map pass draws into map_
     }
@@ -183,7 +173,7 @@ ReferenceShadowPass::Outputs ReferenceShadowPass::execute(const Inputs& in, Pass
     resolve_.set("uSamples", static_cast<float>(samples.size()));
     glBindTextureUnit(0, sum_.id());
     glBindTextureUnit(1, points_.id());
-    drawFullscreen(resolve_, emptyVao_);
+    gl::drawFullscreenTriangle(resolve_, emptyVao_);
     glBindTextureUnit(0, 0);
     glBindTextureUnit(1, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
