@@ -200,6 +200,9 @@ int runCapture(const CaptureRequest& req) {
             requireFinite(ref.visibility, "reference visibility, frame " + std::to_string(i));
             if (script.saveFrames) writeFrame(ref, framesDir / "reference", stem);
             std::vector<FrameImages> images(script.methods.size());
+            // Flicker compares with the previous frame: count pixels that are receivers in both.
+            const FloatImage flickerReceivers =
+                i > 0 ? bothReceivers(previousReceivers, ref.receivers) : FloatImage{};
             for (std::size_t k = 0; k < script.methods.size(); ++k) {
                 MethodRun& run = results.runs[first + k];
                 const Renderer& r = renderers[k] ? *renderers[k] : reference;
@@ -220,8 +223,7 @@ int runCapture(const CaptureRequest& req) {
                     compareWithReference(images[k].visibility, ref.visibility, ref.receivers);
                 if (i > 0)
                     row.flicker = addedFlicker(previous[k], images[k].visibility, previousReference,
-                                               ref.visibility,
-                                               bothReceivers(previousReceivers, ref.receivers));
+                                               ref.visibility, flickerReceivers);
                 row.phasesMs = phases(r);
                 row.frameMs = r.timer().frameMs();
                 if (row.metrics.rmse > run.worstRmse) {
