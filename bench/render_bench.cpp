@@ -34,7 +34,8 @@ long peakRssKiB() {
 } // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{"floodlight_bench: hard-shadow frame and pass times (min/median) and peak RSS"};
+    CLI::App app{"floodlight_bench: frame and pass times (min/median) of a shadow method, and "
+                 "peak RSS"};
     std::string scenePath;
     std::size_t triangles = 0;
     int width = 512, height = 512, shadowMap = 1024, frames = 20, warmup = 3, passes = 6;
