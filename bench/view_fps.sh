@@ -21,7 +21,7 @@ count=$(tr ',' '\n' <<<"$methods" | wc -l)
     for ((i = 1; i < count; ++i)); do printf 'key M\nwait %d\n' "$frames"; done
 } >"$work/fps.script"
 for ((r = 1; r <= runs; ++r)); do
-    MESA_SHADER_CACHE_DISABLE=true xvfb-run -a -s "-screen 0 1280x1024x24" "$bin" view \
+    MESA_SHADER_CACHE_DISABLE=true xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" "$bin" view \
         --width "$size" --height "$size" --stats-every 0 --script "$work/fps.script" \
         --fps-log "$work/run$r.csv" --screenshot-dir "$work" "$@" >/dev/null
     echo "run $r done" >&2
