@@ -7,10 +7,12 @@
 #include <renderer/GltfLoader.h>
 #include <renderer/Renderer.h>
 #include <renderer/SceneGenerator.h>
+#include <renderer/soft/FilteredShadow.h>
 
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -41,6 +43,9 @@ int main(int argc, char** argv) {
     int width = 512, height = 512, shadowMap = 1024, frames = 20, warmup = 3, passes = 6;
     std::string method = "hard";
     std::optional<float> lightRadius;
+    std::string shaderDir;
+    bool noObjectIdFix = false, noMidpointFix = false;
+    std::string pcssPreset = "16/24";
     app.add_option("--scene", scenePath, "glTF scene (default: generated, see --triangles)");
     app.add_option("--triangles", triangles,
                    "Generate the default-style scene with this many triangles");
@@ -57,6 +62,15 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1, 13))
         ->capture_default_str();
     app.add_option("--light-radius", lightRadius, "Disk light radius (default: the scene's)");
+    app.add_flag("--no-object-id-fix", noObjectIdFix,
+                 "jfa-e/flood-e: first jump-too-far fix off (to time what it costs)");
+    app.add_flag("--no-midpoint-fix", noMidpointFix,
+                 "jfa-e/flood-e: second jump-too-far fix off (to time what it costs)");
+    app.add_option("--pcss-preset", pcssPreset, "pcss: blocker-search/filter samples")
+        ->check(CLI::IsMember({"16/16", "16/24", "32/64"}))
+        ->capture_default_str();
+    app.add_option("--shader-dir", shaderDir,
+                   "Load shaders from this folder instead of the binary (to time shader edits)");
     CLI11_PARSE(app, argc, argv);
     const std::optional<fl::ShadowMethod> shadowMethod = fl::parseMethod(method);
     if (!shadowMethod) {
@@ -73,11 +87,15 @@ int main(int argc, char** argv) {
         if (lightRadius && scene.light) scene.light->radius = *lightRadius;
         const long rssScene = peakRssKiB();
         auto ctx = fl::EglContext::create(false);
-        const fl::ShaderLibrary shaders;
+        const fl::ShaderLibrary shaders(
+            shaderDir.empty() ? std::nullopt : std::optional<std::filesystem::path>(shaderDir));
         fl::RenderSettings settings;
         settings.shadow.size = shadowMap;
         settings.method = *shadowMethod;
         settings.penumbra.passes = passes;
+        settings.eyeSoft.objectIdFix = !noObjectIdFix;
+        settings.eyeSoft.midpointFix = !noMidpointFix;
+        settings.filtered.pcss = fl::parsePcssPreset(pcssPreset).value_or(fl::PcssPreset{});
         fl::Renderer renderer(shaders, scene, settings);
         renderer.resize(width, height);
         const fl::CameraView cam =
