@@ -21,10 +21,6 @@ void requireMaskFor(const FloatImage& image, const FloatImage& mask, const char*
     if (!mask.data.empty()) requireSameShape(image, mask, who);
 }
 
-bool counts(const FloatImage& mask, std::size_t i) {
-    return mask.data.empty() || mask.data[i] > 0.5f;
-}
-
 // Central differences average out noise; where a neighbour is already saturated (umbra or lit,
 // e.g. the first and last pixel of a linear ramp) the difference towards the other neighbour is
 // the one that sees the slope, so the larger one-sided difference is used there.
@@ -52,7 +48,7 @@ double transitionWidth(const FloatImage& img, const FloatImage& mask) {
     // says nothing about the penumbra's slope.
     auto has = [&](int x, int y) {
         return x >= 0 && y >= 0 && x < w && y < h &&
-               counts(mask, static_cast<std::size_t>(y) * w + x);
+               isReceiver(mask, static_cast<std::size_t>(y) * w + x);
     };
     std::vector<double> widths;
     // A pixel whose gradient is below this is on a plateau, not on a transition; counting it
@@ -86,7 +82,7 @@ FrameMetrics compareWithReference(const FloatImage& m, const FloatImage& r,
     FrameMetrics f;
     std::size_t wrongClass = 0;
     for (std::size_t i = 0; i < m.data.size(); ++i) {
-        if (!counts(mask, i)) continue;
+        if (!isReceiver(mask, i)) continue;
         ++f.pixels;
         const double d = static_cast<double>(m.data[i]) - static_cast<double>(r.data[i]);
         f.sumSquared += d * d;
@@ -116,7 +112,7 @@ double meanAbsoluteChange(const FloatImage& previous, const FloatImage& current,
     double sum = 0.0;
     std::size_t n = 0;
     for (std::size_t i = 0; i < current.data.size(); ++i) {
-        if (!counts(mask, i)) continue;
+        if (!isReceiver(mask, i)) continue;
         sum += std::abs(static_cast<double>(current.data[i]) - previous.data[i]);
         ++n;
     }
@@ -136,7 +132,7 @@ FloatImage bothReceivers(const FloatImage& a, const FloatImage& b) {
     requireSameShape(a, b, "bothReceivers");
     FloatImage out{a.width, a.height, 1, std::vector<float>(a.data.size())};
     for (std::size_t i = 0; i < a.data.size(); ++i)
-        out.data[i] = counts(a, i) && counts(b, i) ? 1.0f : 0.0f;
+        out.data[i] = isReceiver(a, i) && isReceiver(b, i) ? 1.0f : 0.0f;
     return out;
 }
 

@@ -72,6 +72,11 @@ struct FrameMetrics {
                                   const FloatImage& referencePrevious, const FloatImage& reference,
                                   const FloatImage& receivers = {});
 
+/// Whether pixel i counts under a receiver mask (> 0.5; an empty mask counts every pixel).
+[[nodiscard]] inline bool isReceiver(const FloatImage& receivers, std::size_t i) {
+    return receivers.data.empty() || receivers.data[i] > 0.5f;
+}
+
 /// The pixels that are receivers in both masks (for a change between two frames); an empty
 /// mask stands for all pixels.
 [[nodiscard]] FloatImage bothReceivers(const FloatImage& a, const FloatImage& b);

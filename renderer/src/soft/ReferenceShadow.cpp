@@ -1,5 +1,6 @@
 #include <renderer/soft/ReferenceShadow.h>
 
+#include <renderer/Metrics.h>
 #include <renderer/passes/ForwardPass.h>
 
 #include <geometry/Framing.h>
@@ -61,7 +62,7 @@ VisibilityDifference visibilityDifference(const FloatImage& a, const FloatImage&
     VisibilityDifference d;
     double sum2 = 0.0;
     for (std::size_t i = 0; i < a.data.size(); ++i) {
-        if (!mask.data.empty() && !(mask.data[i] > 0.5f)) continue;
+        if (!isReceiver(mask, i)) continue;
         const double e = static_cast<double>(a.data[i]) - static_cast<double>(b.data[i]);
         sum2 += e * e;
         d.maxAbs = std::max(d.maxAbs, std::abs(e));

@@ -1,5 +1,7 @@
 #include <renderer/soft/SoftStats.h>
 
+#include <renderer/Metrics.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -46,8 +48,9 @@ ByteImage differencePicture(const FloatImage& m, const FloatImage& r, float gain
         throw std::invalid_argument("differencePicture: sizes");
     ByteImage out{m.width, m.height, 4, std::vector<std::uint8_t>(m.data.size() * 4, 255)};
     for (std::size_t i = 0; i < m.data.size(); ++i) {
-        const bool counted = receivers.data.empty() || receivers.data[i] > 0.5f;
-        const float d = counted ? std::min(1.0f, std::abs(m.data[i] - r.data[i]) * gain) : 0.0f;
+        const float d = isReceiver(receivers, i)
+                            ? std::min(1.0f, std::abs(m.data[i] - r.data[i]) * gain)
+                            : 0.0f;
         const auto g = static_cast<std::uint8_t>(std::lround(d * 255.0f));
         out.data[i * 4] = out.data[i * 4 + 1] = out.data[i * 4 + 2] = g;
     }
