@@ -8,6 +8,7 @@
 // tinygltf accepts much malformed content, so every step validates what it reads and reports
 // through Context::fail (reject) or Context::warn (repair).
 
+#include <base/Text.h>
 #include <renderer/GltfLoader.h>
 #include <renderer/Scene.h>
 
@@ -36,13 +37,7 @@ inline constexpr std::size_t kMaxNodes = std::size_t{1} << 20;
 inline constexpr int kMaxImageSide = 16384; // GL_MAX_TEXTURE_SIZE of common desktop drivers
 inline constexpr long long kMaxImagePixels = 1LL << 26; // 256 MiB of RGBA8
 
-/// Concatenates anything streamable; keeps message building short without <format> (GCC 12).
-template <class... Args>
-std::string cat(const Args&... args) {
-    std::ostringstream s;
-    (s << ... << args);
-    return s.str();
-}
+using ::fl::cat;
 
 /// "meshes[3]".
 inline std::string elem(std::string_view array, std::size_t index) {

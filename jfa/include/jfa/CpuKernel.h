@@ -43,6 +43,7 @@
 //    thread; every texel depends only on the previous grid, so results are identical for every
 //    thread count.
 
+#include <base/Parallel.h>
 #include <jfa/Grid.h>
 #include <jfa/Plan.h>
 
@@ -86,15 +87,10 @@ struct FloodResult {
     [[nodiscard]] int passesRun() const { return static_cast<int>(passes.size()); }
 };
 
-/// Resolves a thread count: 0 -> hardware_concurrency() (at least 1); negative throws.
-int resolveThreads(int threads);
-
-/// Number of row bands a pass over `rows` rows uses: min(resolveThreads(threads), rows), >= 1.
-int bandCount(int rows, int threads);
-
-/// Runs body(rowBegin, rowEnd, band) over rows [0, rows) split into bandCount(rows, threads)
-/// contiguous bands, each on its own thread (band 0 on the caller's); rethrows the first exception.
-void parallelRows(int rows, int threads, const std::function<void(int, int, int)>& body);
+// The thread fan-out is base/Parallel.h, shared with every CPU path.
+using ::fl::bandCount;
+using ::fl::parallelRows;
+using ::fl::resolveThreads;
 
 /// Scale (1, 2, 4, ...) of a plan's stage: 2^(stage count - 1 - stageIndex).
 int stageScale(const Plan& plan, std::size_t stageIndex);
