@@ -3,13 +3,10 @@
 // reference fl::filteredVisibility does the same operations). Taps are points of the light's
 // unwarped NDC plane, looked up through the provider's warp, compared with the receiver-plane
 // depth along the light's ray through the tap.
-in vec3 vWorld;
-in vec3 vNormal;
-in vec2 vTexcoord;
+layout(binding = 0) uniform sampler2D uPosition; // SurfacesPass: world xyz, w = 0 background
+layout(binding = 1) uniform sampler2D uPlane;    // SurfacesPass: the triangle's normal
 
 layout(location = 0) out float oVisibility;
-layout(location = 1) out vec4 oPoint;
-layout(location = 2) out vec4 oNormal;
 
 // The depth texture through a sampler without comparison (stored depths are read).
 layout(binding = 4) uniform sampler2D uDepth;
@@ -101,11 +98,8 @@ float filtered(vec3 world, vec3 n) {
 }
 
 void main() {
-    // The receiver plane from the triangle (screen derivatives; its orientation does not matter,
-    // only the plane is used). Degenerate derivatives fall back to the shading normal.
-    vec3 n = cross(dFdx(vWorld), dFdy(vWorld));
-    n = length(n) > 0.0 ? normalize(n) : normalize(vNormal);
-    oVisibility = filtered(vWorld, n);
-    oPoint = vec4(vWorld, 1.0);
-    oNormal = vec4(n, 0.0);
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    vec4 world = texelFetch(uPosition, p, 0);
+    // The receiver plane: the surfaces pass's geometric normal (only the plane is used).
+    oVisibility = world.w == 0.0 ? 1.0 : filtered(world.xyz, texelFetch(uPlane, p, 0).xyz);
 }

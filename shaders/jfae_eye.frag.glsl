@@ -1,17 +1,14 @@
 #version 450 core
-// JFA-E phase 2 (thesis §5.4.1, "Generating Hard Shadows"): the scene from the camera, storing
-// per pixel its world position with the hard-shadow flag in alpha (1 shadowed, 0 lit, 2 lit
-// because outside the shadow map; the clear value -1 marks background), and its occluder: the surface the light's centre sees at the
-// pixel's shadow-map texel (the receiver position the shadow pass stored there) with that
+// JFA-E phase 2 (thesis §5.4.1, "Generating Hard Shadows"): per pixel of the frame's surfaces,
+// its world position with the hard-shadow flag in alpha (1 shadowed, 0 lit, 2 lit because
+// outside the shadow map, -1 background), and its occluder: the surface the light's centre sees
+// at the pixel's shadow-map texel (the receiver position the shadow pass stored there) with that
 // surface's object id. Phase 3 records the occluder of boundary pixels from here, so a boundary
 // pixel's occluder is by construction the surface that puts it in hard shadow, not a guess from
 // the shadow map's silhouettes (Arvo et al.'s condition (2), which the thesis drops).
 #include "shadow_lookup.glsl"
 
-in vec3 vWorld;
-in vec3 vNormal;
-in vec2 vTexcoord;
-
+layout(binding = 0) uniform sampler2D uPosition; // SurfacesPass: world xyz, w = 0 background
 layout(binding = 2) uniform sampler2D uReceivers;
 layout(binding = 3) uniform sampler2D uLightObjectIds;
 uniform int uHaveObjectIds;
@@ -20,15 +17,21 @@ layout(location = 0) out vec4 oPoint;
 layout(location = 1) out vec4 oOccluder;
 
 void main() {
-    // The same test as forward shading's hardShadow(), so radius 0 reproduces it exactly.
-    float lit = hardShadow(vWorld);
+    vec4 surface = texelFetch(uPosition, ivec2(gl_FragCoord.xy), 0);
+    oOccluder = vec4(0.0, 0.0, 0.0, -1.0);
+    if (surface.w == 0.0) {
+        oPoint = vec4(0.0, 0.0, 0.0, -1.0);
+        return;
+    }
+    vec3 world = surface.xyz;
+    // The same test as the hard method's hardShadow(), so radius 0 reproduces it exactly.
+    float lit = hardShadow(world);
     vec3 uvz;
-    bool inMap = shadowCoord(vWorld, uvz);
+    bool inMap = shadowCoord(world, uvz);
     // Lit outside the map (2) is lit by convention, not by a depth test: it is no evidence of a
     // shadow edge, so phase 3 does not count it (a light inside an object would otherwise get a
     // false penumbra along the edge of the map's coverage).
-    oPoint = vec4(vWorld, lit < 0.5 ? 1.0 : (inMap ? 0.0 : 2.0));
-    oOccluder = vec4(0.0, 0.0, 0.0, -1.0);
+    oPoint = vec4(world, lit < 0.5 ? 1.0 : (inMap ? 0.0 : 2.0));
     if (inMap) {
         // The texel a NEAREST lookup of uShadowMap reads.
         ivec2 size = textureSize(uReceivers, 0);

@@ -4,9 +4,8 @@
 #include "shadow_lookup.glsl"
 #include "light.glsl"
 
-in vec3 vWorld;
-in vec3 vNormal;
-in vec2 vTexcoord;
+layout(binding = 3) uniform sampler2D uPosition; // SurfacesPass: world xyz, w = 0 background
+layout(binding = 4) uniform sampler2D uNormal;   // SurfacesPass: shading normal facing the eye
 
 layout(location = 0) out vec4 oDiagnostics;
 
@@ -18,8 +17,12 @@ uniform float uShadowMapSize;
 uniform mat4 uView;
 
 void main() {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    vec4 surface = texelFetch(uPosition, pixel, 0);
+    vec3 vWorld = surface.xyz;
     // Texel coordinates up to a constant offset, computed in uniform control flow so the
-    // derivatives are defined; the guard on w only keeps helper values finite.
+    // derivatives are defined (between neighbouring pixels' surface points: within a surface the
+    // same as the rasteriser's); the guard on w only keeps helper values finite.
     vec4 map = uShadowWarp * uLightViewProj * vec4(vWorld, 1.0);
     vec2 texel = map.xy / max(map.w, 1e-30) * (0.5 * uShadowMapSize);
     vec2 dx = dFdxFine(texel), dy = dFdyFine(texel);
@@ -29,10 +32,9 @@ void main() {
     bool inMap = shadowCoord(vWorld, uvz);
     // Receivers are surfaces that face the light (as shaded: two-sided, interpolated normal):
     // on the others Lambert shading is zero, so the shadow map's texels there never show.
-    vec3 n = normalize(vNormal);
-    if (!gl_FrontFacing) n = -n;
+    vec3 n = texelFetch(uNormal, pixel, 0).xyz;
     vec3 l = toLight(vWorld);
-    bool receiver = inMap && dot(n, l) > 0.0;
+    bool receiver = surface.w != 0.0 && inMap && dot(n, l) > 0.0;
     bool valid = receiver && !isnan(det) && !isinf(det);
     // Capped at 1e6 pixels per texel (a surface seen exactly edge-on) to stay finite.
     float footprint = valid ? min(inversesqrt(max(det, 1e-12)), 1e6) : 0.0;
@@ -44,5 +46,8 @@ void main() {
                        ? texture(uPreviousShadowMap, p)
                        : 1.0;
     }
-    oDiagnostics = vec4(footprint, -(uView * vec4(vWorld, 1.0)).z, visibility, previous);
+    // Background keeps the old clear value: no footprint, no depth, lit.
+    oDiagnostics = surface.w == 0.0
+                       ? vec4(0.0, 0.0, 1.0, 1.0)
+                       : vec4(footprint, -(uView * vec4(vWorld, 1.0)).z, visibility, previous);
 }

@@ -84,14 +84,15 @@ std::vector<std::pair<std::string, double>> phases(const Renderer& r) {
 // The standard-flooding counterpart of a JFA run (same pass count), or -1.
 int counterpartOf(const std::vector<MethodRun>& runs, std::size_t k, int defaultPasses) {
     const MethodSpec& m = runs[k].spec;
-    const ShadowMethod want = m.method == ShadowMethod::JfaL   ? ShadowMethod::FloodL
-                              : m.method == ShadowMethod::JfaE ? ShadowMethod::FloodE
-                                                               : ShadowMethod::Hard;
-    if (want == ShadowMethod::Hard) return -1;
+    const std::string_view want = methodOrThrow(m.method).reference;
+    if (want.empty()) return -1;
+    const auto passes = [&](const MethodSpec& spec) {
+        const MethodOption& o = floodPassesOption();
+        return spec.options.has(o.flag) ? spec.options.integer(o) : defaultPasses;
+    };
     for (std::size_t c = 0; c < runs.size(); ++c)
         if (runs[c].spec.method == want && runs[c].width == runs[k].width &&
-            runs[c].height == runs[k].height &&
-            runs[c].spec.passes.value_or(defaultPasses) == m.passes.value_or(defaultPasses))
+            runs[c].height == runs[k].height && passes(runs[c].spec) == passes(m))
             return static_cast<int>(c);
     return -1;
 }
@@ -103,19 +104,6 @@ int runCapture(const CaptureRequest& req) {
     } catch (const CaptureScriptError& e) {
         throw InputError(e.what());
     }
-    // JFA-E / flood-E flood the frame: their pass count must fit every resolution.
-    for (const auto& [w, h] : script.resolutions)
-        for (const MethodSpec& m : script.methods) {
-            if (m.method != ShadowMethod::JfaE && m.method != ShadowMethod::FloodE) continue;
-            try {
-                (void)eyeSoftPlan(m.passes.value_or(script.jfaPasses), false, w, h);
-            } catch (const std::invalid_argument& e) {
-                throw InputError(script.file.string() + ": " +
-                                 (m.passes ? "methods (" + m.label + ").passes" : "jfaPasses") +
-                                 " at " + std::to_string(w) + "x" + std::to_string(h) + ": " +
-                                 e.what());
-            }
-        }
     const fs::path dir(req.out);
     prepareOutput(dir);
 
@@ -125,15 +113,20 @@ int runCapture(const CaptureRequest& req) {
     so.shaderDir = req.shaderDir;
     so.shadowMapSize = script.shadowMapSize;
     so.shadowMap = script.shadowMapProvider;
-    so.jfaPasses = script.jfaPasses;
+    so.methodOptions[std::string(floodPassesOption().flag)] = std::to_string(script.jfaPasses);
+    so.strictMethodOptions = false; // the script's methods each take their own
     so.timing = req.timing;
     const Scene scene = loadScene(so);
     auto context = EglContext::create();
     const ShaderLibrary shaders = makeShaderLibrary(so);
     const RenderSettings base = makeRenderSettings(so);
     RenderSettings refSettings = base;
-    refSettings.method = ShadowMethod::Reference;
-    refSettings.reference = script.reference;
+    refSettings.method = "reference";
+    {
+        const MethodDescriptor& truth = methodOrThrow(refSettings.method);
+        refSettings.options.set(truth.option("samples")->flag, script.reference.samples);
+        refSettings.options.set(truth.option("mapSize")->flag, script.reference.mapSize);
+    }
 
     CaptureResults results;
     results.script = &script;
@@ -163,7 +156,7 @@ int runCapture(const CaptureRequest& req) {
             run.height = h;
             results.runs.push_back(std::move(run));
             renderers.push_back(
-                m.method == ShadowMethod::Reference
+                m.method == refSettings.method
                     ? nullptr
                     : std::make_unique<Renderer>(shaders, scene, settingsFor(base, m)));
             if (renderers.back()) renderers.back()->resize(w, h);

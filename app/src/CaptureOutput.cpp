@@ -111,7 +111,7 @@ nlohmann::json resultsSummary(const CaptureResults& r) {
     nlohmann::json methods = nlohmann::json::array();
     std::optional<double> hardMs;
     for (const MethodRun& m : r.runs)
-        if (m.spec.method == ShadowMethod::Hard && !hardMs) {
+        if (m.spec.method == "hard" && !hardMs) {
             std::vector<double> t;
             for (const FrameRow& row : m.rows) t.push_back(row.frameMs);
             hardMs = medianOf(t);
@@ -146,7 +146,7 @@ nlohmann::json resultsSummary(const CaptureResults& r) {
         const double n = std::max<double>(1.0, static_cast<double>(m.rows.size()));
         nlohmann::json e;
         e["label"] = m.label;
-        e["method"] = std::string(methodName(m.spec.method));
+        e["method"] = m.spec.method;
         e["width"] = m.width;
         e["height"] = m.height;
         e["frames"] = m.rows.size();

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <iomanip>
 #include <set>
 #include <sstream>
 
@@ -91,73 +92,72 @@ void parseLight(const Json& j, CaptureScript& s) {
     }
 }
 
+// A JSON value as an option's text ("16/24", "5", "0.25", "true").
+std::string optionText(const Json& v) {
+    if (v.is_string()) return v.get<std::string>();
+    if (v.is_boolean()) return v.get<bool>() ? "true" : "false";
+    if (v.is_number_integer()) return std::to_string(v.get<long long>());
+    if (v.is_number()) {
+        std::ostringstream out;
+        out << std::setprecision(9) << v.get<double>();
+        return out.str();
+    }
+    return v.dump();
+}
+
 MethodSpec parseMethodEntry(const Json& j, const std::string& field) {
     MethodSpec m;
-    Json options = Json::object();
     std::string name;
+    std::vector<std::pair<std::string, std::string>> given; // key, value text
     if (j.is_string()) {
-        // "name" or "name:option": the option is the preset of pcss, the kernel of pcf and the
-        // pass count of the flooding methods.
+        // "name" or "name:VALUE": VALUE is the method's first option (pcss: preset, pcf: kernel,
+        // the flooding methods: passes).
         const std::string text = j.get<std::string>();
         const auto colon = text.find(':');
         name = text.substr(0, colon);
         if (colon != std::string::npos) {
-            const std::string opt = text.substr(colon + 1);
-            if (name == "pcss") {
-                options["preset"] = opt;
-            } else {
-                try {
-                    std::size_t used = 0;
-                    const int v = std::stoi(opt, &used);
-                    if (used != opt.size()) throw std::invalid_argument(opt);
-                    options[name == "pcf" ? "kernel" : "passes"] = v;
-                } catch (const std::exception&) {
-                    fail(field, "\"" + text + "\": expected an integer after ':'");
-                }
-            }
+            const MethodDescriptor* d = findMethod(name);
+            if (d && d->options.empty()) fail(field, "\"" + name + "\" takes no option");
+            if (d) given.emplace_back(d->options.front()->key, text.substr(colon + 1));
         }
         m.label = text;
     } else if (j.is_object()) {
-        checkKeys(j, field, {"method", "preset", "kernel", "passes", "label"});
         if (!j.contains("method") || !j["method"].is_string())
             fail(field + ".method", "missing (a method name)");
         name = j["method"].get<std::string>();
-        options = j;
+        for (const auto& [key, value] : j.items())
+            if (key != "method" && key != "label") given.emplace_back(key, optionText(value));
     } else {
         fail(field, "expected a method name or {\"method\": ..}");
     }
-    const auto method = parseMethod(name);
-    if (!method) {
-        std::string known;
-        for (ShadowMethod k : allShadowMethods()) {
-            known += ' ';
-            known += methodName(k);
-        }
-        fail(field, "unknown method \"" + name + "\" (known:" + known + ")");
-    }
-    m.method = *method;
-    const bool flooding = m.method == ShadowMethod::JfaL || m.method == ShadowMethod::FloodL ||
-                          m.method == ShadowMethod::JfaE || m.method == ShadowMethod::FloodE;
+    const MethodDescriptor* d = findMethod(name);
+    if (!d) fail(field, "unknown method \"" + name + "\" (known: " + methodNames() + ")");
+    m.method = std::string(d->name);
     std::string suffix;
-    if (options.contains("preset")) {
-        if (m.method != ShadowMethod::Pcss) fail(field + ".preset", "only pcss takes a preset");
-        if (!options["preset"].is_string()) fail(field + ".preset", "expected \"16/24\" etc.");
-        m.presetText = options["preset"].get<std::string>();
-        m.pcss = parsePcssPreset(m.presetText);
-        if (!m.pcss)
-            fail(field + ".preset",
-                 "unknown PCSS preset \"" + m.presetText + "\" (known: 16/16, 16/24, 32/64)");
-        suffix = ":" + m.presetText;
-    }
-    if (options.contains("kernel")) {
-        if (m.method != ShadowMethod::Pcf) fail(field + ".kernel", "only pcf takes a kernel");
-        m.pcfKernel = readInt(options["kernel"], field + ".kernel", 1, kMaxPcfKernel);
-        suffix = ":" + std::to_string(*m.pcfKernel);
-    }
-    if (options.contains("passes")) {
-        if (!flooding) fail(field + ".passes", "only the flooding methods take passes");
-        m.passes = readInt(options["passes"], field + ".passes", 1, 13);
-        suffix = ":" + std::to_string(*m.passes);
+    for (const auto& [key, value] : given) {
+        const std::string f = j.is_object() ? field + "." + key : field;
+        const MethodOption* o = d->option(key);
+        if (!o) {
+            // Another method's option, or no option at all: say which.
+            std::string takers;
+            for (const MethodDescriptor& other : methodTable())
+                if (other.option(key))
+                    takers += (takers.empty() ? "" : ", ") + std::string(other.name);
+            fail(f, takers.empty()
+                        ? "unknown key (" + name + " takes: " +
+                              [&] {
+                                  std::string keys;
+                                  for (const MethodOption* k : d->options)
+                                      keys += (keys.empty() ? "" : ", ") + std::string(k->key);
+                                  return keys.empty() ? std::string("no options") : keys;
+                              }() +
+                              ")"
+                        : "only " + takers + " take(s) \"" + key + "\"");
+        }
+        const std::string problem = checkOptionValue(*o, value);
+        if (!problem.empty()) fail(f, problem);
+        m.options.set(o->flag, value);
+        suffix = ":" + value;
     }
     if (j.is_object()) {
         m.label = name + suffix;
@@ -241,16 +241,21 @@ CaptureScript parseCaptureScript(const std::string& text, const std::filesystem:
             if (!j["saveFrames"].is_boolean()) fail("saveFrames", "expected true or false");
             s.saveFrames = j["saveFrames"].get<bool>();
         }
-        // Pass counts beyond what the map holds are one clear error here, not a failure later.
+        // Options the map cannot use (JFA passes beyond its size) are one clear error here, not
+        // a failure later. The eye-space methods are checked against each resolution.
         for (const MethodSpec& m : s.methods) {
-            PenumbraSettings ps;
-            ps.passes = m.passes.value_or(s.jfaPasses);
-            try {
-                (void)penumbraPlan(ps, s.shadowMapSize);
-            } catch (const std::invalid_argument& e) {
-                fail(m.passes ? "methods (" + m.label + ").passes" : std::string("jfaPasses"),
-                     e.what());
-            }
+            const MethodDescriptor& d = methodOrThrow(m.method);
+            if (!d.check) continue;
+            MethodOptions o = m.options;
+            if (!o.has(floodPassesOption().flag)) o.set(floodPassesOption().flag, s.jfaPasses);
+            for (const auto& [w, h] : s.resolutions) try {
+                    d.check(o, d, s.shadowMapSize, w, h);
+                } catch (const std::invalid_argument& e) {
+                    fail(m.options.has(floodPassesOption().flag)
+                             ? "methods (" + m.label + ").passes"
+                             : std::string("jfaPasses"),
+                         e.what());
+                }
         }
     } catch (const CaptureScriptError& e) {
         throw CaptureScriptError(name + ": " + e.what());
@@ -278,9 +283,7 @@ glm::vec3 lightPositionAt(const std::vector<glm::vec3>& keys, int i, int n) {
 RenderSettings settingsFor(const RenderSettings& base, const MethodSpec& m) {
     RenderSettings s = base;
     s.method = m.method;
-    if (m.passes) s.penumbra.passes = *m.passes;
-    if (m.pcfKernel) s.filtered.pcfKernel = *m.pcfKernel;
-    if (m.pcss) s.filtered.pcss = *m.pcss;
+    for (const auto& [flag, value] : m.options.values()) s.options.set(flag, value);
     return s;
 }
 

@@ -14,11 +14,15 @@
 //    "jfaPasses": P,
 //    "reference": {"samples": N, "mapSize": S},
 //    "methods": ["hard", "pcss:16/24", "pcf:5", {"method": "jfa-l", "passes": 7, "label": ".."}],
+//                                                          // keys: the method's options in the
+//                                                          // method table ("name:V" sets its
+//                                                          first)
 //    "saveFrames": true}                                   // PNG + EXR per frame x method
 // Every problem is reported as "FILE: FIELD: problem".
 
 #include <renderer/CameraPath.h>
 #include <renderer/Renderer.h>
+#include <renderer/soft/ReferenceShadow.h>
 
 #include <filesystem>
 #include <optional>
@@ -36,12 +40,9 @@ class CaptureScriptError : public std::runtime_error {
 
 /// One row of the results: a method with its options.
 struct MethodSpec {
-    std::string label; // unique: "jfa-l", "pcss:16/24", or the script's "label"
-    ShadowMethod method = ShadowMethod::Hard;
-    std::optional<int> passes;      // jfa-l / flood-l / jfa-e / flood-e
-    std::optional<int> pcfKernel;   // pcf
-    std::optional<PcssPreset> pcss; // pcss
-    std::string presetText;         // as written ("16/24"), for labels
+    std::string label;           // unique: "jfa-l", "pcss:16/24", or the script's "label"
+    std::string method = "hard"; // a name of the method table
+    MethodOptions options;       // the entry's options, by flag (checked against the row)
 };
 
 struct CaptureScript {

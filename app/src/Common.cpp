@@ -38,48 +38,16 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool sceneAsOption) {
                    "Shadow-map provider: uniform (fitted to the scene) or tsm (trapezoidal)")
         ->check(CLI::IsMember({"uniform", "tsm"}))
         ->capture_default_str();
-    cmd.add_option("--method", o.method,
-                   "Shadow method: hard, jfa-l (JFA penumbra map, thesis 5.3), flood-l (its "
-                   "standard-flooding reference), jfa-e (JFA in eye space, thesis 5.4), flood-e "
-                   "(its standard-flooding reference), pcf, pcss (baselines), reference "
-                   "(ground truth: N point-light maps over the disk)")
-        ->check(CLI::IsMember(
-            {"hard", "jfa-l", "flood-l", "jfa-e", "flood-e", "pcf", "pcss", "reference"}))
+    std::string methodHelp = "Shadow method:";
+    std::vector<std::string> names;
+    for (const MethodDescriptor& m : methodTable()) {
+        methodHelp += "\n  " + std::string(m.name) + ": " + std::string(m.help);
+        names.emplace_back(m.name);
+    }
+    cmd.add_option("--method", o.method, methodHelp)
+        ->check(CLI::IsMember(names))
         ->capture_default_str();
-    cmd.add_option("--pcf-kernel", o.pcfKernel,
-                   "pcf: taps per side of the kernel (N x N depth comparisons one uniform-map "
-                   "texel apart, in the light's unwarped plane)")
-        ->check(CLI::Range(1, kMaxPcfKernel))
-        ->capture_default_str();
-    cmd.add_option("--pcss-preset", o.pcssPreset, "pcss: blocker-search/filter samples")
-        ->check(CLI::IsMember({"16/16", "16/24", "32/64"}))
-        ->capture_default_str();
-    cmd.add_option("--reference-samples", o.referenceSamples,
-                   "reference: point lights (shadow maps) over the disk light")
-        ->check(CLI::Range(1, 65536))
-        ->capture_default_str();
-    cmd.add_option("--reference-map-size", o.referenceMapSize,
-                   "reference: texels per side of each point light's shadow map")
-        ->check(CLI::Range(16, kMaxShadowMapSize))
-        ->capture_default_str();
-    cmd.add_flag("--full-jfa", o.fullJfa,
-                 "Full JFA: as many passes as the grid allows (log2 of the shadow-map size for "
-                 "-l, of the frame for -e), instead of --jfa-passes");
-    cmd.add_option("--jfa-passes", o.jfaPasses,
-                   "Flooding passes of jfa-l / flood-l / jfa-e / flood-e: penumbrae up to 2^N - 1 "
-                   "shadow-map texels (-l) or pixels (-e) wide; 1 to log2(size)")
-        ->check(CLI::Range(1, 13))
-        ->capture_default_str();
-    cmd.add_flag("--no-object-id-fix", o.noObjectIdFix,
-                 "jfa-e / flood-e: let occluders flood into the hard shadows of other objects "
-                 "(thesis 5.4.2, first jump-too-far fix off)");
-    cmd.add_flag("--no-midpoint-fix", o.noMidpointFix,
-                 "jfa-e / flood-e: no midpoint continuity check (thesis 5.4.2, second fix off)");
-    cmd.add_option("--boundary-threshold", o.boundaryThreshold,
-                   "jfa-e / flood-e: largest 3D distance from a shadowed boundary pixel to its lit "
-                   "neighbour, in scene units; 0 = 6 pixel footprints")
-        ->check(CLI::Range(0.0f, 1e6f))
-        ->capture_default_str();
+    addMethodOptions(cmd, o);
     cmd.add_option("--bias-slope", o.slopeBias,
                    "Slope-scaled depth bias (polygon offset factor, in light depth)")
         ->check(CLI::Range(0.0f, 64.0f))
@@ -103,6 +71,31 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool sceneAsOption) {
         ->expected(3);
     cmd.add_option("--fov", o.fov, "Vertical field of view, degrees")
         ->check(CLI::Range(1.0f, 170.0f));
+}
+
+void addMethodOptions(CLI::App& cmd, SceneOptions& o) {
+    for (const MethodOption* opt : allMethodOptions()) {
+        // "jfa-l, flood-l: ..." — which methods take it, from the table.
+        std::string takers;
+        for (const MethodDescriptor& m : methodTable())
+            if (m.takesFlag(opt->flag))
+                takers += (takers.empty() ? "" : ", ") + std::string(m.name);
+        const std::string help = takers + ": " + std::string(opt->help);
+        const std::string flag(opt->flag);
+        if (opt->kind == OptionKind::Flag) {
+            cmd.add_flag_callback(
+                flag, [&o, flag] { o.methodOptions[flag] = "true"; }, help);
+            continue;
+        }
+        cmd.add_option_function<std::string>(
+               flag, [&o, flag](const std::string& v) { o.methodOptions[flag] = v; }, help)
+            ->check(CLI::Validator(
+                [opt](const std::string& text) { return checkOptionValue(*opt, text); },
+                opt->kind == OptionKind::Choice ? std::string(opt->choices)
+                : opt->kind == OptionKind::Int  ? std::string("INT")
+                                                : std::string("FLOAT")))
+            ->default_str(std::string(opt->defaultValue));
+    }
 }
 
 void addSizeOptions(CLI::App& cmd, int& width, int& height) {
@@ -142,12 +135,12 @@ ShaderLibrary makeShaderLibrary(const SceneOptions& o) {
     }
 }
 
-void checkEyePasses(const SceneOptions& o, const RenderSettings& s, int width, int height) {
-    if (o.fullJfa || (s.method != ShadowMethod::JfaE && s.method != ShadowMethod::FloodE)) return;
+void checkMethodOptions(const RenderSettings& s, int width, int height) {
+    const MethodDescriptor& m = methodOrThrow(s.method);
     try {
-        (void)eyeSoftPlan(s.penumbra.passes, false, width, height);
+        if (m.check) m.check(s.options, m, s.shadow.size, width, height);
     } catch (const std::invalid_argument& e) {
-        throw InputError(std::string("--jfa-passes: ") + e.what());
+        throw InputError(e.what());
     }
 }
 
@@ -155,30 +148,21 @@ RenderSettings makeRenderSettings(const SceneOptions& o) {
     RenderSettings s;
     s.shadow.size = o.shadowMapSize;
     s.shadow.provider = parseProvider(o.shadowMap).value_or(ShadowMapProvider::Uniform);
-    s.method = parseMethod(o.method).value_or(ShadowMethod::Hard);
-    s.penumbra.passes = o.jfaPasses;
-    const bool eyeSpace = s.method == ShadowMethod::JfaE || s.method == ShadowMethod::FloodE;
-    if (o.fullJfa) {
-        // Full JFA: steps down from half the grid. JFA-E's grid is the frame, whose size is only
-        // known per frame: the largest count is capped there (EyeSoftShadowPass::execute).
-        int full = 0;
-        while ((2 << full) <= s.shadow.size) ++full;
-        s.penumbra.passes = eyeSpace ? 13 : full;
-    }
-    // Validated here so that a bad count is one clear input error before any rendering (the
-    // eye-space methods are checked against the frame: checkEyePasses).
-    if (!eyeSpace) try {
-            (void)penumbraPlan(s.penumbra, s.shadow.size);
-        } catch (const std::invalid_argument& e) {
-            throw InputError(std::string("--jfa-passes: ") + e.what());
+    const MethodDescriptor* method = findMethod(o.method);
+    if (!method)
+        throw UsageError("--method " + o.method + ": unknown method (valid: " + methodNames() +
+                         ")");
+    s.method = o.method;
+    for (const auto& [flag, value] : o.methodOptions) {
+        if (o.strictMethodOptions && !method->takesFlag(flag)) {
+            std::string takers;
+            for (const MethodDescriptor& m : methodTable())
+                if (m.takesFlag(flag)) takers += (takers.empty() ? "" : ", ") + std::string(m.name);
+            throw UsageError(flag + ": method " + o.method + " does not take it (only " + takers +
+                             " do)");
         }
-    s.eyeSoft.objectIdFix = !o.noObjectIdFix;
-    s.eyeSoft.midpointFix = !o.noMidpointFix;
-    s.eyeSoft.boundaryThreshold = o.boundaryThreshold;
-    s.filtered.pcfKernel = o.pcfKernel;
-    s.filtered.pcss = parsePcssPreset(o.pcssPreset).value_or(PcssPreset{});
-    s.reference.samples = o.referenceSamples;
-    s.reference.mapSize = o.referenceMapSize;
+        s.options.set(flag, value);
+    }
     s.shadow.slopeBias = o.slopeBias;
     s.shadow.constantBias = o.constantBias;
     s.timing = o.timing == "query"    ? TimingMode::Query

@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -22,6 +23,12 @@ class InputError : public std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+/// A usage error found after parsing (options that do not go together): one line, exit code 2.
+class UsageError : public std::runtime_error {
+  public:
+    using std::runtime_error::runtime_error;
+};
+
 /// Options every rendering subcommand takes.
 struct SceneOptions {
     std::string scene;                // empty = the built-in default scene
@@ -29,17 +36,12 @@ struct SceneOptions {
     std::string shaderDir;            // --shader-dir
     int shadowMapSize = 1024;
     std::string shadowMap = "uniform"; // provider: uniform | tsm
-    std::string method = "hard";       // hard | jfa-l | flood-l | jfa-e | flood-e | pcf | pcss |
-                                       // reference
-    int jfaPasses = 6;                 // JFA-L / flood-L reach: 2^passes - 1 texels
-    bool fullJfa = false;              // --full-jfa: log2(grid size) passes
-    bool noObjectIdFix = false;        // JFA-E: first jump-too-far fix off
-    bool noMidpointFix = false;        // JFA-E: second jump-too-far fix off
-    float boundaryThreshold = 0.0f;    // JFA-E boundary distance; 0 = automatic
-    int pcfKernel = 3;                 // pcf: kernel x kernel taps
-    std::string pcssPreset = "16/24";  // pcss: blocker/filter samples
-    int referenceSamples = 256;        // reference: point lights over the disk
-    int referenceMapSize = 2048;       // reference: texels per side of each map
+    std::string method = "hard";       // a name of the method table
+    /// The methods' options given on the command line, by flag (the table's MethodOption).
+    std::map<std::string, std::string> methodOptions;
+    /// Refuse options the chosen method does not take (false where methods are switched or
+    /// all run: the window, the main job).
+    bool strictMethodOptions = true;
     float slopeBias = 2.0f;
     float constantBias = 2.0f;
     std::string timing = "auto";
@@ -50,6 +52,8 @@ struct SceneOptions {
 
 /// Registers the scene/shadow/camera options on a subcommand.
 void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool sceneAsOption);
+/// Registers every method option of the table (--jfa-passes, --pcf-kernel, ...), once each.
+void addMethodOptions(CLI::App& cmd, SceneOptions& o);
 /// Registers --width/--height with the accepted range.
 void addSizeOptions(CLI::App& cmd, int& width, int& height);
 
@@ -60,10 +64,12 @@ Scene loadDefaultScene(const LoadOptions& options);
 Scene loadScene(const SceneOptions& o);
 /// The shader library for --shader-dir (or the embedded shaders); throws InputError.
 ShaderLibrary makeShaderLibrary(const SceneOptions& o);
+/// The render settings the options ask for; throws UsageError for a method option the chosen
+/// method does not take (with o.strictMethodOptions).
 RenderSettings makeRenderSettings(const SceneOptions& o);
-/// JFA-E / flood-E flood the frame: their pass count must fit a width x height frame; throws
-/// InputError naming the valid range (the other methods are checked by makeRenderSettings).
-void checkEyePasses(const SceneOptions& o, const RenderSettings& s, int width, int height);
+/// Checks the method's options for a width x height frame before rendering (e.g. JFA passes that
+/// the map or the frame cannot use); throws InputError naming the option and the valid range.
+void checkMethodOptions(const RenderSettings& s, int width, int height);
 CameraSpec makeCameraSpec(const SceneOptions& o);
 /// The camera the options ask for at width x height; throws InputError (e.g. no such camera).
 CameraView initialCamera(const Scene& scene, const SceneOptions& o, int width, int height);

@@ -32,16 +32,17 @@ struct CompareRequest {
     int width = 512, height = 512;
 };
 
-ShadowMethod referenceOf(ShadowMethod m) {
-    switch (m) {
-    case ShadowMethod::JfaL:
-        return ShadowMethod::FloodL;
-    case ShadowMethod::JfaE:
-        return ShadowMethod::FloodE;
-    default:
-        throw InputError("--method " + std::string(methodName(m)) +
-                         ": no standard-flooding reference for it");
+// The method's standard-flooding reference, from the method table.
+std::string referenceOf(const std::string& method) {
+    const MethodDescriptor& m = methodOrThrow(method);
+    if (m.reference.empty()) {
+        std::string valid;
+        for (const MethodDescriptor& d : methodTable())
+            if (!d.reference.empty()) valid += (valid.empty() ? "" : ", ") + std::string(d.name);
+        throw UsageError("--method " + method + ": no standard-flooding reference for it (" +
+                         valid + " have one)");
     }
+    return std::string(m.reference);
 }
 
 double passMs(const Renderer& r, const std::string& name) {
@@ -51,15 +52,20 @@ double passMs(const Renderer& r, const std::string& name) {
     return ms;
 }
 
-// Every phase either method may time (absent phases read 0).
-const char* kPhases[] = {"shadow map", "silhouettes", "occluder ids", "eye hard shadows",
-                         "boundaries", "flood",       "composite",    "forward"};
+// Every phase either method times, from the table (absent phases read 0).
+std::vector<std::string> phasesOf(const std::string& method, const std::string& reference) {
+    std::vector<std::string> out;
+    for (const std::string& name : {method, reference})
+        for (std::string_view p : framePhases(methodOrThrow(name)))
+            if (std::find(out.begin(), out.end(), p) == out.end()) out.emplace_back(p);
+    return out;
+}
 
-std::string csvHeader() {
+std::string csvHeader(const std::vector<std::string>& kPhases) {
     std::string h = "frame,penumbra_reference,penumbra_method,dI_lt_0.05,dI_0.05_0.1,dI_0.1_0.2,"
                     "dI_ge_0.2,parity_percent,max_dI,mean_dI";
     for (const char* who : {"method", "reference"})
-        for (const char* phase : kPhases) {
+        for (const std::string& phase : kPhases) {
             std::string p = phase;
             std::replace(p.begin(), p.end(), ' ', '_');
             h += std::string(",") + who + "_" + p + "_ms";
@@ -68,8 +74,9 @@ std::string csvHeader() {
 }
 
 int runCompare(const CompareRequest& r) {
-    const ShadowMethod method = parseMethod(r.method).value();
-    const ShadowMethod reference = referenceOf(method);
+    const std::string method = r.method;
+    const std::string reference = referenceOf(method);
+    const std::vector<std::string> kPhases = phasesOf(method, reference);
     const Scene scene = loadScene(r.scene);
     const float aspect = static_cast<float>(r.width) / static_cast<float>(r.height);
     CameraPath path = [&] {
@@ -86,7 +93,7 @@ int runCompare(const CompareRequest& r) {
     const ShaderLibrary shaders = makeShaderLibrary(r.scene);
     RenderSettings settings = makeRenderSettings(r.scene);
     settings.method = method;
-    checkEyePasses(r.scene, settings, r.width, r.height);
+    checkMethodOptions(settings, r.width, r.height);
     Renderer methodRenderer(shaders, scene, settings);
     settings.method = reference;
     Renderer referenceRenderer(shaders, scene, settings);
@@ -94,13 +101,15 @@ int runCompare(const CompareRequest& r) {
     referenceRenderer.resize(r.width, r.height);
     std::cout << "context: " << context->description() << "\n"
               << "scene: " << scene.source << " (" << scene.triangleCount() << " triangles)\n"
-              << methodName(method) << " vs " << methodName(reference) << ", " << r.frames
-              << " frames at " << r.width << "x" << r.height << ", shadow map "
-              << providerName(settings.shadow.provider) << " " << settings.shadow.size << "^2, "
-              << settings.penumbra.passes << " passes\n";
+              << method << " vs " << reference << ", " << r.frames << " frames at " << r.width
+              << "x" << r.height << ", shadow map " << providerName(settings.shadow.provider) << " "
+              << settings.shadow.size << "^2, "
+              << requestedPasses(methodOrThrow(method), settings.options, settings.shadow.size,
+                                 r.width, r.height)
+              << " passes\n";
 
     std::ostringstream csv;
-    csv << csvHeader() << std::setprecision(6);
+    csv << csvHeader(kPhases) << std::setprecision(6);
     const bool tty = ::isatty(STDOUT_FILENO) != 0;
     std::vector<SoftStats> all;
     std::map<std::string, std::vector<double>> phaseMs;
@@ -120,7 +129,7 @@ int runCompare(const CompareRequest& r) {
         for (double d : s.deltaBuckets) csv << "," << 100.0 * d;
         csv << "," << 100.0 * s.parityShare << "," << s.maxDelta << "," << s.meanDelta;
         for (const Renderer* rr : {&methodRenderer, &referenceRenderer})
-            for (const char* phase : kPhases) {
+            for (const std::string& phase : kPhases) {
                 const double ms = passMs(*rr, phase);
                 csv << "," << ms;
                 phaseMs[std::string(rr == &methodRenderer ? "method " : "reference ") + phase]
@@ -153,14 +162,15 @@ int runCompare(const CompareRequest& r) {
         return v.empty() ? 0.0 : v[v.size() / 2];
     };
     nlohmann::json j;
-    j["method"] = methodName(method);
-    j["reference"] = methodName(reference);
+    j["method"] = method;
+    j["reference"] = reference;
     j["frames"] = r.frames;
     j["width"] = r.width;
     j["height"] = r.height;
     j["shadowMap"] = {{"provider", providerName(settings.shadow.provider)},
                       {"size", settings.shadow.size}};
-    j["passes"] = settings.penumbra.passes;
+    j["passes"] = requestedPasses(methodOrThrow(method), settings.options, settings.shadow.size,
+                                  r.width, r.height);
     j["meanPenumbraPixelsReference"] =
         mean([](const SoftStats& s) { return static_cast<double>(s.penumbraReference); });
     j["meanShareDeltaBelow0.05"] = mean([](const SoftStats& s) { return s.deltaBuckets[0]; });
@@ -207,8 +217,8 @@ int runCompare(const CompareRequest& r) {
               << "% of penumbra pixels (mean; worst frame " << 100 * minBelow << "%)\n"
               << "parity differs: " << 100 * j["meanParityShare"].get<double>()
               << "% of pixels (mean; max " << 100 * maxParity << "%)\n"
-              << "flood time " << methodName(reference) << " / " << methodName(method) << ": "
-              << floodRatio << " (medians)\n"
+              << "flood time " << reference << " / " << method << ": " << floodRatio
+              << " (medians)\n"
               << "wrote " << (dir / "frames.csv").string() << ", "
               << (dir / "summary.json").string() << ", " << (dir / (stem + ".png")).string() << ", "
               << (dir / (stem + ".exr")).string() << "\n";

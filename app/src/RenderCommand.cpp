@@ -79,7 +79,7 @@ int renderHeadless(const RenderRequest& r) {
               << "scene: " << scene.source << " (" << scene.triangleCount() << " triangles)\n";
     const ShaderLibrary shaders = makeShaderLibrary(r.scene);
     const RenderSettings base = makeRenderSettings(r.scene);
-    checkEyePasses(r.scene, base, r.width, r.height);
+    checkMethodOptions(base, r.width, r.height);
     std::vector<ShadowMapProvider> providers{base.shadow.provider};
     if (r.sideBySide) providers = {ShadowMapProvider::Uniform, ShadowMapProvider::Tsm};
 

@@ -76,7 +76,7 @@ std::string summaryTable(const nlohmann::json& summary) {
 std::string errorCharts(const CaptureResults& r) {
     std::vector<svg::Series> all, pen, flicker;
     for (const MethodRun& m : r.runs) {
-        if (m.spec.method == ShadowMethod::Reference) continue; // zero against itself
+        if (m.spec.method == "reference") continue; // zero against itself
         svg::Series a{m.label, {}}, p{m.label, {}}, f{m.label, {}};
         for (const FrameRow& row : m.rows) {
             a.values.push_back(row.metrics.rmse);
@@ -136,7 +136,7 @@ std::string timeAndCostCharts(const nlohmann::json& summary) {
 std::string worstFrames(const CaptureResults& r, const std::string& imageDir) {
     std::ostringstream s;
     for (const MethodRun& m : r.runs) {
-        if (m.spec.method == ShadowMethod::Reference) continue;
+        if (m.spec.method == "reference") continue;
         s << "<figure><img src=\"" << escape(imageDir + "/worst_" + safeName(m.label) + ".png")
           << "\" alt=\"" << escape(m.label) << " worst frame\"><figcaption>" << escape(m.label)
           << ": frame " << m.worstFrame << ", RMSE " << fmt(m.worstRmse, 4)

@@ -21,6 +21,7 @@ Runner addViewCommand(CLI::App& app) {
     auto s = std::make_shared<ViewerOptions>();
     auto captureDir = std::make_shared<std::string>("captures");
     auto noHud = std::make_shared<bool>(false);
+    s->scene.strictMethodOptions = false; // the window switches methods: each takes its own
     addSceneOptions(*cmd, s->scene, false);
     addSizeOptions(*cmd, s->width, s->height);
     cmd->add_option("--frames", s->frames, "Close after this many frames (0 = run until closed)")

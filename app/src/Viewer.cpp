@@ -24,10 +24,17 @@ float verticalFov(const CameraView& v) {
 
 } // namespace
 
-std::optional<ShadowMethod> floodReference(ShadowMethod m) {
-    if (m == ShadowMethod::JfaL) return ShadowMethod::FloodL;
-    if (m == ShadowMethod::JfaE) return ShadowMethod::FloodE;
-    return std::nullopt;
+std::optional<std::string> floodReference(const std::string& method) {
+    const MethodDescriptor* m = findMethod(method);
+    if (!m || m->reference.empty()) return std::nullopt;
+    return std::string(m->reference);
+}
+
+std::vector<std::string> cycledMethods() {
+    std::vector<std::string> out;
+    for (const MethodDescriptor& m : methodTable())
+        if (m.cycles) out.emplace_back(m.name);
+    return out;
 }
 
 Viewer::Viewer(const ViewerOptions& options) : options_(options), showHud_(options.hud) {
@@ -265,9 +272,10 @@ void Viewer::renderFrame(glm::ivec2 size, float dt) {
     }
     if (!options_.fpsLog.empty()) {
         const RenderSettings& s = renderer_->settings();
-        fpsRows_ += std::to_string(rendered_) + "," + std::string(methodName(s.method)) + "," +
+        fpsRows_ += std::to_string(rendered_) + "," + s.method + "," +
                     std::string(providerName(s.shadow.provider)) + "," +
-                    std::to_string(s.shadow.size) + "," + std::to_string(s.penumbra.passes) + "," +
+                    std::to_string(s.shadow.size) + "," +
+                    std::to_string(s.options.integer(floodPassesOption())) + "," +
                     std::string(overlayName(overlayMode_)) + "," + std::to_string(size.x) + "," +
                     std::to_string(size.y) + "," + std::to_string(renderMs) + "," +
                     std::to_string((end - start) * 1000.0) + "," + (statsFrame ? "1" : "0") + "\n";

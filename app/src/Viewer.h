@@ -84,7 +84,7 @@ class Viewer {
     std::string message_;
     double messageUntil_ = 0.0;
     std::optional<SoftStats> stats_;
-    ShadowMethod statsMethod_ = ShadowMethod::Hard;
+    std::string statsMethod_;
     int statsFrame_ = 0, nextStatsFrame_ = 0;
     bool statsRequested_ = false;
     std::optional<ScriptPlayer> script_;
@@ -100,6 +100,9 @@ class Viewer {
 };
 
 /// The standard-flooding reference of a JFA method (jfa-l -> flood-l, jfa-e -> flood-e).
-std::optional<ShadowMethod> floodReference(ShadowMethod m);
+/// The standard-flooding reference of `method` from the method table, or nullopt.
+std::optional<std::string> floodReference(const std::string& method);
+/// The window's method list: the table's rows that cycle.
+std::vector<std::string> cycledMethods();
 
 } // namespace fl::app

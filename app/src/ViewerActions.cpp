@@ -58,8 +58,11 @@ void Viewer::act(Action a) {
         glfwSetWindowShouldClose(window_->handle(), GLFW_TRUE);
         return;
     case Action::NextMethod:
-    case Action::PrevMethod:
-        s.method = cycle(allShadowMethods(), s.method, a == Action::NextMethod ? 1 : -1);
+    case Action::PrevMethod: {
+        const std::vector<std::string> methods = cycledMethods();
+        s.method = cycle(std::span<const std::string>(methods), s.method,
+                         a == Action::NextMethod ? 1 : -1);
+    }
         stats_.reset();
         break;
     case Action::ToggleProvider:
@@ -69,16 +72,19 @@ void Viewer::act(Action a) {
         break;
     case Action::ShadowMapSmaller:
         s.shadow.size = std::max(256, s.shadow.size / 2);
-        s.penumbra.passes = std::min(s.penumbra.passes, log2Floor(s.shadow.size));
+        s.options.set(floodPassesOption().flag,
+                      std::min(s.options.integer(floodPassesOption()), log2Floor(s.shadow.size)));
         break;
     case Action::ShadowMapLarger:
         s.shadow.size = std::min(4096, s.shadow.size * 2);
         break;
     case Action::FewerPasses:
-        s.penumbra.passes = std::max(1, s.penumbra.passes - 1);
+        s.options.set(floodPassesOption().flag,
+                      std::max(1, s.options.integer(floodPassesOption()) - 1));
         break;
     case Action::MorePasses:
-        s.penumbra.passes = std::min(maxPasses, s.penumbra.passes + 1);
+        s.options.set(floodPassesOption().flag,
+                      std::min(maxPasses, s.options.integer(floodPassesOption()) + 1));
         break;
     case Action::NextVariant: {
         const auto n = static_cast<int>(OverlayRenderer::variantNames().size());
@@ -142,9 +148,9 @@ void Viewer::act(Action a) {
         return;
     }
     renderer_->setSettings(s);
-    std::cout << "method " << methodName(s.method) << ", shadow map "
-              << providerName(s.shadow.provider) << " " << s.shadow.size << "^2, JFA passes "
-              << s.penumbra.passes << "\n";
+    std::cout << "method " << s.method << ", shadow map " << providerName(s.shadow.provider) << " "
+              << s.shadow.size << "^2, JFA passes " << s.options.integer(floodPassesOption())
+              << "\n";
 }
 
 void Viewer::moveLight(float dAzimuth, float dElevation) {
@@ -203,30 +209,35 @@ void Viewer::renderWithStats(const CameraView& view) {
     statsMethod_ = method.method;
     statsFrame_ = rendered_;
     if (statsRequested_) // asked for with G: also on stdout (the periodic ones only in the HUD)
-        std::cout << methodName(method.method) << " vs " << methodName(reference.method)
-                  << ": parity differs " << fixed(100.0 * stats_->parityShare, 3)
-                  << "% of pixels, |dI|<0.05 " << fixed(100.0 * stats_->deltaBuckets[0], 2)
-                  << "% of penumbra pixels, max |dI| " << fixed(stats_->maxDelta, 3) << "\n";
+        std::cout << method.method << " vs " << reference.method << ": parity differs "
+                  << fixed(100.0 * stats_->parityShare, 3) << "% of pixels, |dI|<0.05 "
+                  << fixed(100.0 * stats_->deltaBuckets[0], 2) << "% of penumbra pixels, max |dI| "
+                  << fixed(stats_->maxDelta, 3) << "\n";
     statsRequested_ = false;
 }
 
 std::vector<std::string> Viewer::hudLines(const std::vector<std::string>& overlay) const {
     const RenderSettings& s = renderer_->settings();
-    const auto methods = allShadowMethods();
+    const std::vector<std::string> methods = cycledMethods();
     std::vector<std::string> lines;
-    lines.push_back(
-        "method " + std::string(methodName(s.method)) + " (" +
-        std::to_string(indexOf(methods, s.method) + 1) + "/" + std::to_string(methods.size()) +
-        ")   shadow map " + std::string(providerName(s.shadow.provider)) + " " +
-        std::to_string(s.shadow.size) + "^2   JFA passes " + std::to_string(s.penumbra.passes) +
-        "   light radius " + fixed(renderer_->light().radius, 3));
+    // The passes line shows the passes the flood ran (--full-jfa resolves them per frame).
+    const FloodFrame* flood = renderer_->flood();
+    const std::string passes =
+        flood ? "   JFA passes " + std::to_string(flood->passes)
+              : "   JFA passes " + std::to_string(s.options.integer(floodPassesOption()));
+    lines.push_back("method " + s.method + " (" +
+                    std::to_string(indexOf(std::span<const std::string>(methods), s.method) + 1) +
+                    "/" + std::to_string(methods.size()) + ")   shadow map " +
+                    std::string(providerName(s.shadow.provider)) + " " +
+                    std::to_string(s.shadow.size) + "^2" + passes + "   light radius " +
+                    fixed(renderer_->light().radius, 3));
     std::string times = fixed(renderer_->timer().frameMs(), 1) + " ms/frame, " + fixed(fps_, 1) +
                         " FPS (" + renderer_->timer().modeName() + "):";
     for (const PassTime& p : renderer_->timer().passes())
         times += " " + p.name + " " + fixed(p.ms, 1);
     lines.push_back(times);
     if (stats_ && statsMethod_ == s.method) {
-        lines.push_back("vs " + std::string(methodName(*floodReference(s.method))) + " (frame " +
+        lines.push_back("vs " + *floodReference(s.method) + " (frame " +
                         std::to_string(statsFrame_) + "): parity differs " +
                         fixed(100.0 * stats_->parityShare, 3) + "% of pixels, |dI|<0.05 " +
                         fixed(100.0 * stats_->deltaBuckets[0], 2) + "% of penumbra pixels, max " +
@@ -255,7 +266,7 @@ std::string Viewer::expandName(const std::string& name) const {
             s.replace(at, key.size(), value);
         return s;
     };
-    std::string out = replace(name, "{method}", methodName(renderer_->settings().method));
+    std::string out = replace(name, "{method}", renderer_->settings().method);
     out = replace(out, "{overlay}", overlayName(overlayMode_));
     return replace(out, "{provider}", providerName(renderer_->settings().shadow.provider));
 }
@@ -266,7 +277,7 @@ void Viewer::screenshot(const std::string& name, glm::ivec2 size) {
         do {
             char buf[32];
             std::snprintf(buf, sizeof buf, "capture-%04d-", ++captureCounter_);
-            stem = buf + std::string(methodName(renderer_->settings().method));
+            stem = buf + std::string(renderer_->settings().method);
         } while (std::filesystem::exists(options_.captureDir / (stem + ".png")));
     }
     try {

@@ -44,6 +44,9 @@ int main(int argc, char** argv) {
             }
         }
         return renderHeadless(defaults, 512, 512, "captures", "default");
+    } catch (const UsageError& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return 2;
     } catch (const InputError& e) {
         std::cerr << "error: " << e.what() << "\n";
         return 1;

@@ -81,6 +81,7 @@ GpuScene::GpuScene(const Scene& scene) {
 }
 
 void GpuScene::draw(const gl::Program& program, Uniforms what) const {
+    if (program.location("uViewProj") >= 0) ++eyeDrawCalls_;
     glUseProgram(program.id());
     glBindVertexArray(vao_.id());
     // Uniform locations are looked up once per draw call, not once per instance.

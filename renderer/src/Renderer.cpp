@@ -50,40 +50,6 @@ CameraView makeCameraView(const Scene& scene, const CameraSpec& spec, float aspe
     }
 }
 
-std::string_view methodName(ShadowMethod m) {
-    switch (m) {
-    case ShadowMethod::JfaL:
-        return "jfa-l";
-    case ShadowMethod::FloodL:
-        return "flood-l";
-    case ShadowMethod::JfaE:
-        return "jfa-e";
-    case ShadowMethod::FloodE:
-        return "flood-e";
-    case ShadowMethod::Pcf:
-        return "pcf";
-    case ShadowMethod::Pcss:
-        return "pcss";
-    case ShadowMethod::Reference:
-        return "reference";
-    default:
-        return "hard";
-    }
-}
-
-std::span<const ShadowMethod> allShadowMethods() {
-    static constexpr ShadowMethod kAll[] = {
-        ShadowMethod::Hard,   ShadowMethod::JfaL, ShadowMethod::FloodL, ShadowMethod::JfaE,
-        ShadowMethod::FloodE, ShadowMethod::Pcf,  ShadowMethod::Pcss,   ShadowMethod::Reference};
-    return kAll;
-}
-
-std::optional<ShadowMethod> parseMethod(std::string_view name) {
-    for (ShadowMethod m : allShadowMethods())
-        if (name == methodName(m)) return m;
-    return std::nullopt;
-}
-
 Light sceneLight(const Scene& scene) {
     if (scene.light) return *scene.light;
     Light l;
@@ -102,13 +68,44 @@ geom::ViewVolume lightVolume(const Scene& scene, const Light& light) {
     return geom::fitPerspectiveLight(scene.bounds, light.position);
 }
 
+std::vector<std::string_view> framePhases(const MethodDescriptor& m) {
+    std::vector<std::string_view> out{"shadow map", "surfaces"};
+    out.insert(out.end(), m.phases.begin(), m.phases.end());
+    out.push_back("shading");
+    return out;
+}
+
 Renderer::Renderer(const ShaderLibrary& shaders, const Scene& scene, const RenderSettings& settings)
-    : settings_(settings), scene_(scene), light_(sceneLight(scene)), sceneBounds_(scene.bounds),
+    : shaders_(shaders), settings_(settings), method_(&methodOrThrow(settings.method)),
+      scene_(scene), light_(sceneLight(scene)), sceneBounds_(scene.bounds),
       disk_(makeDiskLight(light_, scene.bounds)), lightVolume_(lightVolume(scene, light_)),
-      shadowPass_(shaders), penumbraPass_(shaders), eyeSoftPass_(shaders), filteredPass_(shaders),
-      referencePass_(shaders), forwardPass_(shaders), diagnosticsPass_(shaders),
-      presentPass_(shaders), timer_(settings.timing) {
+      shadowPass_(shaders), surfacesPass_(shaders), shadingPass_(shaders),
+      diagnosticsPass_(shaders), presentPass_(shaders), timer_(settings.timing) {
+    methods_.resize(methodTable().size());
+    (void)currentMethod(); // its shader errors now, not at the first frame
     gl::throwIfErrors("renderer set-up");
+}
+
+ShadowMethod& Renderer::currentMethod() {
+    std::unique_ptr<ShadowMethod>& m =
+        methods_[static_cast<std::size_t>(method_ - methodTable().data())];
+    if (!m) {
+        m = method_->make(shaders_);
+        if (width_ > 0) m->resize(width_, height_);
+    }
+    return *m;
+}
+
+void Renderer::setSettings(const RenderSettings& settings) {
+    method_ = &methodOrThrow(settings.method);
+    settings_ = settings;
+    (void)currentMethod();
+}
+
+const FloodFrame* Renderer::flood() const {
+    const std::unique_ptr<ShadowMethod>& m =
+        methods_[static_cast<std::size_t>(method_ - methodTable().data())];
+    return method_->floods && m ? m->flood() : nullptr;
 }
 
 void Renderer::setLight(const Light& light) {
@@ -124,7 +121,10 @@ void Renderer::resize(int width, int height) {
     if (width <= 0 || height <= 0)
         throw std::invalid_argument("render size must be positive, got " + std::to_string(width) +
                                     "x" + std::to_string(height));
-    forwardPass_.resize(width, height);
+    surfacesPass_.resize(width, height);
+    for (const std::unique_ptr<ShadowMethod>& m : methods_)
+        if (m) m->resize(width, height);
+    shadingPass_.resize(width, height);
     diagnosticsPass_.resize(width, height);
     width_ = width;
     height_ = height;
@@ -132,71 +132,42 @@ void Renderer::resize(int width, int height) {
 
 void Renderer::render(const CameraView& camera) {
     if (width_ == 0) throw std::logic_error("Renderer::render before resize");
+    const MethodDescriptor& method = *method_;
+    ShadowMethod& impl = currentMethod();
     timer_.beginFrame();
-    const bool penumbra =
-        settings_.method == ShadowMethod::JfaL || settings_.method == ShadowMethod::FloodL;
-    const bool eyeSoft =
-        settings_.method == ShadowMethod::JfaE || settings_.method == ShadowMethod::FloodE;
+    const std::size_t eyeDrawsBefore = scene_.eyeDrawCalls();
     // 1. Shadow map: depth from the light, fitted to the scene bounds; TSM also fits the warp
-    //    to the camera's frustum. The soft methods also keep each texel's world position.
+    //    to the camera's frustum. The flooding methods also keep each texel's world position.
     timer_.begin("shadow map");
     shadow_.reset();
-    const ShadowMapPass::Outputs& shadow =
-        shadow_.emplace(shadowPass_.execute({scene_, lightVolume_, settings_.shadow, camera.view,
-                                             camera.proj, sceneBounds_, penumbra || eyeSoft}));
+    const ShadowMapPass::Outputs& shadow = shadow_.emplace(
+        shadowPass_.execute({scene_, lightVolume_, settings_.shadow, camera.view, camera.proj,
+                             sceneBounds_, method.shadowMapPositions}));
     timer_.end();
-    // 2-3. JFA-L / flood-L: silhouette seeds, flooded into the penumbra map.
-    seeds_ = penumbraMap_ = nullptr;
-    if (penumbra) {
-        PenumbraSettings ps = settings_.penumbra;
-        ps.standardFlooding = settings_.method == ShadowMethod::FloodL;
-        const float threshold = ps.silhouetteThreshold > 0.0f
-                                    ? ps.silhouetteThreshold
-                                    : 0.001f * std::max(sceneBounds_.radius(), 1e-3f);
-        const PenumbraMapPass::Outputs pm =
-            penumbraPass_.execute({*shadow.receivers, disk_, ps, threshold}, &timer_);
-        seeds_ = &pm.seeds;
-        penumbraMap_ = &pm.penumbraMap;
-    }
-    // 2-3'. JFA-E / flood-E: eye hard shadows, boundary seeds, eye-space flood, visibility.
-    eyeSoft_.reset();
-    if (eyeSoft)
-        eyeSoft_.emplace(eyeSoftPass_.execute(
-            {scene_, camera, shadow, settings_.shadow, disk_, settings_.eyeSoft,
-             settings_.penumbra.passes, settings_.method == ShadowMethod::FloodE, width_, height_},
-            &timer_));
-    // 2-3''. Baselines: PCF / PCSS filter the map per eye pixel; the ground truth renders its
-    //        own N maps over the disk. Either way a visibility texture for step 4.
-    const gl::Texture* baseline = nullptr;
-    if (settings_.method == ShadowMethod::Pcf || settings_.method == ShadowMethod::Pcss)
-        baseline = &filteredPass_
-                        .execute({scene_, camera, shadow, lightVolume_, disk_, settings_.filtered,
-                                  settings_.method == ShadowMethod::Pcss, width_, height_},
-                                 &timer_)
-                        .visibility;
-    if (settings_.method == ShadowMethod::Reference)
-        baseline = &referencePass_
-                        .execute({scene_, camera, sceneBounds_, disk_, settings_.shadow,
-                                  settings_.reference, width_, height_},
-                                 &timer_)
-                        .visibility;
-    // 4. Forward shading with the method's visibility.
-    timer_.begin("forward");
-    const ForwardPass::Outputs fwd =
-        forwardPass_.execute({scene_, camera, light_, shadow, penumbraMap_, &disk_,
-                              eyeSoft_ ? &eyeSoft_->visibility : baseline});
+    // 2. Surfaces: the scene drawn once from the eye; every later step reads these targets.
+    timer_.begin("surfaces");
+    const SurfacesPass::Outputs surfaces = surfacesPass_.execute({scene_, camera, light_});
     timer_.end();
-    // 5. Diagnostics: texel footprint and the previous frame's visibility (measurement only).
+    // 3. The shadow method: visibility per pixel (it times its own phases).
+    const FrameInputs in{
+        scene_,           camera, light_,   disk_,  sceneBounds_,      lightVolume_,
+        settings_.shadow, shadow, surfaces, method, settings_.options, &timer_};
+    const gl::Texture& methodVisibility = impl.execute(in);
+    // 4. Shading with the method's visibility; then the optional shadow-map diagnostics
+    //    (texel footprint, the previous frame's visibility: measurement only).
+    timer_.begin("shading");
+    const ShadingPass::Outputs shaded = shadingPass_.execute({surfaces, light_, methodVisibility});
+    timer_.end();
     diagnostics_ = nullptr;
     if (settings_.diagnostics) {
         timer_.begin("diagnostics");
-        diagnostics_ = &diagnosticsPass_.execute({scene_, camera, light_, shadow}).diagnostics;
+        diagnostics_ = &diagnosticsPass_.execute({surfaces, camera, light_, shadow}).diagnostics;
         timer_.end();
     }
     timer_.endFrame();
-    color_ = &fwd.color;
-    visibility_ = &fwd.visibility;
-    receivers_ = &fwd.receivers;
+    eyeDraws_ = static_cast<int>(scene_.eyeDrawCalls() - eyeDrawsBefore);
+    color_ = &shaded.color;
+    visibility_ = &shaded.visibility;
     gl::throwIfErrors("frame");
 }
 

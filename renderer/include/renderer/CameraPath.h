@@ -5,7 +5,7 @@
 // over a static scene.
 
 #include <renderer/Scene.h>
-#include <renderer/passes/ForwardPass.h>
+#include <renderer/passes/SurfacesPass.h>
 
 #include <filesystem>
 #include <vector>

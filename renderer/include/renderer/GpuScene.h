@@ -22,6 +22,9 @@ class GpuScene {
     void draw(const gl::Program& program, Uniforms what) const;
 
     [[nodiscard]] std::size_t triangleCount() const { return triangles_; }
+    /// How many draw() calls so far were from the eye: with a program whose vertex stage takes
+    /// the camera's uViewProj (forward.vert.glsl), as opposed to the light's uLightViewProj.
+    [[nodiscard]] std::size_t eyeDrawCalls() const { return eyeDrawCalls_; }
 
   private:
     struct Draw {
@@ -40,6 +43,7 @@ class GpuScene {
     std::vector<gl::Texture> textures_;
     std::vector<Draw> draws_;
     std::size_t triangles_ = 0;
+    mutable std::size_t eyeDrawCalls_ = 0; // counted by draw(), which is const to its callers
 };
 
 } // namespace fl

@@ -1,59 +1,40 @@
 #pragma once
-// The frame, as numbered steps: 1. shadow map from the light (uniform or TSM provider);
-// 2. (JFA-L, flood-L) silhouettes and 3. the flooded penumbra map, or (JFA-E, flood-E) the eye
-// hard-shadow image, its boundary seeds, the eye-space flood and the visibility composite;
-// or (PCF, PCSS) the filtered map per eye pixel, or (reference) N disk-sample maps accumulated;
-// 4. forward shading with the method's visibility; 5. (optional) shadow-map diagnostics;
-// 6. (window only) present. Owns the passes and the uploaded scene.
+// The frame, as numbered steps (the same numbers wherever a step is written):
+//   1. shadow map from the light (uniform or TSM provider);
+//   2. surfaces: one geometry pass from the eye (SurfacesPass);
+//   3. the shadow method: visibility per pixel (renderer/methods/ShadowMethod.h);
+//   4. shading with that visibility (ShadingPass); then, optionally, the shadow-map diagnostics;
+//   5. overlays and HUD (renderer/overlays, HudPass: drawn by the caller over the frame);
+//   6. present (window only).
+// Owns the passes, one instance of every method of the table, and the uploaded scene.
 
 #include <gpu/PassTimer.h>
 #include <gpu/ShaderLibrary.h>
 #include <renderer/GpuScene.h>
 #include <renderer/Scene.h>
-#include <renderer/passes/ForwardPass.h>
+#include <renderer/methods/ShadowMethod.h>
+#include <renderer/passes/ShadingPass.h>
 #include <renderer/passes/ShadowDiagnosticsPass.h>
 #include <renderer/passes/ShadowMapPass.h>
+#include <renderer/passes/SurfacesPass.h>
 #include <renderer/soft/DiskLight.h>
-#include <renderer/soft/EyeSoftShadow.h>
-#include <renderer/soft/FilteredShadow.h>
-#include <renderer/soft/PenumbraMap.h>
-#include <renderer/soft/ReferenceShadow.h>
 
 #include <geometry/Framing.h>
 
+#include <memory>
 #include <optional>
 #include <span>
+#include <string>
+#include <vector>
 
 namespace fl {
 
-/// The shadow methods.
-enum class ShadowMethod {
-    Hard,      // one shadow-map test (the light's centre)
-    JfaL,      // thesis §5.3: penumbra map by jump flooding in light space
-    FloodL,    // the same phases with standard flooding (the reference for JFA-L)
-    JfaE,      // thesis §5.4: occluders jump-flooded in eye space from the hard-shadow image
-    FloodE,    // the same phases with standard flooding (the reference for JFA-E)
-    Pcf,       // baseline: percentage-closer filtering, a k x k kernel (FilteredShadow.h)
-    Pcss,      // baseline: percentage-closer soft shadows (FilteredShadow.h)
-    Reference, // ground truth: N point-light shadow maps over the disk (ReferenceShadow.h)
-};
-/// "hard", "jfa-l", "flood-l", "jfa-e", "flood-e", "pcf", "pcss", "reference".
-std::string_view methodName(ShadowMethod m);
-/// Every method, in the order the window cycles through them.
-std::span<const ShadowMethod> allShadowMethods();
-/// Parses a method name; nullopt if unknown.
-std::optional<ShadowMethod> parseMethod(std::string_view name);
-
 struct RenderSettings {
     ShadowMapSettings shadow;
-    ShadowMethod method = ShadowMethod::Hard;
-    PenumbraSettings penumbra;       // JFA-L / flood-L (standardFlooding is set from the method);
-                                     // JFA-E / flood-E take its pass count
-    EyeSoftSettings eyeSoft;         // JFA-E / flood-E: the jump-too-far fixes, boundary threshold
-    FilteredShadowSettings filtered; // PCF kernel, PCSS preset
-    ReferenceSettings reference;     // ground truth: samples, map size
+    std::string method = "hard"; // a name of the method table (methodTable())
+    MethodOptions options;       // the methods' options by flag; unset ones take their defaults
     TimingMode timing = TimingMode::Auto;
-    bool diagnostics = false; // run step 3 (texel footprint and temporal continuity)
+    bool diagnostics = false; // measure the shadow map after shading (ShadowDiagnosticsPass)
 };
 
 /// How to pick the camera: a glTF camera, automatic framing, or an explicit eye/target.
@@ -75,12 +56,20 @@ Light sceneLight(const Scene& scene);
 /// The light's view volume fitted to the scene bounds.
 geom::ViewVolume lightVolume(const Scene& scene, const Light& light);
 
+/// The timed passes of a frame with method `m`, in frame order, as PassTimer names them:
+/// "shadow map", "surfaces", the method's phases (its table row), "shading".
+std::vector<std::string_view> framePhases(const MethodDescriptor& m);
+
 class Renderer {
   public:
-    /// Compiles the passes' shaders and uploads the scene (needs a current context).
+    /// Compiles the passes' and the chosen method's shaders and uploads the scene (needs a
+    /// current context); other methods are built when first chosen. Throws
+    /// std::invalid_argument for a method name the table does not have.
     Renderer(const ShaderLibrary& shaders, const Scene& scene, const RenderSettings& settings);
 
-    void setSettings(const RenderSettings& settings) { settings_ = settings; }
+    /// Replaces the settings (building the method if it is new); throws std::invalid_argument for
+    /// an unknown method name.
+    void setSettings(const RenderSettings& settings);
     [[nodiscard]] const RenderSettings& settings() const { return settings_; }
     /// Sets the output size in pixels (both > 0).
     void resize(int width, int height);
@@ -93,22 +82,24 @@ class Renderer {
     [[nodiscard]] const gl::Texture& visibility() const { return *visibility_; }
     /// R8 mask of the last frame: 1 where the visible surface faces the light (its visibility
     /// changes the image), 0 on back-facing surfaces and background.
-    [[nodiscard]] const gl::Texture& receivers() const { return *receivers_; }
+    [[nodiscard]] const gl::Texture& receivers() const { return surfacesPass_.outputs().receivers; }
+    /// Step 2's targets of the last frame.
+    [[nodiscard]] SurfacesPass::Outputs surfaces() const { return surfacesPass_.outputs(); }
     /// The disk light the soft methods use.
     [[nodiscard]] const DiskLight& disk() const { return disk_; }
-    /// JFA-L / flood-L: the last frame's silhouette seeds and penumbra map (nullptr otherwise).
-    [[nodiscard]] const gl::Texture* seeds() const { return seeds_; }
-    [[nodiscard]] const gl::Texture* penumbraMap() const { return penumbraMap_; }
-    /// JFA-E / flood-E: the last frame's phase outputs (nullptr otherwise).
-    [[nodiscard]] const EyeSoftShadowPass::Outputs* eyeSoft() const {
-        return eyeSoft_ ? &*eyeSoft_ : nullptr;
-    }
-    /// Step 5's output (see ShadowDiagnosticsPass); nullptr unless settings().diagnostics.
+    /// The current method's table row.
+    [[nodiscard]] const MethodDescriptor& method() const { return *method_; }
+    /// The last frame's flood when the current method floods (JFA-L/E, flood-L/E), else nullptr.
+    [[nodiscard]] const FloodFrame* flood() const;
+    /// The diagnostics of the last frame (see ShadowDiagnosticsPass); nullptr unless
+    /// settings().diagnostics.
     [[nodiscard]] const gl::Texture* diagnostics() const { return diagnostics_; }
     /// The last frame's shadow map and its matrices; nullptr before the first frame.
     [[nodiscard]] const ShadowMapPass::Outputs* shadow() const {
         return shadow_ ? &*shadow_ : nullptr;
     }
+    /// Eye-space geometry draws of the last frame (1: the surfaces pass; methods read it).
+    [[nodiscard]] int eyeGeometryDraws() const { return eyeDraws_; }
     /// Makes the next diagnostics frame compare with itself (e.g. after a camera cut).
     void resetDiagnostics() { diagnosticsPass_.reset(); }
     [[nodiscard]] const PassTimer& timer() const { return timer_; }
@@ -120,29 +111,29 @@ class Renderer {
     [[nodiscard]] int height() const { return height_; }
 
   private:
+    /// The current method's instance, built on first use.
+    ShadowMethod& currentMethod();
+
+    ShaderLibrary shaders_;
     RenderSettings settings_;
+    const MethodDescriptor* method_ = nullptr;
     GpuScene scene_;
     Light light_;
     geom::Aabb sceneBounds_;
     DiskLight disk_;
     geom::ViewVolume lightVolume_;
     ShadowMapPass shadowPass_;
-    PenumbraMapPass penumbraPass_;
-    EyeSoftShadowPass eyeSoftPass_;
-    FilteredShadowPass filteredPass_;
-    ReferenceShadowPass referencePass_;
-    ForwardPass forwardPass_;
+    SurfacesPass surfacesPass_;
+    std::vector<std::unique_ptr<ShadowMethod>> methods_; // per table row (null until used)
+    ShadingPass shadingPass_;
     ShadowDiagnosticsPass diagnosticsPass_;
     PresentPass presentPass_;
     PassTimer timer_;
     const gl::Texture* color_ = nullptr;
     const gl::Texture* visibility_ = nullptr;
-    const gl::Texture* receivers_ = nullptr;
     const gl::Texture* diagnostics_ = nullptr;
-    const gl::Texture* seeds_ = nullptr;
-    const gl::Texture* penumbraMap_ = nullptr;
     std::optional<ShadowMapPass::Outputs> shadow_;
-    std::optional<EyeSoftShadowPass::Outputs> eyeSoft_;
+    int eyeDraws_ = 0;
     int width_ = 0, height_ = 0;
 };
 

@@ -22,27 +22,14 @@ std::string percent(std::int64_t n, std::int64_t total) {
     return buf;
 }
 
-// Where the soft method of the last frame keeps its seeds and flood: light space (JFA-L,
-// flood-L: the shadow map's grid) or eye space (JFA-E, flood-E: the frame's pixels).
-struct Soft {
-    const gl::Texture* seeds = nullptr;
-    const gl::Texture* flooded = nullptr;
-    const gl::Texture* receivers = nullptr; // light: receiver positions; eye: EyeImage::points
-    const gl::Texture* occluders = nullptr; // eye only
-    bool eye = false;
-    bool standardFlooding = false;
-};
+// The flood of the last frame's method (light space: JFA-L, flood-L on the shadow map's grid;
+// eye space: JFA-E, flood-E on the frame's pixels), as the method keeps it.
+using Soft = FloodFrame;
 
 std::optional<Soft> softOf(const Renderer& r) {
-    const ShadowMethod m = r.settings().method;
-    if ((m == ShadowMethod::JfaL || m == ShadowMethod::FloodL) && r.seeds() && r.shadow())
-        return Soft{r.seeds(), r.penumbraMap(), r.shadow()->receivers,
-                    nullptr,   false,           m == ShadowMethod::FloodL};
-    if ((m == ShadowMethod::JfaE || m == ShadowMethod::FloodE) && r.eyeSoft()) {
-        const EyeSoftShadowPass::Outputs& e = *r.eyeSoft();
-        return Soft{&e.seeds, &e.flooded, &e.points, &e.occluders, true, m == ShadowMethod::FloodE};
-    }
-    return std::nullopt;
+    const FloodFrame* f = r.flood();
+    if (!f || !f->seeds || !r.shadow()) return std::nullopt;
+    return *f;
 }
 
 std::string timing(const SiteDiagram& d) {
@@ -52,21 +39,26 @@ std::string timing(const SiteDiagram& d) {
     return buf;
 }
 
-const std::string kNeedsSoft = "needs a soft method's last frame (jfa-l, flood-l, jfa-e, flood-e)";
+// "needs a soft method's last frame (jfa-l, ...)": the flooding methods of the table.
+const std::string kNeedsSoft = [] {
+    std::string names;
+    for (const MethodDescriptor& m : methodTable())
+        if (m.floods) names += (names.empty() ? "" : ", ") + std::string(m.name);
+    return "needs a soft method's last frame (" + names + ")";
+}();
 
 glm::ivec4 viewportOf(const Soft& soft, const Frame& f) {
     return soft.eye ? glm::ivec4(0, 0, f.width, f.height) : squareViewport(f.width, f.height);
 }
 
 // The frame's flood plan, with JFA or standard flooding.
-jfa::Plan framePlan(const Renderer& r, const Soft& soft, bool standardFlooding) {
-    const RenderSettings& st = r.settings();
+jfa::Plan framePlan(const Soft& soft, bool standardFlooding) {
     if (soft.eye) {
         const int w = soft.seeds->width(), h = soft.seeds->height();
-        return eyeSoftPlan(std::min(st.penumbra.passes, eyeSoftMaxPasses(w, h)), standardFlooding,
-                           w, h);
+        return eyeSoftPlan(soft.passes, standardFlooding, w, h);
     }
-    PenumbraSettings ps = st.penumbra;
+    PenumbraSettings ps;
+    ps.passes = soft.passes;
     ps.standardFlooding = standardFlooding;
     return penumbraPlan(ps, soft.seeds->width());
 }
@@ -77,8 +69,8 @@ const gl::Texture& floodFrame(State& s, const Renderer& r, const Soft& soft,
     if (soft.eye) {
         EyeSoftCriterion c;
         c.light = r.disk();
-        c.objectIdFix = r.settings().eyeSoft.objectIdFix;
-        c.midpointFix = r.settings().eyeSoft.midpointFix;
+        c.objectIdFix = soft.objectIdFix;
+        c.midpointFix = soft.midpointFix;
         c.pointsTexture = soft.receivers->id();
         c.occludersTexture = soft.occluders->id();
         const gl::Texture& out = s.eyeKernel.run(plan, *soft.seeds, c);
@@ -148,7 +140,7 @@ Lines drawPenumbraMap(State& s, const Frame& f) {
 Lines drawFloodPasses(State& s, const Frame& f) {
     const std::optional<Soft> soft = softOf(f.renderer);
     if (!soft) return {kNeedsSoft};
-    const jfa::Plan full = framePlan(f.renderer, *soft, soft->standardFlooding);
+    const jfa::Plan full = framePlan(*soft, soft->standardFlooding);
     const int total = full.passCount();
     int& k = f.controls.floodPass;
     if (k > total) k = total;
@@ -204,7 +196,7 @@ Lines drawJfaVsFlood(State& s, const Frame& f) {
     if (!soft) return {kNeedsSoft};
     // The other method's flood of the same seeds: JFA for a flood-L/E frame, else standard
     // flooding (2^passes - 1 step-1 passes: the cost of this overlay, see the benchmarks).
-    const jfa::Plan plan = framePlan(f.renderer, *soft, !soft->standardFlooding);
+    const jfa::Plan plan = framePlan(*soft, !soft->standardFlooding);
     // Everything the reference flood depends on besides the seeds: the camera (eye-space
     // points), the shadow map's matrices (receivers), the light, the plan and the criterion.
     std::vector<float> key;
@@ -218,8 +210,8 @@ Lines drawJfaVsFlood(State& s, const Frame& f) {
     key.push_back(disk.radius);
     key.push_back(float(plan.passCount()));
     key.push_back(soft->eye ? 1.0f : 0.0f);
-    key.push_back(f.renderer.settings().eyeSoft.objectIdFix ? 1.0f : 0.0f);
-    key.push_back(f.renderer.settings().eyeSoft.midpointFix ? 1.0f : 0.0f);
+    key.push_back(soft->objectIdFix ? 1.0f : 0.0f);
+    key.push_back(soft->midpointFix ? 1.0f : 0.0f);
     jfa::Grid seeds = jfa::readGrid(*soft->seeds);
     ReferenceCache& cache = s.reference;
     const bool reused = cache.key == key && cache.seeds == seeds;

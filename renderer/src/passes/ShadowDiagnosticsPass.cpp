@@ -4,18 +4,14 @@ namespace fl {
 
 ShadowDiagnosticsPass::ShadowDiagnosticsPass(const ShaderLibrary& shaders)
     : program_(
-          gl::Program::build(shaders, {{GL_VERTEX_SHADER, "forward.vert.glsl"},
-                                       {GL_FRAGMENT_SHADER, "shadow_diagnostics.frag.glsl"}})) {}
+          gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
+                                       {GL_FRAGMENT_SHADER, "shadow_diagnostics.frag.glsl"}})),
+      emptyVao_(gl::VertexArray::create()) {}
 
 void ShadowDiagnosticsPass::resize(int width, int height) {
     if (output_ && output_.width() == width && output_.height() == height) return;
     output_ = gl::Texture(GL_RGBA32F, width, height);
-    depth_ = gl::Texture(GL_DEPTH_COMPONENT32F, width, height);
-    fbo_ = gl::Framebuffer::create();
-    fbo_.attach(GL_COLOR_ATTACHMENT0, output_);
-    fbo_.attach(GL_DEPTH_ATTACHMENT, depth_);
-    fbo_.setDrawBuffers(1);
-    fbo_.check("shadow diagnostics");
+    fbo_ = gl::Framebuffer::forColor(output_, "shadow diagnostics");
 }
 
 ShadowDiagnosticsPass::Outputs ShadowDiagnosticsPass::execute(const Inputs& in) {
@@ -29,16 +25,7 @@ ShadowDiagnosticsPass::Outputs ShadowDiagnosticsPass::execute(const Inputs& in) 
     }
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glViewport(0, 0, output_.width(), output_.height());
-    const float background[4] = {0.0f, 0.0f, 1.0f, 1.0f};
-    const float far = 1.0f;
-    glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, background);
-    glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &far);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_CULL_FACE);
-
-    program_.set("uViewProj", in.camera.proj * in.camera.view);
+    glDisable(GL_DEPTH_TEST);
     program_.set("uView", in.camera.view);
     program_.set("uShadowMapSize", static_cast<float>(mapSize));
     program_.set("uHasPrevious", hasPrevious_ ? 1 : 0);
@@ -49,10 +36,10 @@ ShadowDiagnosticsPass::Outputs ShadowDiagnosticsPass::execute(const Inputs& in) 
     program_.set("uLightDirectional", in.light.type == Light::Type::Directional ? 1 : 0);
     bindShadowMap(program_, in.shadow);
     glBindTextureUnit(2, previousMap_.id());
-    in.scene.draw(program_, GpuScene::Uniforms::Material); // for uNormalMatrix
-    glBindTextureUnit(0, 0);
-    glBindTextureUnit(1, 0);
-    glBindTextureUnit(2, 0);
+    glBindTextureUnit(3, in.surfaces.position.id());
+    glBindTextureUnit(4, in.surfaces.normal.id());
+    gl::drawFullscreenTriangle(program_, emptyVao_);
+    for (GLuint unit : {1u, 2u, 3u, 4u}) glBindTextureUnit(unit, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 
     glCopyImageSubData(in.shadow.depth.id(), GL_TEXTURE_2D, 0, 0, 0, 0, previousMap_.id(),

@@ -1,7 +1,7 @@
 #include <renderer/soft/EyeSoftShadow.h>
 
 #include <renderer/GpuScene.h>
-#include <renderer/passes/ForwardPass.h>
+#include <renderer/passes/SurfacesPass.h>
 #include <renderer/soft/PenumbraCriterion.h>
 
 #include <jfa/CpuKernel.h>
@@ -135,7 +135,7 @@ FloatImage eyeSoftVisibility(const EyeImage& im, const jfa::Grid& flooded, const
 EyeSoftShadowPass::EyeSoftShadowPass(const ShaderLibrary& shaders)
     : lightIds_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "shadow_depth.vert.glsl"},
                                              {GL_FRAGMENT_SHADER, "jfae_light_id.frag.glsl"}})),
-      eyePass_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "forward.vert.glsl"},
+      eyePass_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
                                             {GL_FRAGMENT_SHADER, "jfae_eye.frag.glsl"}})),
       boundary_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
                                              {GL_FRAGMENT_SHADER, "jfae_boundary.frag.glsl"}})),
@@ -149,13 +149,11 @@ void EyeSoftShadowPass::resize(int width, int height, int shadowSize) {
     if (points_ && points_.width() == width && points_.height() == height) return;
     points_ = gl::Texture(GL_RGBA32F, width, height);
     occluders_ = gl::Texture(GL_RGBA32F, width, height);
-    eyeDepth_ = gl::Texture(GL_DEPTH_COMPONENT32F, width, height);
     seeds_ = gl::Texture(GL_RGBA32F, width, height);
     visibility_ = gl::Texture(GL_R32F, width, height);
     eyeFbo_ = gl::Framebuffer::create();
     eyeFbo_.attach(GL_COLOR_ATTACHMENT0, points_);
     eyeFbo_.attach(GL_COLOR_ATTACHMENT1, occluders_);
-    eyeFbo_.attach(GL_DEPTH_ATTACHMENT, eyeDepth_);
     eyeFbo_.setDrawBuffers(2);
     eyeFbo_.check("JFA-E eye pass");
     seedsFbo_ = gl::Framebuffer::forColor(seeds_, "JFA-E boundary seeds");
@@ -201,26 +199,18 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, PassTime
         if (timer) timer->end();
     }
 
-    // Phase 2: hard shadows from the camera, with positions and occluders.
+    // Phase 2: hard shadows per pixel of the frame's surfaces, with occluders.
     if (timer) timer->begin("eye hard shadows");
     {
-        const float clear[4] = {0.0f, 0.0f, 0.0f, -1.0f};
-        const float far = 1.0f;
-        glClearNamedFramebufferfv(eyeFbo_.id(), GL_COLOR, 0, clear);
-        glClearNamedFramebufferfv(eyeFbo_.id(), GL_COLOR, 1, clear);
-        glClearNamedFramebufferfv(eyeFbo_.id(), GL_DEPTH, 0, &far);
         glBindFramebuffer(GL_FRAMEBUFFER, eyeFbo_.id());
         glViewport(0, 0, in.width, in.height);
-        glEnable(GL_DEPTH_TEST);
-        glDepthFunc(GL_LESS);
-        glDepthMask(GL_TRUE);
-        glDisable(GL_CULL_FACE); // as the forward pass: both faces, the same visible surfaces
-        eyePass_.set("uViewProj", in.camera.proj * in.camera.view);
+        glDisable(GL_DEPTH_TEST);
         eyePass_.set("uHaveObjectIds", in.settings.objectIdFix ? 1 : 0);
         bindShadowMap(eyePass_, in.shadow);
+        glBindTextureUnit(0, in.positions.id());
         glBindTextureUnit(2, in.shadow.receivers->id());
         glBindTextureUnit(3, ids_.id());
-        in.scene.draw(eyePass_, GpuScene::Uniforms::Geometry);
+        gl::drawFullscreenTriangle(eyePass_, emptyVao_);
         for (GLuint unit : {0u, 1u, 2u, 3u}) glBindTextureUnit(unit, 0);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
     }

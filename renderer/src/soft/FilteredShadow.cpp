@@ -1,6 +1,6 @@
 #include <renderer/soft/FilteredShadow.h>
 
-#include <renderer/passes/ForwardPass.h>
+#include <renderer/passes/SurfacesPass.h>
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -124,8 +124,9 @@ float filteredVisibility(const FilterFrame& f, glm::vec3 p, glm::vec3 n) {
 }
 
 FilteredShadowPass::FilteredShadowPass(const ShaderLibrary& shaders)
-    : program_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "forward.vert.glsl"},
-                                            {GL_FRAGMENT_SHADER, "filtered_shadow.frag.glsl"}})) {
+    : program_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
+                                            {GL_FRAGMENT_SHADER, "filtered_shadow.frag.glsl"}})),
+      emptyVao_(gl::VertexArray::create()) {
     GLuint id = 0;
     glCreateSamplers(1, &id);
     rawDepth_ = gl::Handle<gl::detail::SamplerDeleter>(id);
@@ -139,16 +140,7 @@ FilteredShadowPass::FilteredShadowPass(const ShaderLibrary& shaders)
 void FilteredShadowPass::resize(int width, int height) {
     if (visibility_ && visibility_.width() == width && visibility_.height() == height) return;
     visibility_ = gl::Texture(GL_R32F, width, height);
-    points_ = gl::Texture(GL_RGBA32F, width, height);
-    normals_ = gl::Texture(GL_RGBA32F, width, height);
-    depth_ = gl::Texture(GL_DEPTH_COMPONENT32F, width, height);
-    fbo_ = gl::Framebuffer::create();
-    fbo_.attach(GL_COLOR_ATTACHMENT0, visibility_);
-    fbo_.attach(GL_COLOR_ATTACHMENT1, points_);
-    fbo_.attach(GL_COLOR_ATTACHMENT2, normals_);
-    fbo_.attach(GL_DEPTH_ATTACHMENT, depth_);
-    fbo_.setDrawBuffers(3);
-    fbo_.check("filtered shadows");
+    fbo_ = gl::Framebuffer::forColor(visibility_, "filtered shadows");
 }
 
 FilterFrame FilteredShadowPass::frame(const Inputs& in) const {
@@ -182,23 +174,14 @@ FilteredShadowPass::Outputs FilteredShadowPass::execute(const Inputs& in, PassTi
     if (s.pcss.blockerSamples < 1 || s.pcss.blockerSamples > 64 || s.pcss.filterSamples < 1 ||
         s.pcss.filterSamples > 225)
         throw std::invalid_argument("PCSS sample counts must be in [1, 64] / [1, 225]");
-    resize(in.width, in.height);
+    const int width = in.surfaces.width, height = in.surfaces.height;
+    resize(width, height);
     if (timer) timer->begin(in.pcss ? "blocker search+filter" : "pcf filter");
     const FilterFrame f = frame(in);
-    const float none[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-    const float lit = 1.0f, far = 1.0f;
-    glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, &lit);
-    glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 1, none);
-    glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 2, none);
-    glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &far);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-    glViewport(0, 0, in.width, in.height);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_CULL_FACE); // as the forward pass: both faces, the same visible surfaces
+    glViewport(0, 0, width, height);
+    glDisable(GL_DEPTH_TEST);
     const GLuint id = program_.id();
-    program_.set("uViewProj", in.camera.proj * in.camera.view);
     program_.set("uLightView", f.lightView);
     program_.set("uLightProj", f.lightProj);
     program_.set("uInvLightProj", glm::inverse(f.lightProj));
@@ -217,13 +200,14 @@ FilteredShadowPass::Outputs FilteredShadowPass::execute(const Inputs& in, PassTi
                             glm::value_ptr(f.blockerTaps[0]));
     glBindTextureUnit(4, in.shadow.depth.id());
     glBindSampler(4, rawDepth_.id());
-    in.scene.draw(program_, GpuScene::Uniforms::Geometry);
+    glBindTextureUnit(0, in.surfaces.position.id());
+    glBindTextureUnit(1, in.surfaces.plane.id());
+    gl::drawFullscreenTriangle(program_, emptyVao_);
     glBindSampler(4, 0);
-    glBindTextureUnit(4, 0);
-    glBindTextureUnit(0, 0);
+    for (GLuint unit : {0u, 1u, 4u}) glBindTextureUnit(unit, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (timer) timer->end();
-    return {visibility_, points_, normals_};
+    return {visibility_, in.surfaces.position, in.surfaces.plane};
 }
 
 } // namespace fl

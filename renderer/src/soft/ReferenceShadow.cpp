@@ -1,7 +1,6 @@
 #include <renderer/soft/ReferenceShadow.h>
 
 #include <renderer/Metrics.h>
-#include <renderer/passes/ForwardPass.h>
 
 #include <geometry/Framing.h>
 
@@ -73,9 +72,7 @@ VisibilityDifference visibilityDifference(const FloatImage& a, const FloatImage&
 }
 
 ReferenceShadowPass::ReferenceShadowPass(const ShaderLibrary& shaders)
-    : eye_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "forward.vert.glsl"},
-                                        {GL_FRAGMENT_SHADER, "reference_eye.frag.glsl"}})),
-      depth_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "shadow_depth.vert.glsl"},
+    : depth_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "shadow_depth.vert.glsl"},
                                           {GL_FRAGMENT_SHADER, "shadow_depth.frag.glsl"}})),
       accumulate_(
           gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
@@ -93,16 +90,9 @@ void ReferenceShadowPass::resize(int width, int height, int mapSize) {
         mapFbo_.setDrawBuffers(0);
         mapFbo_.check("reference depth map");
     }
-    if (points_ && points_.width() == width && points_.height() == height) return;
-    points_ = gl::Texture(GL_RGBA32F, width, height);
-    eyeDepth_ = gl::Texture(GL_DEPTH_COMPONENT32F, width, height);
+    if (sum_ && sum_.width() == width && sum_.height() == height) return;
     sum_ = gl::Texture(GL_R32F, width, height);
     visibility_ = gl::Texture(GL_R32F, width, height);
-    eyeFbo_ = gl::Framebuffer::create();
-    eyeFbo_.attach(GL_COLOR_ATTACHMENT0, points_);
-    eyeFbo_.attach(GL_DEPTH_ATTACHMENT, eyeDepth_);
-    eyeFbo_.setDrawBuffers(1);
-    eyeFbo_.check("reference eye pass");
     sumFbo_ = gl::Framebuffer::forColor(sum_, "reference sum");
     visibilityFbo_ = gl::Framebuffer::forColor(visibility_, "reference visibility");
 }
@@ -114,23 +104,11 @@ ReferenceShadowPass::Outputs ReferenceShadowPass::execute(const Inputs& in, Pass
     if (in.settings.mapSize < 16 || in.settings.mapSize > maxSize)
         throw std::invalid_argument("reference map size " + std::to_string(in.settings.mapSize) +
                                     " is outside [16, " + std::to_string(maxSize) + "]");
-    resize(in.width, in.height, in.settings.mapSize);
+    const int width = in.positions.width(), height = in.positions.height();
+    resize(width, height, in.settings.mapSize);
 
-    // The visible surfaces' world positions, rasterised as the forward pass does.
-    if (timer) timer->begin("reference eye");
     const float none[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     const float far = 1.0f;
-    glClearNamedFramebufferfv(eyeFbo_.id(), GL_COLOR, 0, none);
-    glClearNamedFramebufferfv(eyeFbo_.id(), GL_DEPTH, 0, &far);
-    glBindFramebuffer(GL_FRAMEBUFFER, eyeFbo_.id());
-    glViewport(0, 0, in.width, in.height);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_CULL_FACE);
-    eye_.set("uViewProj", in.camera.proj * in.camera.view);
-    in.scene.draw(eye_, GpuScene::Uniforms::Geometry);
-    if (timer) timer->end();
 
     // One depth map per disk sample, each added to the sum.
     if (timer) timer->begin("reference maps");
@@ -141,7 +119,7 @@ ReferenceShadowPass::Outputs ReferenceShadowPass::execute(const Inputs& in, Pass
     accumulate_.set("uShadowWarp", glm::mat4(1.0f));
     glBlendEquation(GL_FUNC_ADD);
     glBlendFunc(GL_ONE, GL_ONE);
-    glBindTextureUnit(0, points_.id());
+    glBindTextureUnit(0, in.positions.id());
     for (const glm::vec3& q : samples) {
         // The volume the scene's own point light at q would get (Renderer's lightVolume()).
         const glm::mat4 viewProj = geom::fitPerspectiveLight(in.sceneBounds, q).viewProj();
@@ -155,7 +133,7 @@ ReferenceShadowPass::Outputs ReferenceShadowPass::execute(const Inputs& in, Pass
         in.scene.draw(depth_, GpuScene::Uniforms::Geometry);
 
         glBindFramebuffer(GL_FRAMEBUFFER, sumFbo_.id());
-        glViewport(0, 0, in.width, in.height);
+        glViewport(0, 0, width, height);
         // Depth test and blending alternate with the map pass; the rest is set once above.
         glDisable(GL_DEPTH_TEST);
         glEnable(GL_BLEND);
@@ -170,32 +148,32 @@ ReferenceShadowPass::Outputs ReferenceShadowPass::execute(const Inputs& in, Pass
 
     if (timer) timer->begin("reference resolve");
     glBindFramebuffer(GL_FRAMEBUFFER, visibilityFbo_.id());
-    glViewport(0, 0, in.width, in.height);
+    glViewport(0, 0, width, height);
     resolve_.set("uSamples", static_cast<float>(samples.size()));
     glBindTextureUnit(0, sum_.id());
-    glBindTextureUnit(1, points_.id());
+    glBindTextureUnit(1, in.positions.id());
     gl::drawFullscreenTriangle(resolve_, emptyVao_);
     glBindTextureUnit(0, 0);
     glBindTextureUnit(1, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (timer) timer->end();
-    return {visibility_, points_};
+    return {visibility_};
 }
 
 VisibilityDifference referenceSamplingError(ReferenceShadowPass& pass,
                                             ReferenceShadowPass::Inputs in, int samples) {
     ReferenceSettings s = in.settings;
     s.samples = samples;
-    ReferenceShadowPass::Inputs a{in.scene,          in.camera, in.sceneBounds, in.light,
-                                  in.shadowSettings, s,         in.width,       in.height};
+    ReferenceShadowPass::Inputs a{in.scene, in.positions,      in.sceneBounds,
+                                  in.light, in.shadowSettings, s};
     const ReferenceShadowPass::Outputs out = pass.execute(a);
     const FloatImage va = readTexture(out.visibility, 1);
-    FloatImage mask = readTexture(out.points, 4);
+    FloatImage mask = readTexture(in.positions, 4);
     FloatImage surface{mask.width, mask.height, 1, {}};
     for (std::size_t i = 3; i < mask.data.size(); i += 4) surface.data.push_back(mask.data[i]);
     s.samples = 2 * samples;
-    ReferenceShadowPass::Inputs b{in.scene,          in.camera, in.sceneBounds, in.light,
-                                  in.shadowSettings, s,         in.width,       in.height};
+    ReferenceShadowPass::Inputs b{in.scene, in.positions,      in.sceneBounds,
+                                  in.light, in.shadowSettings, s};
     const FloatImage vb = readTexture(pass.execute(b).visibility, 1);
     return visibilityDifference(va, vb, surface);
 }

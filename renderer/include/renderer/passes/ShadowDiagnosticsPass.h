@@ -12,8 +12,8 @@
 #include <gpu/Program.h>
 #include <gpu/ShaderLibrary.h>
 #include <renderer/GpuScene.h>
-#include <renderer/passes/ForwardPass.h>
 #include <renderer/passes/ShadowMapPass.h>
+#include <renderer/passes/SurfacesPass.h>
 
 namespace fl {
 
@@ -26,7 +26,7 @@ class ShadowDiagnosticsPass {
     void reset() { hasPrevious_ = false; }
 
     struct Inputs {
-        const GpuScene& scene;
+        const SurfacesPass::Outputs& surfaces; // the frame's visible surfaces (step 2)
         const CameraView& camera;
         const Light& light;
         const ShadowMapPass::Outputs& shadow;
@@ -43,7 +43,8 @@ class ShadowDiagnosticsPass {
 
   private:
     gl::Program program_;
-    gl::Texture output_, depth_, previousMap_;
+    gl::VertexArray emptyVao_;
+    gl::Texture output_, previousMap_;
     gl::Framebuffer fbo_;
     glm::mat4 previousLightViewProj_{1.0f}, previousWarp_{1.0f};
     bool hasPrevious_ = false;

@@ -1,6 +1,7 @@
 #pragma once
 // JFA-E (thesis §5.4.1): soft shadows flooded in eye space from an image with hard shadows.
-//   phase 2  eye pass: per pixel its world position and hard-shadow flag, and its occluder (the
+//   phase 2  per pixel of the frame's surfaces (SurfacesPass): its world position and hard-shadow
+//   flag, and its occluder (the
 //            surface the light's centre sees at the pixel's shadow-map texel) with that
 //            occluder's object id (from a light-space id pass over the shadow map);
 //   phase 3  boundary pixels (in hard shadow, with a lit neighbour nearer than a 3D distance
@@ -9,6 +10,7 @@
 //   phase 5  composite: per pixel the intensity from its occluder, else 0 inside / 1 outside.
 // The CPU functions are the references the GL passes are tested against.
 
+#include <renderer/GpuScene.h>
 #include <renderer/ImageIO.h>
 #include <renderer/passes/ShadowMapPass.h>
 #include <renderer/soft/DiskLight.h>
@@ -106,14 +108,15 @@ FloatImage eyeSoftVisibility(const EyeImage& image, const jfa::Grid& flooded,
                              const DiskLight& light);
 
 /// The technique's phases 2-5 on the GPU. Phase 1 (the shadow map with receiver positions) is
-/// the caller's; the result is a visibility texture ForwardPass reads (SOFT_EYE_VISIBILITY).
+/// the caller's; the result is the method's visibility (step 3).
 class EyeSoftShadowPass {
   public:
     explicit EyeSoftShadowPass(const ShaderLibrary& shaders);
 
     struct Inputs {
-        const GpuScene& scene;
+        const GpuScene& scene; // drawn from the light for the object ids
         const CameraView& camera;
+        const gl::Texture& positions;         // the frame's surfaces (SurfacesPass::position)
         const ShadowMapPass::Outputs& shadow; // phase 1, made with writeReceivers
         const ShadowMapSettings& shadowSettings;
         const DiskLight& light;
@@ -139,7 +142,7 @@ class EyeSoftShadowPass {
 
     gl::Program lightIds_, eyePass_, boundary_, composite_;
     gl::VertexArray emptyVao_;
-    gl::Texture ids_, points_, occluders_, eyeDepth_, seeds_, visibility_;
+    gl::Texture ids_, points_, occluders_, seeds_, visibility_;
     gl::Framebuffer eyeFbo_, seedsFbo_, visibilityFbo_;
     jfa::GlFloodKernel kernel_;
 };

@@ -25,6 +25,7 @@
 #include <gpu/ShaderLibrary.h>
 #include <renderer/GpuScene.h>
 #include <renderer/passes/ShadowMapPass.h>
+#include <renderer/passes/SurfacesPass.h>
 #include <renderer/soft/DiskLight.h>
 
 #include <geometry/Framing.h>
@@ -34,8 +35,6 @@
 #include <vector>
 
 namespace fl {
-
-struct CameraView;
 
 /// PCSS sample counts: blocker-search taps / filter taps.
 struct PcssPreset {
@@ -79,28 +78,25 @@ std::vector<float> readDepthMap(const gl::Texture& depth);
 /// CPU reference of the filter at world point p with receiver normal n.
 float filteredVisibility(const FilterFrame& f, glm::vec3 p, glm::vec3 n);
 
-/// Per-eye-pixel PCF or PCSS visibility; the result is a texture ForwardPass reads
-/// (SOFT_EYE_VISIBILITY).
+/// Per-eye-pixel PCF or PCSS visibility; the result is the method's visibility (step 3).
 class FilteredShadowPass {
   public:
     explicit FilteredShadowPass(const ShaderLibrary& shaders);
 
     struct Inputs {
-        const GpuScene& scene;
-        const CameraView& camera;
+        const SurfacesPass::Outputs& surfaces; // positions and receiver planes per pixel
         const ShadowMapPass::Outputs& shadow;
         const geom::ViewVolume& lightVolume; // the volume the shadow map was made with
         const DiskLight& light;
         const FilteredShadowSettings& settings;
-        bool pcss;         // false: PCF
-        int width, height; // frame size
+        bool pcss; // false: PCF
     };
     struct Outputs {
-        const gl::Texture& visibility; // R32F
-        const gl::Texture& points;     // RGBA32F: world position, w = 1 (0 background)
-        const gl::Texture& normals;    // RGBA32F: receiver normal the filter used
+        const gl::Texture& visibility; // R32F (1 on background)
+        const gl::Texture& points;     // the surfaces' positions: world xyz, w = 1 (0 background)
+        const gl::Texture& normals;    // the surfaces' receiver planes: the normal the filter used
     };
-    /// Renders the visible surfaces and filters; `timer` times it as "pcf filter" or
+    /// Filters per pixel of the frame's surfaces; `timer` times it as "pcf filter" or
     /// "blocker search+filter".
     Outputs execute(const Inputs& in, PassTimer* timer = nullptr);
     /// The CPU-side description of execute(in), without the depths (see readDepthMap).
@@ -111,7 +107,8 @@ class FilteredShadowPass {
 
     gl::Program program_;
     gl::Handle<gl::detail::SamplerDeleter> rawDepth_; // no comparison: PCSS reads depths
-    gl::Texture visibility_, points_, normals_, depth_;
+    gl::VertexArray emptyVao_;
+    gl::Texture visibility_;
     gl::Framebuffer fbo_;
 };
 

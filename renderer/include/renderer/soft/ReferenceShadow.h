@@ -25,8 +25,6 @@
 
 namespace fl {
 
-struct CameraView;
-
 struct ReferenceSettings {
     int samples = 256;  // N point lights on the disk (>= 1)
     int mapSize = 2048; // texels per side of each point light's depth map
@@ -50,29 +48,28 @@ class ReferenceShadowPass {
     explicit ReferenceShadowPass(const ShaderLibrary& shaders);
 
     struct Inputs {
-        const GpuScene& scene;
-        const CameraView& camera;
+        const GpuScene& scene;         // drawn into each sample's map
+        const gl::Texture& positions;  // the frame's surfaces (SurfacesPass::position)
         const geom::Aabb& sceneBounds; // each sample's volume is fitted to these
         const DiskLight& light;
         const ShadowMapSettings& shadowSettings; // depth bias
         const ReferenceSettings& settings;
-        int width, height; // frame size
     };
     struct Outputs {
         const gl::Texture& visibility; // R32F: lit samples / N
-        const gl::Texture& points;     // RGBA32F: world position, w = 1 (0 background)
     };
-    /// Renders the N maps and accumulates; `timer` times "reference eye", "reference maps" and
-    /// "reference resolve". Throws std::invalid_argument for samples < 1 or a bad map size.
+    /// Renders the N maps and accumulates over the frame's surfaces; `timer` times "reference
+    /// maps" and "reference resolve". Throws std::invalid_argument for samples < 1 or a bad map
+    /// size.
     Outputs execute(const Inputs& in, PassTimer* timer = nullptr);
 
   private:
     void resize(int width, int height, int mapSize);
 
-    gl::Program eye_, depth_, accumulate_, resolve_;
+    gl::Program depth_, accumulate_, resolve_;
     gl::VertexArray emptyVao_;
-    gl::Texture points_, eyeDepth_, sum_, visibility_, map_;
-    gl::Framebuffer eyeFbo_, sumFbo_, visibilityFbo_, mapFbo_;
+    gl::Texture sum_, visibility_, map_;
+    gl::Framebuffer sumFbo_, visibilityFbo_, mapFbo_;
 };
 
 /// Renders the frame's reference visibility with `samples` and with 2 x `samples` and returns

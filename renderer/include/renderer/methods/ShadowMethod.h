@@ -1,0 +1,133 @@
+#pragma once
+// Step 3 of a frame: a shadow method turns the frame's inputs (the shadow map of step 1 and the
+// surfaces of step 2) into a visibility texture. Shading (step 4) and the metrics are shared, so
+// a method computes visibility only.
+//
+// Every method is one class behind this interface (one file each in renderer/src/methods/) and
+// one row of the descriptor table (MethodTable.cpp). The CLI, capture scripts, `compare`, the
+// viewer, the overlays, the HUD and the benchmarks read the table; adding a method is one file
+// plus one row.
+
+#include <gpu/Gl.h>
+#include <gpu/PassTimer.h>
+#include <gpu/ShaderLibrary.h>
+#include <renderer/GpuScene.h>
+#include <renderer/Scene.h>
+#include <renderer/methods/MethodOptions.h>
+#include <renderer/passes/ShadowMapPass.h>
+#include <renderer/passes/SurfacesPass.h>
+#include <renderer/soft/DiskLight.h>
+
+#include <geometry/Aabb.h>
+#include <geometry/Framing.h>
+
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace fl {
+
+struct MethodDescriptor;
+
+/// Everything a method may read in a frame.
+struct FrameInputs {
+    const GpuScene& scene;
+    const CameraView& camera;
+    const Light& light;
+    const DiskLight& disk;
+    const geom::Aabb& sceneBounds;
+    const geom::ViewVolume& lightVolume; // the volume the shadow map was made with
+    const ShadowMapSettings& shadowSettings;
+    const ShadowMapPass::Outputs& shadow;  // step 1
+    const SurfacesPass::Outputs& surfaces; // step 2
+    const MethodDescriptor& method;        // this method's table row
+    const MethodOptions& options;          // values by flag; a row's defaults fill the rest
+    PassTimer* timer = nullptr;            // times the method's phases (the row's names)
+
+    /// This method's option `key` (its capture-script key), as the row declares it.
+    [[nodiscard]] int integer(std::string_view key) const;
+    [[nodiscard]] float real(std::string_view key) const;
+    [[nodiscard]] bool flag(std::string_view key) const;
+    [[nodiscard]] std::string text(std::string_view key) const;
+    [[nodiscard]] int width() const { return surfaces.width; }
+    [[nodiscard]] int height() const { return surfaces.height; }
+};
+
+/// What a flooding method (JFA-L/E and their standard-flooding references) keeps of its last
+/// frame: the overlays re-run and draw its flood.
+struct FloodFrame {
+    const gl::Texture* seeds = nullptr;
+    const gl::Texture* flooded = nullptr;
+    const gl::Texture* receivers = nullptr; // light: receiver positions; eye: EyeImage::points
+    const gl::Texture* occluders = nullptr; // eye only: EyeImage::occluders
+    bool eye = false;
+    bool standardFlooding = false;
+    int passes = 0;          // flood passes run
+    bool objectIdFix = true; // eye only: the criterion's switches
+    bool midpointFix = true;
+};
+
+class ShadowMethod {
+  public:
+    virtual ~ShadowMethod() = default;
+    ShadowMethod() = default;
+    ShadowMethod(const ShadowMethod&) = delete;
+    ShadowMethod& operator=(const ShadowMethod&) = delete;
+
+    /// (Re)allocates what depends on the frame size; execute() calls it when the size changes.
+    virtual void resize(int width, int height) = 0;
+    /// Step 3: the visibility of every pixel of the frame (R32F; 1 lit, 0 shadowed; any value
+    /// on background, which the shading pass ignores). Throws std::invalid_argument for options
+    /// it cannot use, fl::gl::GlError on GL errors.
+    virtual const gl::Texture& execute(const FrameInputs& in) = 0;
+    /// The last frame's flood (flooding methods), else nullptr.
+    [[nodiscard]] virtual const FloodFrame* flood() const { return nullptr; }
+};
+
+/// Where a method works: on the light's shadow map (filtered or flooded in light space), or on
+/// the eye's pixels (flooded in eye space).
+enum class MethodSpace { Light, Eye };
+
+/// One row of the method table.
+struct MethodDescriptor {
+    std::string_view name;      // as the CLI and scripts spell it: "jfa-l"
+    std::string_view help;      // one line
+    std::string_view reference; // its standard-flooding reference ("" none): "flood-l"
+    MethodSpace space = MethodSpace::Light;
+    std::span<const MethodOption* const> options; // what it takes, in --help order
+    std::span<const std::string_view> phases;     // its timed phase names, in frame order
+    bool cycles = true;                           // the window's M key steps through it
+    bool shadowMapPositions = false; // needs the shadow map's receiver positions (step 1)
+    bool floods = false;             // a flooding method: passes and FloodFrame
+    std::unique_ptr<ShadowMethod> (*make)(const ShaderLibrary&) = nullptr;
+    /// Checks the options for a frame before any rendering; throws std::invalid_argument with the
+    /// option's flag and the valid range. Null: nothing to check beyond each option's range.
+    void (*check)(const MethodOptions&, const MethodDescriptor&, int mapSize, int width,
+                  int height) = nullptr;
+
+    /// The row's option with capture-script key `key`, or nullptr.
+    [[nodiscard]] const MethodOption* option(std::string_view key) const;
+    /// True when the row declares an option with CLI flag `flag`.
+    [[nodiscard]] bool takesFlag(std::string_view flag) const;
+};
+
+/// The table: every method, in the order the window cycles through them.
+std::span<const MethodDescriptor> methodTable();
+/// The row named `name`, or nullptr.
+const MethodDescriptor* findMethod(std::string_view name);
+/// The row named `name`; throws std::invalid_argument listing the valid names.
+const MethodDescriptor& methodOrThrow(std::string_view name);
+/// Every method name, separated by `separator`.
+std::string methodNames(std::string_view separator = ", ");
+/// Every option of the table once (by flag), in table order.
+std::vector<const MethodOption*> allMethodOptions();
+/// The pass-count option every flooding method takes (--jfa-passes; the window's -/= keys and the
+/// capture scripts' "jfaPasses" set it).
+const MethodOption& floodPassesOption();
+/// The flood pass count a flooding method's options ask for at this map and frame size (what
+/// --jfa-passes, --full-jfa mean for it); 0 for the other methods.
+int requestedPasses(const MethodDescriptor& m, const MethodOptions& options, int mapSize, int width,
+                    int height);
+
+} // namespace fl

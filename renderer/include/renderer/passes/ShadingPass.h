@@ -1,0 +1,49 @@
+#pragma once
+// Step 4 of a frame: shading, shared by every shadow method. A fullscreen pass over the surfaces
+// of step 2 applies the method's visibility (step 3): linear colour, and the visibility itself
+// with background set to 1 (what the metrics and the visibility PNG read).
+// PresentPass is step 6 in a window: the colour to the default framebuffer, sRGB-encoded.
+
+#include <gpu/Gl.h>
+#include <gpu/Program.h>
+#include <gpu/ShaderLibrary.h>
+#include <renderer/Scene.h>
+#include <renderer/passes/SurfacesPass.h>
+
+namespace fl {
+
+class ShadingPass {
+  public:
+    explicit ShadingPass(const ShaderLibrary& shaders);
+    /// (Re)allocates the colour and visibility targets.
+    void resize(int width, int height);
+
+    struct Inputs {
+        const SurfacesPass::Outputs& surfaces;
+        const Light& light;
+        const gl::Texture& visibility; // the method's, R32F, the frame's size
+    };
+    struct Outputs {
+        const gl::Texture& color;      // RGBA16F linear; alpha 0 where nothing was drawn
+        const gl::Texture& visibility; // R32F in [0,1]; 1 for background
+    };
+    Outputs execute(const Inputs& in);
+
+  private:
+    gl::Program program_;
+    gl::VertexArray emptyVao_;
+    gl::Texture color_, visibility_;
+    gl::Framebuffer fbo_;
+};
+
+class PresentPass {
+  public:
+    explicit PresentPass(const ShaderLibrary& shaders);
+    void execute(const gl::Texture& color, int framebufferWidth, int framebufferHeight);
+
+  private:
+    gl::Program program_;
+    gl::VertexArray emptyVao_;
+};
+
+} // namespace fl

@@ -1,0 +1,53 @@
+#pragma once
+// Step 2 of a frame: the one geometry pass from the eye. Every shadow method, the shading pass
+// and the metrics read its targets, so a frame draws the scene from the eye exactly once (plus
+// the light's shadow map(s)).
+
+#include <gpu/Gl.h>
+#include <gpu/Program.h>
+#include <gpu/ShaderLibrary.h>
+#include <renderer/GpuScene.h>
+#include <renderer/Scene.h>
+
+namespace fl {
+
+/// What the camera sees with: matrices and eye position.
+struct CameraView {
+    glm::mat4 view{1.0f};
+    glm::mat4 proj{1.0f};
+    glm::vec3 eye{0.0f};
+};
+
+class SurfacesPass {
+  public:
+    explicit SurfacesPass(const ShaderLibrary& shaders);
+    /// (Re)allocates the targets at width x height (both > 0).
+    void resize(int width, int height);
+
+    struct Inputs {
+        const GpuScene& scene;
+        const CameraView& camera;
+        const Light& light; // for the receiver mask (the surface faces the light)
+    };
+    /// The visible surface of each pixel; background keeps the clear values noted.
+    struct Outputs {
+        const gl::Texture& position;  // RGBA32F: world xyz, w = 1 (0 background)
+        const gl::Texture& normal;    // RGBA32F: shading normal facing the eye, w = object id
+        const gl::Texture& plane;     // RGBA32F: geometric (triangle) normal, for receiver planes
+        const gl::Texture& baseColor; // RGBA32F: material base colour with its texture
+        const gl::Texture& receivers; // R8: 1 where the surface faces the light (N.L > 0)
+        const gl::Texture& depth;     // DEPTH32F: window depth (1 background)
+        int width, height;
+    };
+    /// Draws the scene once from the camera into the targets.
+    Outputs execute(const Inputs& in);
+    /// The last execute()'s targets (valid after the first execute()).
+    [[nodiscard]] Outputs outputs() const;
+
+  private:
+    gl::Program program_;
+    gl::Texture position_, normal_, plane_, baseColor_, receivers_, depth_;
+    gl::Framebuffer fbo_;
+};
+
+} // namespace fl

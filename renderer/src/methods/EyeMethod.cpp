@@ -1,0 +1,58 @@
+// jfa-e and flood-e (thesis §5.4): hard shadows of the frame's surfaces, boundary seeds, the
+// flood in eye space and the visibility composite (EyeSoftShadowPass).
+
+#include <renderer/methods/ShadowMethod.h>
+#include <renderer/soft/EyeSoftShadow.h>
+
+#include <algorithm>
+
+namespace fl {
+
+namespace {
+
+class EyeMethod final : public ShadowMethod {
+  public:
+    EyeMethod(const ShaderLibrary& shaders, bool standardFlooding)
+        : standardFlooding_(standardFlooding), pass_(shaders) {}
+    void resize(int, int) override {} // the pass sizes itself to the frame
+
+    const gl::Texture& execute(const FrameInputs& in) override {
+        EyeSoftSettings es;
+        es.objectIdFix = !in.flag("noObjectIdFix");
+        es.midpointFix = !in.flag("noMidpointFix");
+        es.boundaryThreshold = in.real("boundaryThreshold");
+        const int passes = requestedPasses(in.method, in.options, in.shadow.depth.width(),
+                                           in.width(), in.height());
+        const EyeSoftShadowPass::Outputs out =
+            pass_.execute({in.scene, in.camera, in.surfaces.position, in.shadow, in.shadowSettings,
+                           in.disk, es, passes, standardFlooding_, in.width(), in.height()},
+                          in.timer);
+        flood_ = {&out.seeds,
+                  &out.flooded,
+                  &out.points,
+                  &out.occluders,
+                  true,
+                  standardFlooding_,
+                  std::min(passes, eyeSoftMaxPasses(in.width(), in.height())),
+                  es.objectIdFix,
+                  es.midpointFix};
+        return out.visibility;
+    }
+    [[nodiscard]] const FloodFrame* flood() const override { return &flood_; }
+
+  private:
+    bool standardFlooding_;
+    EyeSoftShadowPass pass_;
+    FloodFrame flood_;
+};
+
+} // namespace
+
+std::unique_ptr<ShadowMethod> makeJfaE(const ShaderLibrary& shaders) {
+    return std::make_unique<EyeMethod>(shaders, false);
+}
+std::unique_ptr<ShadowMethod> makeFloodE(const ShaderLibrary& shaders) {
+    return std::make_unique<EyeMethod>(shaders, true);
+}
+
+} // namespace fl

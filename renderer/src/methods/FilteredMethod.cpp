@@ -1,0 +1,39 @@
+// pcf and pcss: the shadow map filtered per pixel of the frame's surfaces (FilteredShadowPass).
+
+#include <renderer/methods/ShadowMethod.h>
+#include <renderer/soft/FilteredShadow.h>
+
+namespace fl {
+
+namespace {
+
+class FilteredMethod final : public ShadowMethod {
+  public:
+    FilteredMethod(const ShaderLibrary& shaders, bool pcss) : pcss_(pcss), pass_(shaders) {}
+    void resize(int, int) override {} // the pass sizes itself to the frame
+
+    const gl::Texture& execute(const FrameInputs& in) override {
+        FilteredShadowSettings fs;
+        if (pcss_)
+            fs.pcss = parsePcssPreset(in.text("preset")).value_or(PcssPreset{});
+        else
+            fs.pcfKernel = in.integer("kernel");
+        return pass_.execute({in.surfaces, in.shadow, in.lightVolume, in.disk, fs, pcss_}, in.timer)
+            .visibility;
+    }
+
+  private:
+    bool pcss_;
+    FilteredShadowPass pass_;
+};
+
+} // namespace
+
+std::unique_ptr<ShadowMethod> makePcf(const ShaderLibrary& shaders) {
+    return std::make_unique<FilteredMethod>(shaders, false);
+}
+std::unique_ptr<ShadowMethod> makePcss(const ShaderLibrary& shaders) {
+    return std::make_unique<FilteredMethod>(shaders, true);
+}
+
+} // namespace fl

@@ -1,0 +1,37 @@
+// reference: the ground truth, N point-light shadow maps over the disk averaged per pixel of the
+// frame's surfaces (ReferenceShadowPass).
+
+#include <renderer/methods/ShadowMethod.h>
+#include <renderer/soft/ReferenceShadow.h>
+
+namespace fl {
+
+namespace {
+
+class GroundTruth final : public ShadowMethod {
+  public:
+    explicit GroundTruth(const ShaderLibrary& shaders) : pass_(shaders) {}
+    void resize(int, int) override {} // the pass sizes itself to the frame
+
+    const gl::Texture& execute(const FrameInputs& in) override {
+        ReferenceSettings rs;
+        rs.samples = in.integer("samples");
+        rs.mapSize = in.integer("mapSize");
+        return pass_
+            .execute(
+                {in.scene, in.surfaces.position, in.sceneBounds, in.disk, in.shadowSettings, rs},
+                in.timer)
+            .visibility;
+    }
+
+  private:
+    ReferenceShadowPass pass_;
+};
+
+} // namespace
+
+std::unique_ptr<ShadowMethod> makeGroundTruth(const ShaderLibrary& shaders) {
+    return std::make_unique<GroundTruth>(shaders);
+}
+
+} // namespace fl

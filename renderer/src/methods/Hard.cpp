@@ -1,0 +1,30 @@
+// hard: one shadow-map test at the light's centre per pixel.
+
+#include "LightLookup.h"
+
+namespace fl {
+
+namespace {
+
+class Hard final : public ShadowMethod {
+  public:
+    explicit Hard(const ShaderLibrary& shaders) : lookup_(shaders, false) {}
+    void resize(int width, int height) override { lookup_.resize(width, height); }
+    const gl::Texture& execute(const FrameInputs& in) override {
+        if (in.timer) in.timer->begin("hard shadows");
+        const gl::Texture& v = lookup_.execute(in);
+        if (in.timer) in.timer->end();
+        return v;
+    }
+
+  private:
+    LightLookup lookup_;
+};
+
+} // namespace
+
+std::unique_ptr<ShadowMethod> makeHard(const ShaderLibrary& shaders) {
+    return std::make_unique<Hard>(shaders);
+}
+
+} // namespace fl

@@ -1,0 +1,43 @@
+#include "LightLookup.h"
+
+#include <renderer/soft/PenumbraCriterion.h>
+
+#include <stdexcept>
+
+namespace fl {
+
+LightLookup::LightLookup(const ShaderLibrary& shaders, bool penumbra)
+    : penumbra_(penumbra),
+      program_(gl::Program::build(shaders,
+                                  {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
+                                   {GL_FRAGMENT_SHADER, "light_visibility.frag.glsl"}},
+                                  penumbra ? std::vector<std::string>{"SOFT_PENUMBRA_MAP 1"}
+                                           : std::vector<std::string>{})),
+      emptyVao_(gl::VertexArray::create()) {}
+
+void LightLookup::resize(int width, int height) {
+    if (visibility_ && visibility_.width() == width && visibility_.height() == height) return;
+    visibility_ = gl::Texture(GL_R32F, width, height);
+    fbo_ = gl::Framebuffer::forColor(visibility_, "light-space lookup");
+}
+
+const gl::Texture& LightLookup::execute(const FrameInputs& in, const gl::Texture* penumbraMap) {
+    if (penumbra_ && penumbraMap == nullptr)
+        throw std::logic_error("LightLookup: the penumbra lookup needs a penumbra map");
+    resize(in.width(), in.height());
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    glViewport(0, 0, in.width(), in.height());
+    glDisable(GL_DEPTH_TEST);
+    bindShadowMap(program_, in.shadow);
+    glBindTextureUnit(2, in.surfaces.position.id());
+    if (penumbra_) {
+        setDiskLightUniforms(program_, in.disk);
+        glBindTextureUnit(3, penumbraMap->id());
+    }
+    gl::drawFullscreenTriangle(program_, emptyVao_);
+    for (GLuint unit : {0u, 1u, 2u, 3u}) glBindTextureUnit(unit, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return visibility_;
+}
+
+} // namespace fl

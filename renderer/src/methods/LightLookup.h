@@ -1,0 +1,29 @@
+#pragma once
+// The per-pixel light-space lookup shared by hard shadows and JFA-L / flood-L: each eye pixel's
+// surface point (step 2) is looked up in the shadow map, or in the flooded penumbra map
+// (shaders/light_visibility.frag.glsl). Private to renderer/src/methods.
+
+#include <gpu/Gl.h>
+#include <gpu/Program.h>
+#include <gpu/ShaderLibrary.h>
+#include <renderer/methods/ShadowMethod.h>
+
+namespace fl {
+
+class LightLookup {
+  public:
+    /// `penumbra`: look up a penumbra map (SOFT_PENUMBRA_MAP) instead of the hard test.
+    LightLookup(const ShaderLibrary& shaders, bool penumbra);
+    void resize(int width, int height);
+    /// Visibility per pixel; `penumbraMap` is required when built with `penumbra`.
+    const gl::Texture& execute(const FrameInputs& in, const gl::Texture* penumbraMap = nullptr);
+
+  private:
+    bool penumbra_;
+    gl::Program program_;
+    gl::VertexArray emptyVao_;
+    gl::Texture visibility_;
+    gl::Framebuffer fbo_;
+};
+
+} // namespace fl

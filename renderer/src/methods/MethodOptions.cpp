@@ -1,0 +1,123 @@
+#include <renderer/methods/MethodOptions.h>
+#include <renderer/methods/ShadowMethod.h>
+
+#include <base/Text.h>
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+namespace fl {
+
+namespace {
+
+bool parseNumber(std::string_view text, double& out) {
+    if (text.empty()) return false;
+    const char* end = text.data() + text.size();
+    const auto r = std::from_chars(text.data(), end, out);
+    return r.ec == std::errc() && r.ptr == end;
+}
+
+std::string range(const MethodOption& o) {
+    return cat("[", o.min, ", ", o.max, "]");
+}
+
+} // namespace
+
+std::string checkOptionValue(const MethodOption& o, std::string_view value) {
+    double v = 0.0;
+    switch (o.kind) {
+    case OptionKind::Int:
+        if (!parseNumber(value, v) || v != std::floor(v) || v < o.min || v > o.max)
+            return cat("must be an integer in ", range(o), ", got '", value, "'");
+        return {};
+    case OptionKind::Float:
+        if (!parseNumber(value, v) || !std::isfinite(v) || v < o.min || v > o.max)
+            return cat("must be a number in ", range(o), ", got '", value, "'");
+        return {};
+    case OptionKind::Flag:
+        if (value != "true" && value != "false")
+            return cat("must be true or false, got '", value, "'");
+        return {};
+    case OptionKind::Choice: {
+        std::string_view rest = o.choices;
+        while (!rest.empty()) {
+            const std::size_t bar = rest.find('|');
+            if (rest.substr(0, bar) == value) return {};
+            rest = bar == std::string_view::npos ? std::string_view{} : rest.substr(bar + 1);
+        }
+        std::string list(o.choices);
+        for (char& c : list)
+            if (c == '|') c = ',';
+        return cat("must be one of ", list, ", got '", value, "'");
+    }
+    }
+    return "unknown option kind";
+}
+
+void MethodOptions::set(std::string_view flag, float value) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.9g", static_cast<double>(value));
+    set(flag, std::string(buf));
+}
+
+std::string MethodOptions::text(const MethodOption& o) const {
+    const auto it = values_.find(o.flag);
+    const std::string value = it == values_.end() ? std::string(o.defaultValue) : it->second;
+    const std::string problem = checkOptionValue(o, value);
+    if (!problem.empty()) throw std::invalid_argument(cat(o.flag, ": ", problem));
+    return value;
+}
+
+int MethodOptions::integer(const MethodOption& o) const {
+    double v = 0.0;
+    parseNumber(text(o), v);
+    return static_cast<int>(v);
+}
+
+float MethodOptions::real(const MethodOption& o) const {
+    double v = 0.0;
+    parseNumber(text(o), v);
+    return static_cast<float>(v);
+}
+
+bool MethodOptions::flag(const MethodOption& o) const {
+    return text(o) == "true";
+}
+
+namespace {
+const MethodOption& optionOf(const MethodDescriptor& m, std::string_view key) {
+    const MethodOption* o = m.option(key);
+    // A method reading an option its own row does not declare is a programming error.
+    if (!o) throw std::logic_error(cat("method ", m.name, " has no option '", key, "'"));
+    return *o;
+}
+} // namespace
+
+int FrameInputs::integer(std::string_view key) const {
+    return options.integer(optionOf(method, key));
+}
+float FrameInputs::real(std::string_view key) const {
+    return options.real(optionOf(method, key));
+}
+bool FrameInputs::flag(std::string_view key) const {
+    return options.flag(optionOf(method, key));
+}
+std::string FrameInputs::text(std::string_view key) const {
+    return options.text(optionOf(method, key));
+}
+
+const MethodOption* MethodDescriptor::option(std::string_view key) const {
+    for (const MethodOption* o : options)
+        if (o->key == key) return o;
+    return nullptr;
+}
+
+bool MethodDescriptor::takesFlag(std::string_view flag) const {
+    for (const MethodOption* o : options)
+        if (o->flag == flag) return true;
+    return false;
+}
+
+} // namespace fl

@@ -1,0 +1,213 @@
+// The method table: one row per shadow method. Everything that lists, parses, pairs, cycles or
+// times methods reads these rows (renderer/methods/ShadowMethod.h).
+
+#include <renderer/methods/ShadowMethod.h>
+#include <renderer/soft/EyeSoftShadow.h>
+#include <renderer/soft/FilteredShadow.h>
+#include <renderer/soft/PenumbraMap.h>
+
+#include <base/Text.h>
+
+#include <stdexcept>
+
+namespace fl {
+
+// Each method's factory, defined in its own file (renderer/src/methods/NAME.cpp).
+std::unique_ptr<ShadowMethod> makeHard(const ShaderLibrary&);
+std::unique_ptr<ShadowMethod> makeJfaL(const ShaderLibrary&);
+std::unique_ptr<ShadowMethod> makeFloodL(const ShaderLibrary&);
+std::unique_ptr<ShadowMethod> makeJfaE(const ShaderLibrary&);
+std::unique_ptr<ShadowMethod> makeFloodE(const ShaderLibrary&);
+std::unique_ptr<ShadowMethod> makePcf(const ShaderLibrary&);
+std::unique_ptr<ShadowMethod> makePcss(const ShaderLibrary&);
+std::unique_ptr<ShadowMethod> makeGroundTruth(const ShaderLibrary&);
+
+namespace {
+
+// --- Options (each declared once; rows list the ones they take) ---------------------------------
+
+constexpr MethodOption kPasses{
+    "--jfa-passes",
+    "passes",
+    OptionKind::Int,
+    "6",
+    "Flooding passes: penumbrae up to 2^N - 1 shadow-map texels (-l) or pixels (-e) wide; 1 to "
+    "log2(size)",
+    1,
+    13};
+constexpr MethodOption kFullJfa{
+    "--full-jfa", "fullJfa", OptionKind::Flag, "false",
+    "Full JFA: as many passes as the grid allows (log2 of the shadow-map size for -l, of the "
+    "frame for -e), instead of --jfa-passes"};
+constexpr MethodOption kNoObjectIdFix{
+    "--no-object-id-fix", "noObjectIdFix", OptionKind::Flag, "false",
+    "Let occluders flood into the hard shadows of other objects (thesis 5.4.2, first "
+    "jump-too-far fix off)"};
+constexpr MethodOption kNoMidpointFix{
+    "--no-midpoint-fix", "noMidpointFix", OptionKind::Flag, "false",
+    "No midpoint continuity check (thesis 5.4.2, second jump-too-far fix off)"};
+constexpr MethodOption kBoundaryThreshold{
+    "--boundary-threshold",
+    "boundaryThreshold",
+    OptionKind::Float,
+    "0",
+    "Largest 3D distance from a shadowed boundary pixel to its lit neighbour, in scene units; "
+    "0 = 6 pixel footprints",
+    0.0,
+    1e6};
+constexpr MethodOption kPcfKernel{
+    "--pcf-kernel",
+    "kernel",
+    OptionKind::Int,
+    "3",
+    "Taps per side of the kernel (N x N depth comparisons one uniform-map texel apart, in the "
+    "light's unwarped plane)",
+    1,
+    kMaxPcfKernel};
+constexpr MethodOption kPcssPreset{"--pcss-preset",
+                                   "preset",
+                                   OptionKind::Choice,
+                                   "16/24",
+                                   "Blocker-search/filter samples",
+                                   0,
+                                   0,
+                                   "16/16|16/24|32/64"};
+constexpr MethodOption kReferenceSamples{"--reference-samples",
+                                         "samples",
+                                         OptionKind::Int,
+                                         "256",
+                                         "Point lights (shadow maps) over the disk light",
+                                         1,
+                                         65536};
+constexpr MethodOption kReferenceMapSize{"--reference-map-size",
+                                         "mapSize",
+                                         OptionKind::Int,
+                                         "2048",
+                                         "Texels per side of each point light's shadow map",
+                                         16,
+                                         8192};
+
+constexpr const MethodOption* kLightFloodOptions[] = {&kPasses, &kFullJfa};
+constexpr const MethodOption* kEyeFloodOptions[] = {&kPasses, &kFullJfa, &kNoObjectIdFix,
+                                                    &kNoMidpointFix, &kBoundaryThreshold};
+constexpr const MethodOption* kPcfOptions[] = {&kPcfKernel};
+constexpr const MethodOption* kPcssOptions[] = {&kPcssPreset};
+constexpr const MethodOption* kGroundTruthOptions[] = {&kReferenceSamples, &kReferenceMapSize};
+
+// --- Timed phases (step 3's parts, as PassTimer names them) ------------------------------------
+
+constexpr std::string_view kHardPhases[] = {"hard shadows"};
+constexpr std::string_view kLightFloodPhases[] = {"silhouettes", "flood", "penumbra lookup"};
+constexpr std::string_view kEyeFloodPhases[] = {"occluder ids", "eye hard shadows", "boundaries",
+                                                "flood", "composite"};
+constexpr std::string_view kPcfPhases[] = {"pcf filter"};
+constexpr std::string_view kPcssPhases[] = {"blocker search+filter"};
+constexpr std::string_view kGroundTruthPhases[] = {"reference maps", "reference resolve"};
+
+// --- Checks before rendering --------------------------------------------------------------------
+
+void checkLightFlood(const MethodOptions& o, const MethodDescriptor& m, int mapSize, int w, int h) {
+    PenumbraSettings ps;
+    ps.passes = requestedPasses(m, o, mapSize, w, h);
+    try {
+        (void)penumbraPlan(ps, mapSize);
+    } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(cat(kPasses.flag, ": ", e.what()));
+    }
+}
+
+void checkEyeFlood(const MethodOptions& o, const MethodDescriptor& m, int mapSize, int w, int h) {
+    if (o.flag(kFullJfa)) return; // capped at the frame
+    try {
+        (void)eyeSoftPlan(requestedPasses(m, o, mapSize, w, h), false, w, h);
+    } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(cat(kPasses.flag, ": ", e.what()));
+    }
+}
+
+// --- The table ----------------------------------------------------------------------------------
+
+const MethodDescriptor kTable[] = {
+    {"hard",
+     "one shadow-map test at the light's centre",
+     "",
+     MethodSpace::Light,
+     {},
+     kHardPhases,
+     true,
+     false,
+     false,
+     makeHard,
+     nullptr},
+    {"jfa-l", "JFA penumbra map in light space (thesis 5.3)", "flood-l", MethodSpace::Light,
+     kLightFloodOptions, kLightFloodPhases, true, true, true, makeJfaL, checkLightFlood},
+    {"flood-l", "jfa-l's standard-flooding reference", "", MethodSpace::Light, kLightFloodOptions,
+     kLightFloodPhases, true, true, true, makeFloodL, checkLightFlood},
+    {"jfa-e", "JFA soft shadows in eye space (thesis 5.4)", "flood-e", MethodSpace::Eye,
+     kEyeFloodOptions, kEyeFloodPhases, true, true, true, makeJfaE, checkEyeFlood},
+    {"flood-e", "jfa-e's standard-flooding reference", "", MethodSpace::Eye, kEyeFloodOptions,
+     kEyeFloodPhases, true, true, true, makeFloodE, checkEyeFlood},
+    {"pcf", "baseline: percentage-closer filtering, a k x k kernel", "", MethodSpace::Light,
+     kPcfOptions, kPcfPhases, true, false, false, makePcf, nullptr},
+    {"pcss", "baseline: percentage-closer soft shadows (Fernando 2005)", "", MethodSpace::Light,
+     kPcssOptions, kPcssPhases, true, false, false, makePcss, nullptr},
+    {"reference", "ground truth: N point-light shadow maps over the disk, averaged", "",
+     MethodSpace::Light, kGroundTruthOptions, kGroundTruthPhases, true, false, false,
+     makeGroundTruth, nullptr},
+};
+
+} // namespace
+
+std::span<const MethodDescriptor> methodTable() {
+    return kTable;
+}
+
+const MethodDescriptor* findMethod(std::string_view name) {
+    for (const MethodDescriptor& m : kTable)
+        if (m.name == name) return &m;
+    return nullptr;
+}
+
+std::string methodNames(std::string_view separator) {
+    std::string out;
+    for (const MethodDescriptor& m : kTable) {
+        if (!out.empty()) out += separator;
+        out += m.name;
+    }
+    return out;
+}
+
+const MethodDescriptor& methodOrThrow(std::string_view name) {
+    if (const MethodDescriptor* m = findMethod(name)) return *m;
+    throw std::invalid_argument(
+        cat("unknown shadow method '", name, "' (valid: ", methodNames(), ")"));
+}
+
+std::vector<const MethodOption*> allMethodOptions() {
+    std::vector<const MethodOption*> out;
+    for (const MethodDescriptor& m : kTable)
+        for (const MethodOption* o : m.options) {
+            bool seen = false;
+            for (const MethodOption* s : out) seen = seen || s->flag == o->flag;
+            if (!seen) out.push_back(o);
+        }
+    return out;
+}
+
+const MethodOption& floodPassesOption() {
+    return kPasses;
+}
+
+int requestedPasses(const MethodDescriptor& m, const MethodOptions& options, int mapSize, int width,
+                    int height) {
+    if (!m.floods) return 0;
+    if (options.flag(kFullJfa)) {
+        if (m.space == MethodSpace::Eye) return eyeSoftMaxPasses(width, height);
+        int full = 0;
+        while ((2 << full) <= mapSize) ++full; // steps down from half the grid
+        return full;
+    }
+    return options.integer(kPasses);
+}
+
+} // namespace fl

@@ -1,0 +1,57 @@
+// jfa-l and flood-l (thesis §5.3): silhouettes of the shadow map flooded into a penumbra map
+// (PenumbraMapPass), then each pixel's intensity from the occluder at its texel (LightLookup).
+
+#include "LightLookup.h"
+
+#include <renderer/soft/PenumbraMap.h>
+
+#include <algorithm>
+
+namespace fl {
+
+namespace {
+
+class PenumbraMethod final : public ShadowMethod {
+  public:
+    PenumbraMethod(const ShaderLibrary& shaders, bool standardFlooding)
+        : standardFlooding_(standardFlooding), pass_(shaders), lookup_(shaders, true) {}
+    void resize(int width, int height) override { lookup_.resize(width, height); }
+
+    const gl::Texture& execute(const FrameInputs& in) override {
+        if (in.shadow.receivers == nullptr)
+            throw std::invalid_argument("jfa-l needs the shadow map's receiver positions");
+        PenumbraSettings ps;
+        ps.passes = requestedPasses(in.method, in.options, in.shadow.depth.width(), in.width(),
+                                    in.height());
+        ps.standardFlooding = standardFlooding_;
+        // A silhouette needs a depth step of a thousandth of the scene: smaller steps are the
+        // receiver's own slope, not an occluder's edge.
+        const float threshold = 0.001f * std::max(in.sceneBounds.radius(), 1e-3f);
+        const PenumbraMapPass::Outputs pm =
+            pass_.execute({*in.shadow.receivers, in.disk, ps, threshold}, in.timer);
+        flood_ = {&pm.seeds,         &pm.penumbraMap, in.shadow.receivers, nullptr, false,
+                  standardFlooding_, ps.passes};
+        if (in.timer) in.timer->begin("penumbra lookup");
+        const gl::Texture& v = lookup_.execute(in, &pm.penumbraMap);
+        if (in.timer) in.timer->end();
+        return v;
+    }
+    [[nodiscard]] const FloodFrame* flood() const override { return &flood_; }
+
+  private:
+    bool standardFlooding_;
+    PenumbraMapPass pass_;
+    LightLookup lookup_;
+    FloodFrame flood_;
+};
+
+} // namespace
+
+std::unique_ptr<ShadowMethod> makeJfaL(const ShaderLibrary& shaders) {
+    return std::make_unique<PenumbraMethod>(shaders, false);
+}
+std::unique_ptr<ShadowMethod> makeFloodL(const ShaderLibrary& shaders) {
+    return std::make_unique<PenumbraMethod>(shaders, true);
+}
+
+} // namespace fl

@@ -1,0 +1,53 @@
+#include <renderer/passes/ShadingPass.h>
+
+namespace fl {
+
+ShadingPass::ShadingPass(const ShaderLibrary& shaders)
+    : program_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
+                                            {GL_FRAGMENT_SHADER, "shading.frag.glsl"}})),
+      emptyVao_(gl::VertexArray::create()) {}
+
+void ShadingPass::resize(int width, int height) {
+    if (color_ && color_.width() == width && color_.height() == height) return;
+    color_ = gl::Texture(GL_RGBA16F, width, height);
+    visibility_ = gl::Texture(GL_R32F, width, height);
+    fbo_ = gl::Framebuffer::create();
+    fbo_.attach(GL_COLOR_ATTACHMENT0, color_);
+    fbo_.attach(GL_COLOR_ATTACHMENT1, visibility_);
+    fbo_.setDrawBuffers(2);
+    fbo_.check("shading pass");
+}
+
+ShadingPass::Outputs ShadingPass::execute(const Inputs& in) {
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    glViewport(0, 0, color_.width(), color_.height());
+    glDisable(GL_DEPTH_TEST);
+    program_.set("uLightPosition", in.light.position);
+    program_.set("uLightDirection", in.light.direction);
+    program_.set("uLightDirectional", in.light.type == Light::Type::Directional ? 1 : 0);
+    program_.set("uLightColor", in.light.color);
+    glBindTextureUnit(0, in.surfaces.position.id());
+    glBindTextureUnit(1, in.surfaces.normal.id());
+    glBindTextureUnit(2, in.surfaces.baseColor.id());
+    glBindTextureUnit(3, in.visibility.id());
+    gl::drawFullscreenTriangle(program_, emptyVao_);
+    for (GLuint unit : {0u, 1u, 2u, 3u}) glBindTextureUnit(unit, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return {color_, visibility_};
+}
+
+PresentPass::PresentPass(const ShaderLibrary& shaders)
+    : program_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
+                                            {GL_FRAGMENT_SHADER, "present.frag.glsl"}})),
+      emptyVao_(gl::VertexArray::create()) {}
+
+void PresentPass::execute(const gl::Texture& color, int framebufferWidth, int framebufferHeight) {
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, framebufferWidth, framebufferHeight);
+    glDisable(GL_DEPTH_TEST);
+    glBindTextureUnit(0, color.id());
+    gl::drawFullscreenTriangle(program_, emptyVao_);
+    glBindTextureUnit(0, 0);
+}
+
+} // namespace fl

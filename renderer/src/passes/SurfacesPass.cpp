@@ -1,0 +1,54 @@
+#include <renderer/passes/SurfacesPass.h>
+
+namespace fl {
+
+SurfacesPass::SurfacesPass(const ShaderLibrary& shaders)
+    : program_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "forward.vert.glsl"},
+                                            {GL_FRAGMENT_SHADER, "surfaces.frag.glsl"}})) {}
+
+void SurfacesPass::resize(int width, int height) {
+    if (position_ && position_.width() == width && position_.height() == height) return;
+    position_ = gl::Texture(GL_RGBA32F, width, height);
+    normal_ = gl::Texture(GL_RGBA32F, width, height);
+    plane_ = gl::Texture(GL_RGBA32F, width, height);
+    baseColor_ = gl::Texture(GL_RGBA32F, width, height);
+    receivers_ = gl::Texture(GL_R8, width, height);
+    depth_ = gl::Texture(GL_DEPTH_COMPONENT32F, width, height);
+    fbo_ = gl::Framebuffer::create();
+    fbo_.attach(GL_COLOR_ATTACHMENT0, position_);
+    fbo_.attach(GL_COLOR_ATTACHMENT1, normal_);
+    fbo_.attach(GL_COLOR_ATTACHMENT2, plane_);
+    fbo_.attach(GL_COLOR_ATTACHMENT3, baseColor_);
+    fbo_.attach(GL_COLOR_ATTACHMENT4, receivers_);
+    fbo_.attach(GL_DEPTH_ATTACHMENT, depth_);
+    fbo_.setDrawBuffers(5);
+    fbo_.check("surfaces pass");
+}
+
+SurfacesPass::Outputs SurfacesPass::outputs() const {
+    return {position_,         normal_,           plane_, baseColor_, receivers_, depth_,
+            position_.width(), position_.height()};
+}
+
+SurfacesPass::Outputs SurfacesPass::execute(const Inputs& in) {
+    const float none[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    const float far = 1.0f;
+    for (GLint i = 0; i < 5; ++i) glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, i, none);
+    glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &far);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    glViewport(0, 0, position_.width(), position_.height());
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_CULL_FACE); // glTF doubleSided and open meshes: both faces are visible
+    program_.set("uViewProj", in.camera.proj * in.camera.view);
+    program_.set("uLightPosition", in.light.position);
+    program_.set("uLightDirection", in.light.direction);
+    program_.set("uLightDirectional", in.light.type == Light::Type::Directional ? 1 : 0);
+    in.scene.draw(program_, GpuScene::Uniforms::Material);
+    glBindTextureUnit(0, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return outputs();
+}
+
+} // namespace fl

@@ -1,0 +1,25 @@
+#version 450 core
+// Visibility looked up in light space per eye pixel: the hard shadow-map test (hard), or with
+// SOFT_PENUMBRA_MAP the intensity from the flooded penumbra map (JFA-L, flood-L; thesis §5.3.1
+// phase 4). Reads the surfaces pass's world positions; background stays 1.
+#include "shadow_lookup.glsl"
+#ifdef SOFT_PENUMBRA_MAP
+#include "soft_penumbra.glsl"
+#endif
+
+layout(binding = 2) uniform sampler2D uPosition;
+
+layout(location = 0) out float oVisibility;
+
+void main() {
+    vec4 world = texelFetch(uPosition, ivec2(gl_FragCoord.xy), 0);
+    if (world.w == 0.0) {
+        oVisibility = 1.0;
+        return;
+    }
+#ifdef SOFT_PENUMBRA_MAP
+    oVisibility = penumbraMapVisibility(world.xyz);
+#else
+    oVisibility = hardShadow(world.xyz);
+#endif
+}
