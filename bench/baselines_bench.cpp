@@ -8,6 +8,10 @@
 #include <renderer/EglContext.h>
 #include <renderer/GltfLoader.h>
 #include <renderer/Renderer.h>
+#include <renderer/soft/ReferenceShadow.h>
+
+#include <base/Stats.h>
+#include <base/Text.h>
 
 #include <CLI/CLI.hpp>
 
@@ -16,12 +20,6 @@
 #include <iostream>
 
 namespace {
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const size_t n = v.size();
-    return n == 0 ? 0.0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 struct Entry {
     std::string label;
@@ -63,29 +61,47 @@ int main(int argc, char** argv) {
         const fl::ShaderLibrary shaders;
         const fl::CameraView cam = fl::makeCameraView(scene, {}, 1.0f);
         std::vector<Entry> entries;
-        auto add = [&](std::string label, fl::ShadowMethod m, auto tweak) {
+        // The ground truth (timed and compared like the others, but last).
+        const fl::MethodDescriptor& groundTruth = fl::methodOrThrow("reference");
+        auto add = [&](std::string label, const fl::MethodDescriptor& m, std::string_view flag = {},
+                       const std::string& value = {}) {
             fl::RenderSettings s;
             s.shadow.size = shadowMap;
-            s.method = m;
-            s.reference.samples = samples;
-            s.reference.mapSize = referenceMap;
-            tweak(s);
+            s.method = std::string(m.name);
+            s.options.set("--reference-samples", samples);
+            s.options.set("--reference-map-size", referenceMap);
+            if (!flag.empty()) s.options.set(flag, value);
             Entry e{std::move(label), s, std::make_unique<fl::Renderer>(shaders, scene, s), {}, {}};
             e.renderer->resize(size, size);
             entries.push_back(std::move(e));
         };
-        auto none = [](fl::RenderSettings&) {};
-        add("hard", fl::ShadowMethod::Hard, none);
-        add("pcf 3x3", fl::ShadowMethod::Pcf,
-            [](fl::RenderSettings& s) { s.filtered.pcfKernel = 3; });
-        add("pcf 5x5", fl::ShadowMethod::Pcf,
-            [](fl::RenderSettings& s) { s.filtered.pcfKernel = 5; });
-        for (const char* p : {"16/16", "16/24", "32/64"})
-            add(std::string("pcss ") + p, fl::ShadowMethod::Pcss,
-                [p](fl::RenderSettings& s) { s.filtered.pcss = *fl::parsePcssPreset(p); });
-        add("jfa-l", fl::ShadowMethod::JfaL, none);
-        add("jfa-e", fl::ShadowMethod::JfaE, none);
-        add("reference", fl::ShadowMethod::Reference, none);
+        // Every method of the table at its defaults, but the standard-flooding references
+        // (flood-l, flood-e: the JFA methods' own yardsticks) and the ground truth; PCF at two
+        // kernels, PCSS at every preset.
+        for (const fl::MethodDescriptor& m : fl::methodTable()) {
+            bool isReference = &m == &groundTruth;
+            for (const fl::MethodDescriptor& other : fl::methodTable())
+                isReference = isReference || other.reference == m.name;
+            if (isReference) continue;
+            const std::string name(m.name);
+            if (m.name == "pcf") {
+                for (int k : {3, 5})
+                    add(fl::cat(name, " ", k, "x", k), m, m.options.front()->flag,
+                        std::to_string(k));
+            } else if (const fl::MethodOption* preset = m.option("preset")) {
+                std::string_view choices = preset->choices;
+                while (!choices.empty()) {
+                    const std::size_t bar = choices.find('|');
+                    const std::string p(choices.substr(0, bar));
+                    add(fl::cat(name, " ", p), m, preset->flag, p);
+                    choices = bar == std::string_view::npos ? std::string_view{}
+                                                            : choices.substr(bar + 1);
+                }
+            } else {
+                add(name, m);
+            }
+        }
+        add(std::string(groundTruth.name), groundTruth);
         Entry& reference = entries.back();
 
         // Two warm-up frames each, then interleaved timed frames (the ground truth fewer).
@@ -100,7 +116,7 @@ int main(int argc, char** argv) {
         // method's frame.
         const fl::FloatImage mask = fl::readTexture(entries.front().renderer->receivers(), 1);
 
-        const double hardMedian = median(entries.front().ms);
+        const double hardMedian = fl::median(entries.front().ms);
         std::printf("default scene %dx%d, map %dx%d, light radius %.2f, reference N=%d at %dx%d\n",
                     size, size, shadowMap, shadowMap, static_cast<double>(radius), samples,
                     referenceMap, referenceMap);
@@ -110,12 +126,12 @@ int main(int argc, char** argv) {
             const fl::VisibilityDifference d =
                 fl::visibilityDifference(e.visibility, reference.visibility, mask);
             std::printf("%-12s %10.2f %10.2f %8.2f %8zu %10.4f %8.3f\n", e.label.c_str(),
-                        *std::min_element(e.ms.begin(), e.ms.end()), median(e.ms),
-                        median(e.ms) / hardMedian, e.ms.size(), d.rmse, d.maxAbs);
+                        fl::minimum(e.ms), fl::median(e.ms), fl::median(e.ms) / hardMedian,
+                        e.ms.size(), d.rmse, d.maxAbs);
         }
         if (samplingError) {
             fl::RenderSettings s = reference.settings;
-            s.reference.samples = 2 * samples;
+            s.options.set("--reference-samples", 2 * samples);
             reference.renderer->setSettings(s);
             reference.renderer->render(cam);
             const fl::FloatImage twice = fl::readTexture(reference.renderer->visibility(), 1);

@@ -8,6 +8,8 @@
 #include <jfa/GlKernel.h>
 #include <jfa/Sites.h>
 
+#include <base/Stats.h>
+
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -34,9 +36,7 @@ Timing timeRuns(int runs, const std::function<void()>& f) {
         glFinish();
         ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
     }
-    std::sort(ms.begin(), ms.end());
-    return {ms.front(),
-            ms.size() % 2 ? ms[ms.size() / 2] : 0.5 * (ms[ms.size() / 2 - 1] + ms[ms.size() / 2])};
+    return {fl::minimum(ms), fl::median(ms)};
 }
 
 void row(const std::string& what, const Timing& t, int passes) {

@@ -7,7 +7,8 @@
 #include <renderer/GltfLoader.h>
 #include <renderer/Renderer.h>
 #include <renderer/SceneGenerator.h>
-#include <renderer/soft/FilteredShadow.h>
+
+#include <base/Stats.h>
 
 #include <CLI/CLI.hpp>
 
@@ -20,12 +21,6 @@
 #include <sys/resource.h>
 
 namespace {
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 long peakRssKiB() {
     rusage u{};
@@ -56,7 +51,7 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_option("--frames", frames)->check(CLI::Range(1, 100000))->capture_default_str();
     app.add_option("--warmup", warmup)->check(CLI::Range(0, 1000))->capture_default_str();
-    app.add_option("--method", method, "Shadow method (hard, jfa-l, flood-l, jfa-e, ...)")
+    app.add_option("--method", method, "Shadow method (" + fl::methodNames() + ")")
         ->capture_default_str();
     app.add_option("--jfa-passes", passes, "Flooding passes of jfa-l/jfa-e (flood-*: 2^N - 1)")
         ->check(CLI::Range(1, 13))
@@ -72,9 +67,9 @@ int main(int argc, char** argv) {
     app.add_option("--shader-dir", shaderDir,
                    "Load shaders from this folder instead of the binary (to time shader edits)");
     CLI11_PARSE(app, argc, argv);
-    const std::optional<fl::ShadowMethod> shadowMethod = fl::parseMethod(method);
-    if (!shadowMethod) {
-        std::cerr << "error: --method: unknown shadow method '" << method << "'\n";
+    if (!fl::findMethod(method)) {
+        std::cerr << "error: --method: unknown shadow method '" << method
+                  << "' (valid: " << fl::methodNames() << ")\n";
         return 2;
     }
 
@@ -91,11 +86,11 @@ int main(int argc, char** argv) {
             shaderDir.empty() ? std::nullopt : std::optional<std::filesystem::path>(shaderDir));
         fl::RenderSettings settings;
         settings.shadow.size = shadowMap;
-        settings.method = *shadowMethod;
-        settings.penumbra.passes = passes;
-        settings.eyeSoft.objectIdFix = !noObjectIdFix;
-        settings.eyeSoft.midpointFix = !noMidpointFix;
-        settings.filtered.pcss = fl::parsePcssPreset(pcssPreset).value_or(fl::PcssPreset{});
+        settings.method = method;
+        settings.options.set(fl::floodPassesOption().flag, passes);
+        settings.options.set("--no-object-id-fix", noObjectIdFix);
+        settings.options.set("--no-midpoint-fix", noMidpointFix);
+        settings.options.set("--pcss-preset", pcssPreset);
         fl::Renderer renderer(shaders, scene, settings);
         renderer.resize(width, height);
         const fl::CameraView cam =
@@ -118,12 +113,11 @@ int main(int argc, char** argv) {
                   << std::fixed << std::setprecision(2);
         for (const auto& [name, v] : passMs)
             std::cout << "  " << std::left << std::setw(12) << name << " min " << std::right
-                      << std::setw(8) << *std::min_element(v.begin(), v.end()) << " ms   median "
-                      << std::setw(8) << median(v) << " ms\n";
+                      << std::setw(8) << fl::minimum(v) << " ms   median " << std::setw(8)
+                      << fl::median(v) << " ms\n";
         std::cout << "  " << std::left << std::setw(12) << "frame"
-                  << " min " << std::right << std::setw(8)
-                  << *std::min_element(frameMs.begin(), frameMs.end()) << " ms   median "
-                  << std::setw(8) << median(frameMs) << " ms\n"
+                  << " min " << std::right << std::setw(8) << fl::minimum(frameMs)
+                  << " ms   median " << std::setw(8) << fl::median(frameMs) << " ms\n"
                   << "peak RSS: " << peakRssKiB() / 1024
                   << " MiB (after loading the scene: " << rssScene / 1024 << " MiB)\n";
     } catch (const std::exception& e) {

@@ -5,6 +5,7 @@
 #include "TestPaths.h"
 
 #include <renderer/ImageIO.h>
+#include <renderer/methods/ShadowMethod.h>
 
 #include <gtest/gtest.h>
 
@@ -55,6 +56,28 @@ TEST(BaselinesCli, BadBaselineOptionsAreUsageErrors) {
         const std::string option = std::string(args).substr(0, std::string(args).find(' '));
         EXPECT_NE(r.output.find(option), std::string::npos) << args << "\n" << r.output;
     }
+}
+
+// A method option given to a method that does not take it is a usage error naming the option,
+// for every method of the table but the one that takes it (--pcf-kernel: pcf).
+TEST(BaselinesCli, AnOptionOfAnotherMethodIsAUsageError) {
+    int checked = 0;
+    for (const MethodDescriptor& m : methodTable()) {
+        if (m.takesFlag("--pcf-kernel")) continue;
+        const std::string args = "--method " + std::string(m.name) + " --pcf-kernel 5";
+        // Small, so that a method that wrongly accepts it still ends quickly.
+        const Outcome r = run("render --width 16 --height 16 --shadow-map-size 64 " + args +
+                              " --out " + outputDir("cli_baselines").string() + " --name other");
+        EXPECT_EQ(r.code, 2) << args << "\n" << r.output;
+        EXPECT_NE(r.output.find("--pcf-kernel"), std::string::npos) << args << "\n" << r.output;
+        ++checked;
+    }
+    EXPECT_GE(checked, 7) << "every method but pcf";
+    // pcf itself takes it.
+    const Outcome pcf = run("render --width 16 --height 16 --shadow-map-size 64 --method pcf "
+                            "--pcf-kernel 5 --out " +
+                            outputDir("cli_baselines").string() + " --name pcf5");
+    EXPECT_EQ(pcf.code, 0) << pcf.output;
 }
 
 } // namespace

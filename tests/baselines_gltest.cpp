@@ -10,6 +10,7 @@
 #include <renderer/Capture.h>
 #include <renderer/GltfLoader.h>
 #include <renderer/Renderer.h>
+#include <renderer/passes/SurfacesPass.h>
 #include <renderer/soft/FilteredShadow.h>
 #include <renderer/soft/ReferenceShadow.h>
 
@@ -26,15 +27,18 @@ const std::filesystem::path kDefaultAsset =
 // As penumbra_gltest: the default light's own radius casts penumbrae under a texel.
 constexpr float kTestRadius = 1.5f;
 
-FrameImages renderDefault(ShadowMethod method, float radius, int mapSize,
-                          const ReferenceSettings& reference = {}, int size = 256) {
+FrameImages renderDefault(std::string_view method, float radius, int mapSize,
+                          const ReferenceSettings& reference = {}, int size = 256,
+                          const MethodOptions& options = {}) {
     Scene scene = loadGltf(kDefaultAsset);
     scene.light->radius = radius;
     const ShaderLibrary shaders;
     RenderSettings settings;
     settings.shadow.size = mapSize;
-    settings.method = method;
-    settings.reference = reference;
+    settings.method = std::string(method);
+    settings.options = options;
+    settings.options.set("--reference-samples", reference.samples);
+    settings.options.set("--reference-map-size", reference.mapSize);
     Renderer r(shaders, scene, settings);
     r.resize(size, size);
     r.render(makeCameraView(scene, {}, 1.0f));
@@ -42,12 +46,12 @@ FrameImages renderDefault(ShadowMethod method, float radius, int mapSize,
 }
 
 // PCF / PCSS on the GPU against filteredVisibility() on the CPU, per pixel, from the read-back
-// shadow map and the pass' own per-pixel inputs (position, receiver normal). The CPU rounds
-// differently (no fused multiply-add, its own matrix products), which can flip a tap whose
-// reference depth is within rounding of the stored depth or whose coordinate is within rounding
-// of a texel edge: one flipped PCF tap moves a pixel by 1/taps, a flipped PCSS blocker moves the
-// filter radius too. So: at most 0.5% of surface pixels may differ by more than 1e-5, and the
-// mean difference must stay under 1e-3.
+// shadow map and the pass' own per-pixel inputs (the surfaces' position and receiver plane). The
+// CPU rounds differently (no fused multiply-add, its own matrix products), which can flip a tap
+// whose reference depth is within rounding of the stored depth or whose coordinate is within
+// rounding of a texel edge: one flipped PCF tap moves a pixel by 1/taps, a flipped PCSS blocker
+// moves the filter radius too. So: at most 0.5% of surface pixels may differ by more than 1e-5, and
+// the mean difference must stay under 1e-3.
 void compareFilterWithCpu(ShadowMapProvider provider, bool pcss) {
     Scene scene = loadGltf(kDefaultAsset);
     scene.light->radius = kTestRadius;
@@ -66,9 +70,12 @@ void compareFilterWithCpu(ShadowMapProvider provider, bool pcss) {
     FilteredShadowSettings fs;
     fs.pcfKernel = 5;
     fs.pcss = PcssPreset{16, 24};
-    FilteredShadowPass pass(shaders);
     const int size = 128;
-    const FilteredShadowPass::Inputs in{gpu, camera, shadow, volume, disk, fs, pcss, size, size};
+    SurfacesPass surfacesPass(shaders);
+    surfacesPass.resize(size, size);
+    const SurfacesPass::Outputs surfaces = surfacesPass.execute({gpu, camera, light});
+    FilteredShadowPass pass(shaders);
+    const FilteredShadowPass::Inputs in{surfaces, shadow, volume, disk, fs, pcss};
     const FilteredShadowPass::Outputs out = pass.execute(in);
     FilterFrame f = pass.frame(in);
     f.depth = readDepthMap(shadow.depth);
@@ -117,8 +124,8 @@ TEST_F(BaselinesTest, ReferenceWithOneSampleIsTheHardShadow) {
     ReferenceSettings rs;
     rs.samples = 1;
     rs.mapSize = 512; // the hard method's map size: the same map
-    const FrameImages hard = renderDefault(ShadowMethod::Hard, kTestRadius, 512, {}, 128);
-    const FrameImages ref = renderDefault(ShadowMethod::Reference, kTestRadius, 512, rs, 128);
+    const FrameImages hard = renderDefault("hard", kTestRadius, 512, {}, 128);
+    const FrameImages ref = renderDefault("reference", kTestRadius, 512, rs, 128);
     EXPECT_EQ(hard.visibility.data, ref.visibility.data);
 }
 
@@ -126,8 +133,8 @@ TEST_F(BaselinesTest, ReferenceWithZeroRadiusIsTheHardShadow) {
     ReferenceSettings rs;
     rs.samples = 9;
     rs.mapSize = 512;
-    const FrameImages hard = renderDefault(ShadowMethod::Hard, 0.0f, 512, {}, 128);
-    const FrameImages ref = renderDefault(ShadowMethod::Reference, 0.0f, 512, rs, 128);
+    const FrameImages hard = renderDefault("hard", 0.0f, 512, {}, 128);
+    const FrameImages ref = renderDefault("reference", 0.0f, 512, rs, 128);
     EXPECT_EQ(hard.visibility.data, ref.visibility.data);
     std::size_t shadowed = 0;
     for (float v : hard.visibility.data) shadowed += v == 0.0f;
@@ -142,6 +149,16 @@ struct BoxScene {
     Scene scene;
     DiskLight disk;
     CameraView camera;
+};
+// The frame's surfaces (step 2), which the ground truth shades: positions per pixel.
+struct Surfaces {
+    Surfaces(const ShaderLibrary& shaders, const GpuScene& gpu, const BoxScene& b, int size)
+        : pass(shaders) {
+        pass.resize(size, size);
+        (void)pass.execute({gpu, b.camera, sceneLight(b.scene)});
+    }
+    SurfacesPass pass;
+    [[nodiscard]] const gl::Texture& positions() const { return pass.outputs().position; }
 };
 BoxScene boxScene() {
     BoxScene b;
@@ -167,10 +184,11 @@ TEST_F(BaselinesTest, ReferenceMatchesCpuRayCastToTheSameSamples) {
     const ShadowMapSettings ss{};
     ReferenceShadowPass pass(shaders);
     const int size = 96;
+    const Surfaces surfaces(shaders, gpu, b, size);
     const ReferenceShadowPass::Outputs out =
-        pass.execute({gpu, b.camera, b.scene.bounds, b.disk, ss, rs, size, size});
+        pass.execute({gpu, surfaces.positions(), b.scene.bounds, b.disk, ss, rs});
     const FloatImage vis = readTexture(out.visibility, 1);
-    const FloatImage points = readTexture(out.points, 4);
+    const FloatImage points = readTexture(surfaces.positions(), 4);
     const std::vector<glm::vec3> samples = referenceDiskSamples(b.disk, rs.samples);
     std::size_t surface = 0, partial = 0, exact = 0, within = 0;
     double sumAbs = 0.0;
@@ -209,7 +227,8 @@ TEST_F(BaselinesTest, ReferenceSamplingErrorShrinksWithN) {
     rs.mapSize = 1024;
     const ShadowMapSettings ss{};
     ReferenceShadowPass pass(shaders);
-    const ReferenceShadowPass::Inputs in{gpu, b.camera, b.scene.bounds, b.disk, ss, rs, 64, 64};
+    const Surfaces surfaces(shaders, gpu, b, 64);
+    const ReferenceShadowPass::Inputs in{gpu, surfaces.positions(), b.scene.bounds, b.disk, ss, rs};
     const VisibilityDifference coarse = referenceSamplingError(pass, in, 2);
     const VisibilityDifference fine = referenceSamplingError(pass, in, 16);
     std::printf("N=2 vs 4: rmse %.4f max %.3f; N=16 vs 32: rmse %.4f max %.3f\n", coarse.rmse,
@@ -226,11 +245,12 @@ TEST_F(BaselinesTest, BadSettingsAreRejected) {
     rs.samples = 0;
     const ShadowMapSettings ss{};
     ReferenceShadowPass pass(shaders);
-    EXPECT_THROW((void)pass.execute({gpu, b.camera, b.scene.bounds, b.disk, ss, rs, 16, 16}),
+    const Surfaces surfaces(shaders, gpu, b, 16);
+    EXPECT_THROW((void)pass.execute({gpu, surfaces.positions(), b.scene.bounds, b.disk, ss, rs}),
                  std::invalid_argument);
     RenderSettings settings;
-    settings.method = ShadowMethod::Pcf;
-    settings.filtered.pcfKernel = 0;
+    settings.method = "pcf";
+    settings.options.set("--pcf-kernel", 0);
     Renderer r(shaders, b.scene, settings);
     r.resize(16, 16);
     EXPECT_THROW(r.render(b.camera), std::invalid_argument);
@@ -243,9 +263,13 @@ TEST_F(BaselinesTest, Goldens) {
     ReferenceSettings rs;
     rs.samples = 64;
     rs.mapSize = 1024;
-    for (ShadowMethod m : {ShadowMethod::Pcf, ShadowMethod::Pcss, ShadowMethod::Reference}) {
-        const FrameImages f = renderDefault(m, kTestRadius, 512, rs);
-        const std::string name = "default_256_" + std::string(methodName(m));
+    // The goldens were made with PCSS 16/16 (the renderer's default before the method table,
+    // whose default is 16/24): the preset is set, not left to the default.
+    MethodOptions options;
+    options.set("--pcss-preset", "16/16");
+    for (std::string_view m : {"pcf", "pcss", "reference"}) {
+        const FrameImages f = renderDefault(m, kTestRadius, 512, rs, 256, options);
+        const std::string name = "default_256_" + std::string(m);
         Tolerance colour;
         colour.maxAbs = 255;
         colour.meanAbs = 1.5;

@@ -152,8 +152,10 @@ TEST(CaptureBadInput, ScriptErrorsNameTheField) {
     const fs::path out = outputDir("capture_bad") / "out";
     const std::string camera = R"("camera": {"frames": 3, "path": "default"})";
     expectCleanFailure(
-        capture(scriptFile("unknown.json", "{" + camera + R"(, "methods": ["hard", "vsm"]})"), out),
-        "methods[1]: unknown method \"vsm\"", out);
+        capture(scriptFile("unknown.json",
+                           "{" + camera + R"(, "methods": ["hard", "no-such-method"]})"),
+                out),
+        "methods[1]: unknown method \"no-such-method\"", out);
     expectCleanFailure(
         capture(scriptFile("zero.json",
                            R"({"camera": {"frames": 0, "path": "default"}, "methods": ["hard"]})"),

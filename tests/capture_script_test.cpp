@@ -4,6 +4,9 @@
 #include "CaptureScript.h"
 #include "TestPaths.h"
 
+#include <renderer/methods/ShadowMethod.h>
+#include <renderer/soft/FilteredShadow.h>
+
 #include <gtest/gtest.h>
 
 namespace fl::app {
@@ -31,7 +34,7 @@ TEST(CaptureScript, MinimalScriptHasDefaults) {
     EXPECT_EQ(s.shadowMapProvider, "uniform");
     EXPECT_EQ(s.reference.samples, ReferenceSettings{}.samples);
     ASSERT_EQ(s.methods.size(), 2u);
-    EXPECT_EQ(s.methods[1].method, ShadowMethod::JfaL);
+    EXPECT_EQ(s.methods[1].method, "jfa-l");
     EXPECT_EQ(s.methods[1].label, "jfa-l");
     EXPECT_TRUE(s.saveFrames);
 }
@@ -69,22 +72,29 @@ TEST(CaptureScript, EveryField) {
     EXPECT_EQ(s.reference.mapSize, 256);
     EXPECT_FALSE(s.saveFrames);
     ASSERT_EQ(s.methods.size(), 6u);
+    const MethodOption& preset = *findMethod("pcss")->option("preset");
+    const MethodOption& kernel = *findMethod("pcf")->option("kernel");
+    const MethodOption& passes = floodPassesOption();
     EXPECT_EQ(s.methods[0].label, "pcss:16/24");
-    EXPECT_EQ(s.methods[0].pcss->filterSamples, 24);
+    EXPECT_EQ(s.methods[0].options.text(preset), "16/24");
+    EXPECT_EQ(parsePcssPreset(s.methods[0].options.text(preset))->filterSamples, 24);
     EXPECT_EQ(s.methods[1].label, "pcss:32/64");
-    EXPECT_EQ(s.methods[1].pcss->blockerSamples, 32);
-    EXPECT_EQ(*s.methods[2].pcfKernel, 5);
+    EXPECT_EQ(parsePcssPreset(s.methods[1].options.text(preset))->blockerSamples, 32);
+    ASSERT_TRUE(s.methods[2].options.has(kernel.flag));
+    EXPECT_EQ(s.methods[2].options.integer(kernel), 5);
     EXPECT_EQ(s.methods[3].label, "jfa-l short");
-    EXPECT_EQ(*s.methods[3].passes, 4);
-    EXPECT_EQ(*s.methods[4].passes, 3);
-    EXPECT_EQ(s.methods[5].method, ShadowMethod::Reference);
+    ASSERT_TRUE(s.methods[3].options.has(passes.flag));
+    EXPECT_EQ(s.methods[3].options.integer(passes), 4);
+    ASSERT_TRUE(s.methods[4].options.has(passes.flag));
+    EXPECT_EQ(s.methods[4].options.integer(passes), 3);
+    EXPECT_EQ(s.methods[5].method, "reference");
 
     // The options reach the render settings.
     const RenderSettings pcss = settingsFor(RenderSettings{}, s.methods[1]);
-    EXPECT_EQ(pcss.method, ShadowMethod::Pcss);
-    EXPECT_EQ(pcss.filtered.pcss.filterSamples, 64);
-    EXPECT_EQ(settingsFor(RenderSettings{}, s.methods[2]).filtered.pcfKernel, 5);
-    EXPECT_EQ(settingsFor(RenderSettings{}, s.methods[3]).penumbra.passes, 4);
+    EXPECT_EQ(pcss.method, "pcss");
+    EXPECT_EQ(parsePcssPreset(pcss.options.text(preset))->filterSamples, 64);
+    EXPECT_EQ(settingsFor(RenderSettings{}, s.methods[2]).options.integer(kernel), 5);
+    EXPECT_EQ(settingsFor(RenderSettings{}, s.methods[3]).options.integer(passes), 4);
 }
 
 TEST(CaptureScript, CameraFromAFile) {
@@ -145,7 +155,7 @@ TEST(CaptureScript, EveryMalformedFieldIsNamed) {
         {script(R"(, "frames": 3)"), "script.frames"},
         {script("", R"([])"), "methods"},
         {script("", R"("hard")"), "methods"},
-        {script("", R"(["hard", "vsm"])"), "methods[1]"},
+        {script("", R"(["hard", "no-such-method"])"), "methods[1]"},
         {script("", R"(["pcss:8/8"])"), "methods[0].preset"},
         {script("", R"(["pcf:big"])"), "methods[0]"},
         {script("", R"(["pcf:99"])"), "methods[0].kernel"},
@@ -185,8 +195,8 @@ TEST(CaptureScript, ShippedExamplesParse) {
         EXPECT_GE(s.frames, 1) << name;
         bool hasJfa = false, hasFlood = false;
         for (const MethodSpec& m : s.methods) {
-            hasJfa = hasJfa || m.method == ShadowMethod::JfaL;
-            hasFlood = hasFlood || m.method == ShadowMethod::FloodL;
+            hasJfa = hasJfa || m.method == "jfa-l";
+            hasFlood = hasFlood || m.method == "flood-l";
         }
         EXPECT_TRUE(hasJfa && hasFlood) << name << ": the |dI| chart needs both";
     }

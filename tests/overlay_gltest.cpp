@@ -39,15 +39,15 @@ struct Frame {
     std::unique_ptr<OverlayRenderer> overlays;
     OverlayControls controls;
 
-    explicit Frame(ShadowMethod method, ShadowMapProvider provider = ShadowMapProvider::Uniform,
+    explicit Frame(std::string_view method, ShadowMapProvider provider = ShadowMapProvider::Uniform,
                    float radius = 1.5f, int passes = 6)
         : scene(loadGltf(kDefaultAsset)) {
         scene.light->radius = radius;
         RenderSettings settings;
         settings.shadow.size = kSize;
         settings.shadow.provider = provider;
-        settings.method = method;
-        settings.penumbra.passes = passes;
+        settings.method = std::string(method);
+        settings.options.set(floodPassesOption().flag, passes);
         renderer = std::make_unique<Renderer>(shaders, scene, settings);
         renderer->resize(kSize, kSize);
         camera = makeCameraView(scene, {}, 1.0f);
@@ -56,6 +56,18 @@ struct Frame {
     }
     OverlayCapture capture(OverlayMode mode) {
         return captureOverlay(*overlays, mode, *renderer, camera, controls, kSize, kSize);
+    }
+    /// The frame's flood (flooding methods only).
+    [[nodiscard]] const FloodFrame& flood() const {
+        const FloodFrame* f = renderer->flood();
+        if (!f) throw std::logic_error("the frame's method does not flood");
+        return *f;
+    }
+    /// JFA-L's settings as the frame's options ask for them.
+    [[nodiscard]] PenumbraSettings penumbraSettings() const {
+        PenumbraSettings ps;
+        ps.passes = renderer->settings().options.integer(floodPassesOption());
+        return ps;
     }
 };
 
@@ -134,8 +146,8 @@ TEST(OverlayPlans, TruncateKeepsThePrefix) {
 // Voronoi of the JFA-L silhouette seeds, every variant: the GL diagram equals the CPU kernel's
 // on the same seeds, the error count equals the CPU count, and the pixels are its colours.
 TEST_F(OverlayTest, VoronoiOfSeedsMatchesCpuKernel) {
-    Frame s(ShadowMethod::JfaL);
-    const jfa::Grid sites = overlay::sitesFromSeeds(jfa::readGrid(*s.renderer->seeds()));
+    Frame s("jfa-l");
+    const jfa::Grid sites = overlay::sitesFromSeeds(jfa::readGrid(*s.flood().seeds));
     ASSERT_GT(jfa::siteCells(sites).size(), 100u);
     const jfa::NearestSite crit{true};
     const jfa::ExactField exact = jfa::exactNearest(sites, crit);
@@ -159,11 +171,11 @@ TEST_F(OverlayTest, VoronoiOfSeedsMatchesCpuKernel) {
 
 // Distance transform of the JFA-E boundary seeds (eye space).
 TEST_F(OverlayTest, DistanceTransformOfBoundarySeeds) {
-    Frame s(ShadowMethod::JfaE);
+    Frame s("jfa-e");
     const OverlayCapture cap = s.capture(OverlayMode::DistanceTransform);
     const OverlayResult& r = s.overlays->lastResult();
     ASSERT_TRUE(r.drawn);
-    const jfa::Grid sites = overlay::sitesFromSeeds(jfa::readGrid(s.renderer->eyeSoft()->seeds));
+    const jfa::Grid sites = overlay::sitesFromSeeds(jfa::readGrid(*s.flood().seeds));
     ASSERT_GT(jfa::siteCells(sites).size(), 100u)
         << "the JFA-E frame has (almost) no boundary seeds";
     const jfa::NearestSite crit{true};
@@ -196,13 +208,13 @@ ReceiverGrid receiversOf(const gl::Texture& t) {
 // Flood pass by pass: after k passes the GL state equals the CPU kernel's run of the frame's
 // plan cut after k passes; all passes reproduce the frame's own penumbra map.
 TEST_F(OverlayTest, FloodPassesMatchTruncatedCpuPlan) {
-    Frame s(ShadowMethod::JfaL);
+    Frame s("jfa-l");
     const ReceiverGrid receivers = receiversOf(*s.renderer->shadow()->receivers);
     PenumbraCriterion crit;
     crit.light = s.renderer->disk();
     crit.receivers = &receivers;
-    const jfa::Grid seeds = jfa::readGrid(*s.renderer->seeds());
-    const jfa::Plan full = penumbraPlan(s.renderer->settings().penumbra, kSize);
+    const jfa::Grid seeds = jfa::readGrid(*s.flood().seeds);
+    const jfa::Plan full = penumbraPlan(s.penumbraSettings(), kSize);
     for (int k : {0, 1, 3, -1}) {
         s.controls.floodPass = k;
         const OverlayCapture cap = s.capture(OverlayMode::FloodPasses);
@@ -210,7 +222,7 @@ TEST_F(OverlayTest, FloodPassesMatchTruncatedCpuPlan) {
         EXPECT_TRUE(s.overlays->lastResult().grid == cpu) << "after " << k << " passes";
         if (k == 3) expectGolden(cap.image, "overlay_256_flood-passes-3");
     }
-    EXPECT_TRUE(s.overlays->lastResult().grid == jfa::readGrid(*s.renderer->penumbraMap()));
+    EXPECT_TRUE(s.overlays->lastResult().grid == jfa::readGrid(*s.flood().flooded));
 }
 
 // JFA vs standard flooding: the reference equals the CPU standard flood of the same seeds, and
@@ -218,7 +230,7 @@ TEST_F(OverlayTest, FloodPassesMatchTruncatedCpuPlan) {
 TEST_F(OverlayTest, JfaVsFloodMaskIsTheCpuComparison) {
     // Light radius 6: at 1.5 the two floods agree on every texel of this 256^2 map (measured:
     // 0 differ; 4 at radius 3, 149 at 6), which would leave nothing to check.
-    Frame s(ShadowMethod::JfaL, ShadowMapProvider::Uniform, 6.0f);
+    Frame s("jfa-l", ShadowMapProvider::Uniform, 6.0f);
     const OverlayCapture cap = s.capture(OverlayMode::JfaVsFlood);
     const OverlayResult& r = s.overlays->lastResult();
     ASSERT_TRUE(r.drawn);
@@ -226,12 +238,12 @@ TEST_F(OverlayTest, JfaVsFloodMaskIsTheCpuComparison) {
     PenumbraCriterion crit;
     crit.light = s.renderer->disk();
     crit.receivers = &receivers;
-    PenumbraSettings ps = s.renderer->settings().penumbra;
+    PenumbraSettings ps = s.penumbraSettings();
     ps.standardFlooding = true;
     const jfa::Grid flood =
-        jfa::flood(penumbraPlan(ps, kSize), jfa::readGrid(*s.renderer->seeds()), crit);
+        jfa::flood(penumbraPlan(ps, kSize), jfa::readGrid(*s.flood().seeds), crit);
     EXPECT_TRUE(r.reference == flood);
-    const jfa::Grid jfa = jfa::readGrid(*s.renderer->penumbraMap());
+    const jfa::Grid jfa = jfa::readGrid(*s.flood().flooded);
     std::int64_t differ = 0;
     for (int y = 0; y < kSize; ++y)
         for (int x = 0; x < kSize; ++x) {
@@ -259,15 +271,13 @@ TEST_F(OverlayTest, JfaVsFloodMaskIsTheCpuComparison) {
 // The same in eye space (JFA-E): the mask is the comparison of the two read-back floods. Four
 // passes (15 for flooding) keep the eye-space floods of llvmpipe within a few seconds.
 TEST_F(OverlayTest, JfaVsFloodEyeSpace) {
-    Frame s(ShadowMethod::JfaE, ShadowMapProvider::Uniform, 1.5f, 4);
+    Frame s("jfa-e", ShadowMapProvider::Uniform, 1.5f, 4);
     s.capture(OverlayMode::JfaVsFlood);
     const OverlayResult& r = s.overlays->lastResult();
     ASSERT_TRUE(r.drawn);
-    ASSERT_GT(
-        jfa::siteCells(overlay::sitesFromSeeds(jfa::readGrid(s.renderer->eyeSoft()->seeds))).size(),
-        100u)
+    ASSERT_GT(jfa::siteCells(overlay::sitesFromSeeds(jfa::readGrid(*s.flood().seeds))).size(), 100u)
         << "the JFA-E frame has (almost) no boundary seeds";
-    const jfa::Grid jfa = jfa::readGrid(s.renderer->eyeSoft()->flooded);
+    const jfa::Grid jfa = jfa::readGrid(*s.flood().flooded);
     EXPECT_TRUE(r.grid == jfa);
     std::int64_t differ = 0;
     for (std::size_t i = 0; i < jfa.cells.size(); ++i) {
@@ -278,14 +288,14 @@ TEST_F(OverlayTest, JfaVsFloodEyeSpace) {
     EXPECT_EQ(r.count, differ);
     EXPECT_GT(differ, 0);
     // The reference is what a flood-E frame of the same view floods.
-    Frame floodE(ShadowMethod::FloodE, ShadowMapProvider::Uniform, 1.5f, 4);
-    EXPECT_TRUE(r.reference == jfa::readGrid(floodE.renderer->eyeSoft()->flooded));
+    Frame floodE("flood-e", ShadowMapProvider::Uniform, 1.5f, 4);
+    EXPECT_TRUE(r.reference == jfa::readGrid(*floodE.flood().flooded));
 }
 
 // The playground's live error count is the CPU count for the same sites and variant; clicked
 // sites are added; the red pixels are the error texels.
 TEST_F(OverlayTest, PlaygroundCountsErrorsLikeTheCpu) {
-    Frame s(ShadowMethod::Hard);
+    Frame s("hard");
     s.controls.playgroundSites = 400;
     s.controls.seed = 7;
     s.controls.clickedSites = {{0.25f, 0.75f}};
@@ -320,7 +330,7 @@ TEST_F(OverlayTest, PlaygroundCountsErrorsLikeTheCpu) {
 // The trapezoid's corners are fitTrapezoid's, and the drawn lines pass through the projected
 // corners' edges (sampled inside the view).
 TEST_F(OverlayTest, TrapezoidLinesAreTheFitsCorners) {
-    Frame s(ShadowMethod::Hard, ShadowMapProvider::Tsm);
+    Frame s("hard", ShadowMapProvider::Tsm);
     const OverlayCapture cap = s.capture(OverlayMode::Trapezoid);
     const OverlayResult& r = s.overlays->lastResult();
     const ShadowMapPass::Outputs& sh = *s.renderer->shadow();
@@ -357,7 +367,7 @@ TEST_F(OverlayTest, TrapezoidLinesAreTheFitsCorners) {
 
 // The picture-only modes: each draws, restores the GL state, and matches its golden.
 TEST_F(OverlayTest, PictureGoldens) {
-    Frame s(ShadowMethod::JfaL);
+    Frame s("jfa-l");
     for (OverlayMode m : {OverlayMode::ShadowMap, OverlayMode::Seeds, OverlayMode::PenumbraMap,
                           OverlayMode::FloodPasses}) {
         glViewport(3, 4, 5, 6);
@@ -393,7 +403,7 @@ TEST_F(OverlayTest, PictureGoldens) {
     }
     // Seeds are drawn exactly where the seed texture holds one.
     const OverlayCapture seeds = s.capture(OverlayMode::Seeds);
-    const jfa::Grid g = jfa::readGrid(*s.renderer->seeds());
+    const jfa::Grid g = jfa::readGrid(*s.flood().seeds);
     expectPixels(
         seeds.image,
         [&](int x, int y) {
@@ -402,7 +412,7 @@ TEST_F(OverlayTest, PictureGoldens) {
         },
         0, "seeds");
     // A hard-shadow frame has no seeds: the soft modes say so instead of drawing.
-    Frame hard(ShadowMethod::Hard);
+    Frame hard("hard");
     const OverlayCapture none = hard.capture(OverlayMode::Voronoi);
     EXPECT_FALSE(hard.overlays->lastResult().drawn);
     EXPECT_NE(none.hud.back().find("needs a soft method"), std::string::npos);
@@ -411,7 +421,7 @@ TEST_F(OverlayTest, PictureGoldens) {
 // The Delaunay visualiser steps through the nine stages; the islands stage marks exactly the
 // pixels G3 recoloured.
 TEST_F(OverlayTest, DelaunayStages) {
-    Frame s(ShadowMethod::Hard);
+    Frame s("hard");
     s.controls.delaunayPoints = 300;
     for (int k = 0; k < 9; ++k) {
         s.controls.delaunayStep = k;

@@ -2,6 +2,7 @@
 
 #include "GlTest.h"
 #include "ImageCompare.h"
+#include "TestMethods.h"
 #include "TestPaths.h"
 #include "TestScenes.h"
 
@@ -60,18 +61,25 @@ TEST_F(PenumbraTest, SilhouettesAndFloodMatchTheCpuReference) {
     const ShaderLibrary shaders;
     // Both providers: the flood runs in shadow-map space, whichever warp made it.
     for (ShadowMapProvider provider : {ShadowMapProvider::Uniform, ShadowMapProvider::Tsm})
-        for (ShadowMethod method : {ShadowMethod::JfaL, ShadowMethod::FloodL}) {
+        for (const MethodDescriptor* d : floodingMethods(MethodSpace::Light)) { // jfa-l, flood-l
+            const std::string_view method = d->name;
             RenderSettings settings;
             settings.shadow.size = 128;
             settings.shadow.provider = provider;
-            settings.method = method;
-            settings.penumbra.passes = 4;
+            settings.method = std::string(method);
+            settings.options.set(floodPassesOption().flag, 4);
             Renderer r(shaders, s.scene, settings);
             r.resize(64, 64);
             r.render(s.camera);
-            ASSERT_NE(r.penumbraMap(), nullptr);
+            const FloodFrame* flood = r.flood();
+            ASSERT_NE(flood, nullptr);
+            ASSERT_NE(flood->flooded, nullptr);
+            ASSERT_NE(flood->seeds, nullptr);
+            EXPECT_FALSE(flood->eye);
+            EXPECT_EQ(flood->passes, 4);
+            EXPECT_EQ(flood->standardFlooding, isStandardFlooding(*d)) << method;
             const ReceiverGrid receivers = readReceivers(*r.shadow()->receivers);
-            const jfa::Grid gpuSeeds = jfa::readGrid(*r.seeds());
+            const jfa::Grid gpuSeeds = jfa::readGrid(*flood->seeds);
             const float threshold = 0.001f * s.scene.bounds.radius();
             const jfa::Grid cpuSeeds = silhouetteSeeds(receivers, r.disk(), threshold);
             ASSERT_EQ(gpuSeeds, cpuSeeds) << "silhouette seeds differ";
@@ -80,18 +88,18 @@ TEST_F(PenumbraTest, SilhouettesAndFloodMatchTheCpuReference) {
             PenumbraCriterion criterion;
             criterion.light = r.disk();
             criterion.receivers = &receivers;
-            PenumbraSettings ps = settings.penumbra;
-            ps.standardFlooding = method == ShadowMethod::FloodL;
+            PenumbraSettings ps;
+            ps.passes = 4;
+            ps.standardFlooding = isStandardFlooding(*d);
             const jfa::Grid cpuMap = jfa::flood(penumbraPlan(ps, 128), cpuSeeds, criterion);
-            const jfa::Grid gpuMap = jfa::readGrid(*r.penumbraMap());
+            const jfa::Grid gpuMap = jfa::readGrid(*flood->flooded);
             std::size_t differ = 0;
             for (std::size_t i = 0; i < cpuMap.cells.size(); ++i)
                 differ += !(cpuMap.cells[i] == gpuMap.cells[i]);
-            EXPECT_EQ(differ, 0u) << methodName(method) << " on " << providerName(provider);
+            EXPECT_EQ(differ, 0u) << method << " on " << providerName(provider);
             EXPECT_GT(nonEmpty(cpuMap), nonEmpty(cpuSeeds)) << "the flood must spread occluders";
-            std::printf("%s: %zu seeds, %zu penumbra-map texels\n",
-                        std::string(methodName(method)).c_str(), nonEmpty(cpuSeeds),
-                        nonEmpty(cpuMap));
+            std::printf("%s: %zu seeds, %zu penumbra-map texels\n", std::string(method).c_str(),
+                        nonEmpty(cpuSeeds), nonEmpty(cpuMap));
         }
 }
 
@@ -99,13 +107,13 @@ TEST_F(PenumbraTest, SilhouettesAndFloodMatchTheCpuReference) {
 // centimetres, under a texel of a 512² map; the soft-shadow tests use a larger disk.
 constexpr float kTestRadius = 1.5f;
 
-FrameImages renderDefault(ShadowMethod method, std::optional<float> radius = kTestRadius) {
+FrameImages renderDefault(std::string_view method, std::optional<float> radius = kTestRadius) {
     Scene scene = loadGltf(kDefaultAsset);
     if (radius) scene.light->radius = *radius;
     const ShaderLibrary shaders;
     RenderSettings settings;
     settings.shadow.size = 512;
-    settings.method = method;
+    settings.method = std::string(method);
     Renderer r(shaders, scene, settings);
     r.resize(256, 256);
     r.render(makeCameraView(scene, {}, 1.0f));
@@ -113,8 +121,8 @@ FrameImages renderDefault(ShadowMethod method, std::optional<float> radius = kTe
 }
 
 TEST_F(PenumbraTest, ZeroLightRadiusGivesExactlyTheHardShadows) {
-    const FrameImages hard = renderDefault(ShadowMethod::Hard, 0.0f);
-    const FrameImages soft = renderDefault(ShadowMethod::JfaL, 0.0f);
+    const FrameImages hard = renderDefault("hard", 0.0f);
+    const FrameImages soft = renderDefault("jfa-l", 0.0f);
     EXPECT_EQ(hard.visibility.data, soft.visibility.data);
     EXPECT_NO_THROW(requireFinite(soft.color, "colour"));
 }
@@ -126,7 +134,7 @@ TEST_F(PenumbraTest, SceneWithoutCastersIsLitEverywhere) {
     const ShaderLibrary shaders;
     RenderSettings settings;
     settings.shadow.size = 128;
-    settings.method = ShadowMethod::JfaL;
+    settings.method = "jfa-l";
     Renderer r(shaders, scene, settings);
     r.resize(48, 48);
     r.render(makeCameraView(scene, {}, 1.0f));
@@ -150,8 +158,8 @@ TEST_F(PenumbraTest, PassCountsOutsideTheRangeAreRejected) {
 // JFA-L against its standard-flooding reference on the default view (thesis Fig. 5.4): the
 // parity (penumbra or not) differs at few pixels and most penumbra pixels agree within 0.05.
 TEST_F(PenumbraTest, JfaLIsCloseToStandardFlooding) {
-    const FrameImages jfa = renderDefault(ShadowMethod::JfaL);
-    const FrameImages ref = renderDefault(ShadowMethod::FloodL);
+    const FrameImages jfa = renderDefault("jfa-l");
+    const FrameImages ref = renderDefault("flood-l");
     std::size_t penumbra = 0, parity = 0, close = 0;
     for (std::size_t i = 0; i < jfa.visibility.data.size(); ++i) {
         const float a = jfa.visibility.data[i], b = ref.visibility.data[i];
@@ -174,9 +182,9 @@ TEST_F(PenumbraTest, JfaLIsCloseToStandardFlooding) {
 // Image regression at 256² with a 512² map; tolerances as for the hard-shadow goldens
 // (golden_gltest.cpp): another driver may round shading and flip comparisons at float precision.
 TEST_F(PenumbraTest, Goldens) {
-    for (ShadowMethod m : {ShadowMethod::JfaL, ShadowMethod::FloodL}) {
-        const FrameImages f = renderDefault(m);
-        const std::string name = "default_256_" + std::string(methodName(m));
+    for (const MethodDescriptor* d : floodingMethods(MethodSpace::Light)) { // jfa-l, flood-l
+        const FrameImages f = renderDefault(d->name);
+        const std::string name = "default_256_" + std::string(d->name);
         Tolerance colour;
         colour.maxAbs = 255;
         colour.meanAbs = 1.5;

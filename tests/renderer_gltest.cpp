@@ -5,6 +5,7 @@
 #include "TestScenes.h"
 
 #include <renderer/Capture.h>
+#include <renderer/GltfLoader.h>
 #include <renderer/Renderer.h>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -89,7 +90,12 @@ TEST_F(RendererTest, OutputsAreFiniteAndBackgroundIsLit) {
     EXPECT_EQ(frame.color.height, 48);
     EXPECT_EQ(frame.color.at(0, 0, 3), 0.0f) << "top-left corner should be sky (alpha 0)";
     EXPECT_EQ(frame.visibility.at(0, 0, 0), 1.0f);
-    ASSERT_EQ(renderer.timer().passes().size(), 2u);
+    // The timed passes are the frame's steps for its method (hard: one phase), in frame order.
+    const std::vector<std::string_view> phases = framePhases(renderer.method());
+    ASSERT_EQ(phases.size(), 4u); // shadow map, surfaces, hard shadows, shading
+    ASSERT_EQ(renderer.timer().passes().size(), phases.size());
+    for (std::size_t i = 0; i < phases.size(); ++i)
+        EXPECT_EQ(renderer.timer().passes()[i].name, phases[i]) << i;
     EXPECT_EQ(renderer.timer().passes()[0].name, "shadow map");
     EXPECT_GT(renderer.timer().frameMs(), 0.0);
 }
@@ -134,6 +140,32 @@ TEST_F(RendererTest, ReceiversAreTheVisibleSurfacesFacingTheLight) {
         EXPECT_GT(sky, 0) << "the view must include sky for the test to mean anything";
         EXPECT_GT(ground, 20);
     }
+}
+
+// One geometry pass from the eye per frame (the surfaces pass), whatever the method: every
+// method of the table reads the surfaces instead of drawing the scene again.
+TEST_F(RendererTest, EveryMethodDrawsTheSceneFromTheEyeOnce) {
+    const Scene scene =
+        loadGltf(std::filesystem::path(FLOODLIGHT_SOURCE_DIR) / "assets" / "default.glb");
+    const ShaderLibrary shaders;
+    const CameraView camera = makeCameraView(scene, {}, 1.0f);
+    int methods = 0;
+    for (const MethodDescriptor& m : methodTable()) {
+        RenderSettings settings;
+        settings.shadow.size = 256;
+        settings.method = std::string(m.name);
+        // Cheap ground truth: its light-space maps are not eye draws either way.
+        settings.options.set("--reference-samples", 4);
+        settings.options.set("--reference-map-size", 256);
+        Renderer renderer(shaders, scene, settings);
+        renderer.resize(64, 64);
+        renderer.render(camera);
+        EXPECT_EQ(renderer.eyeGeometryDraws(), 1) << m.name;
+        renderer.render(camera); // and again on the next frame
+        EXPECT_EQ(renderer.eyeGeometryDraws(), 1) << m.name << ", second frame";
+        ++methods;
+    }
+    EXPECT_GE(methods, 8) << "the table lists every method";
 }
 
 TEST_F(RendererTest, ResizeRejectsZeroSize) {

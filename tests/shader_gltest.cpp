@@ -14,8 +14,10 @@ class ShaderTest : public GlTest {};
 
 TEST_F(ShaderTest, EveryEmbeddedProgramCompiles) {
     const ShaderLibrary lib;
-    EXPECT_NO_THROW(gl::Program::build(
-        lib, {{GL_VERTEX_SHADER, "forward.vert.glsl"}, {GL_FRAGMENT_SHADER, "forward.frag.glsl"}}));
+    EXPECT_NO_THROW(gl::Program::build(lib, {{GL_VERTEX_SHADER, "forward.vert.glsl"},
+                                             {GL_FRAGMENT_SHADER, "surfaces.frag.glsl"}}));
+    EXPECT_NO_THROW(gl::Program::build(lib, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
+                                             {GL_FRAGMENT_SHADER, "shading.frag.glsl"}}));
     EXPECT_NO_THROW(gl::Program::build(lib, {{GL_VERTEX_SHADER, "shadow_depth.vert.glsl"},
                                              {GL_FRAGMENT_SHADER, "shadow_depth.frag.glsl"}}));
     EXPECT_NO_THROW(gl::Program::build(lib, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
