@@ -21,6 +21,7 @@ std::unique_ptr<ShadowMethod> makeFloodE(const ShaderLibrary&);
 std::unique_ptr<ShadowMethod> makePcf(const ShaderLibrary&);
 std::unique_ptr<ShadowMethod> makePcss(const ShaderLibrary&);
 std::unique_ptr<ShadowMethod> makeGroundTruth(const ShaderLibrary&);
+std::unique_ptr<ShadowMethod> makeVsm(const ShaderLibrary&);
 
 namespace {
 
@@ -87,12 +88,30 @@ constexpr MethodOption kReferenceMapSize{"--reference-map-size",
                                          16,
                                          8192};
 
+constexpr MethodOption kVsmBlur{"--vsm-blur",
+                                "blur",
+                                OptionKind::Float,
+                                "1",
+                                "Blur radius as a multiple of the disk light's radius at the "
+                                "scene's centre (0 = no blur)",
+                                0.0,
+                                8.0};
+constexpr MethodOption kVsmBleed{"--vsm-bleed",
+                                 "bleed",
+                                 OptionKind::Float,
+                                 "0.3",
+                                 "Light-bleeding reduction: the share of Chebyshev's bound cut "
+                                 "off as shadow",
+                                 0.0,
+                                 0.95};
+
 constexpr const MethodOption* kLightFloodOptions[] = {&kPasses, &kFullJfa};
 constexpr const MethodOption* kEyeFloodOptions[] = {&kPasses, &kFullJfa, &kNoObjectIdFix,
                                                     &kNoMidpointFix, &kBoundaryThreshold};
 constexpr const MethodOption* kPcfOptions[] = {&kPcfKernel};
 constexpr const MethodOption* kPcssOptions[] = {&kPcssPreset};
 constexpr const MethodOption* kGroundTruthOptions[] = {&kReferenceSamples, &kReferenceMapSize};
+constexpr const MethodOption* kVsmOptions[] = {&kVsmBlur, &kVsmBleed};
 
 // --- Timed phases (step 3's parts, as PassTimer names them) ------------------------------------
 
@@ -103,6 +122,7 @@ constexpr std::string_view kEyeFloodPhases[] = {"occluder ids", "eye hard shadow
 constexpr std::string_view kPcfPhases[] = {"pcf filter"};
 constexpr std::string_view kPcssPhases[] = {"blocker search+filter"};
 constexpr std::string_view kGroundTruthPhases[] = {"reference maps", "reference resolve"};
+constexpr std::string_view kVsmPhases[] = {"vsm moments", "vsm blur", "vsm lookup"};
 
 // --- Checks before rendering --------------------------------------------------------------------
 
@@ -151,6 +171,8 @@ const MethodDescriptor kTable[] = {
      kPcfOptions, kPcfPhases, true, false, false, makePcf, nullptr},
     {"pcss", "baseline: percentage-closer soft shadows (Fernando 2005)", "", MethodSpace::Light,
      kPcssOptions, kPcssPhases, true, false, false, makePcss, nullptr},
+    {"vsm", "baseline: variance shadow maps, blur sized from the light radius", "",
+     MethodSpace::Light, kVsmOptions, kVsmPhases, true, false, false, makeVsm, nullptr},
     {"reference", "ground truth: N point-light shadow maps over the disk, averaged", "",
      MethodSpace::Light, kGroundTruthOptions, kGroundTruthPhases, true, false, false,
      makeGroundTruth, nullptr},

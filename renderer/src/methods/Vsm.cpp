@@ -1,0 +1,142 @@
+// vsm: variance shadow maps (Donnelly & Lauritzen 2006; Filament's soft-shadow option). The
+// shadow map's depths become moments (d, d^2) of the light-view depth, a separable box blur
+// sized from the disk light's radius averages them, and each pixel takes Chebyshev's upper
+// bound on its lit fraction, with light-bleeding reduction.
+//
+// Blur size: the penumbra an occluder halfway between the light and the scene's centre casts
+// onto that centre is 2R wide (similar triangles), so the blur's radius is R (scaled by
+// --vsm-blur) in world units at the centre's light depth, converted to map texels there. With
+// TSM the blur runs over warped texels, so its world width varies across the map.
+//
+// The CPU reference of all three steps is in tests/vsm_gltest.cpp.
+
+#include <renderer/methods/ShadowMethod.h>
+
+#include <glm/gtc/matrix_inverse.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace fl {
+
+namespace {
+
+class Vsm final : public ShadowMethod {
+  public:
+    explicit Vsm(const ShaderLibrary& shaders)
+        : moments_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
+                                                {GL_FRAGMENT_SHADER, "vsm_moments.frag.glsl"}})),
+          blur_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
+                                             {GL_FRAGMENT_SHADER, "vsm_blur.frag.glsl"}})),
+          lookup_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
+                                               {GL_FRAGMENT_SHADER, "vsm_lookup.frag.glsl"}})),
+          emptyVao_(gl::VertexArray::create()) {
+        GLuint id = 0;
+        glCreateSamplers(1, &id);
+        rawDepth_ = gl::Handle<gl::detail::SamplerDeleter>(id);
+        glSamplerParameteri(id, GL_TEXTURE_COMPARE_MODE, GL_NONE); // read depths, not tests
+        glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    }
+
+    void resize(int width, int height) override {
+        if (visibility_ && visibility_.width() == width && visibility_.height() == height) return;
+        visibility_ = gl::Texture(GL_R32F, width, height);
+        visibilityFbo_ = gl::Framebuffer::forColor(visibility_, "vsm visibility");
+    }
+
+    const gl::Texture& execute(const FrameInputs& in) override {
+        resize(in.width(), in.height());
+        const int size = in.shadow.depth.width();
+        resizeMaps(size);
+        glDisable(GL_DEPTH_TEST);
+
+        // 1. Moments of the light-view depth per map texel.
+        if (in.timer) in.timer->begin("vsm moments");
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo_[0].id());
+        glViewport(0, 0, size, size);
+        moments_.set("uInvLightProj", glm::inverse(in.lightVolume.proj));
+        glBindTextureUnit(0, in.shadow.depth.id());
+        glBindSampler(0, rawDepth_.id());
+        gl::drawFullscreenTriangle(moments_, emptyVao_);
+        glBindSampler(0, 0);
+        if (in.timer) in.timer->end();
+
+        // 2. Separable box blur: map 0 -> 1 horizontally, 1 -> 0 vertically.
+        if (in.timer) in.timer->begin("vsm blur");
+        const int radius = blurRadius(in);
+        if (radius > 0) {
+            blur_.set("uRadius", radius);
+            for (int pass = 0; pass < 2; ++pass) {
+                glBindFramebuffer(GL_FRAMEBUFFER, fbo_[1 - pass].id());
+                blur_.set("uDirection", pass == 0 ? glm::ivec2(1, 0) : glm::ivec2(0, 1));
+                glBindTextureUnit(0, maps_[pass].id());
+                gl::drawFullscreenTriangle(blur_, emptyVao_);
+            }
+        }
+        glBindTextureUnit(0, 0);
+        if (in.timer) in.timer->end();
+
+        // 3. Chebyshev's bound per pixel of the frame's surfaces.
+        if (in.timer) in.timer->begin("vsm lookup");
+        glBindFramebuffer(GL_FRAMEBUFFER, visibilityFbo_.id());
+        glViewport(0, 0, in.width(), in.height());
+        bindShadowMap(lookup_, in.shadow);
+        lookup_.set("uLightView", in.lightVolume.view);
+        lookup_.set("uBleed", in.real("bleed"));
+        lookup_.set("uMinVariance", kMinVariance);
+        glBindTextureUnit(0, in.surfaces.position.id());
+        glBindTextureUnit(2, maps_[0].id());
+        gl::drawFullscreenTriangle(lookup_, emptyVao_);
+        for (GLuint unit : {0u, 1u, 2u}) glBindTextureUnit(unit, 0);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        if (in.timer) in.timer->end();
+        return visibility_;
+    }
+
+  private:
+    // Variance floor, relative to the receiver's depth: keeps a receiver from shadowing itself
+    // where the blur mixes depths of its own sloped surface (VSM's "minimum variance").
+    static constexpr float kMinVariance = 2e-3f;
+
+    void resizeMaps(int size) {
+        if (maps_[0] && maps_[0].width() == size) return;
+        for (int i = 0; i < 2; ++i) {
+            maps_[i] = gl::Texture(GL_RG32F, size, size);
+            maps_[i].setSampling(GL_LINEAR, GL_LINEAR); // bilinear moments, edges clamped
+            fbo_[i] = gl::Framebuffer::forColor(maps_[i], "vsm moments");
+        }
+    }
+
+    // The blur radius in map texels (see the top of the file); 0 = no blur.
+    static int blurRadius(const FrameInputs& in) {
+        const float scale = in.real("blur");
+        const glm::mat4& proj = in.lightVolume.proj;
+        const float centreDepth =
+            std::max(-(in.lightVolume.view * glm::vec4(in.sceneBounds.center(), 1.0f)).z, 1e-6f);
+        // World width the map covers at the centre's depth: 2 d / P00 (perspective), 2 / P00
+        // (orthographic, where P33 = 1).
+        const bool ortho = proj[3][3] == 1.0f;
+        const float mapWidth = (ortho ? 2.0f : 2.0f * centreDepth) / std::max(proj[0][0], 1e-9f);
+        const float texels =
+            scale * in.disk.radius / mapWidth * static_cast<float>(in.shadow.depth.width());
+        return std::clamp(static_cast<int>(std::lround(texels)), 0, kMaxBlurRadius);
+    }
+    static constexpr int kMaxBlurRadius = 64; // 129 taps per direction
+
+    gl::Program moments_, blur_, lookup_;
+    gl::VertexArray emptyVao_;
+    gl::Handle<gl::detail::SamplerDeleter> rawDepth_;
+    gl::Texture maps_[2];
+    gl::Framebuffer fbo_[2];
+    gl::Texture visibility_;
+    gl::Framebuffer visibilityFbo_;
+};
+
+} // namespace
+
+std::unique_ptr<ShadowMethod> makeVsm(const ShaderLibrary& shaders) {
+    return std::make_unique<Vsm>(shaders);
+}
+
+} // namespace fl

@@ -1,0 +1,32 @@
+#version 450 core
+// VSM step 3 (Donnelly & Lauritzen 2006): per pixel of the frame's surfaces, Chebyshev's upper
+// bound on the lit fraction from the blurred moments at its texel, with light-bleeding reduction
+// (Lauritzen 2007: the bound's tail below uBleed is cut and the rest rescaled).
+#include "shadow_lookup.glsl"
+
+layout(binding = 0) uniform sampler2D uPosition; // SurfacesPass: world xyz, w = 0 background
+layout(binding = 2) uniform sampler2D uMoments;  // blurred (d, d^2), bilinear
+uniform mat4 uLightView;
+uniform float uBleed;
+uniform float uMinVariance; // relative: variance floor (uMinVariance * d)^2
+
+layout(location = 0) out float oVisibility;
+
+float chebyshev(vec2 m, float t) {
+    if (t <= m.x) return 1.0;
+    float variance = max(m.y - m.x * m.x, (uMinVariance * t) * (uMinVariance * t));
+    float d = t - m.x;
+    float p = variance / (variance + d * d);
+    return clamp((p - uBleed) / (1.0 - uBleed), 0.0, 1.0);
+}
+
+void main() {
+    vec4 world = texelFetch(uPosition, ivec2(gl_FragCoord.xy), 0);
+    vec3 uvz;
+    if (world.w == 0.0 || !shadowCoord(world.xyz, uvz)) {
+        oVisibility = 1.0;
+        return;
+    }
+    float t = -(uLightView * vec4(world.xyz, 1.0)).z;
+    oVisibility = chebyshev(texture(uMoments, uvz.xy).rg, t);
+}
