@@ -6,6 +6,9 @@
 
 layout(binding = 3) uniform sampler2D uPosition; // SurfacesPass: world xyz, w = 0 background
 layout(binding = 4) uniform sampler2D uNormal;   // SurfacesPass: shading normal facing the eye
+layout(binding = 5) uniform sampler2D uPlane;    // SurfacesPass: the triangle's normal
+uniform mat4 uInvViewProj;
+uniform vec2 uViewportSize;
 
 layout(location = 0) out vec4 oDiagnostics;
 
@@ -16,16 +19,33 @@ uniform int uHasPrevious;
 uniform float uShadowMapSize;
 uniform mat4 uView;
 
+// Where the camera ray through window point `xy` meets the plane through p0 with normal n.
+vec3 onPlane(vec2 xy, vec3 p0, vec3 n) {
+    vec2 ndc = xy / uViewportSize * 2.0 - 1.0;
+    vec4 a = uInvViewProj * vec4(ndc, -1.0, 1.0);
+    vec4 b = uInvViewProj * vec4(ndc, 1.0, 1.0);
+    vec3 from = a.xyz / a.w, dir = b.xyz / b.w - from;
+    return from + dir * (dot(n, p0 - from) / dot(n, dir));
+}
+
+vec2 texelOf(vec3 world) {
+    vec4 map = uShadowWarp * uLightViewProj * vec4(world, 1.0);
+    return map.xy / map.w * (0.5 * uShadowMapSize);
+}
+
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec4 surface = texelFetch(uPosition, pixel, 0);
     vec3 vWorld = surface.xyz;
-    // Texel coordinates up to a constant offset, computed in uniform control flow so the
-    // derivatives are defined (between neighbouring pixels' surface points: within a surface the
-    // same as the rasteriser's); the guard on w only keeps helper values finite.
-    vec4 map = uShadowWarp * uLightViewProj * vec4(vWorld, 1.0);
-    vec2 texel = map.xy / max(map.w, 1e-30) * (0.5 * uShadowMapSize);
-    vec2 dx = dFdxFine(texel), dy = dFdyFine(texel);
+    // The Jacobian screen pixel -> shadow texel by central differences of half a pixel on the
+    // pixel's own surface plane (not between neighbouring pixels, which at a silhouette belong
+    // to different surfaces). Edge-on planes give inf/NaN, caught below.
+    vec3 n0 = texelFetch(uPlane, pixel, 0).xyz;
+    vec2 c = gl_FragCoord.xy;
+    vec2 dx = texelOf(onPlane(c + vec2(0.5, 0.0), vWorld, n0)) -
+              texelOf(onPlane(c - vec2(0.5, 0.0), vWorld, n0));
+    vec2 dy = texelOf(onPlane(c + vec2(0.0, 0.5), vWorld, n0)) -
+              texelOf(onPlane(c - vec2(0.0, 0.5), vWorld, n0));
     float det = abs(dx.x * dy.y - dx.y * dy.x); // shadow texels per screen pixel, as an area
 
     vec3 uvz;

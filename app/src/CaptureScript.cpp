@@ -135,7 +135,7 @@ MethodSpec parseMethodEntry(const Json& j, const std::string& field) {
     m.method = std::string(d->name);
     std::string suffix;
     for (const auto& [key, value] : given) {
-        const std::string f = j.is_object() ? field + "." + key : field;
+        const std::string f = field + "." + key;
         const MethodOption* o = d->option(key);
         if (!o) {
             // Another method's option, or no option at all: say which.
@@ -251,9 +251,10 @@ CaptureScript parseCaptureScript(const std::string& text, const std::filesystem:
             for (const auto& [w, h] : s.resolutions) try {
                     d.check(o, d, s.shadowMapSize, w, h);
                 } catch (const std::invalid_argument& e) {
-                    fail(m.options.has(floodPassesOption().flag)
-                             ? "methods (" + m.label + ").passes"
-                             : std::string("jfaPasses"),
+                    fail((m.options.has(floodPassesOption().flag)
+                              ? "methods (" + m.label + ").passes"
+                              : std::string("jfaPasses")) +
+                             " at " + std::to_string(w) + "x" + std::to_string(h),
                          e.what());
                 }
         }

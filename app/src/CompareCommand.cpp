@@ -39,7 +39,7 @@ std::string referenceOf(const std::string& method) {
         std::string valid;
         for (const MethodDescriptor& d : methodTable())
             if (!d.reference.empty()) valid += (valid.empty() ? "" : ", ") + std::string(d.name);
-        throw UsageError("--method " + method + ": no standard-flooding reference for it (" +
+        throw InputError("--method " + method + ": no standard-flooding reference for it (" +
                          valid + " have one)");
     }
     return std::string(m.reference);

@@ -38,8 +38,11 @@ ShadowDiagnosticsPass::Outputs ShadowDiagnosticsPass::execute(const Inputs& in) 
     glBindTextureUnit(2, previousMap_.id());
     glBindTextureUnit(3, in.surfaces.position.id());
     glBindTextureUnit(4, in.surfaces.normal.id());
+    glBindTextureUnit(5, in.surfaces.plane.id());
+    program_.set("uInvViewProj", glm::inverse(in.camera.proj * in.camera.view));
+    program_.set("uViewportSize", glm::vec2(output_.width(), output_.height()));
     gl::drawFullscreenTriangle(program_, emptyVao_);
-    for (GLuint unit : {1u, 2u, 3u, 4u}) glBindTextureUnit(unit, 0);
+    for (GLuint unit : {1u, 2u, 3u, 4u, 5u}) glBindTextureUnit(unit, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 
     glCopyImageSubData(in.shadow.depth.id(), GL_TEXTURE_2D, 0, 0, 0, 0, previousMap_.id(),
