@@ -71,7 +71,7 @@ int main(int argc, char** argv) {
         const jfa::NearestSite crit{true};
         std::map<std::string, double> median;
         for (jfa::GlKernelKind kind : {jfa::GlKernelKind::Fragment, jfa::GlKernelKind::Compute}) {
-            jfa::GlFloodKernel kernel(shaders, jfa::NearestSite::glslFile, kind);
+            jfa::GlFloodKernel<jfa::NearestSite> kernel(shaders, kind);
             const std::string k = jfa::kernelName(kind);
             for (int sites : {100, 10000}) {
                 const jfa::Grid seeds =
@@ -99,7 +99,7 @@ int main(int argc, char** argv) {
         }
         // Until unchanged: standard flooding run to completion (it stops when nothing changes).
         for (jfa::GlKernelKind kind : {jfa::GlKernelKind::Fragment}) {
-            jfa::GlFloodKernel kernel(shaders, jfa::NearestSite::glslFile, kind);
+            jfa::GlFloodKernel<jfa::NearestSite> kernel(shaders, kind);
             for (int sites : {100, 1000}) {
                 const jfa::Grid seeds =
                     jfa::seedPoints(jfa::randomIntegerSites(sites, size, size, 1), size, size, true)
@@ -117,8 +117,7 @@ int main(int argc, char** argv) {
         // Size sweep: the whole JFA plan on the GL fragment kernel and the CPU kernel (2 threads),
         // and JFA's defining property, cost independent of the number of sites.
         std::cout << "JFA plan time by grid size (GL fragment kernel; CPU kernel, all threads):\n";
-        jfa::GlFloodKernel fragment(shaders, jfa::NearestSite::glslFile,
-                                    jfa::GlKernelKind::Fragment);
+        jfa::GlFloodKernel<jfa::NearestSite> fragment(shaders, jfa::GlKernelKind::Fragment);
         for (int n : scaling) {
             const jfa::Plan plan = jfa::parsePlan("jfa", n, n);
             for (int sites : {100, 10000}) {

@@ -5,6 +5,7 @@
 
 #include <jfa/CpuKernel.h>
 #include <jfa/GlKernel.h>
+#include <jfa/NearestSite.h>
 #include <jfa/Sites.h>
 
 #include <cstdint>
@@ -13,6 +14,20 @@ namespace fl::jfa {
 namespace {
 
 class JfaGlKernelTest : public test::GlTest, public ::testing::WithParamInterface<GlKernelKind> {};
+
+// A kernel runs only the criterion whose GLSL it was built with: any other does not compile.
+struct OtherCriterion {
+    static constexpr const char* glslFile = "other_criterion.glsl";
+    [[nodiscard]] bool empty(const Cell& c) const { return c.z < 0.0f; }
+    [[nodiscard]] bool better(int, int, const Cell& a, const Cell& b) const { return a.z < b.z; }
+};
+template <class Kernel, class C>
+concept RunsWith = requires(Kernel& k, const Plan& p, const Grid& g, const C& c) {
+    k.run(p, g, c);
+};
+static_assert(RunsWith<GlFloodKernel<NearestSite>, NearestSite>);
+static_assert(!RunsWith<GlFloodKernel<NearestSite>, OtherCriterion>);
+static_assert(!RunsWith<GlFloodKernel<OtherCriterion>, NearestSite>);
 
 // Deterministic sites without depending on the CPU side's generators.
 Grid randomSeeds(int w, int h, int count, std::uint64_t seed, bool integer) {
@@ -39,7 +54,7 @@ Grid randomSeeds(int w, int h, int count, std::uint64_t seed, bool integer) {
 
 TEST_P(JfaGlKernelTest, OneSeedFillsAnyGrid) {
     const ShaderLibrary shaders;
-    GlFloodKernel kernel(shaders, NearestSite::glslFile, GetParam());
+    GlFloodKernel<NearestSite> kernel(shaders, GetParam());
     for (auto [w, h] : {std::pair{1, 1}, {2, 1}, {7, 3}, {64, 64}, {300, 200}, {513, 7}}) {
         for (const char* spec : {"jfa", "1+jfa", "half:jfa", "doubling"}) {
             Grid seeds(w, h);
@@ -54,10 +69,10 @@ TEST_P(JfaGlKernelTest, OneSeedFillsAnyGrid) {
 
 TEST_P(JfaGlKernelTest, FragmentAndComputeAgree) {
     const ShaderLibrary shaders;
-    GlFloodKernel kernel(shaders, NearestSite::glslFile, GetParam());
+    GlFloodKernel<NearestSite> kernel(shaders, GetParam());
     const GlKernelKind other =
         GetParam() == GlKernelKind::Fragment ? GlKernelKind::Compute : GlKernelKind::Fragment;
-    GlFloodKernel reference(shaders, NearestSite::glslFile, other);
+    GlFloodKernel<NearestSite> reference(shaders, other);
     for (bool integer : {true, false}) {
         const Grid seeds = randomSeeds(200, 150, 60, 7, integer);
         for (const char* spec : {"jfa", "jfa+2", "1+jfa", "half:jfa+2", "flood", "flood:20"}) {
@@ -73,7 +88,7 @@ TEST_P(JfaGlKernelTest, FragmentAndComputeAgree) {
 // equals the CPU reference kernel's in every texel (all four floats), for every variant.
 TEST_P(JfaGlKernelTest, EqualsCpuKernelTexelForTexel) {
     const ShaderLibrary shaders;
-    GlFloodKernel kernel(shaders, NearestSite::glslFile, GetParam());
+    GlFloodKernel<NearestSite> kernel(shaders, GetParam());
     const char* specs[] = {"jfa",      "jfa+1",    "jfa+2", "jfa2",     "1+jfa",      "1+jfa+1",
                            "doubling", "flood:12", "flood", "half:jfa", "half:jfa+2", "half:1+jfa"};
     for (auto [w, h, sites] : {std::tuple{128, 128, 40}, {200, 150, 300}, {97, 61, 25}}) {
@@ -99,7 +114,7 @@ TEST_P(JfaGlKernelTest, EqualsCpuKernelTexelForTexel) {
 
 TEST_P(JfaGlKernelTest, UntilUnchangedStopsWhenTheCpuKernelDoes) {
     const ShaderLibrary shaders;
-    GlFloodKernel kernel(shaders, NearestSite::glslFile, GetParam());
+    GlFloodKernel<NearestSite> kernel(shaders, GetParam());
     const Grid seeds = seedPoints(randomIntegerSites(30, 90, 70, 3), 90, 70, true).grid;
     const Plan plan = parsePlan("flood", 90, 70);
     const FloodResult cpu = floodWithStats(plan, seeds, NearestSite{});

@@ -138,7 +138,7 @@ struct Run {
 };
 
 Run flood(const jfa::Plan& plan, const jfa::Grid& seeds, const jfa::NearestSite& crit,
-          jfa::GlFloodKernel* gl) {
+          jfa::GlFloodKernel<jfa::NearestSite>* gl) {
     Run r;
     if (gl) {
         const gl::Texture in = jfa::uploadGrid(seeds);
@@ -230,12 +230,12 @@ int runVoronoi(const VoronoiOptions& o) {
     const jfa::ExactDiagramView view{w, h, siteList, exact.distSq, in.integer};
 
     std::unique_ptr<ShaderLibrary> shaders;
-    std::unique_ptr<jfa::GlFloodKernel> kernel;
+    std::unique_ptr<jfa::GlFloodKernel<jfa::NearestSite>> kernel;
     if (o.backend == "gl") {
         shaders = std::make_unique<ShaderLibrary>(o.shaderDir.empty() ? ShaderLibrary()
                                                                       : ShaderLibrary(o.shaderDir));
-        kernel = std::make_unique<jfa::GlFloodKernel>(
-            *shaders, jfa::NearestSite::glslFile,
+        kernel = std::make_unique<jfa::GlFloodKernel<jfa::NearestSite>>(
+            *shaders,
             o.kernel == "compute" ? jfa::GlKernelKind::Compute : jfa::GlKernelKind::Fragment);
     }
     const std::string backend = o.backend == "gl" ? "GL " + o.kernel : std::string("CPU");

@@ -4,6 +4,7 @@
 #include "DelaunayMesh.h"
 
 #include "TriangulationFlip.h"
+#include "TriangulationWalk.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -101,37 +102,19 @@ Location WorkMesh::locate(dvec2 q, std::uint32_t start) {
     std::uint32_t t = start;
     if (3 * t >= triangles.size() || triangles[3 * t] == kFreeSlot) t = lastTriangle_;
     // A walk longer than a scan of everything is not worth continuing.
-    const std::size_t stepLimit = 1024 + liveTriangles();
-    for (std::size_t step = 0; step < stepLimit; ++step) {
-        ++walkSteps;
-        random_ ^= random_ << 13;
-        random_ ^= random_ >> 17;
-        random_ ^= random_ << 5;
-        const std::uint32_t first = random_ % 3;
-        std::uint32_t onEdge = kNoHalfedge;
-        int zeros = 0;
-        bool moved = false;
-        for (std::uint32_t k = 0; k < 3 && !moved; ++k) {
-            const std::uint32_t e = 3 * t + (first + k) % 3;
-            const int s = orient(triangles[e], triangles[nextHalfedge(e)], q);
-            if (s < 0) {
-                if (halfedges[e] == kNoHalfedge) return {Location::Kind::Outside, e};
-                t = halfedges[e] / 3;
-                moved = true;
-            } else if (s == 0) {
-                ++zeros;
-                onEdge = e;
-            }
-        }
-        if (moved) continue;
-        lastTriangle_ = t;
-        if (zeros == 0) return {Location::Kind::Inside, t};
-        if (zeros == 1) return {Location::Kind::OnEdge, onEdge};
-        for (std::uint32_t e = 3 * t; e < 3 * t + 3; ++e)
-            if (points[triangles[e]] == q) return {Location::Kind::OnVertex, triangles[e]};
-        throw std::logic_error("delaunay: point location found a degenerate triangle");
-    }
-    return scanLocate(q);
+    const WalkEnd end = visibilityWalk(
+        triangles, halfedges, t, q, 1024 + liveTriangles(), random_,
+        [this](std::uint32_t a, std::uint32_t b, dvec2 p) { return orient(a, b, p); });
+    walkSteps += end.steps;
+    using Kind = WalkEnd::Kind;
+    if (end.kind == Kind::TooLong) return scanLocate(q);
+    if (end.kind == Kind::Outside) return {Location::Kind::Outside, end.edge};
+    lastTriangle_ = end.triangle;
+    if (end.kind == Kind::Inside) return {Location::Kind::Inside, end.triangle};
+    if (end.kind == Kind::OnEdge) return {Location::Kind::OnEdge, end.edge};
+    for (std::uint32_t e = 3 * end.triangle; e < 3 * end.triangle + 3; ++e)
+        if (points[triangles[e]] == q) return {Location::Kind::OnVertex, triangles[e]};
+    throw std::logic_error("delaunay: point location found a degenerate triangle");
 }
 
 // Exhaustive location: the safety net behind the walk (never reached in the tests).
@@ -201,10 +184,10 @@ void WorkMesh::insertInside(std::uint32_t t, std::uint32_t v) {
     lastTriangle_ = t;
 }
 
-// v strictly inside the edge e = p -> q: triangle (p, q, a) becomes (p, v, a), (v, q, a), and
-// the triangle across, (q, p, b), becomes (q, v, b), (v, p, b); on the hull v joins it.
-void WorkMesh::insertOnEdge(std::uint32_t e, std::uint32_t v) {
-    const std::uint32_t o = halfedges[e];
+// One side of an edge split: the triangle of e = p -> q, (p, q, a), keeps its slot as (p, v, a)
+// and (v, q, a) is added; returns the new triangle's halfedge v -> q. e and that halfedge are
+// left for the caller to link (to the other side's halves, or to nothing on the hull).
+std::uint32_t WorkMesh::splitAtEdge(std::uint32_t e, std::uint32_t v) {
     const std::uint32_t eNext = nextHalfedge(e), ePrev = prevHalfedge(e);
     const std::uint32_t q = triangles[eNext], a = triangles[ePrev];
     const std::uint32_t outerQa = halfedges[eNext];
@@ -214,21 +197,21 @@ void WorkMesh::insertOnEdge(std::uint32_t e, std::uint32_t v) {
     link(eNext, s + 2);
     touch(e / 3);
     pending_.insert(pending_.end(), {ePrev, s + 1});
+    return s;
+}
+
+// v strictly inside the edge e = p -> q: triangle (p, q, a) becomes (p, v, a), (v, q, a), and
+// the triangle across, (q, p, b), becomes (q, v, b), (v, p, b); on the hull v joins it.
+void WorkMesh::insertOnEdge(std::uint32_t e, std::uint32_t v) {
+    const std::uint32_t o = halfedges[e];
+    const std::uint32_t s = splitAtEdge(e, v);
     if (o == kNoHalfedge) {
         link(e, kNoHalfedge);
         link(s, kNoHalfedge);
     } else {
-        const std::uint32_t oNext = nextHalfedge(o), oPrev = prevHalfedge(o);
-        const std::uint32_t p = triangles[e], b = triangles[oPrev];
-        const std::uint32_t outerPb = halfedges[oNext];
-        triangles[oNext] = v;
-        const std::uint32_t r = addTriangle(v, p, b);
-        link(r + 1, outerPb);
-        link(oNext, r + 2);
+        const std::uint32_t r = splitAtEdge(o, v);
         link(e, r);
         link(o, s);
-        touch(o / 3);
-        pending_.insert(pending_.end(), {oPrev, r + 1});
     }
     lastTriangle_ = e / 3;
 }
@@ -276,16 +259,8 @@ void WorkMesh::restoreDelaunay() {
     }
 }
 
-// detail::shouldFlip with the inline predicates: the apex across strictly inside the circle,
-// and both new triangles strictly counterclockwise (always so in a triangulation; kept so that a
-// broken mesh is not folded further).
 bool WorkMesh::needsFlip(std::uint32_t e) const {
-    const std::uint32_t o = halfedges[e];
-    if (o == kNoHalfedge) return false;
-    const dvec2 p0 = points[triangles[e]], p1 = points[triangles[nextHalfedge(e)]];
-    const dvec2 a = points[triangles[prevHalfedge(e)]], b = points[triangles[prevHalfedge(o)]];
-    return fastIncircleSign(p0, p1, a, b) > 0 && fastOrientSign(p0, b, a) > 0 &&
-           fastOrientSign(p1, a, b) > 0;
+    return halfedges[e] != kNoHalfedge && shouldFlip(points, triangles, halfedges, e);
 }
 
 std::size_t WorkMesh::makeDelaunay() {

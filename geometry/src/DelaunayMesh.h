@@ -122,9 +122,10 @@ class WorkMesh {
     void touch(std::uint32_t t); // vertexEdge of t's three vertices := their halfedges in t
     void insertInside(std::uint32_t t, std::uint32_t v);
     void insertOnEdge(std::uint32_t e, std::uint32_t v);
+    std::uint32_t splitAtEdge(std::uint32_t e, std::uint32_t v);
     void insertOutside(std::uint32_t e, std::uint32_t v);
     void restoreDelaunay();
-    bool needsFlip(std::uint32_t e) const;
+    bool needsFlip(std::uint32_t e) const; // has an opposite and shouldFlip()
     void removeInterior(std::uint32_t v, glm::dvec2 pv);
     bool removeOnHull(std::uint32_t v);
     Location scanLocate(glm::dvec2 q) const;

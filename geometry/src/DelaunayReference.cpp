@@ -7,6 +7,7 @@
 #include <geometry/Triangulation.h>
 
 #include "TriangulationFlip.h"
+#include "TriangulationWalk.h"
 
 #include <algorithm>
 #include <cmath>
@@ -122,38 +123,24 @@ void Builder::seed(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
     }
 }
 
-// Visibility walk: step into the neighbour across any edge that has x strictly on its far side.
-// In a Delaunay triangulation this cannot cycle; starting each test at a pseudo-random edge
-// makes that hold for any triangulation (with probability 1), and the step limit turns a bug into
-// an exception instead of a hang.
+// Visibility walk (TriangulationWalk.h): every insertion leaves a Delaunay triangulation, so it
+// terminates; the step limit turns a bug into an exception instead of a hang.
 Builder::Location Builder::locate(dvec2 x) {
-    std::uint32_t t = lastTriangle_;
-    const std::size_t stepLimit = 4 * triangles.size() + 16;
-    for (std::size_t step = 0; step < stepLimit; ++step) {
-        random_ ^= random_ << 13;
-        random_ ^= random_ >> 17;
-        random_ ^= random_ << 5;
-        const std::uint32_t first = random_ % 3;
-        std::uint32_t onEdge = kNoHalfedge;
-        int zeros = 0;
-        bool moved = false;
-        for (std::uint32_t k = 0; k < 3 && !moved; ++k) {
-            const std::uint32_t e = 3 * t + (first + k) % 3;
-            const int s = orient(triangles[e], triangles[nextHalfedge(e)], x);
-            if (s < 0) {
-                if (halfedges[e] == kNoHalfedge) return {Where::Outside, e};
-                t = halfedges[e] / 3;
-                moved = true;
-            } else if (s == 0) {
-                ++zeros;
-                onEdge = e;
-            }
-        }
-        if (moved) continue;
-        if (zeros == 0) return {Where::Inside, t};
-        if (zeros == 1) return {Where::OnEdge, onEdge};
+    const detail::WalkEnd end = detail::visibilityWalk(
+        triangles, halfedges, lastTriangle_, x, 4 * triangles.size() + 16, random_,
+        [this](std::uint32_t i, std::uint32_t j, dvec2 p) { return orient(i, j, p); });
+    switch (end.kind) {
+    case detail::WalkEnd::Kind::Inside:
+        return {Where::Inside, end.triangle};
+    case detail::WalkEnd::Kind::OnEdge:
+        return {Where::OnEdge, end.edge};
+    case detail::WalkEnd::Kind::Outside:
+        return {Where::Outside, end.edge};
+    case detail::WalkEnd::Kind::OnCorner:
         throw std::logic_error(
             "delaunayReference: a point coincides with a vertex after deduplication");
+    case detail::WalkEnd::Kind::TooLong:
+        break;
     }
     throw std::logic_error("delaunayReference: point location did not terminate");
 }

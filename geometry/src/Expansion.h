@@ -87,24 +87,26 @@ struct Expansion {
     }
 };
 
-/// The exact difference a - b of two doubles as an expansion.
-inline Expansion<2> difference(double a, double b) {
-    double x, y;
-    twoDiff(a, b, x, y);
+/// The two-component expansion of a Two-Diff or Two-Product result: y below x, zeros dropped.
+inline Expansion<2> twoComponents(double x, double y) {
     Expansion<2> e;
     e.push(y);
     e.push(x);
     return e;
 }
 
+/// The exact difference a - b of two doubles as an expansion.
+inline Expansion<2> difference(double a, double b) {
+    double x, y;
+    twoDiff(a, b, x, y);
+    return twoComponents(x, y);
+}
+
 /// The exact product a * b of two doubles as an expansion.
 inline Expansion<2> product(double a, double b) {
     double x, y;
     twoProduct(a, b, x, y);
-    Expansion<2> e;
-    e.push(y);
-    e.push(x);
-    return e;
+    return twoComponents(x, y);
 }
 
 /// Writes e + f into h (room for en + fn) and returns its length: Shewchuk's

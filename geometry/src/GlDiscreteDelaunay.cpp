@@ -57,6 +57,16 @@ void readTexture(const gl::Texture& texture, GLenum format, GLenum type, std::ve
     glPixelStorei(GL_PACK_ALIGNMENT, alignment);
 }
 
+// A one-channel integer texture read back into a grid struct (width, height, texels).
+template <class GridT, typename T>
+GridT readGrid(const gl::Texture& texture, GLenum type, std::vector<T> GridT::*texels) {
+    GridT grid;
+    grid.width = texture.width();
+    grid.height = texture.height();
+    readTexture(texture, GL_RED_INTEGER, type, grid.*texels);
+    return grid;
+}
+
 } // namespace
 
 namespace gl_stages {
@@ -67,29 +77,19 @@ void uploadIds(const gl::Texture& texture, const IdTexture& ids) {
 }
 
 IdTexture readIds(const gl::Texture& texture) {
-    IdTexture ids;
-    ids.width = texture.width();
-    ids.height = texture.height();
-    readTexture(texture, GL_RED_INTEGER, GL_UNSIGNED_INT, ids.ids);
-    return ids;
+    return readGrid<IdTexture>(texture, GL_UNSIGNED_INT, &IdTexture::ids);
 }
 
 CornerTexture readCorners(const gl::Texture& texture, const CornerCounts& counts) {
     static_assert(sizeof(CornerCase) == 1, "CornerCase is read back as r8ui bytes");
-    CornerTexture corners;
-    corners.width = texture.width();
-    corners.height = texture.height();
-    readTexture(texture, GL_RED_INTEGER, GL_UNSIGNED_BYTE, corners.cases);
+    CornerTexture corners =
+        readGrid<CornerTexture>(texture, GL_UNSIGNED_BYTE, &CornerTexture::cases);
     corners.counts = counts;
     return corners;
 }
 
 VertexChain readChain(const gl::Texture& texture) {
-    VertexChain chain;
-    chain.width = texture.width();
-    chain.height = texture.height();
-    readTexture(texture, GL_RED_INTEGER, GL_INT, chain.next);
-    return chain;
+    return readGrid<VertexChain>(texture, GL_INT, &VertexChain::next);
 }
 
 } // namespace gl_stages

@@ -60,7 +60,7 @@ struct GlDiscreteDelaunay::Impl {
 
     gl::Program sitesProgram, idsProgram, islandsProgram, cornersProgram, chainProgram,
         trianglesProgram;
-    jfa::GlFloodKernel floodKernel;
+    jfa::GlFloodKernel<jfa::NearestSite> floodKernel;
 
     int width = 0;
     int height = 0;

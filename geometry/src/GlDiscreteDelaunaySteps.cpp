@@ -93,8 +93,7 @@ GlDiscreteDelaunay::Impl::Impl(const ShaderLibrary& shaders, jfa::GlKernelKind f
       cornersProgram(buildStep(shaders, "delaunay_corners.comp.glsl")),
       chainProgram(buildStep(shaders, "delaunay_chain.comp.glsl")),
       trianglesProgram(buildStep(shaders, "delaunay_triangles.comp.glsl")),
-      floodKernel(shaders, jfa::NearestSite::glslFile, flood),
-      changed(sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT),
+      floodKernel(shaders, flood), changed(sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT),
       cornerCounts(GLsizeiptr(kCornerCaseCount * sizeof(GLuint)), nullptr, GL_DYNAMIC_STORAGE_BIT),
       meshCounters(6 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT) {
     gl::throwIfErrors("GL discrete Delaunay setup");

@@ -2,6 +2,8 @@
 
 #include "PointIODetail.h"
 
+#include <base/Text.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -19,33 +21,6 @@ void requireFinite(glm::dvec2 p, const char* what) {
 
 void requireFinite(const std::vector<glm::dvec2>& points, const char* what) {
     for (const glm::dvec2& p : points) requireFinite(p, what);
-}
-
-// Attribute values come from callers (ids, colours): keep the document well-formed.
-std::string escape(std::string_view s) {
-    std::string out;
-    for (const char c : s) {
-        switch (c) {
-        case '&':
-            out += "&amp;";
-            break;
-        case '<':
-            out += "&lt;";
-            break;
-        case '>':
-            out += "&gt;";
-            break;
-        case '"':
-            out += "&quot;";
-            break;
-        case '\'':
-            out += "&apos;";
-            break;
-        default:
-            out += c;
-        }
-    }
-    return out;
 }
 
 struct Bounds {
@@ -78,7 +53,7 @@ class Writer {
         out += ' ';
         out += name;
         out += "=\"";
-        out += escape(colour);
+        out += fl::xmlEscape(colour); // callers' values: keep the document well-formed
         out += '"';
     }
     void point(glm::dvec2 p) {
@@ -363,7 +338,7 @@ std::string SvgPicture::render() const {
 
     for (const SvgLayer& layer : layers_) {
         const SvgStyle& st = layer.style();
-        w.out += "<g id=\"" + escape(layer.id()) + "\"";
+        w.out += "<g id=\"" + fl::xmlEscape(layer.id()) + "\"";
         w.colourAttr("fill", st.fill);
         w.colourAttr("stroke", st.stroke);
         w.out += " stroke-width=\"";

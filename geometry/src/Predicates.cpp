@@ -1,6 +1,7 @@
 #include <geometry/Predicates.h>
 
 #include "BigInteger.h"
+#include "DelaunayPredicates.h"
 #include "Expansion.h"
 
 #include <bit>
@@ -18,29 +19,17 @@ using detail::BigInteger;
 using detail::Expansion;
 using glm::dvec2;
 
-// Filter bounds (Shewchuk 1997, section 4.3): with round-to-nearest and no underflow or
-// overflow, |computed det - exact det| is below bound * permanent, where the permanent is the
-// same expression with every difference of products replaced by a sum of absolute values. The
-// bound holds whatever the signs of the products; Shewchuk's shortcut of returning at once when
-// two products differ in sign is left out because an underflowed product can read as 0.
-constexpr double kEpsilon = 0x1p-53; // half an ulp of 1
-constexpr double kOrientBound = (3.0 + 16.0 * kEpsilon) * kEpsilon;
-constexpr double kIncircleBound = (10.0 + 96.0 * kEpsilon) * kEpsilon;
-// Underflow: a product that lands below 2^-1022 is off by up to 2^-1075 absolutely rather than
-// relatively, and a later multiplication can magnify that error by the other factor (in
+// The filter (its bounds and fast path) is DelaunayPredicates.h's, shared with the inline front
+// ends. Underflow: a product that lands below 2^-1022 is off by up to 2^-1075 absolutely rather
+// than relatively, and a later multiplication can magnify that error by the other factor (in
 // incircle, a lift or a 2x2 minor). This term covers those errors with room to spare (each
 // magnifying factor is added in; the constant is over 2^20 times the worst case). Overflow
 // needs no term: it makes the permanent or the determinant infinite or NaN, and the strict
-// comparisons below then reject the filter's answer.
+// comparisons below then reject the filter's answer. Shewchuk's shortcut of returning at once
+// when two products differ in sign is left out because an underflowed product can read as 0.
 constexpr double kUnderflowSlack = 0x1p-1050;
-// The fast path: that term is a subnormal, and arithmetic on subnormals costs ~30 ns per call
-// on x86 (microcode assists) against ~5 ns without. So the filters first answer without it when
-// the determinant is far above the underflow range: |det| > 2^-900, and (incircle) the
-// magnifying factors (lifts, minors) below 2^140, so every underflow error (< 2^-1050 * 2^141
-// with the constant's room) is far under 2^-900 / 2, and doubling the rounding bound covers the
-// rest. Only determinants of tiny magnitude (coordinates near 1e-150 or below) take the slow path.
-constexpr double kFastFloor = 0x1p-900;
-constexpr double kFastCeiling = 0x1p140;
+using detail::kIncircleBound;
+using detail::kOrientBound;
 
 // Exact-stage ranges: after scaling by 2^s every nonzero coordinate has its lowest set bit at or
 // above 2^kLow and its magnitude below 2^kHigh. Then every product the expansions form lies in
@@ -147,14 +136,11 @@ BigPoint toBig(dvec2 p, int shift) {
 } // namespace
 
 double orient2d(dvec2 a, dvec2 b, dvec2 c) {
-    const double detLeft = (a.x - c.x) * (b.y - c.y);
-    const double detRight = (a.y - c.y) * (b.x - c.x);
-    const double det = detLeft - detRight;
-    const double permanent = std::fabs(detLeft) + std::fabs(detRight);
-    // Common case first, with no subnormal arithmetic (see kFastFloor).
-    if (std::fabs(det) > 2.0 * kOrientBound * permanent && std::fabs(det) > kFastFloor) return det;
-    const double bound = kOrientBound * permanent + kUnderflowSlack;
-    if (det > bound || -det > bound) return det;
+    const detail::FilteredDeterminant d = detail::orientDeterminant(a, b, c);
+    // Common case first, with no subnormal arithmetic.
+    if (detail::fastOrientCertain(d)) return d.det;
+    const double bound = kOrientBound * d.permanent + kUnderflowSlack;
+    if (d.det > bound || -d.det > bound) return d.det;
     return detail::orient2dExact(a, b, c);
 }
 
@@ -164,29 +150,10 @@ int orient2dSign(dvec2 a, dvec2 b, dvec2 c) {
 }
 
 double incircle(dvec2 a, dvec2 b, dvec2 c, dvec2 d) {
-    const double adx = a.x - d.x, ady = a.y - d.y;
-    const double bdx = b.x - d.x, bdy = b.y - d.y;
-    const double cdx = c.x - d.x, cdy = c.y - d.y;
-
-    const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
-    const double aLift = adx * adx + ady * ady;
-    const double cdxady = cdx * ady, adxcdy = adx * cdy;
-    const double bLift = bdx * bdx + bdy * bdy;
-    const double adxbdy = adx * bdy, bdxady = bdx * ady;
-    const double cLift = cdx * cdx + cdy * cdy;
-
-    const double det =
-        aLift * (bdxcdy - cdxbdy) + bLift * (cdxady - adxcdy) + cLift * (adxbdy - bdxady);
-    const double aMinorAbs = std::fabs(bdxcdy) + std::fabs(cdxbdy);
-    const double bMinorAbs = std::fabs(cdxady) + std::fabs(adxcdy);
-    const double cMinorAbs = std::fabs(adxbdy) + std::fabs(bdxady);
-    const double permanent = aMinorAbs * aLift + bMinorAbs * bLift + cMinorAbs * cLift;
-    const double operands = aLift + bLift + cLift + aMinorAbs + bMinorAbs + cMinorAbs;
-    if (std::fabs(det) > 2.0 * kIncircleBound * permanent && std::fabs(det) > kFastFloor &&
-        operands < kFastCeiling)
-        return det;
-    const double bound = kIncircleBound * permanent + kUnderflowSlack * (operands + 1.0);
-    if (det > bound || -det > bound) return det;
+    const detail::FilteredDeterminant f = detail::incircleDeterminant(a, b, c, d);
+    if (detail::fastIncircleCertain(f)) return f.det;
+    const double bound = kIncircleBound * f.permanent + kUnderflowSlack * (f.operands + 1.0);
+    if (f.det > bound || -f.det > bound) return f.det;
     return detail::incircleExact(a, b, c, d);
 }
 

@@ -1,9 +1,12 @@
 #pragma once
-// The Lawson edge flip on the flat halfedge layout, shared by legalize() and the incremental
-// reference triangulator (which must also track where its boundary halfedges move).
+// The Lawson edge flip on the flat halfedge layout, shared by legalize(), the incremental
+// reference triangulator (which must also track where its boundary halfedges move) and the
+// pipeline's WorkMesh.
 
 #include <geometry/Predicates.h>
 #include <geometry/Triangulation.h>
+
+#include "DelaunayPredicates.h"
 
 #include <cstdint>
 #include <vector>
@@ -13,7 +16,8 @@ namespace fl::geom::detail {
 /// True when the edge of halfedge e (which must have an opposite) should be flipped: the apex
 /// of the opposite triangle lies strictly inside the circumcircle of e's triangle, and both new
 /// triangles would be strictly counter-clockwise. For a valid triangulation the second condition
-/// follows from the first; it keeps an invalid mesh from being folded further.
+/// follows from the first; it keeps an invalid mesh from being folded further. Exact signs, by
+/// the inline front ends of DelaunayPredicates.h.
 inline bool shouldFlip(const std::vector<glm::dvec2>& points,
                        const std::vector<std::uint32_t>& triangles,
                        const std::vector<std::uint32_t>& halfedges, std::uint32_t e) {
@@ -22,8 +26,8 @@ inline bool shouldFlip(const std::vector<glm::dvec2>& points,
     const glm::dvec2 p1 = points[triangles[nextHalfedge(e)]];
     const glm::dvec2 a = points[triangles[prevHalfedge(e)]];
     const glm::dvec2 b = points[triangles[prevHalfedge(o)]];
-    if (incircleSign(p0, p1, a, b) <= 0) return false;
-    return orient2dSign(p0, b, a) > 0 && orient2dSign(p1, a, b) > 0;
+    if (fastIncircleSign(p0, p1, a, b) <= 0) return false;
+    return fastOrientSign(p0, b, a) > 0 && fastOrientSign(p1, a, b) > 0;
 }
 
 /// Makes halfedges a and b opposite; b may be kNoHalfedge, in which case onBoundary(a) is

@@ -54,14 +54,15 @@ gl::Program buildKernel(const ShaderLibrary& shaders, const std::string& criteri
 
 } // namespace
 
-GlFloodKernel::GlFloodKernel(const ShaderLibrary& shaders, const std::string& criterionFile,
-                             GlKernelKind kind)
-    : kind_(kind), passProgram_(buildKernel(shaders, criterionFile, kind, false)),
-      expandProgram_(buildKernel(shaders, criterionFile, kind, true)),
+GlFloodKernelBase::GlFloodKernelBase(const ShaderLibrary& shaders, const std::string& criterionFile,
+                                     GlKernelKind kind)
+    : passProgram_(buildKernel(shaders, criterionFile, kind, false)),
+      expandProgram_(buildKernel(shaders, criterionFile, kind, true)), kind_(kind),
       emptyVao_(gl::VertexArray::create()),
       changedCounter_(sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT) {}
 
-const gl::Texture& GlFloodKernel::otherTexture(int width, int height, const gl::Texture* current) {
+const gl::Texture& GlFloodKernelBase::otherTexture(int width, int height,
+                                                   const gl::Texture* current) {
     auto [it, inserted] = pairs_.try_emplace({width, height});
     Pair& pair = it->second;
     if (inserted) {
@@ -73,15 +74,15 @@ const gl::Texture& GlFloodKernel::otherTexture(int width, int height, const gl::
     return current == &pair.tex[0] ? pair.tex[1] : pair.tex[0];
 }
 
-void GlFloodKernel::dispatch(const gl::Texture& src, const gl::Texture& seeds,
-                             const gl::Texture& dst, int mode, int step, int scale,
-                             bool countChanges) {
-    const gl::Program& p = mode == 1 ? expandProgram_ : passProgram_;
+void GlFloodKernelBase::dispatch(const gl::Texture& src, const gl::Texture& seeds,
+                                 const gl::Texture& dst, GlDispatch what, int step, int scale,
+                                 bool countChanges) {
+    const gl::Program& p = what == GlDispatch::ExpandThenPass ? expandProgram_ : passProgram_;
     p.set("uSize", glm::ivec2(dst.width(), dst.height()));
     p.set("uSrcSize", glm::ivec2(src.width(), src.height()));
     p.set("uStep", step);
     p.set("uScale", scale);
-    p.set("uMode", mode);
+    p.set("uMode", static_cast<int>(what));
     p.set("uCountChanges", countChanges ? 1 : 0);
     glBindTextureUnit(0, src.id());
     glBindTextureUnit(1, seeds.id());
@@ -112,8 +113,8 @@ void GlFloodKernel::dispatch(const gl::Texture& src, const gl::Texture& seeds,
     glBindTextureUnit(1, 0);
 }
 
-const gl::Texture& GlFloodKernel::runPlan(const Plan& plan, const gl::Texture& seeds,
-                                          PassTimer* timer, const PassCallback& callback) {
+const gl::Texture& GlFloodKernelBase::runPlan(const Plan& plan, const gl::Texture& seeds,
+                                              PassTimer* timer, const PassCallback& callback) {
     if (seeds.width() != plan.width() || seeds.height() != plan.height())
         throw std::invalid_argument("jfa: seeds are " + std::to_string(seeds.width()) + "x" +
                                     std::to_string(seeds.height()) + " but the plan is for " +
@@ -134,7 +135,7 @@ const gl::Texture& GlFloodKernel::runPlan(const Plan& plan, const gl::Texture& s
         const Stage& s0 = stages.front();
         const gl::Texture& dst = otherTexture(s0.width, s0.height, nullptr);
         if (timer) timer->begin("downsample");
-        dispatch(seeds, seeds, dst, 2, 0, 2, false);
+        dispatch(seeds, seeds, dst, GlDispatch::Downsample, 0, 2, false);
         if (timer) timer->end();
         current = &dst;
     }
@@ -150,7 +151,7 @@ const gl::Texture& GlFloodKernel::runPlan(const Plan& plan, const gl::Texture& s
             ++index;
             continue;
         }
-        const int mode = pass.expandBefore ? 1 : 0;
+        const GlDispatch what = pass.expandBefore ? GlDispatch::ExpandThenPass : GlDispatch::Pass;
         const int scale = halfRes && !expanded ? 2 : 1;
         const gl::Texture& dst = otherTexture(pass.width, pass.height, current);
         if (pass.untilUnchanged) {
@@ -158,7 +159,7 @@ const gl::Texture& GlFloodKernel::runPlan(const Plan& plan, const gl::Texture& s
             glNamedBufferSubData(changedCounter_.id(), 0, sizeof(zero), &zero);
         }
         if (timer) timer->begin("jfa step");
-        dispatch(*current, seeds, dst, mode, pass.step, scale, pass.untilUnchanged);
+        dispatch(*current, seeds, dst, what, pass.step, scale, pass.untilUnchanged);
         if (timer) timer->end();
         ++passesRun_;
         if (pass.untilUnchanged) {

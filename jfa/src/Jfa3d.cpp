@@ -1,14 +1,17 @@
+#include <jfa/CpuKernel.h>
 #include <jfa/Jfa3d.h>
 
+#include "LowerEnvelope.h"
+
+#include <base/Parallel.h>
+#include <base/Text.h>
+
 #include <algorithm>
-#include <atomic>
 #include <cstdio>
 #include <cstdlib>
-#include <initializer_list>
 #include <limits>
 #include <stdexcept>
 #include <string_view>
-#include <thread>
 #include <utility>
 
 namespace fl::jfa {
@@ -17,28 +20,16 @@ namespace {
 
 using Cells = std::vector<std::int32_t>;
 
-// Squared distance between 'no site' entries of the exact transform (any finite distance is
-// smaller; kept far from overflow when a line adds (x - q)^2 to it).
-constexpr std::int64_t kInf = std::numeric_limits<std::int64_t>::max() / 4;
-
-std::string cat(std::initializer_list<std::string_view> parts) {
-    std::string text;
-    for (std::string_view part : parts) text += part;
-    return text;
-}
-
 std::string extentText(Extent3 e) {
-    return cat(
-        {std::to_string(e.width), "x", std::to_string(e.height), "x", std::to_string(e.depth)});
+    return fl::cat(e.width, "x", e.height, "x", e.depth);
 }
 
 void checkExtent(Extent3 e) {
     const auto bad = [](int side) { return side < 1 || side > kMaxGridExtent3d; };
     if (bad(e.width) || bad(e.height) || bad(e.depth) || e.voxels() > kMaxVoxels3d) {
         throw std::invalid_argument(
-            cat({"3D grid ", extentText(e), " is out of range: each side must be 1..",
-                 std::to_string(kMaxGridExtent3d), " and at most ", std::to_string(kMaxVoxels3d),
-                 " voxels in all"}));
+            fl::cat("3D grid ", extentText(e), " is out of range: each side must be 1..",
+                    kMaxGridExtent3d, " and at most ", kMaxVoxels3d, " voxels in all"));
     }
 }
 
@@ -50,47 +41,16 @@ void checkSites(const std::vector<Site3>& sites, Extent3 e) {
     for (std::size_t i = 0; i < sites.size(); ++i) {
         const Site3& s = sites[i];
         if (s.x < 0 || s.y < 0 || s.z < 0 || s.x >= e.width || s.y >= e.height || s.z >= e.depth) {
-            throw std::invalid_argument(
-                cat({"site ", std::to_string(i), " (id ", std::to_string(s.id), ") at (",
-                     std::to_string(s.x), ", ", std::to_string(s.y), ", ", std::to_string(s.z),
-                     ") lies outside the ", extentText(e), " grid"}));
+            throw std::invalid_argument(fl::cat("site ", i, " (id ", s.id, ") at (", s.x, ", ", s.y,
+                                                ", ", s.z, ") lies outside the ", extentText(e),
+                                                " grid"));
         }
     }
 }
 
-int threadCount(int requested, std::size_t work) {
-    std::size_t n = requested > 0 ? std::size_t(requested) : std::thread::hardware_concurrency();
-    n = std::clamp<std::size_t>(n, 1, std::max<std::size_t>(work, 1));
-    return int(n);
-}
-
-// Runs fn(chunk, begin, end) for chunk = 0..chunks-1 over contiguous parts of [0, count), one
-// thread per chunk. Results never depend on the split: every item reads read-only input only.
-template <typename F>
-void parallelChunks(std::size_t count, int chunks, F&& fn) {
-    const auto part = [&](int t) { return count * std::size_t(t) / std::size_t(chunks); };
-    if (chunks == 1) return fn(0, std::size_t(0), count);
-    std::vector<std::thread> pool;
-    for (int t = 0; t < chunks; ++t)
-        pool.emplace_back([&fn, t, b = part(t), e = part(t + 1)] { fn(t, b, e); });
-    for (std::thread& thread : pool) thread.join();
-}
-
-// Runs fn(i) for every i in [0, count), items handed out one at a time (load balance).
-template <typename F>
-void parallelItems(std::size_t count, int threads, F&& fn) {
-    const int n = threadCount(threads, count);
-    std::atomic<std::size_t> next{0};
-    const auto worker = [&] {
-        for (std::size_t i = next++; i < count; i = next++) fn(i);
-    };
-    if (n == 1) {
-        worker();
-        return;
-    }
-    std::vector<std::thread> pool;
-    for (int t = 0; t < n; ++t) pool.emplace_back(worker);
-    for (std::thread& thread : pool) thread.join();
+// Threads for fl::parallelRows: this header's "<= 0 = one per hardware thread".
+int poolSize(int threads) {
+    return std::max(threads, 0);
 }
 
 std::int64_t squared(const Site3& s, int x, int y, int z) {
@@ -156,98 +116,18 @@ bool pass3d(const Cells& in, Cells& out, Extent3 e, int k, const Site3* sites, s
     return changed;
 }
 
-// Ceil(n / d) for d > 0.
-std::int64_t ceilDiv(std::int64_t n, std::int64_t d) {
-    return n >= 0 ? (n + d - 1) / d : -((-n) / d);
-}
-
-// Exact 1D lower envelope of parabolas: d[x] = min_q (x - q)^2 + f[q] over q with f[q] < kInf
-// (kInf if there is none), in integers. v holds the envelope's parabolas, from[j] the first x
-// where v[j] is minimal.
-void envelope1d(const std::int64_t* f, int n, std::int64_t* d, int* v, std::int64_t* from) {
-    int k = -1;
-    for (int q = 0; q < n; ++q) {
-        if (f[q] >= kInf) continue;
-        const std::int64_t fq = f[q] + std::int64_t(q) * q;
-        std::int64_t start = 0;
-        while (k >= 0) {
-            const int p = v[k];
-            // q is at most p from ceil(...) on.
-            start = ceilDiv(fq - (f[p] + std::int64_t(p) * p), 2 * std::int64_t(q - p));
-            if (start > from[k]) break;
-            --k;
-        }
-        if (k < 0) start = 0;
-        if (start >= n) continue; // q is never the minimum inside the line
-        ++k;
-        v[k] = q;
-        from[k] = start;
-    }
-    if (k < 0) {
-        std::fill(d, d + n, kInf);
-        return;
-    }
-    int j = 0;
-    for (int x = 0; x < n; ++x) {
-        while (j < k && from[j + 1] <= x) ++j;
-        const std::int64_t dx = x - v[j];
-        d[x] = dx * dx + f[v[j]];
-    }
-}
-
-// Transforms every line of `dist` along one axis: lines of length n, elements `stride` apart,
-// line i starting at lineStart(i).
-template <typename Start>
-void transformLines(std::vector<std::int64_t>& dist, std::size_t lines, int n, std::size_t stride,
-                    Start lineStart, int threads) {
-    parallelChunks(
-        lines, threadCount(threads, lines), [&](int, std::size_t begin, std::size_t end) {
-            std::vector<std::int64_t> f(static_cast<std::size_t>(n)), d(f.size()), from(f.size());
-            std::vector<int> v(f.size());
-            for (std::size_t i = begin; i < end; ++i) {
-                std::int64_t* line = dist.data() + lineStart(i);
-                for (int x = 0; x < n; ++x) f[std::size_t(x)] = line[std::size_t(x) * stride];
-                envelope1d(f.data(), n, d.data(), v.data(), from.data());
-                for (int x = 0; x < n; ++x) line[std::size_t(x) * stride] = d[std::size_t(x)];
-            }
-        });
-}
-
-// One 2D pass on a slice grid of w x h texels at `scale` (grid point of texel (x, y) is
-// (x * scale, y * scale, slice)); returns whether any texel changed.
-bool pass2d(const Cells& in, Cells& out, int w, int h, int k, int scale, int slice,
-            const Site3* sites) {
-    bool changed = false;
-    for (int y = 0; y < h; ++y) {
-        for (int x = 0; x < w; ++x) {
-            Best best;
-            for (int yy = y - k; yy <= y + k; yy += k) {
-                if (yy < 0 || yy >= h) continue;
-                const std::int32_t* row = in.data() + std::size_t(yy) * std::size_t(w);
-                for (int xx = x - k; xx <= x + k; xx += k) {
-                    if (xx >= 0 && xx < w) best.offer(sites, row[xx], x * scale, y * scale, slice);
-                }
-            }
-            const std::size_t i = std::size_t(y) * std::size_t(w) + std::size_t(x);
-            changed |= best.site != in[i];
-            out[i] = best.site;
-        }
-    }
-    return changed;
-}
-
 void checkSlicePlan(const Plan& plan, Extent3 e) {
     if (plan.width() != e.width || plan.height() != e.height) {
-        throw std::invalid_argument(cat({"slice-by-slice flooding of a ", extentText(e),
-                                         " grid needs a plan for ", std::to_string(e.width), "x",
-                                         std::to_string(e.height), ", got ", plan.describe()}));
+        throw std::invalid_argument(fl::cat("slice-by-slice flooding of a ", extentText(e),
+                                            " grid needs a plan for ", e.width, "x", e.height,
+                                            ", got ", plan.describe()));
     }
 }
 
 void checkSlice(Extent3 e, int slice) {
     if (slice < 0 || slice >= e.depth) {
         throw std::invalid_argument(
-            cat({"slice ", std::to_string(slice), " is outside the ", extentText(e), " grid"}));
+            fl::cat("slice ", slice, " is outside the ", extentText(e), " grid"));
     }
 }
 
@@ -268,55 +148,46 @@ std::vector<std::int32_t> projectChecked(const std::vector<Site3>& sites, Extent
     return cells;
 }
 
-// Floods one slice from its projected sites through all stages of `plan`.
+// A slice flood is a 2D flood (jfa/CpuKernel.h) whose cells name sites of the 3D list: the index
+// is split into z = its low 24 bits and w = the rest, both exact in a float (kEmptyCell, z = -1,
+// is "no site"), so every int32 index fits.
+Cell siteCell(std::int32_t index) {
+    return {0.0f, 0.0f, float(index & 0xFFFFFF), float(index >> 24)};
+}
+std::int32_t siteIndex(const Cell& c) {
+    return c.z < 0.0f ? kNoSite : std::int32_t(c.z) | (std::int32_t(c.w) << 24);
+}
+
+// Candidates compare by their full 3D distance to grid point (px, py, slice), ties as Best.
+struct SliceCriterion {
+    static constexpr const char* glslFile = nullptr; // CPU only: no GL kernel runs it
+    const Site3* sites;
+    int slice;
+
+    [[nodiscard]] bool empty(const Cell& c) const { return c.z < 0.0f; }
+    [[nodiscard]] bool better(int px, int py, const Cell& a, const Cell& b) const {
+        const std::int32_t ia = siteIndex(a), ib = siteIndex(b);
+        const std::int64_t da = squared(sites[ia], px, py, slice),
+                           db = squared(sites[ib], px, py, slice);
+        return da != db ? da < db : tieLess(sites, ia, ib);
+    }
+};
+static_assert(Criterion<SliceCriterion>);
+
+// Floods one slice from its projected sites through all stages of `plan` (one thread: the
+// callers split the work by slices).
 std::vector<std::int32_t> floodProjected(const std::vector<Site3>& sites, Extent3 e, int slice,
                                          const Plan& plan, const Cells& projected) {
-    const std::vector<Stage>& stages = plan.stages();
-    const Site3* s = sites.data();
-    int scale = 1; // the first stage is 2^(stages - 1) times smaller than the slice
-    for (std::size_t i = 1; i < stages.size(); ++i) {
-        if (scale > kMaxGridExtent3d) throw std::invalid_argument("plan has too many stages");
-        scale *= 2;
+    Grid seeds(e.width, e.height, kEmptyCell);
+    for (std::size_t i = 0; i < projected.size(); ++i) {
+        if (projected[i] != kNoSite) seeds.cells[i] = siteCell(projected[i]);
     }
-    int w = stages.front().width, h = stages.front().height;
-    Cells a(std::size_t(w) * std::size_t(h), kNoSite), b;
-    // Seed: each texel keeps the best projected site of the scale x scale block it covers.
-    for (int y = 0; y < e.height; ++y) {
-        for (int x = 0; x < e.width; ++x) {
-            const std::int32_t c =
-                projected[std::size_t(y) * std::size_t(e.width) + std::size_t(x)];
-            if (c == kNoSite) continue;
-            const int tx = x / scale, ty = y / scale;
-            std::int32_t& cell = a[std::size_t(ty) * std::size_t(w) + std::size_t(tx)];
-            Best best{cell, cell == kNoSite ? std::numeric_limits<std::int64_t>::max()
-                                            : squared(s[cell], tx * scale, ty * scale, slice)};
-            best.offer(s, c, tx * scale, ty * scale, slice);
-            cell = best.site;
-        }
-    }
-    for (std::size_t i = 0; i < stages.size(); ++i) {
-        const Stage& stage = stages[i];
-        if (i > 0) { // expand: texel (x, y) takes the cell of (x / 2, y / 2)
-            b.assign(std::size_t(stage.width) * std::size_t(stage.height), kNoSite);
-            for (int y = 0; y < stage.height; ++y) {
-                for (int x = 0; x < stage.width; ++x) {
-                    b[std::size_t(y) * std::size_t(stage.width) + std::size_t(x)] =
-                        a[std::size_t(y / 2) * std::size_t(w) + std::size_t(x / 2)];
-                }
-            }
-            std::swap(a, b);
-            w = stage.width;
-            h = stage.height;
-            scale /= 2;
-        }
-        b.resize(a.size());
-        for (int step : stage.steps) {
-            const bool changed = pass2d(a, b, w, h, step, scale, slice, s);
-            std::swap(a, b);
-            if (stage.untilUnchanged && !changed) break;
-        }
-    }
-    return a;
+    FloodOptions options;
+    options.threads = 1;
+    const Grid flooded = flood(plan, seeds, SliceCriterion{sites.data(), slice}, options);
+    Cells result(flooded.cells.size());
+    std::transform(flooded.cells.begin(), flooded.cells.end(), result.begin(), siteIndex);
+    return result;
 }
 
 // splitmix64: a small portable PRNG (same sequence everywhere).
@@ -353,8 +224,8 @@ Plan plan3d(std::string_view spec, Extent3 extent) {
     const int n = std::max({extent.width, extent.height, extent.depth});
     Plan plan = parsePlan(spec, n, n);
     if (plan.stages().size() != 1) {
-        throw std::invalid_argument(cat({"3D flooding runs single-stage plans only, not \"",
-                                         plan.name(), "\" (no half resolution in 3D)"}));
+        throw std::invalid_argument(fl::cat("3D flooding runs single-stage plans only, not \"",
+                                            plan.name(), "\" (no half resolution in 3D)"));
     }
     return plan;
 }
@@ -363,7 +234,7 @@ SiteGrid3 flood3d(const std::vector<Site3>& sites, Extent3 extent, const Plan& p
     checkSites(sites, extent);
     if (plan.stages().size() != 1) {
         throw std::invalid_argument(
-            cat({"3D flooding runs single-stage plans only, not ", plan.describe()}));
+            fl::cat("3D flooding runs single-stage plans only, not ", plan.describe()));
     }
     SiteGrid3 grid(extent);
     Cells& a = grid.cells;
@@ -373,13 +244,14 @@ SiteGrid3 flood3d(const std::vector<Site3>& sites, Extent3 extent, const Plan& p
         if (cell == kNoSite || tieLess(sites.data(), std::int32_t(i), cell)) cell = std::int32_t(i);
     }
     const Stage& stage = plan.stages().front();
-    const std::size_t rows = std::size_t(extent.height) * std::size_t(extent.depth);
-    const int n = threadCount(threads, rows);
+    const int rows = extent.height * extent.depth;
+    const int threadCount = poolSize(threads);
     Cells b(a.size());
-    std::vector<char> changed(static_cast<std::size_t>(n)); // one flag per chunk
+    std::vector<char> changed(std::size_t(fl::bandCount(rows, threadCount))); // one flag per band
     for (int step : stage.steps) {
-        parallelChunks(rows, n, [&](int t, std::size_t begin, std::size_t end) {
-            changed[std::size_t(t)] = pass3d(a, b, extent, step, sites.data(), begin, end);
+        fl::parallelRows(rows, threadCount, [&](int begin, int end, int band) {
+            changed[std::size_t(band)] =
+                pass3d(a, b, extent, step, sites.data(), std::size_t(begin), std::size_t(end));
         });
         std::swap(a, b);
         const bool any = std::any_of(changed.begin(), changed.end(), [](char c) { return c; });
@@ -395,7 +267,7 @@ std::vector<std::int64_t> exactSquaredDistances3d(const std::vector<Site3>& site
     checkSites(sites, extent);
     const std::size_t w = std::size_t(extent.width), h = std::size_t(extent.height),
                       d = std::size_t(extent.depth);
-    std::vector<std::int64_t> dist(extent.voxels(), kInf);
+    std::vector<std::int64_t> dist(extent.voxels(), detail::kFarSquared);
     if (sites.empty()) {
         std::fill(dist.begin(), dist.end(), kNoDistance);
         return dist;
@@ -403,13 +275,14 @@ std::vector<std::int64_t> exactSquaredDistances3d(const std::vector<Site3>& site
     for (const Site3& s : sites)
         dist[(std::size_t(s.z) * h + std::size_t(s.y)) * w + std::size_t(s.x)] = 0;
     // Along x (line = row (y, z)), then y (line = column (x, z)), then z (line = (x, y)).
-    transformLines(
-        dist, h * d, extent.width, 1, [&](std::size_t i) { return i * w; }, threads);
-    transformLines(
-        dist, w * d, extent.height, w, [&](std::size_t i) { return (i / w) * w * h + i % w; },
-        threads);
-    transformLines(
-        dist, w * h, extent.depth, w * h, [](std::size_t i) { return i; }, threads);
+    const int pool = poolSize(threads);
+    detail::transformLines(
+        dist.data(), nullptr, h * d, extent.width, 1, [&](std::size_t i) { return i * w; }, pool);
+    detail::transformLines(
+        dist.data(), nullptr, w * d, extent.height, w,
+        [&](std::size_t i) { return (i / w) * w * h + i % w; }, pool);
+    detail::transformLines(
+        dist.data(), nullptr, w * h, extent.depth, w * h, [](std::size_t i) { return i; }, pool);
     return dist;
 }
 
@@ -472,10 +345,13 @@ SiteGrid3 floodSliceBySlice(const std::vector<Site3>& sites, Extent3 extent, con
     checkSlicePlan(plan, extent);
     SiteGrid3 grid(extent);
     const std::size_t sliceSize = std::size_t(extent.width) * std::size_t(extent.height);
-    parallelItems(std::size_t(extent.depth), threads, [&](std::size_t z) {
-        const Cells result =
-            floodProjected(sites, extent, int(z), plan, projectChecked(sites, extent, int(z)));
-        std::copy(result.begin(), result.end(), grid.cells.begin() + std::ptrdiff_t(z * sliceSize));
+    fl::parallelRows(extent.depth, poolSize(threads), [&](int begin, int end, int) {
+        for (int z = begin; z < end; ++z) {
+            const Cells result =
+                floodProjected(sites, extent, z, plan, projectChecked(sites, extent, z));
+            std::copy(result.begin(), result.end(),
+                      grid.cells.begin() + std::ptrdiff_t(std::size_t(z) * sliceSize));
+        }
     });
     return grid;
 }
@@ -484,11 +360,10 @@ SiteGrid3 floodSliceBySlice(const std::vector<Site3>& sites, Extent3 extent, con
 
 std::string ErrorCount3d::describe() const {
     std::string text =
-        cat({method, " on ", extentText(extent), ", ", std::to_string(sites),
-             sites == 1 ? " site: " : " sites: ", std::to_string(erroneous),
-             " erroneous voxels of ", std::to_string(voxels), " (",
-             percentText(voxels > 0 ? double(erroneous) / double(voxels) : 0.0), ")"});
-    if (empty > 0) text += cat({", ", std::to_string(empty), " without a site"});
+        fl::cat(method, " on ", extentText(extent), ", ", sites,
+                sites == 1 ? " site: " : " sites: ", erroneous, " erroneous voxels of ", voxels,
+                " (", percentText(voxels > 0 ? double(erroneous) / double(voxels) : 0.0), ")");
+    if (empty > 0) text += fl::cat(", ", empty, " without a site");
     return text;
 }
 
@@ -517,8 +392,8 @@ ErrorCount3d countErrors3d(const SiteGrid3& grid, const std::vector<Site3>& site
 std::vector<Site3> randomSites3d(int count, Extent3 extent, std::uint64_t seed) {
     checkExtent(extent);
     if (count < 0 || std::size_t(count) > extent.voxels()) {
-        throw std::invalid_argument(cat({"randomSites3d: ", std::to_string(count),
-                                         " distinct sites do not fit into ", extentText(extent)}));
+        throw std::invalid_argument(fl::cat(
+            "randomSites3d: ", count, " distinct sites do not fit into ", extentText(extent)));
     }
     SplitMix64 rng{seed};
     std::vector<bool> taken(extent.voxels(), false);
@@ -551,8 +426,8 @@ std::string Experiment3dRow::describe() const {
         if (!seeds.empty()) seeds += ' ';
         seeds += std::to_string(e);
     }
-    return cat({std::to_string(size), "^3, ", std::to_string(sites), " sites, ", method, ": mean ",
-                mean, " erroneous voxels (per seed: ", seeds, "), ", perSite, " per site"});
+    return fl::cat(size, "^3, ", sites, " sites, ", method, ": mean ", mean,
+                   " erroneous voxels (per seed: ", seeds, "), ", perSite, " per site");
 }
 
 std::vector<Experiment3dRow> runExperiment3d(const Experiment3dConfig& config) {
@@ -567,9 +442,9 @@ std::vector<Experiment3dRow> runExperiment3d(const Experiment3dConfig& config) {
         for (int count : config.siteCounts) {
             const std::size_t first = rows.size();
             for (const Plan& plan : plans)
-                rows.push_back({size, count, cat({"3D ", plan.name()}), {}});
+                rows.push_back({size, count, fl::cat("3D ", plan.name()), {}});
             for (const Plan& plan : slicePlans) {
-                rows.push_back({size, count, cat({"slice ", plan.name()}), {}});
+                rows.push_back({size, count, fl::cat("slice ", plan.name()), {}});
             }
             for (std::uint64_t seed : config.seeds) {
                 const std::vector<Site3> sites = randomSites3d(count, extent, seed);

@@ -1,9 +1,10 @@
 #include <jfa/Plan.h>
 
+#include <base/Text.h>
+
 #include <algorithm>
 #include <cctype>
 #include <charconv>
-#include <initializer_list>
 #include <ostream>
 #include <stdexcept>
 #include <utility>
@@ -24,13 +25,6 @@ constexpr std::string_view kValidPlans =
     "half:<plan> (e.g. half:jfa, half:jfa+2), and explicit step lists before/after the body "
     "such as (2,1)+jfa+(1,1)";
 
-// Concatenates the parts (instead of chains of operator+, which GCC 12 flags with -Wrestrict).
-std::string cat(std::initializer_list<std::string_view> parts) {
-    std::string text;
-    for (std::string_view part : parts) text += part;
-    return text;
-}
-
 [[noreturn]] void throwInvalidSpec(std::string_view spec, std::string_view reason) {
     std::string message = "invalid flood plan \"";
     message += spec;
@@ -43,22 +37,20 @@ std::string cat(std::initializer_list<std::string_view> parts) {
 
 void checkExtent(int width, int height) {
     if (width < 1 || height < 1 || width > kMaxGridExtent || height > kMaxGridExtent) {
-        throw std::invalid_argument(
-            cat({"flood plan grid ", std::to_string(width), "x", std::to_string(height),
-                 " is out of range: each side must be 1..", std::to_string(kMaxGridExtent)}));
+        throw std::invalid_argument(fl::cat("flood plan grid ", width, "x", height,
+                                            " is out of range: each side must be 1..",
+                                            kMaxGridExtent));
     }
 }
 
 void checkSteps(const std::vector<int>& steps, std::string_view what) {
     if (steps.size() > static_cast<std::size_t>(kMaxFloodPasses)) {
-        throw std::invalid_argument(
-            cat({what, " has more than ", std::to_string(kMaxFloodPasses), " steps"}));
+        throw std::invalid_argument(fl::cat(what, " has more than ", kMaxFloodPasses, " steps"));
     }
     for (int step : steps) {
         if (step < 1 || step > kMaxGridExtent) {
             throw std::invalid_argument(
-                cat({what, " has step length ", std::to_string(step), "; steps must be 1..",
-                     std::to_string(kMaxGridExtent)}));
+                fl::cat(what, " has step length ", step, "; steps must be 1..", kMaxGridExtent));
         }
     }
 }
@@ -80,8 +72,8 @@ std::string listText(const std::vector<int>& steps) {
 std::string afterText(const std::vector<int>& after) {
     if (after.empty()) return {};
     const int k = static_cast<int>(after.size());
-    if (k <= kMaxExtraPasses && after == extraPasses(k)) return cat({"+", std::to_string(k)});
-    return cat({"+", listText(after)});
+    if (k <= kMaxExtraPasses && after == extraPasses(k)) return fl::cat("+", k);
+    return fl::cat("+", listText(after));
 }
 
 std::string beforeText(const std::vector<int>& before) {
@@ -107,7 +99,7 @@ std::pair<std::string, std::string> recipeNames(const Recipe& recipe) {
         body = bodySpec = "doubling";
         break;
     case Body::Flood:
-        body = bodySpec = cat({"flood:", std::to_string(recipe.floodPasses)});
+        body = bodySpec = fl::cat("flood:", recipe.floodPasses);
         break;
     case Body::FloodUntilUnchanged:
         body = bodySpec = "flood";
@@ -118,8 +110,8 @@ std::pair<std::string, std::string> recipeNames(const Recipe& recipe) {
     std::string name = before + body + after;
     std::string spec = before + bodySpec + after;
     if (recipe.halfResolution) {
-        name = cat({"half-res ", name});
-        spec = cat({"half:", spec});
+        name = fl::cat("half-res ", name);
+        spec = fl::cat("half:", spec);
     }
     return {name, spec};
 }
@@ -133,7 +125,7 @@ std::string stepsText(const Stage& stage) {
         while (i + run < stage.steps.size() && stage.steps[i + run] == stage.steps[i]) ++run;
         if (!text.empty()) text += ' ';
         if (run >= kMinRunToCompress) {
-            text += cat({std::to_string(stage.steps[i]), "*", std::to_string(run)});
+            text += fl::cat(stage.steps[i], "*", run);
         } else {
             for (std::size_t j = 0; j < run; ++j) {
                 if (j > 0) text += ' ';
@@ -146,7 +138,7 @@ std::string stepsText(const Stage& stage) {
 }
 
 std::string sizeText(int width, int height) {
-    return cat({std::to_string(width), "x", std::to_string(height)});
+    return fl::cat(width, "x", height);
 }
 
 // Parses a non-negative decimal integer that is the whole of `text`.
@@ -204,8 +196,7 @@ std::vector<int> jfaSteps(int n) {
 
 std::vector<int> extraPasses(int k) {
     if (k < 1 || k > kMaxExtraPasses) {
-        throw std::invalid_argument(
-            cat({"extraPasses: k must be 1..", std::to_string(kMaxExtraPasses)}));
+        throw std::invalid_argument(fl::cat("extraPasses: k must be 1..", kMaxExtraPasses));
     }
     std::vector<int> steps;
     for (int step = 1 << (k - 1); step >= 1; step /= 2) steps.push_back(step);
@@ -217,10 +208,10 @@ std::vector<int> extraPasses(int k) {
 Plan::Plan(std::string name, std::vector<Stage> stages, std::string spec)
     : name_(std::move(name)), stages_(std::move(stages)), spec_(std::move(spec)) {
     if (stages_.empty())
-        throw std::invalid_argument(cat({"flood plan \"", name_, "\" has no stages"}));
+        throw std::invalid_argument(fl::cat("flood plan \"", name_, "\" has no stages"));
     for (std::size_t i = 0; i < stages_.size(); ++i) {
         const Stage& stage = stages_[i];
-        const std::string what = cat({"flood plan \"", name_, "\" stage ", std::to_string(i)});
+        const std::string what = fl::cat("flood plan \"", name_, "\" stage ", i);
         checkExtent(stage.width, stage.height);
         checkSteps(stage.steps, what);
         if (i > 0) {
@@ -228,9 +219,9 @@ Plan::Plan(std::string name, std::vector<Stage> stages, std::string spec)
             if (previous.width != (stage.width + 1) / 2 ||
                 previous.height != (stage.height + 1) / 2) {
                 throw std::invalid_argument(
-                    cat({what, ": an expansion goes from ceil(W/2)xceil(H/2) to WxH, not from ",
-                         sizeText(previous.width, previous.height), " to ",
-                         sizeText(stage.width, stage.height)}));
+                    fl::cat(what, ": an expansion goes from ceil(W/2)xceil(H/2) to WxH, not from ",
+                            sizeText(previous.width, previous.height), " to ",
+                            sizeText(stage.width, stage.height)));
             }
             if (stage.steps.empty()) {
                 throw std::invalid_argument(what + ": a stage after an expansion needs a pass");
@@ -249,47 +240,33 @@ Plan Plan::jfa(int width, int height) {
     return compose({}, width, height);
 }
 
+// The named variants are one-field recipes (designated initializers leave the rest default).
 Plan Plan::jfaPlus(int k, int width, int height) {
-    Recipe recipe;
-    recipe.after = extraPasses(k);
-    return compose(recipe, width, height);
+    return compose({.after = extraPasses(k)}, width, height);
 }
 
 Plan Plan::jfaSquared(int width, int height) {
-    Recipe recipe;
-    recipe.body = Body::JfaSquared;
-    return compose(recipe, width, height);
+    return compose({.body = Body::JfaSquared}, width, height);
 }
 
 Plan Plan::onePlusJfa(int width, int height) {
-    Recipe recipe;
-    recipe.before = {1};
-    return compose(recipe, width, height);
+    return compose({.before = {1}}, width, height);
 }
 
 Plan Plan::doubling(int width, int height) {
-    Recipe recipe;
-    recipe.body = Body::Doubling;
-    return compose(recipe, width, height);
+    return compose({.body = Body::Doubling}, width, height);
 }
 
 Plan Plan::flood(int passes, int width, int height) {
-    Recipe recipe;
-    recipe.body = Body::Flood;
-    recipe.floodPasses = passes;
-    return compose(recipe, width, height);
+    return compose({.body = Body::Flood, .floodPasses = passes}, width, height);
 }
 
 Plan Plan::floodUntilUnchanged(int width, int height) {
-    Recipe recipe;
-    recipe.body = Body::FloodUntilUnchanged;
-    return compose(recipe, width, height);
+    return compose({.body = Body::FloodUntilUnchanged}, width, height);
 }
 
 Plan Plan::halfResolution(int width, int height) {
-    Recipe recipe;
-    recipe.halfResolution = true;
-    return compose(recipe, width, height);
+    return compose({.halfResolution = true}, width, height);
 }
 
 Plan Plan::compose(const Recipe& recipe, int width, int height) {
@@ -302,8 +279,8 @@ Plan Plan::compose(const Recipe& recipe, int width, int height) {
     }
     if (recipe.body == Body::Flood &&
         (recipe.floodPasses < 1 || recipe.floodPasses > kMaxFloodPasses)) {
-        throw std::invalid_argument(cat({"flood:N needs N in 1..", std::to_string(kMaxFloodPasses),
-                                         ", got ", std::to_string(recipe.floodPasses)}));
+        throw std::invalid_argument(
+            fl::cat("flood:N needs N in 1..", kMaxFloodPasses, ", got ", recipe.floodPasses));
     }
 
     Stage first;
@@ -382,11 +359,11 @@ long long Plan::maxReach() const {
 }
 
 std::string Plan::describe() const {
-    std::string text = cat({name_, " on ", sizeText(width(), height()), ": "});
+    std::string text = fl::cat(name_, " on ", sizeText(width(), height()), ": ");
     for (std::size_t i = 0; i < stages_.size(); ++i) {
         if (i > 0) text += " | expand | ";
         if (stages_.size() > 1)
-            text += cat({"[", sizeText(stages_[i].width, stages_[i].height), "] "});
+            text += fl::cat("[", sizeText(stages_[i].width, stages_[i].height), "] ");
         text += stepsText(stages_[i]);
     }
     const int count = passCount();
@@ -435,8 +412,7 @@ Plan parsePlan(std::string_view spec, int width, int height) {
         const std::size_t end = std::min(rest.find('+'), rest.size());
         if (!parseInt(rest.substr(0, end), recipe.floodPasses) || recipe.floodPasses < 1 ||
             recipe.floodPasses > kMaxFloodPasses) {
-            throwInvalidSpec(spec,
-                             cat({"N in flood:N must be 1..", std::to_string(kMaxFloodPasses)}));
+            throwInvalidSpec(spec, fl::cat("N in flood:N must be 1..", kMaxFloodPasses));
         }
         rest.remove_prefix(end);
     } else if (consume(rest, "flood")) {
@@ -451,14 +427,13 @@ Plan parsePlan(std::string_view spec, int width, int height) {
         } else {
             int k = 0;
             if (!parseInt(rest, k) || k < 1 || k > kMaxExtraPasses) {
-                throwInvalidSpec(
-                    spec, cat({"K in <plan>+K must be 1..", std::to_string(kMaxExtraPasses)}));
+                throwInvalidSpec(spec, fl::cat("K in <plan>+K must be 1..", kMaxExtraPasses));
             }
             recipe.after = extraPasses(k);
             rest = {};
         }
     }
-    if (!rest.empty()) throwInvalidSpec(spec, cat({"unexpected \"", rest, "\""}));
+    if (!rest.empty()) throwInvalidSpec(spec, fl::cat("unexpected \"", rest, "\""));
     if (recipe.body == Body::FloodUntilUnchanged &&
         !(recipe.before.empty() && recipe.after.empty())) {
         throwInvalidSpec(spec, "flood (until unchanged) takes no steps before or after it; use "

@@ -1,9 +1,12 @@
 #include <jfa/CpuKernel.h>
 #include <jfa/Reference.h>
 
+#include "LowerEnvelope.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -44,12 +47,6 @@ struct Nearest {
         }
     }
 };
-
-// floor(a / b) for b > 0.
-long long floorDiv(long long a, long long b) {
-    const long long q = a / b;
-    return (a % b != 0 && a < 0) ? q - 1 : q;
-}
 
 // Position the criterion measures from: truncated to integers for integer sites (as
 // NearestSite::squaredInt converts), the float position otherwise.
@@ -111,70 +108,30 @@ ExactField exactIntegerEdt(const Grid& seeds) {
         if (slot < 0 || criterion.better(x, y, c, sites[std::size_t(slot)])) slot = int(i);
     }
 
-    // Phase 1: per column, the vertical distance g to the nearest site in that column and its row.
-    const long long inf = static_cast<long long>(w) + h; // beats no real distance
-    std::vector<long long> g(siteAt.size(), inf);
-    std::vector<int> gRow(siteAt.size(), -1);
-    auto idx = [w](int x, int y) { return std::size_t(y) * std::size_t(w) + std::size_t(x); };
-    for (int x = 0; x < w; ++x) {
-        for (int y = 0; y < h; ++y) {
-            if (siteAt[idx(x, y)] >= 0) {
-                g[idx(x, y)] = 0;
-                gRow[idx(x, y)] = y;
-            } else if (y > 0 && gRow[idx(x, y - 1)] >= 0) {
-                g[idx(x, y)] = g[idx(x, y - 1)] + 1;
-                gRow[idx(x, y)] = gRow[idx(x, y - 1)];
-            }
-        }
-        for (int y = h - 2; y >= 0; --y) {
-            if (gRow[idx(x, y + 1)] >= 0 && g[idx(x, y + 1)] + 1 < g[idx(x, y)]) {
-                g[idx(x, y)] = g[idx(x, y + 1)] + 1;
-                gRow[idx(x, y)] = gRow[idx(x, y + 1)];
-            }
-        }
+    // Separable (as the 3D reference): squared distances along each column to the nearest site
+    // in it, then along each row over those. Position (x, y) ends up with the column c of its
+    // nearest site, and (c, y) kept that site's row r from the column pass.
+    const std::size_t n = siteAt.size();
+    std::vector<std::int64_t> dist(n, detail::kFarSquared);
+    for (std::size_t i = 0; i < n; ++i) {
+        if (siteAt[i] >= 0) dist[i] = 0;
     }
-
-    // Phase 2: per row, the lower envelope of the parabolas f_i(x) = (x - i)^2 + g(i)^2.
+    std::vector<int> nearestRow(n), nearestColumn(n);
+    const auto wz = std::size_t(w);
+    detail::transformLines(
+        dist.data(), nearestRow.data(), wz, h, wz, [](std::size_t x) { return x; }, 1);
+    detail::transformLines(
+        dist.data(), nearestColumn.data(), std::size_t(h), w, 1,
+        [wz](std::size_t y) { return y * wz; }, 1);
     ExactField field = emptyField(w, h);
-    std::vector<int> column(static_cast<std::size_t>(w)); // envelope: parabola k is column[k] ...
-    std::vector<int> from(static_cast<std::size_t>(w));   // ... and lowest from x = from[k] on
     for (int y = 0; y < h; ++y) {
-        auto gi = [&](int i) { return g[idx(i, y)]; };
-        auto f = [&](long long x, int i) { return (x - i) * (x - i) + gi(i) * gi(i); };
-        // Largest x at which parabola i (< u) is still no higher than parabola u.
-        auto sep = [&](int i, int u) {
-            return floorDiv(static_cast<long long>(u) * u - static_cast<long long>(i) * i +
-                                gi(u) * gi(u) - gi(i) * gi(i),
-                            2LL * (u - i));
-        };
-        std::size_t q = 0;
-        bool any = true;
-        column[0] = 0;
-        from[0] = 0;
-        for (int u = 1; u < w; ++u) {
-            while (any && f(from[q], column[q]) > f(from[q], u)) {
-                if (q == 0)
-                    any = false;
-                else
-                    --q;
-            }
-            if (!any) {
-                any = true;
-                column[0] = u;
-            } else if (const long long next = 1 + sep(column[q], u); next < w) {
-                ++q;
-                column[q] = u;
-                from[q] = int(next);
-            }
-        }
-        for (int x = w - 1; x >= 0; --x) {
-            const int c = column[q];
-            const int row = gRow[idx(c, y)];
-            if (row >= 0) {
-                field.nearest.cells[idx(x, y)] = sites[std::size_t(siteAt[idx(c, row)])];
-                field.distSq[idx(x, y)] = double(f(x, c));
-            }
-            if (x == from[q] && q > 0) --q;
+        for (int x = 0; x < w; ++x) {
+            const std::size_t i = std::size_t(y) * wz + std::size_t(x);
+            const int c = nearestColumn[i];
+            const int r = nearestRow[std::size_t(y) * wz + std::size_t(c)];
+            field.nearest.cells[i] =
+                sites[std::size_t(siteAt[std::size_t(r) * wz + std::size_t(c)])];
+            field.distSq[i] = double(dist[i]);
         }
     }
     return field;

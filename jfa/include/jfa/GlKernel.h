@@ -31,48 +31,43 @@ gl::Texture uploadGrid(const Grid& grid);
 /// Reads an RGBA32F texture back into a grid.
 Grid readGrid(const gl::Texture& texture);
 
-class GlFloodKernel {
+/// What one dispatch of the kernel programs does: the jfa_pass shaders' uMode, so the values are
+/// fixed by the GLSL.
+enum class GlDispatch : int {
+    Pass = 0,           // one pass of step uStep
+    ExpandThenPass = 1, // the first pass of the full-resolution stage (on expandProgram_)
+    Downsample = 2,     // full-resolution seeds to the half-resolution stage
+};
+
+/// The criterion-independent part of a GL kernel: programs, ping-pong textures, dispatches and
+/// the plan loop. Use GlFloodKernel<C>, which ties the programs to a criterion type.
+class GlFloodKernelBase {
   public:
     /// Called after every pass with its index, the pass and the texture it wrote.
     using PassCallback = std::function<void(int, const Pass&, const gl::Texture&)>;
-
-    /// Builds the kernel programs with the criterion's GLSL file (Criterion::glslFile) linked in.
-    GlFloodKernel(const ShaderLibrary& shaders, const std::string& criterionFile,
-                  GlKernelKind kind);
-
-    /// Runs `plan` on full-resolution `seeds` (plan.width() x plan.height(), not modified);
-    /// returns the full-resolution result, owned by the kernel until the next run. If `timer`
-    /// is given, each pass is timed as "jfa step K" (and "downsample").
-    template <Criterion C>
-    const gl::Texture& run(const Plan& plan, const gl::Texture& seeds, const C& criterion,
-                           PassTimer* timer = nullptr, const PassCallback& callback = {}) {
-        for (const gl::Program* p : {&passProgram_, &expandProgram_})
-            setCriterionUniforms(*p, criterion);
-        return runPlan(plan, seeds, timer, callback);
-    }
-
-    /// Convenience for tests and tools: upload, run, read back.
-    template <Criterion C>
-    Grid run(const Plan& plan, const Grid& seeds, const C& criterion) {
-        const gl::Texture in = uploadGrid(seeds);
-        return readGrid(run(plan, in, criterion));
-    }
 
     /// Passes the last run actually executed ("until unchanged" stages may stop early).
     [[nodiscard]] int passesRun() const { return passesRun_; }
     [[nodiscard]] GlKernelKind kind() const { return kind_; }
 
-  private:
+  protected:
+    /// Builds the kernel programs with `criterionFile` (a criterion's glslFile) linked in.
+    GlFloodKernelBase(const ShaderLibrary& shaders, const std::string& criterionFile,
+                      GlKernelKind kind);
+
+    /// The plan loop, once the criterion's uniforms are set on both programs.
     const gl::Texture& runPlan(const Plan& plan, const gl::Texture& seeds, PassTimer* timer,
                                const PassCallback& callback);
-    // One dispatch: mode 0 pass, 1 expand + pass, 2 downsample.
+
+    gl::Program passProgram_;   // passes and downsampling
+    gl::Program expandProgram_; // the pass that expands the half-resolution stage (JFA_EXPAND)
+
+  private:
     void dispatch(const gl::Texture& src, const gl::Texture& seeds, const gl::Texture& dst,
-                  int mode, int step, int scale, bool countChanges);
+                  GlDispatch what, int step, int scale, bool countChanges);
     const gl::Texture& otherTexture(int width, int height, const gl::Texture* current);
 
     GlKernelKind kind_;
-    gl::Program passProgram_;   // passes and downsampling
-    gl::Program expandProgram_; // the pass that expands the half-resolution stage (JFA_EXPAND)
     gl::VertexArray emptyVao_;
     gl::Buffer changedCounter_;
     struct Pair {
@@ -81,6 +76,35 @@ class GlFloodKernel {
     };
     std::map<std::pair<int, int>, Pair> pairs_;
     int passesRun_ = 0;
+};
+
+/// A GL kernel for criterion C. Its programs link C::glslFile when it is built, and run() takes
+/// a C only, so a kernel cannot run a criterion whose GLSL it was not built with: that does not
+/// compile.
+template <Criterion C>
+class GlFloodKernel : public GlFloodKernelBase {
+    static_assert(C::glslFile != nullptr, "a GL kernel needs a criterion with a GLSL file");
+
+  public:
+    /// Builds the kernel programs with C::glslFile linked in.
+    GlFloodKernel(const ShaderLibrary& shaders, GlKernelKind kind)
+        : GlFloodKernelBase(shaders, C::glslFile, kind) {}
+
+    /// Runs `plan` on full-resolution `seeds` (plan.width() x plan.height(), not modified);
+    /// returns the full-resolution result, owned by the kernel until the next run. If `timer`
+    /// is given, each pass is timed as "jfa step K" (and "downsample").
+    const gl::Texture& run(const Plan& plan, const gl::Texture& seeds, const C& criterion,
+                           PassTimer* timer = nullptr, const PassCallback& callback = {}) {
+        for (const gl::Program* p : {&passProgram_, &expandProgram_})
+            setCriterionUniforms(*p, criterion);
+        return runPlan(plan, seeds, timer, callback);
+    }
+
+    /// Convenience for tests and tools: upload, run, read back.
+    Grid run(const Plan& plan, const Grid& seeds, const C& criterion) {
+        const gl::Texture in = uploadGrid(seeds);
+        return readGrid(run(plan, in, criterion));
+    }
 };
 
 } // namespace fl::jfa

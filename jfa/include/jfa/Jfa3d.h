@@ -1,7 +1,9 @@
 #pragma once
 // Jump flooding in 3D (thesis §4.6): a CPU simulation of 3D JFA and its variants on a W x H x D
 // voxel grid, the exact 3D distance reference, the slice-by-slice variant (§4.6.2) and the error
-// counts and experiment behind Fig. 4.16 / 4.17. CPU only, no GL; its own small kernels.
+// counts and experiment behind Fig. 4.16 / 4.17. CPU only, no GL. The 3D pass is its own; a
+// slice flood is the 2D CPU kernel (jfa/CpuKernel.h) with a 3D-distance criterion, and the exact
+// transform runs the 1D lower envelope exactIntegerEdt (jfa/Reference.h) is built from.
 //
 // Conventions. Sites have integer coordinates inside the grid and an id; every result cell holds
 // the index of a site in the list the function was given (kNoSite = none). The nearest site wins;

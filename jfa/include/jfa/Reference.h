@@ -44,8 +44,9 @@ double squaredDistance(const NearestSite& criterion, int px, int py, const Cell&
 /// Brute force, O(W * H * sites): every grid point checks every site (tests of the others only).
 ExactField bruteForceNearest(const Grid& seeds, const NearestSite& criterion);
 
-/// Exact Euclidean distance transform of integer sites (Meijster, Roerdink, Hesselink 2000:
-/// column scans, then lower envelopes of parabolas per row), O(W * H), integer arithmetic. Every
+/// Exact Euclidean distance transform of integer sites (separable: lower envelopes of parabolas
+/// along columns, then rows, as in Meijster et al. 2000 and Felzenszwalb & Huttenlocher 2012;
+/// the same 1D transform as the 3D reference of jfa/Jfa3d.h), O(W * H), integer arithmetic. Every
 /// site must have integral coordinates inside the grid (std::invalid_argument otherwise); sites
 /// sharing a position keep NearestSite's better one there. Records a nearest site, not
 /// necessarily NearestSite's tie winner.

@@ -55,9 +55,9 @@ struct OverlayRenderer::Impl {
 
 namespace overlay {
 State::State(const ShaderLibrary& shaders)
-    : canvas(shaders), siteKernel(shaders, jfa::NearestSite::glslFile, jfa::GlKernelKind::Fragment),
-      penumbraKernel(shaders, PenumbraCriterion::glslFile, jfa::GlKernelKind::Fragment),
-      eyeKernel(shaders, EyeSoftCriterion::glslFile, jfa::GlKernelKind::Fragment) {}
+    : canvas(shaders), siteKernel(shaders, jfa::GlKernelKind::Fragment),
+      penumbraKernel(shaders, jfa::GlKernelKind::Fragment),
+      eyeKernel(shaders, jfa::GlKernelKind::Fragment) {}
 } // namespace overlay
 
 OverlayRenderer::OverlayRenderer(const ShaderLibrary& shaders)

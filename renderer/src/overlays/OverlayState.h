@@ -3,9 +3,12 @@
 
 #include <renderer/overlays/Overlay.h>
 #include <renderer/overlays/OverlayCanvas.h>
+#include <renderer/soft/EyeSoftShadow.h>
+#include <renderer/soft/PenumbraCriterion.h>
 
 #include <geometry/Delaunay.h>
 #include <jfa/GlKernel.h>
+#include <jfa/NearestSite.h>
 
 #include <optional>
 #include <string>
@@ -47,9 +50,9 @@ struct ReferenceCache {
 struct State {
     explicit State(const ShaderLibrary& shaders);
     OverlayCanvas canvas;
-    jfa::GlFloodKernel siteKernel;     // NearestSite: Voronoi, distance transform, playground
-    jfa::GlFloodKernel penumbraKernel; // PenumbraCriterion: JFA-L pass by pass, reference flood
-    jfa::GlFloodKernel eyeKernel;      // EyeSoftCriterion: JFA-E pass by pass, reference flood
+    jfa::GlFloodKernel<jfa::NearestSite> siteKernel;      // Voronoi, distance transform, playground
+    jfa::GlFloodKernel<PenumbraCriterion> penumbraKernel; // JFA-L pass by pass, reference flood
+    jfa::GlFloodKernel<EyeSoftCriterion> eyeKernel;       // JFA-E pass by pass, reference flood
     OverlayResult result;
     DelaunayCache delaunay;
     ReferenceCache reference;

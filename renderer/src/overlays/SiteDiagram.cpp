@@ -47,7 +47,8 @@ jfa::Grid sitesFromSeeds(const jfa::Grid& seeds) {
     return out;
 }
 
-SiteDiagram floodSites(jfa::GlFloodKernel& kernel, const jfa::Plan& plan, const jfa::Grid& sites) {
+SiteDiagram floodSites(jfa::GlFloodKernel<jfa::NearestSite>& kernel, const jfa::Plan& plan,
+                       const jfa::Grid& sites) {
     const jfa::NearestSite criterion{true};
     SiteDiagram d;
     using Clock = std::chrono::steady_clock;

@@ -141,8 +141,7 @@ EyeSoftShadowPass::EyeSoftShadowPass(const ShaderLibrary& shaders)
                                              {GL_FRAGMENT_SHADER, "jfae_boundary.frag.glsl"}})),
       composite_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
                                               {GL_FRAGMENT_SHADER, "jfae_composite.frag.glsl"}})),
-      emptyVao_(gl::VertexArray::create()),
-      kernel_(shaders, EyeSoftCriterion::glslFile, jfa::GlKernelKind::Fragment) {}
+      emptyVao_(gl::VertexArray::create()), kernel_(shaders, jfa::GlKernelKind::Fragment) {}
 
 void EyeSoftShadowPass::resize(int width, int height, int shadowSize) {
     if (!ids_ || ids_.width() != shadowSize) ids_ = gl::Texture(GL_R32F, shadowSize, shadowSize);

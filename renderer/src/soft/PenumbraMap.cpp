@@ -65,8 +65,7 @@ jfa::Grid silhouetteSeeds(const ReceiverGrid& r, const DiskLight& light, float t
 PenumbraMapPass::PenumbraMapPass(const ShaderLibrary& shaders)
     : silhouette_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
                                                {GL_FRAGMENT_SHADER, "silhouette.frag.glsl"}})),
-      emptyVao_(gl::VertexArray::create()),
-      kernel_(shaders, PenumbraCriterion::glslFile, jfa::GlKernelKind::Fragment) {}
+      emptyVao_(gl::VertexArray::create()), kernel_(shaders, jfa::GlKernelKind::Fragment) {}
 
 PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, PassTimer* timer) {
     const int size = in.receivers.width();

@@ -42,6 +42,7 @@ struct SiteDiagram {
 };
 
 /// Floods integer `sites` (NearestSite cells) with `plan` on the GPU and judges the result.
-SiteDiagram floodSites(jfa::GlFloodKernel& kernel, const jfa::Plan& plan, const jfa::Grid& sites);
+SiteDiagram floodSites(jfa::GlFloodKernel<jfa::NearestSite>& kernel, const jfa::Plan& plan,
+                       const jfa::Grid& sites);
 
 } // namespace fl::overlay

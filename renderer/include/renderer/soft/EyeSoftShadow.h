@@ -144,7 +144,7 @@ class EyeSoftShadowPass {
     gl::VertexArray emptyVao_;
     gl::Texture ids_, points_, occluders_, seeds_, visibility_;
     gl::Framebuffer eyeFbo_, seedsFbo_, visibilityFbo_;
-    jfa::GlFloodKernel kernel_;
+    jfa::GlFloodKernel<EyeSoftCriterion> kernel_;
 };
 
 } // namespace fl

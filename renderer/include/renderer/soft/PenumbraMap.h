@@ -55,7 +55,7 @@ class PenumbraMapPass {
     gl::VertexArray emptyVao_;
     gl::Texture seeds_;
     gl::Framebuffer fbo_;
-    jfa::GlFloodKernel kernel_;
+    jfa::GlFloodKernel<PenumbraCriterion> kernel_;
 };
 
 } // namespace fl
