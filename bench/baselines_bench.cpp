@@ -4,6 +4,7 @@
 // |d| over receivers). With --sampling-error the ground truth's own sampling error: N
 // against 2N samples.
 
+#include <base/Stats.h>
 #include <renderer/Capture.h>
 #include <renderer/EglContext.h>
 #include <renderer/GltfLoader.h>
@@ -16,12 +17,6 @@
 #include <iostream>
 
 namespace {
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const size_t n = v.size();
-    return n == 0 ? 0.0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 struct Entry {
     std::string label;
@@ -100,7 +95,7 @@ int main(int argc, char** argv) {
         // method's frame.
         const fl::FloatImage mask = fl::readTexture(entries.front().renderer->receivers(), 1);
 
-        const double hardMedian = median(entries.front().ms);
+        const double hardMedian = fl::median(entries.front().ms);
         std::printf("default scene %dx%d, map %dx%d, light radius %.2f, reference N=%d at %dx%d\n",
                     size, size, shadowMap, shadowMap, static_cast<double>(radius), samples,
                     referenceMap, referenceMap);
@@ -110,8 +105,8 @@ int main(int argc, char** argv) {
             const fl::VisibilityDifference d =
                 fl::visibilityDifference(e.visibility, reference.visibility, mask);
             std::printf("%-12s %10.2f %10.2f %8.2f %8zu %10.4f %8.3f\n", e.label.c_str(),
-                        *std::min_element(e.ms.begin(), e.ms.end()), median(e.ms),
-                        median(e.ms) / hardMedian, e.ms.size(), d.rmse, d.maxAbs);
+                        fl::minimum(e.ms), fl::median(e.ms), fl::median(e.ms) / hardMedian,
+                        e.ms.size(), d.rmse, d.maxAbs);
         }
         if (samplingError) {
             fl::RenderSettings s = reference.settings;

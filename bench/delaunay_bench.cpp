@@ -15,6 +15,7 @@
 // sorted canonical triangle lists must be identical; grids, circles and lines have many valid
 // Delaunay triangulations, so there our result is checked exactly (checkTriangulation) instead.
 
+#include <base/Stats.h>
 #include <geometry/Delaunay.h>
 #include <jfa/Sites.h>
 
@@ -260,17 +261,9 @@ ChildRun spawnChild(const std::vector<std::string>& args, int timeoutS) {
     return out;
 }
 
-double minOf(const std::vector<double>& v) {
-    return *std::min_element(v.begin(), v.end());
-}
-double medianOf(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const std::size_t m = v.size() / 2;
-    return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
-}
 double med(const Values& v, const std::string& key) {
     const auto it = v.find(key);
-    return it == v.end() || it->second.empty() ? std::nan("") : medianOf(it->second);
+    return it == v.end() || it->second.empty() ? std::nan("") : fl::median(it->second);
 }
 
 std::string fmt(double v, int digits = 1) {
@@ -308,13 +301,14 @@ void writeRows(const std::string& d, int texture, const ChildRun& base, const Ch
         else
             same = med(o, "checkok") == 1.0 ? "count + check" : "NO: check failed";
     }
-    const double cg = cgal.ok ? medianOf(cgal.values.at("total")) : std::nan("");
-    const double ot = ours.ok ? medianOf(o.at("total")) : std::nan("");
+    const double cg = cgal.ok ? fl::median(cgal.values.at("total")) : std::nan("");
+    const double ot = ours.ok ? fl::median(o.at("total")) : std::nan("");
     double gsum = 0.0, csum = 0.0;
     for (const char* k : {"g1", "g2", "g3", "g4", "g5", "g6"}) gsum += med(o, k);
     for (const char* k : {"c1", "c2", "c3", "c4"}) csum += med(o, k);
     auto times = [&](const ChildRun& r) {
-        return r.ok ? fmt(minOf(r.values.at("total"))) + " / " + fmt(medianOf(r.values.at("total")))
+        return r.ok ? fmt(fl::minimum(r.values.at("total"))) + " / " +
+                          fmt(fl::median(r.values.at("total")))
                     : r.error;
     };
     table << "| " << d << " | " << fmt(points, 0) << " | " << fmt(side, 0) << " | " << times(cgal)

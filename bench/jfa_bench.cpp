@@ -2,6 +2,7 @@
 // Every configuration runs --runs times in one process and context; min and median reported,
 // with ratios taken between medians measured side by side in this same run.
 
+#include <base/Stats.h>
 #include <renderer/EglContext.h>
 
 #include <jfa/CpuKernel.h>
@@ -34,9 +35,7 @@ Timing timeRuns(int runs, const std::function<void()>& f) {
         glFinish();
         ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
     }
-    std::sort(ms.begin(), ms.end());
-    return {ms.front(),
-            ms.size() % 2 ? ms[ms.size() / 2] : 0.5 * (ms[ms.size() / 2 - 1] + ms[ms.size() / 2])};
+    return {fl::minimum(ms), fl::median(ms)};
 }
 
 void row(const std::string& what, const Timing& t, int passes) {

@@ -3,6 +3,7 @@
 // thesis Fig. 5.10). Prints min and median over --frames frames after --warmup frames, all in
 // one process/context.
 
+#include <base/Stats.h>
 #include <renderer/EglContext.h>
 #include <renderer/GltfLoader.h>
 #include <renderer/Renderer.h>
@@ -20,12 +21,6 @@
 #include <sys/resource.h>
 
 namespace {
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 long peakRssKiB() {
     rusage u{};
@@ -118,12 +113,11 @@ int main(int argc, char** argv) {
                   << std::fixed << std::setprecision(2);
         for (const auto& [name, v] : passMs)
             std::cout << "  " << std::left << std::setw(12) << name << " min " << std::right
-                      << std::setw(8) << *std::min_element(v.begin(), v.end()) << " ms   median "
-                      << std::setw(8) << median(v) << " ms\n";
+                      << std::setw(8) << fl::minimum(v) << " ms   median " << std::setw(8)
+                      << fl::median(v) << " ms\n";
         std::cout << "  " << std::left << std::setw(12) << "frame"
-                  << " min " << std::right << std::setw(8)
-                  << *std::min_element(frameMs.begin(), frameMs.end()) << " ms   median "
-                  << std::setw(8) << median(frameMs) << " ms\n"
+                  << " min " << std::right << std::setw(8) << fl::minimum(frameMs)
+                  << " ms   median " << std::setw(8) << fl::median(frameMs) << " ms\n"
                   << "peak RSS: " << peakRssKiB() / 1024
                   << " MiB (after loading the scene: " << rssScene / 1024 << " MiB)\n";
     } catch (const std::exception& e) {

@@ -7,6 +7,7 @@
 //  - frame time (shadow map + forward, no diagnostics) with each provider, interleaved frame by
 //    frame, min and median, and TSM / uniform.
 
+#include <base/Stats.h>
 #include <renderer/CameraPath.h>
 #include <renderer/Capture.h>
 #include <renderer/EglContext.h>
@@ -23,15 +24,6 @@
 
 namespace {
 
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const size_t n = v.size();
-    return n == 0 ? 0.0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-double minOf(const std::vector<double>& v) {
-    return *std::min_element(v.begin(), v.end());
-}
 double maxOf(const std::vector<double>& v) {
     return *std::max_element(v.begin(), v.end());
 }
@@ -159,25 +151,25 @@ int main(int argc, char** argv) {
             const Series& s = series[k];
             std::cout << names[k] << ":\n"
                       << "  footprint (px/texel), median over frames: all median "
-                      << median(s.fpMed) << " p95 " << median(s.fpP95) << "; near median "
-                      << median(s.nearMed) << " p95 " << median(s.nearP95) << "\n"
+                      << fl::median(s.fpMed) << " p95 " << fl::median(s.fpP95) << "; near median "
+                      << fl::median(s.nearMed) << " p95 " << fl::median(s.nearP95) << "\n"
                       << "  flicker (share of receivers flipping per frame): mean "
                       << 100 * mean(s.flicker) << "% max " << 100 * maxOf(s.flicker)
                       << "%; per shadow-edge pixel: mean " << 100 * mean(s.flickerPerEdge)
                       << "% max " << 100 * maxOf(s.flickerPerEdge) << "%\n"
-                      << "  frame (shadow map + forward): min " << minOf(s.frameMs)
-                      << " ms, median " << median(s.frameMs) << " ms ("
+                      << "  frame (shadow map + forward): min " << fl::minimum(s.frameMs)
+                      << " ms, median " << fl::median(s.frameMs) << " ms ("
                       << renderers[k]->timer().modeName() << ")\n";
             if (k == 1)
                 std::cout << "  frames with the uniform fallback blended in: " << s.degenerateFrames
                           << " of " << frames << "\n";
         }
         std::cout << "ratios uniform / tsm footprint near the viewer: median "
-                  << median(series[0].nearMed) / median(series[1].nearMed) << ", p95 "
-                  << median(series[0].nearP95) / median(series[1].nearP95) << "\n"
+                  << fl::median(series[0].nearMed) / fl::median(series[1].nearMed) << ", p95 "
+                  << fl::median(series[0].nearP95) / fl::median(series[1].nearP95) << "\n"
                   << "tsm / uniform frame time: min "
-                  << minOf(series[1].frameMs) / minOf(series[0].frameMs) << ", median "
-                  << median(series[1].frameMs) / median(series[0].frameMs) << "\n";
+                  << fl::minimum(series[1].frameMs) / fl::minimum(series[0].frameMs) << ", median "
+                  << fl::median(series[1].frameMs) / fl::median(series[0].frameMs) << "\n";
     } catch (const std::exception& e) {
         std::cerr << "error: " << e.what() << "\n";
         return 1;
