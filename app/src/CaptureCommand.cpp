@@ -5,6 +5,7 @@
 
 #include "CaptureResults.h"
 #include "Commands.h"
+#include "FrameRunner.h"
 
 #include <renderer/Capture.h>
 #include <renderer/EglContext.h>
@@ -12,11 +13,9 @@
 #include <renderer/soft/EyeSoftShadow.h>
 #include <renderer/soft/SoftStats.h>
 
-#include <chrono>
 #include <iomanip>
 #include <iostream>
 #include <memory>
-#include <unistd.h>
 
 namespace fl::app {
 
@@ -51,45 +50,14 @@ void prepareOutput(const fs::path& dir) {
     }
 }
 
-class Progress {
-  public:
-    explicit Progress(int total) : total_(total), tty_(::isatty(STDOUT_FILENO) != 0) {}
-    void step(int done) {
-        if (!tty_) return;
-        const double s = std::chrono::duration<double>(Clock::now() - start_).count();
-        const int width = 30, filled = total_ > 0 ? width * done / total_ : width;
-        const double eta = done > 0 ? s / done * (total_ - done) : 0.0;
-        std::cout << "\r[" << std::string(static_cast<size_t>(filled), '#')
-                  << std::string(static_cast<size_t>(width - filled), '.') << "] " << done << "/"
-                  << total_ << " frames, " << std::fixed << std::setprecision(0) << s << " s, ETA "
-                  << eta << " s " << std::defaultfloat << std::flush;
-    }
-    void finish() {
-        if (tty_) std::cout << "\n";
-    }
-
-  private:
-    using Clock = std::chrono::steady_clock;
-    int total_;
-    bool tty_;
-    Clock::time_point start_ = Clock::now();
-};
-
-std::vector<std::pair<std::string, double>> phases(const Renderer& r) {
-    std::vector<std::pair<std::string, double>> out;
-    for (const PassTime& p : r.timer().passes()) out.emplace_back(p.name, p.ms);
-    return out;
-}
-
-// The standard-flooding counterpart of a JFA run (same pass count), or -1.
+// The standard-flooding run a JFA run's |dI| buckets are measured against: the script's run of
+// referenceOf(its method) at the same size and pass count; -1 if the script has none.
 int counterpartOf(const std::vector<MethodRun>& runs, std::size_t k, int defaultPasses) {
     const MethodSpec& m = runs[k].spec;
-    const ShadowMethod want = m.method == ShadowMethod::JfaL   ? ShadowMethod::FloodL
-                              : m.method == ShadowMethod::JfaE ? ShadowMethod::FloodE
-                                                               : ShadowMethod::Hard;
-    if (want == ShadowMethod::Hard) return -1;
+    const std::optional<ShadowMethod> want = referenceOf(m.method);
+    if (!want) return -1;
     for (std::size_t c = 0; c < runs.size(); ++c)
-        if (runs[c].spec.method == want && runs[c].width == runs[k].width &&
+        if (runs[c].spec.method == *want && runs[c].width == runs[k].width &&
             runs[c].height == runs[k].height &&
             runs[c].spec.passes.value_or(defaultPasses) == m.passes.value_or(defaultPasses))
             return static_cast<int>(c);
@@ -145,28 +113,34 @@ int runCapture(const CaptureRequest& req) {
               << script.methods.size() << " methods x " << script.resolutions.size()
               << " resolution(s); reference " << script.reference.samples << " samples, "
               << script.reference.mapSize << "^2 maps\n";
-    Progress progress(script.frames * static_cast<int>(script.resolutions.size()));
-    int done = 0;
+    FrameRunner runner(script.frames * static_cast<int>(script.resolutions.size()));
     for (const auto& [w, h] : script.resolutions) {
         const std::string size = std::to_string(w) + "x" + std::to_string(h);
         const std::size_t first = results.runs.size();
         // One renderer per method: each keeps its own maps and timers, and the reference's
-        // maps (its own size) are never shared with a method's.
+        // maps (its own size) are never shared with a method's. Lane 0 is the reference; a
+        // `reference` entry in the script's methods reads lane 0 rather than rendering twice.
         Renderer reference(shaders, scene, refSettings);
         reference.resize(w, h);
         std::vector<std::unique_ptr<Renderer>> renderers;
+        std::vector<Lane> lanes(1);
+        lanes[0] = {"reference", &reference, {}};
+        std::vector<std::size_t> laneOf;
         for (const MethodSpec& m : script.methods) {
             MethodRun run;
             run.spec = m;
             run.label = severalSizes ? m.label + " @" + size : m.label;
             run.width = w;
             run.height = h;
+            laneOf.push_back(0);
+            if (m.method != ShadowMethod::Reference) {
+                renderers.push_back(
+                    std::make_unique<Renderer>(shaders, scene, settingsFor(base, m)));
+                renderers.back()->resize(w, h);
+                laneOf.back() = lanes.size();
+                lanes.push_back({run.label, renderers.back().get(), {}});
+            }
             results.runs.push_back(std::move(run));
-            renderers.push_back(
-                m.method == ShadowMethod::Reference
-                    ? nullptr
-                    : std::make_unique<Renderer>(shaders, scene, settingsFor(base, m)));
-            if (renderers.back()) renderers.back()->resize(w, h);
         }
         std::vector<int> counterpart;
         for (std::size_t k = first; k < results.runs.size(); ++k) {
@@ -174,62 +148,49 @@ int runCapture(const CaptureRequest& req) {
             counterpart.push_back(c);
             if (c >= 0) results.runs[k].counterpart = results.runs[static_cast<size_t>(c)].label;
         }
-        const CameraPath path =
-            script.camera ? *script.camera
-                          : defaultWalkthrough(initialCamera(scene, so, w, h), scene.bounds);
-        const float aspect = static_cast<float>(w) / static_cast<float>(h);
+        const FramePlan plan{&scene,
+                             script.camera
+                                 ? *script.camera
+                                 : defaultWalkthrough(initialCamera(scene, so, w, h), scene.bounds),
+                             script.frames,
+                             w,
+                             h,
+                             script.lightKeys};
         const fs::path framesDir = dir / "frames" / size;
         std::vector<FloatImage> previous(script.methods.size());
         FloatImage previousReference, previousReceivers;
-        for (int i = 0; i < script.frames; ++i) {
-            if (!script.lightKeys.empty()) {
-                Light light = sceneLight(scene);
-                light.position = lightPositionAt(script.lightKeys, i, script.frames);
-                if (light.type != Light::Type::Spot)
-                    light.direction = glm::normalize(scene.bounds.center() - light.position);
-                reference.setLight(light);
-                for (auto& r : renderers)
-                    if (r) r->setLight(light);
-            }
-            const CameraView cam = path.frame(i, script.frames, scene.bounds, aspect);
+        runner.run(plan, lanes, [&](int i, std::vector<FrameImages>& laneImages) {
             char stem[32];
             std::snprintf(stem, sizeof stem, "frame_%05d", i);
-            reference.render(cam);
-            const FrameImages ref = readFrame(reference);
-            results.referenceFrameMs.push_back(reference.timer().frameMs());
-            requireFinite(ref.visibility, "reference visibility, frame " + std::to_string(i));
-            if (script.saveFrames) writeFrame(ref, framesDir / "reference", stem);
-            std::vector<FrameImages> images(script.methods.size());
+            const FrameImages& ref = laneImages[0];
+            if (script.saveFrames) {
+                writeFrame(ref, framesDir / "reference", stem);
+                for (std::size_t k = 0; k < script.methods.size(); ++k)
+                    if (laneOf[k] != 0)
+                        writeFrame(laneImages[laneOf[k]],
+                                   framesDir / safeName(script.methods[k].label), stem);
+            }
             // Flicker compares with the previous frame: count pixels that are receivers in both.
             const FloatImage flickerReceivers =
                 i > 0 ? bothReceivers(previousReceivers, ref.receivers) : FloatImage{};
+            std::vector<FloatImage> visibility(script.methods.size());
             for (std::size_t k = 0; k < script.methods.size(); ++k) {
                 MethodRun& run = results.runs[first + k];
-                const Renderer& r = renderers[k] ? *renderers[k] : reference;
-                if (renderers[k]) {
-                    renderers[k]->render(cam);
-                    images[k] = readFrame(r);
-                    requireFinite(images[k].visibility,
-                                  run.label + " visibility, frame " + std::to_string(i));
-                    if (script.saveFrames)
-                        writeFrame(images[k], framesDir / safeName(run.spec.label), stem);
-                } else {
-                    images[k] = ref; // the script lists `reference`: its row, against itself
-                }
+                // A `reference` entry's row is the reference against itself (lane 0, copied);
+                // every other lane belongs to one method alone.
+                visibility[k] =
+                    laneOf[k] == 0 ? ref.visibility : std::move(laneImages[laneOf[k]].visibility);
                 FrameRow row;
                 row.frame = i;
                 // Every method sees the same surfaces: the reference's receivers are theirs.
-                row.metrics =
-                    compareWithReference(images[k].visibility, ref.visibility, ref.receivers);
+                row.metrics = compareWithReference(visibility[k], ref.visibility, ref.receivers);
                 if (i > 0)
-                    row.flicker = addedFlicker(previous[k], images[k].visibility, previousReference,
+                    row.flicker = addedFlicker(previous[k], visibility[k], previousReference,
                                                ref.visibility, flickerReceivers);
-                row.phasesMs = phases(r);
-                row.frameMs = r.timer().frameMs();
                 if (row.metrics.rmse > run.worstRmse) {
                     run.worstRmse = row.metrics.rmse;
                     run.worstFrame = i;
-                    run.worstMethod = images[k].visibility;
+                    run.worstMethod = visibility[k];
                     run.worstReference = ref.visibility;
                     run.worstReceivers = ref.receivers;
                 }
@@ -239,20 +200,23 @@ int runCapture(const CaptureRequest& req) {
                 if (counterpart[k] >= 0)
                     results.runs[first + k].rows.back().deltaBuckets =
                         compareSoftShadows(
-                            images[k].visibility,
-                            images[static_cast<std::size_t>(counterpart[k]) - first].visibility)
+                            visibility[k],
+                            visibility[static_cast<std::size_t>(counterpart[k]) - first])
                             .deltaBuckets;
-                previous[k] = std::move(images[k].visibility);
+                previous[k] = std::move(visibility[k]);
             }
             previousReference = ref.visibility;
             previousReceivers = ref.receivers;
-            progress.step(++done);
-        }
+        });
+        for (std::size_t k = 0; k < script.methods.size(); ++k)
+            results.runs[first + k].times = lanes[laneOf[k]].times;
+        const std::vector<double>& refMs = lanes[0].times.frameMs();
+        results.referenceFrameMs.insert(results.referenceFrameMs.end(), refMs.begin(), refMs.end());
     }
-    progress.finish();
+    runner.finish();
 
     // Everything is measured; now the outputs, the summary and the report last.
-    writeTextFile(dir / "frames.csv", resultsCsv(results));
+    writeCsv(dir / "frames.csv", resultsCsv(results));
     const fs::path imageDir = dir / "report";
     for (const MethodRun& run : results.runs)
         writePng(
@@ -262,7 +226,7 @@ int runCapture(const CaptureRequest& req) {
                                           run.worstReceivers)}));
     const nlohmann::json summary = resultsSummary(results);
     try {
-        writeTextFile(dir / "summary.json", summary.dump(2) + "\n");
+        writeJson(dir / "summary.json", summary);
         writeTextFile(dir / "report.html", reportHtml(results, summary, "report"));
     } catch (...) {
         std::error_code ec;
