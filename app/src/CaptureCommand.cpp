@@ -64,14 +64,9 @@ int counterpartOf(const std::vector<MethodRun>& runs, std::size_t k, int default
     return -1;
 }
 
-int runCapture(const CaptureRequest& req) {
-    CaptureScript script;
-    try {
-        script = readCaptureScript(req.script);
-    } catch (const CaptureScriptError& e) {
-        throw InputError(e.what());
-    }
-    // JFA-E / flood-E flood the frame: their pass count must fit every resolution.
+// JFA-E / flood-E flood the frame: their pass count must fit every resolution. Checked before
+// anything is rendered, so a bad script fails in a second with the field named.
+void checkEyePassCounts(const CaptureScript& script) {
     for (const auto& [w, h] : script.resolutions)
         for (const MethodSpec& m : script.methods) {
             if (m.method != ShadowMethod::JfaE && m.method != ShadowMethod::FloodE) continue;
@@ -84,138 +79,145 @@ int runCapture(const CaptureRequest& req) {
                                  e.what());
             }
         }
-    const fs::path dir(req.out);
-    prepareOutput(dir);
+}
 
-    SceneOptions so;
-    so.scene = script.scene.string();
-    so.lightRadius = script.lightRadius;
-    so.shaderDir = req.shaderDir;
-    so.shadowMapSize = script.shadowMapSize;
-    so.shadowMap = script.shadowMapProvider;
-    so.jfaPasses = script.jfaPasses;
-    so.timing = req.timing;
-    const Scene scene = loadScene(so);
-    auto context = EglContext::create();
-    const ShaderLibrary shaders = makeShaderLibrary(so);
-    const RenderSettings base = makeRenderSettings(so);
-    RenderSettings refSettings = base;
-    refSettings.method = ShadowMethod::Reference;
-    refSettings.reference = script.reference;
+// What every resolution of a capture shares.
+struct CaptureSetup {
+    const CaptureScript& script;
+    const SceneOptions& options;
+    const Scene& scene;
+    const ShaderLibrary& shaders;
+    RenderSettings base, reference;
+    fs::path dir;
+};
 
-    CaptureResults results;
-    results.script = &script;
-    results.context = context->description();
-    results.sceneName = scene.source;
-    const bool severalSizes = script.resolutions.size() > 1;
-    std::cout << "context: " << results.context << "\nscene: " << scene.source << " ("
-              << scene.triangleCount() << " triangles), " << script.frames << " frames x "
-              << script.methods.size() << " methods x " << script.resolutions.size()
-              << " resolution(s); reference " << script.reference.samples << " samples, "
-              << script.reference.mapSize << "^2 maps\n";
-    FrameRunner runner(script.frames * static_cast<int>(script.resolutions.size()));
-    for (const auto& [w, h] : script.resolutions) {
-        const std::string size = std::to_string(w) + "x" + std::to_string(h);
-        const std::size_t first = results.runs.size();
-        // One renderer per method: each keeps its own maps and timers, and the reference's
-        // maps (its own size) are never shared with a method's. Lane 0 is the reference; a
-        // `reference` entry in the script's methods reads lane 0 rather than rendering twice.
-        Renderer reference(shaders, scene, refSettings);
-        reference.resize(w, h);
-        std::vector<std::unique_ptr<Renderer>> renderers;
-        std::vector<Lane> lanes(1);
-        lanes[0] = {"reference", &reference, {}};
-        std::vector<std::size_t> laneOf;
-        for (const MethodSpec& m : script.methods) {
-            MethodRun run;
-            run.spec = m;
-            run.label = severalSizes ? m.label + " @" + size : m.label;
-            run.width = w;
-            run.height = h;
-            laneOf.push_back(0);
-            if (m.method != ShadowMethod::Reference) {
-                renderers.push_back(
-                    std::make_unique<Renderer>(shaders, scene, settingsFor(base, m)));
-                renderers.back()->resize(w, h);
-                laneOf.back() = lanes.size();
-                lanes.push_back({run.label, renderers.back().get(), {}});
+// The metrics of one resolution's runs, frame by frame: each method against the ground truth,
+// its added flicker since the previous frame, its worst frame, and a JFA run's |dI| buckets
+// against its standard-flooding counterpart.
+class FrameScorer {
+  public:
+    FrameScorer(std::vector<MethodRun>& runs, std::size_t first, int jfaPasses)
+        : runs_(runs), first_(first), previous_(runs.size() - first) {
+        for (std::size_t k = first; k < runs.size(); ++k) {
+            const int c = counterpartOf(runs, k, jfaPasses);
+            counterpart_.push_back(c);
+            if (c >= 0) runs[k].counterpart = runs[static_cast<std::size_t>(c)].label;
+        }
+    }
+
+    /// Scores frame i: `visibility` holds one image per run (moved from), `ref` the truth.
+    void score(int i, std::vector<FloatImage>& visibility, const FrameImages& ref) {
+        // Flicker compares with the previous frame: count pixels that are receivers in both.
+        const FloatImage flickerReceivers =
+            i > 0 ? bothReceivers(previousReceivers_, ref.receivers) : FloatImage{};
+        for (std::size_t k = 0; k < visibility.size(); ++k) {
+            MethodRun& run = runs_[first_ + k];
+            FrameRow row;
+            row.frame = i;
+            // Every method sees the same surfaces: the reference's receivers are theirs.
+            row.metrics = compareWithReference(visibility[k], ref.visibility, ref.receivers);
+            if (i > 0)
+                row.flicker = addedFlicker(previous_[k], visibility[k], previousReference_,
+                                           ref.visibility, flickerReceivers);
+            if (row.metrics.rmse > run.worstRmse) {
+                run.worstRmse = row.metrics.rmse;
+                run.worstFrame = i;
+                run.worstMethod = visibility[k];
+                run.worstReference = ref.visibility;
+                run.worstReceivers = ref.receivers;
             }
-            results.runs.push_back(std::move(run));
+            run.rows.push_back(std::move(row));
         }
-        std::vector<int> counterpart;
-        for (std::size_t k = first; k < results.runs.size(); ++k) {
-            const int c = counterpartOf(results.runs, k, script.jfaPasses);
-            counterpart.push_back(c);
-            if (c >= 0) results.runs[k].counterpart = results.runs[static_cast<size_t>(c)].label;
+        for (std::size_t k = 0; k < visibility.size(); ++k) {
+            if (counterpart_[k] >= 0)
+                runs_[first_ + k].rows.back().deltaBuckets =
+                    compareSoftShadows(
+                        visibility[k],
+                        visibility[static_cast<std::size_t>(counterpart_[k]) - first_])
+                        .deltaBuckets;
+            previous_[k] = std::move(visibility[k]);
         }
-        const FramePlan plan{&scene,
-                             script.camera
-                                 ? *script.camera
-                                 : defaultWalkthrough(initialCamera(scene, so, w, h), scene.bounds),
-                             script.frames,
-                             w,
-                             h,
-                             script.lightKeys};
-        const fs::path framesDir = dir / "frames" / size;
-        std::vector<FloatImage> previous(script.methods.size());
-        FloatImage previousReference, previousReceivers;
-        runner.run(plan, lanes, [&](int i, std::vector<FrameImages>& laneImages) {
+        previousReference_ = ref.visibility;
+        previousReceivers_ = ref.receivers;
+    }
+
+  private:
+    std::vector<MethodRun>& runs_;
+    std::size_t first_;
+    std::vector<int> counterpart_;
+    std::vector<FloatImage> previous_;
+    FloatImage previousReference_, previousReceivers_;
+};
+
+// Every frame of the script at w x h: appends one MethodRun per method to `results`.
+void captureSize(const CaptureSetup& c, int w, int h, FrameRunner& runner,
+                 CaptureResults& results) {
+    const CaptureScript& script = c.script;
+    const std::string size = std::to_string(w) + "x" + std::to_string(h);
+    const std::size_t first = results.runs.size();
+    // One renderer per method: each keeps its own maps and timers, and the reference's maps (its
+    // own size) are never shared with a method's. Lane 0 is the reference; a `reference` entry
+    // in the script's methods reads lane 0 rather than rendering the ground truth twice.
+    Renderer reference(c.shaders, c.scene, c.reference);
+    reference.resize(w, h);
+    std::vector<std::unique_ptr<Renderer>> renderers;
+    std::vector<Lane> lanes(1);
+    lanes[0] = {"reference", &reference, {}};
+    std::vector<std::size_t> laneOf;
+    for (const MethodSpec& m : script.methods) {
+        MethodRun run;
+        run.spec = m;
+        run.label = script.resolutions.size() > 1 ? m.label + " @" + size : m.label;
+        run.width = w;
+        run.height = h;
+        laneOf.push_back(0);
+        if (m.method != ShadowMethod::Reference) {
+            renderers.push_back(
+                std::make_unique<Renderer>(c.shaders, c.scene, settingsFor(c.base, m)));
+            renderers.back()->resize(w, h);
+            laneOf.back() = lanes.size();
+            lanes.push_back({run.label, renderers.back().get(), {}});
+        }
+        results.runs.push_back(std::move(run));
+    }
+    FrameScorer scorer(results.runs, first, script.jfaPasses);
+    const FramePlan plan{
+        &c.scene,
+        script.camera ? *script.camera
+                      : defaultWalkthrough(initialCamera(c.scene, c.options, w, h), c.scene.bounds),
+        script.frames,
+        w,
+        h,
+        script.lightKeys};
+    const fs::path framesDir = c.dir / "frames" / size;
+    runner.run(plan, lanes, [&](int i, std::vector<FrameImages>& laneImages) {
+        const FrameImages& ref = laneImages[0];
+        if (script.saveFrames) {
             char stem[32];
             std::snprintf(stem, sizeof stem, "frame_%05d", i);
-            const FrameImages& ref = laneImages[0];
-            if (script.saveFrames) {
-                writeFrame(ref, framesDir / "reference", stem);
-                for (std::size_t k = 0; k < script.methods.size(); ++k)
-                    if (laneOf[k] != 0)
-                        writeFrame(laneImages[laneOf[k]],
-                                   framesDir / safeName(script.methods[k].label), stem);
-            }
-            // Flicker compares with the previous frame: count pixels that are receivers in both.
-            const FloatImage flickerReceivers =
-                i > 0 ? bothReceivers(previousReceivers, ref.receivers) : FloatImage{};
-            std::vector<FloatImage> visibility(script.methods.size());
-            for (std::size_t k = 0; k < script.methods.size(); ++k) {
-                MethodRun& run = results.runs[first + k];
-                // A `reference` entry's row is the reference against itself (lane 0, copied);
-                // every other lane belongs to one method alone.
-                visibility[k] =
-                    laneOf[k] == 0 ? ref.visibility : std::move(laneImages[laneOf[k]].visibility);
-                FrameRow row;
-                row.frame = i;
-                // Every method sees the same surfaces: the reference's receivers are theirs.
-                row.metrics = compareWithReference(visibility[k], ref.visibility, ref.receivers);
-                if (i > 0)
-                    row.flicker = addedFlicker(previous[k], visibility[k], previousReference,
-                                               ref.visibility, flickerReceivers);
-                if (row.metrics.rmse > run.worstRmse) {
-                    run.worstRmse = row.metrics.rmse;
-                    run.worstFrame = i;
-                    run.worstMethod = visibility[k];
-                    run.worstReference = ref.visibility;
-                    run.worstReceivers = ref.receivers;
-                }
-                run.rows.push_back(std::move(row));
-            }
-            for (std::size_t k = 0; k < script.methods.size(); ++k) {
-                if (counterpart[k] >= 0)
-                    results.runs[first + k].rows.back().deltaBuckets =
-                        compareSoftShadows(
-                            visibility[k],
-                            visibility[static_cast<std::size_t>(counterpart[k]) - first])
-                            .deltaBuckets;
-                previous[k] = std::move(visibility[k]);
-            }
-            previousReference = ref.visibility;
-            previousReceivers = ref.receivers;
-        });
+            writeFrame(ref, framesDir / "reference", stem);
+            for (std::size_t k = 0; k < script.methods.size(); ++k)
+                if (laneOf[k] != 0)
+                    writeFrame(laneImages[laneOf[k]], framesDir / safeName(script.methods[k].label),
+                               stem);
+        }
+        std::vector<FloatImage> visibility(script.methods.size());
         for (std::size_t k = 0; k < script.methods.size(); ++k)
-            results.runs[first + k].times = lanes[laneOf[k]].times;
-        const std::vector<double>& refMs = lanes[0].times.frameMs();
-        results.referenceFrameMs.insert(results.referenceFrameMs.end(), refMs.begin(), refMs.end());
-    }
-    runner.finish();
+            // A `reference` entry's row is the reference against itself (lane 0, copied);
+            // every other lane belongs to one method alone.
+            visibility[k] =
+                laneOf[k] == 0 ? ref.visibility : std::move(laneImages[laneOf[k]].visibility);
+        scorer.score(i, visibility, ref);
+    });
+    for (std::size_t k = 0; k < script.methods.size(); ++k)
+        results.runs[first + k].times = lanes[laneOf[k]].times;
+    const std::vector<double>& refMs = lanes[0].times.frameMs();
+    results.referenceFrameMs.insert(results.referenceFrameMs.end(), refMs.begin(), refMs.end());
+}
 
-    // Everything is measured; now the outputs, the summary and the report last.
+// frames.csv, the worst-frame pictures, summary.json, and report.html last; a report that
+// cannot be written takes the summary with it, so neither claims a run that did not finish.
+nlohmann::json writeOutputs(const fs::path& dir, const CaptureResults& results) {
     writeCsv(dir / "frames.csv", resultsCsv(results));
     const fs::path imageDir = dir / "report";
     for (const MethodRun& run : results.runs)
@@ -233,7 +235,10 @@ int runCapture(const CaptureRequest& req) {
         fs::remove(dir / "summary.json", ec);
         throw;
     }
+    return summary;
+}
 
+void printSummaryTable(const nlohmann::json& summary) {
     std::cout << std::left << std::setw(22) << "method" << std::right << std::setw(10) << "rmse"
               << std::setw(12) << "rmse pen." << std::setw(10) << "miscl.%" << std::setw(11)
               << "flicker" << std::setw(11) << "frame ms"
@@ -247,7 +252,53 @@ int runCapture(const CaptureRequest& req) {
                   << std::setprecision(5) << std::setw(11) << m["addedFlicker"].get<double>()
                   << std::setprecision(2) << std::setw(11) << m["medianFrameMs"].get<double>()
                   << "\n";
-    std::cout << std::defaultfloat << "wrote " << (dir / "frames.csv").string() << ", "
+    std::cout << std::defaultfloat;
+}
+
+int runCapture(const CaptureRequest& req) {
+    CaptureScript script;
+    try {
+        script = readCaptureScript(req.script);
+    } catch (const CaptureScriptError& e) {
+        throw InputError(e.what());
+    }
+    checkEyePassCounts(script);
+    const fs::path dir(req.out);
+    prepareOutput(dir);
+
+    SceneOptions so;
+    so.scene = script.scene.string();
+    so.lightRadius = script.lightRadius;
+    so.shaderDir = req.shaderDir;
+    so.shadowMapSize = script.shadowMapSize;
+    so.shadowMap = script.shadowMapProvider;
+    so.jfaPasses = script.jfaPasses;
+    so.timing = req.timing;
+    const Scene scene = loadScene(so);
+    auto context = EglContext::create();
+    const ShaderLibrary shaders = makeShaderLibrary(so);
+    CaptureSetup setup{script, so, scene, shaders, makeRenderSettings(so), {}, dir};
+    setup.reference = setup.base;
+    setup.reference.method = ShadowMethod::Reference;
+    setup.reference.reference = script.reference;
+
+    CaptureResults results;
+    results.script = &script;
+    results.context = context->description();
+    results.sceneName = scene.source;
+    std::cout << "context: " << results.context << "\nscene: " << scene.source << " ("
+              << scene.triangleCount() << " triangles), " << script.frames << " frames x "
+              << script.methods.size() << " methods x " << script.resolutions.size()
+              << " resolution(s); reference " << script.reference.samples << " samples, "
+              << script.reference.mapSize << "^2 maps\n";
+    FrameRunner runner(script.frames * static_cast<int>(script.resolutions.size()));
+    for (const auto& [w, h] : script.resolutions) captureSize(setup, w, h, runner, results);
+    runner.finish();
+
+    // Everything is measured; now the outputs, the summary and the report last.
+    const nlohmann::json summary = writeOutputs(dir, results);
+    printSummaryTable(summary);
+    std::cout << "wrote " << (dir / "frames.csv").string() << ", "
               << (dir / "summary.json").string() << ", " << (dir / "report.html").string()
               << (script.saveFrames ? ", frames under " + (dir / "frames").string() : "") << "\n";
     return 0;
