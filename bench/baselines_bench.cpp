@@ -4,6 +4,7 @@
 // |d| over receivers). With --sampling-error the ground truth's own sampling error: N
 // against 2N samples.
 
+#include <base/Stats.h>
 #include <renderer/Capture.h>
 #include <renderer/EglContext.h>
 #include <renderer/GltfLoader.h>

@@ -15,6 +15,7 @@
 // sorted canonical triangle lists must be identical; grids, circles and lines have many valid
 // Delaunay triangulations, so there our result is checked exactly (checkTriangulation) instead.
 
+#include <base/Stats.h>
 #include <geometry/Delaunay.h>
 #include <jfa/Sites.h>
 

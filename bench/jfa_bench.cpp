@@ -2,6 +2,7 @@
 // Every configuration runs --runs times in one process and context; min and median reported,
 // with ratios taken between medians measured side by side in this same run.
 
+#include <base/Stats.h>
 #include <renderer/EglContext.h>
 
 #include <jfa/CpuKernel.h>

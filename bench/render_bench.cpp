@@ -3,6 +3,7 @@
 // thesis Fig. 5.10). Prints min and median over --frames frames after --warmup frames, all in
 // one process/context.
 
+#include <base/Stats.h>
 #include <renderer/EglContext.h>
 #include <renderer/GltfLoader.h>
 #include <renderer/Renderer.h>

@@ -5,6 +5,7 @@
 
 #include "CaptureResults.h"
 #include "Commands.h"
+#include "FrameRunner.h"
 
 #include <renderer/Capture.h>
 #include <renderer/EglContext.h>
@@ -12,11 +13,9 @@
 #include <renderer/soft/EyeSoftShadow.h>
 #include <renderer/soft/SoftStats.h>
 
-#include <chrono>
 #include <iomanip>
 #include <iostream>
 #include <memory>
-#include <unistd.h>
 
 namespace fl::app {
 
@@ -51,50 +50,195 @@ void prepareOutput(const fs::path& dir) {
     }
 }
 
-class Progress {
-  public:
-    explicit Progress(int total) : total_(total), tty_(::isatty(STDOUT_FILENO) != 0) {}
-    void step(int done) {
-        if (!tty_) return;
-        const double s = std::chrono::duration<double>(Clock::now() - start_).count();
-        const int width = 30, filled = total_ > 0 ? width * done / total_ : width;
-        const double eta = done > 0 ? s / done * (total_ - done) : 0.0;
-        std::cout << "\r[" << std::string(static_cast<size_t>(filled), '#')
-                  << std::string(static_cast<size_t>(width - filled), '.') << "] " << done << "/"
-                  << total_ << " frames, " << std::fixed << std::setprecision(0) << s << " s, ETA "
-                  << eta << " s " << std::defaultfloat << std::flush;
-    }
-    void finish() {
-        if (tty_) std::cout << "\n";
-    }
-
-  private:
-    using Clock = std::chrono::steady_clock;
-    int total_;
-    bool tty_;
-    Clock::time_point start_ = Clock::now();
-};
-
-std::vector<std::pair<std::string, double>> phases(const Renderer& r) {
-    std::vector<std::pair<std::string, double>> out;
-    for (const PassTime& p : r.timer().passes()) out.emplace_back(p.name, p.ms);
-    return out;
-}
-
-// The standard-flooding counterpart of a JFA run (same pass count), or -1.
+// The standard-flooding run a JFA run's |dI| buckets are measured against: the script's run of
+// referenceOf(its method) at the same size and pass count; -1 if the script has none.
 int counterpartOf(const std::vector<MethodRun>& runs, std::size_t k, int defaultPasses) {
     const MethodSpec& m = runs[k].spec;
-    const std::string_view want = methodOrThrow(m.method).reference;
-    if (want.empty()) return -1;
+    const std::optional<std::string> want = referenceOf(m.method);
+    if (!want) return -1;
     const auto passes = [&](const MethodSpec& spec) {
         const MethodOption& o = floodPassesOption();
         return spec.options.has(o.flag) ? spec.options.integer(o) : defaultPasses;
     };
     for (std::size_t c = 0; c < runs.size(); ++c)
-        if (runs[c].spec.method == want && runs[c].width == runs[k].width &&
+        if (runs[c].spec.method == *want && runs[c].width == runs[k].width &&
             runs[c].height == runs[k].height && passes(runs[c].spec) == passes(m))
             return static_cast<int>(c);
     return -1;
+}
+
+// What every resolution of a capture shares.
+struct CaptureSetup {
+    const CaptureScript& script;
+    const SceneOptions& options;
+    const Scene& scene;
+    const ShaderLibrary& shaders;
+    RenderSettings base, reference;
+    fs::path dir;
+};
+
+// The metrics of one resolution's runs, frame by frame: each method against the ground truth,
+// its added flicker since the previous frame, its worst frame, and a JFA run's |dI| buckets
+// against its standard-flooding counterpart.
+class FrameScorer {
+  public:
+    FrameScorer(std::vector<MethodRun>& runs, std::size_t first, int jfaPasses)
+        : runs_(runs), first_(first), previous_(runs.size() - first) {
+        for (std::size_t k = first; k < runs.size(); ++k) {
+            const int c = counterpartOf(runs, k, jfaPasses);
+            counterpart_.push_back(c);
+            if (c >= 0) runs[k].counterpart = runs[static_cast<std::size_t>(c)].label;
+        }
+    }
+
+    /// Scores frame i: `visibility` holds one image per run (moved from), `ref` the truth.
+    void score(int i, std::vector<FloatImage>& visibility, const FrameImages& ref) {
+        // Flicker compares with the previous frame: count pixels that are receivers in both.
+        const FloatImage flickerReceivers =
+            i > 0 ? bothReceivers(previousReceivers_, ref.receivers) : FloatImage{};
+        for (std::size_t k = 0; k < visibility.size(); ++k) {
+            MethodRun& run = runs_[first_ + k];
+            FrameRow row;
+            row.frame = i;
+            // Every method sees the same surfaces: the reference's receivers are theirs.
+            row.metrics = compareWithReference(visibility[k], ref.visibility, ref.receivers);
+            if (i > 0)
+                row.flicker = addedFlicker(previous_[k], visibility[k], previousReference_,
+                                           ref.visibility, flickerReceivers);
+            if (row.metrics.rmse > run.worstRmse) {
+                run.worstRmse = row.metrics.rmse;
+                run.worstFrame = i;
+                run.worstMethod = visibility[k];
+                run.worstReference = ref.visibility;
+                run.worstReceivers = ref.receivers;
+            }
+            run.rows.push_back(std::move(row));
+        }
+        for (std::size_t k = 0; k < visibility.size(); ++k) {
+            if (counterpart_[k] >= 0)
+                runs_[first_ + k].rows.back().deltaBuckets =
+                    compareSoftShadows(
+                        visibility[k],
+                        visibility[static_cast<std::size_t>(counterpart_[k]) - first_])
+                        .deltaBuckets;
+            previous_[k] = std::move(visibility[k]);
+        }
+        previousReference_ = ref.visibility;
+        previousReceivers_ = ref.receivers;
+    }
+
+  private:
+    std::vector<MethodRun>& runs_;
+    std::size_t first_;
+    std::vector<int> counterpart_;
+    std::vector<FloatImage> previous_;
+    FloatImage previousReference_, previousReceivers_;
+};
+
+// Every frame of the script at w x h: appends one MethodRun per method to `results`.
+void captureSize(const CaptureSetup& c, int w, int h, FrameRunner& runner,
+                 CaptureResults& results) {
+    const CaptureScript& script = c.script;
+    const std::string size = std::to_string(w) + "x" + std::to_string(h);
+    const std::size_t first = results.runs.size();
+    // One renderer per method: each keeps its own maps and timers, and the reference's maps (its
+    // own size) are never shared with a method's. Lane 0 is the reference; a `reference` entry
+    // in the script's methods reads lane 0 rather than rendering the ground truth twice.
+    Renderer reference(c.shaders, c.scene, c.reference);
+    reference.resize(w, h);
+    std::vector<std::unique_ptr<Renderer>> renderers;
+    std::vector<Lane> lanes(1);
+    lanes[0] = {"reference", &reference, {}};
+    std::vector<std::size_t> laneOf;
+    for (const MethodSpec& m : script.methods) {
+        MethodRun run;
+        run.spec = m;
+        run.label = script.resolutions.size() > 1 ? m.label + " @" + size : m.label;
+        run.width = w;
+        run.height = h;
+        laneOf.push_back(0);
+        if (m.method != c.reference.method) {
+            renderers.push_back(
+                std::make_unique<Renderer>(c.shaders, c.scene, settingsFor(c.base, m)));
+            renderers.back()->resize(w, h);
+            laneOf.back() = lanes.size();
+            lanes.push_back({run.label, renderers.back().get(), {}});
+        }
+        results.runs.push_back(std::move(run));
+    }
+    FrameScorer scorer(results.runs, first, script.jfaPasses);
+    const FramePlan plan{
+        &c.scene,
+        script.camera ? *script.camera
+                      : defaultWalkthrough(initialCamera(c.scene, c.options, w, h), c.scene.bounds),
+        script.frames,
+        w,
+        h,
+        script.lightKeys};
+    const fs::path framesDir = c.dir / "frames" / size;
+    runner.run(plan, lanes, [&](int i, std::vector<FrameImages>& laneImages) {
+        const FrameImages& ref = laneImages[0];
+        if (script.saveFrames) {
+            char stem[32];
+            std::snprintf(stem, sizeof stem, "frame_%05d", i);
+            writeFrame(ref, framesDir / "reference", stem);
+            for (std::size_t k = 0; k < script.methods.size(); ++k)
+                if (laneOf[k] != 0)
+                    writeFrame(laneImages[laneOf[k]], framesDir / safeName(script.methods[k].label),
+                               stem);
+        }
+        std::vector<FloatImage> visibility(script.methods.size());
+        for (std::size_t k = 0; k < script.methods.size(); ++k)
+            // A `reference` entry's row is the reference against itself (lane 0, copied);
+            // every other lane belongs to one method alone.
+            visibility[k] =
+                laneOf[k] == 0 ? ref.visibility : std::move(laneImages[laneOf[k]].visibility);
+        scorer.score(i, visibility, ref);
+    });
+    for (std::size_t k = 0; k < script.methods.size(); ++k)
+        results.runs[first + k].times = lanes[laneOf[k]].times;
+    const std::vector<double>& refMs = lanes[0].times.frameMs();
+    results.referenceFrameMs.insert(results.referenceFrameMs.end(), refMs.begin(), refMs.end());
+}
+
+// frames.csv, the worst-frame pictures, summary.json, and report.html last; a report that
+// cannot be written takes the summary with it, so neither claims a run that did not finish.
+nlohmann::json writeOutputs(const fs::path& dir, const CaptureResults& results) {
+    writeCsv(dir / "frames.csv", resultsCsv(results));
+    const fs::path imageDir = dir / "report";
+    for (const MethodRun& run : results.runs)
+        writePng(
+            imageDir / ("worst_" + safeName(run.label) + ".png"),
+            sideBySide({visibilityToGrey(run.worstMethod), visibilityToGrey(run.worstReference),
+                        differencePicture(run.worstMethod, run.worstReference, 4.0f,
+                                          run.worstReceivers)}));
+    const nlohmann::json summary = resultsSummary(results);
+    try {
+        writeJson(dir / "summary.json", summary);
+        writeTextFile(dir / "report.html", reportHtml(results, summary, "report"));
+    } catch (...) {
+        std::error_code ec;
+        fs::remove(dir / "summary.json", ec);
+        throw;
+    }
+    return summary;
+}
+
+void printSummaryTable(const nlohmann::json& summary) {
+    std::cout << std::left << std::setw(22) << "method" << std::right << std::setw(10) << "rmse"
+              << std::setw(12) << "rmse pen." << std::setw(10) << "miscl.%" << std::setw(11)
+              << "flicker" << std::setw(11) << "frame ms"
+              << "\n"
+              << std::fixed;
+    for (const auto& m : summary["methods"])
+        std::cout << std::left << std::setw(22) << m["label"].get<std::string>() << std::right
+                  << std::setprecision(4) << std::setw(10) << m["rmse"].get<double>()
+                  << std::setw(12) << m["rmsePenumbra"].get<double>() << std::setprecision(2)
+                  << std::setw(10) << m["misclassifiedPercent"].get<double>()
+                  << std::setprecision(5) << std::setw(11) << m["addedFlicker"].get<double>()
+                  << std::setprecision(2) << std::setw(11) << m["medianFrameMs"].get<double>()
+                  << "\n";
+    std::cout << std::defaultfloat;
 }
 
 int runCapture(const CaptureRequest& req) {
@@ -119,164 +263,32 @@ int runCapture(const CaptureRequest& req) {
     const Scene scene = loadScene(so);
     auto context = EglContext::create();
     const ShaderLibrary shaders = makeShaderLibrary(so);
-    const RenderSettings base = makeRenderSettings(so);
-    RenderSettings refSettings = base;
-    refSettings.method = "reference";
+    CaptureSetup setup{script, so, scene, shaders, makeRenderSettings(so), {}, dir};
+    setup.reference = setup.base;
+    setup.reference.method = "reference";
     {
-        const MethodDescriptor& truth = methodOrThrow(refSettings.method);
-        refSettings.options.set(truth.option("samples")->flag, script.reference.samples);
-        refSettings.options.set(truth.option("mapSize")->flag, script.reference.mapSize);
+        const MethodDescriptor& truth = methodOrThrow(setup.reference.method);
+        setup.reference.options.set(truth.option("samples")->flag, script.reference.samples);
+        setup.reference.options.set(truth.option("mapSize")->flag, script.reference.mapSize);
     }
 
     CaptureResults results;
     results.script = &script;
     results.context = context->description();
     results.sceneName = scene.source;
-    const bool severalSizes = script.resolutions.size() > 1;
     std::cout << "context: " << results.context << "\nscene: " << scene.source << " ("
               << scene.triangleCount() << " triangles), " << script.frames << " frames x "
               << script.methods.size() << " methods x " << script.resolutions.size()
               << " resolution(s); reference " << script.reference.samples << " samples, "
               << script.reference.mapSize << "^2 maps\n";
-    Progress progress(script.frames * static_cast<int>(script.resolutions.size()));
-    int done = 0;
-    for (const auto& [w, h] : script.resolutions) {
-        const std::string size = std::to_string(w) + "x" + std::to_string(h);
-        const std::size_t first = results.runs.size();
-        // One renderer per method: each keeps its own maps and timers, and the reference's
-        // maps (its own size) are never shared with a method's.
-        Renderer reference(shaders, scene, refSettings);
-        reference.resize(w, h);
-        std::vector<std::unique_ptr<Renderer>> renderers;
-        for (const MethodSpec& m : script.methods) {
-            MethodRun run;
-            run.spec = m;
-            run.label = severalSizes ? m.label + " @" + size : m.label;
-            run.width = w;
-            run.height = h;
-            results.runs.push_back(std::move(run));
-            renderers.push_back(
-                m.method == refSettings.method
-                    ? nullptr
-                    : std::make_unique<Renderer>(shaders, scene, settingsFor(base, m)));
-            if (renderers.back()) renderers.back()->resize(w, h);
-        }
-        std::vector<int> counterpart;
-        for (std::size_t k = first; k < results.runs.size(); ++k) {
-            const int c = counterpartOf(results.runs, k, script.jfaPasses);
-            counterpart.push_back(c);
-            if (c >= 0) results.runs[k].counterpart = results.runs[static_cast<size_t>(c)].label;
-        }
-        const CameraPath path =
-            script.camera ? *script.camera
-                          : defaultWalkthrough(initialCamera(scene, so, w, h), scene.bounds);
-        const float aspect = static_cast<float>(w) / static_cast<float>(h);
-        const fs::path framesDir = dir / "frames" / size;
-        std::vector<FloatImage> previous(script.methods.size());
-        FloatImage previousReference, previousReceivers;
-        for (int i = 0; i < script.frames; ++i) {
-            if (!script.lightKeys.empty()) {
-                Light light = sceneLight(scene);
-                light.position = lightPositionAt(script.lightKeys, i, script.frames);
-                if (light.type != Light::Type::Spot)
-                    light.direction = glm::normalize(scene.bounds.center() - light.position);
-                reference.setLight(light);
-                for (auto& r : renderers)
-                    if (r) r->setLight(light);
-            }
-            const CameraView cam = path.frame(i, script.frames, scene.bounds, aspect);
-            char stem[32];
-            std::snprintf(stem, sizeof stem, "frame_%05d", i);
-            reference.render(cam);
-            const FrameImages ref = readFrame(reference);
-            results.referenceFrameMs.push_back(reference.timer().frameMs());
-            requireFinite(ref.visibility, "reference visibility, frame " + std::to_string(i));
-            if (script.saveFrames) writeFrame(ref, framesDir / "reference", stem);
-            std::vector<FrameImages> images(script.methods.size());
-            // Flicker compares with the previous frame: count pixels that are receivers in both.
-            const FloatImage flickerReceivers =
-                i > 0 ? bothReceivers(previousReceivers, ref.receivers) : FloatImage{};
-            for (std::size_t k = 0; k < script.methods.size(); ++k) {
-                MethodRun& run = results.runs[first + k];
-                const Renderer& r = renderers[k] ? *renderers[k] : reference;
-                if (renderers[k]) {
-                    renderers[k]->render(cam);
-                    images[k] = readFrame(r);
-                    requireFinite(images[k].visibility,
-                                  run.label + " visibility, frame " + std::to_string(i));
-                    if (script.saveFrames)
-                        writeFrame(images[k], framesDir / safeName(run.spec.label), stem);
-                } else {
-                    images[k] = ref; // the script lists `reference`: its row, against itself
-                }
-                FrameRow row;
-                row.frame = i;
-                // Every method sees the same surfaces: the reference's receivers are theirs.
-                row.metrics =
-                    compareWithReference(images[k].visibility, ref.visibility, ref.receivers);
-                if (i > 0)
-                    row.flicker = addedFlicker(previous[k], images[k].visibility, previousReference,
-                                               ref.visibility, flickerReceivers);
-                row.phasesMs = phases(r);
-                row.frameMs = r.timer().frameMs();
-                if (row.metrics.rmse > run.worstRmse) {
-                    run.worstRmse = row.metrics.rmse;
-                    run.worstFrame = i;
-                    run.worstMethod = images[k].visibility;
-                    run.worstReference = ref.visibility;
-                    run.worstReceivers = ref.receivers;
-                }
-                run.rows.push_back(std::move(row));
-            }
-            for (std::size_t k = 0; k < script.methods.size(); ++k) {
-                if (counterpart[k] >= 0)
-                    results.runs[first + k].rows.back().deltaBuckets =
-                        compareSoftShadows(
-                            images[k].visibility,
-                            images[static_cast<std::size_t>(counterpart[k]) - first].visibility)
-                            .deltaBuckets;
-                previous[k] = std::move(images[k].visibility);
-            }
-            previousReference = ref.visibility;
-            previousReceivers = ref.receivers;
-            progress.step(++done);
-        }
-    }
-    progress.finish();
+    FrameRunner runner(script.frames * static_cast<int>(script.resolutions.size()));
+    for (const auto& [w, h] : script.resolutions) captureSize(setup, w, h, runner, results);
+    runner.finish();
 
     // Everything is measured; now the outputs, the summary and the report last.
-    writeTextFile(dir / "frames.csv", resultsCsv(results));
-    const fs::path imageDir = dir / "report";
-    for (const MethodRun& run : results.runs)
-        writePng(
-            imageDir / ("worst_" + safeName(run.label) + ".png"),
-            sideBySide({visibilityToGrey(run.worstMethod), visibilityToGrey(run.worstReference),
-                        differencePicture(run.worstMethod, run.worstReference, 4.0f,
-                                          run.worstReceivers)}));
-    const nlohmann::json summary = resultsSummary(results);
-    try {
-        writeTextFile(dir / "summary.json", summary.dump(2) + "\n");
-        writeTextFile(dir / "report.html", reportHtml(results, summary, "report"));
-    } catch (...) {
-        std::error_code ec;
-        fs::remove(dir / "summary.json", ec);
-        throw;
-    }
-
-    std::cout << std::left << std::setw(22) << "method" << std::right << std::setw(10) << "rmse"
-              << std::setw(12) << "rmse pen." << std::setw(10) << "miscl.%" << std::setw(11)
-              << "flicker" << std::setw(11) << "frame ms"
-              << "\n"
-              << std::fixed;
-    for (const auto& m : summary["methods"])
-        std::cout << std::left << std::setw(22) << m["label"].get<std::string>() << std::right
-                  << std::setprecision(4) << std::setw(10) << m["rmse"].get<double>()
-                  << std::setw(12) << m["rmsePenumbra"].get<double>() << std::setprecision(2)
-                  << std::setw(10) << m["misclassifiedPercent"].get<double>()
-                  << std::setprecision(5) << std::setw(11) << m["addedFlicker"].get<double>()
-                  << std::setprecision(2) << std::setw(11) << m["medianFrameMs"].get<double>()
-                  << "\n";
-    std::cout << std::defaultfloat << "wrote " << (dir / "frames.csv").string() << ", "
+    const nlohmann::json summary = writeOutputs(dir, results);
+    printSummaryTable(summary);
+    std::cout << "wrote " << (dir / "frames.csv").string() << ", "
               << (dir / "summary.json").string() << ", " << (dir / "report.html").string()
               << (script.saveFrames ? ", frames under " + (dir / "frames").string() : "") << "\n";
     return 0;

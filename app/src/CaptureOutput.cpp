@@ -2,10 +2,10 @@
 
 #include "CaptureResults.h"
 
+#include <base/Stats.h>
+
 #include <algorithm>
 #include <cmath>
-#include <iomanip>
-#include <sstream>
 
 namespace fl::app {
 
@@ -13,26 +13,9 @@ namespace {
 
 // Every phase any run timed, in the order first seen (absent phases read 0 in a row).
 std::vector<std::string> allPhases(const CaptureResults& r) {
-    std::vector<std::string> names;
-    for (const MethodRun& m : r.runs)
-        for (const FrameRow& row : m.rows)
-            for (const auto& [name, ms] : row.phasesMs)
-                if (std::find(names.begin(), names.end(), name) == names.end())
-                    names.push_back(name);
-    return names;
-}
-
-double phaseMs(const FrameRow& row, const std::string& name) {
-    double ms = 0.0;
-    for (const auto& [n, v] : row.phasesMs)
-        if (n == name) ms += v;
-    return ms;
-}
-
-std::string csvField(std::string s) {
-    std::replace(s.begin(), s.end(), ' ', '_');
-    std::replace(s.begin(), s.end(), ',', ';');
-    return s;
+    std::vector<const PhaseTimes*> times;
+    for (const MethodRun& m : r.runs) times.push_back(&m.times);
+    return phaseNames(times);
 }
 
 } // namespace
@@ -50,37 +33,49 @@ std::string safeName(const std::string& label) {
     return out.empty() ? "method" : out;
 }
 
-double medianOf(std::vector<double> v) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
-
-std::string resultsCsv(const CaptureResults& r) {
+CsvTable resultsCsv(const CaptureResults& r) {
     const std::vector<std::string> phases = allPhases(r);
-    std::ostringstream csv;
-    csv << "frame,method,width,height,rmse,rmse_penumbra,penumbra_pixels,misclassified_percent,"
-           "width_method_px,width_reference_px,width_error_px,added_flicker,dI_lt_0.05,"
-           "dI_0.05_0.1,dI_0.1_0.2,dI_ge_0.2,frame_ms";
-    for (const std::string& p : phases) csv << "," << csvField(p) << "_ms";
-    csv << "\n" << std::setprecision(6);
+    std::vector<std::string> columns = {"frame",
+                                        "method",
+                                        "width",
+                                        "height",
+                                        "rmse",
+                                        "rmse_penumbra",
+                                        "penumbra_pixels",
+                                        "misclassified_percent",
+                                        "width_method_px",
+                                        "width_reference_px",
+                                        "width_error_px",
+                                        "added_flicker",
+                                        "dI_lt_0.05",
+                                        "dI_0.05_0.1",
+                                        "dI_0.1_0.2",
+                                        "dI_ge_0.2",
+                                        "frame_ms"};
+    for (const std::string& p : phases) columns.push_back(csvName(p) + "_ms");
+    CsvTable csv(columns);
     for (const MethodRun& m : r.runs)
-        for (const FrameRow& row : m.rows) {
+        for (std::size_t i = 0; i < m.rows.size(); ++i) {
+            const FrameRow& row = m.rows[i];
             const FrameMetrics& f = row.metrics;
-            csv << row.frame << "," << csvField(m.label) << "," << m.width << "," << m.height << ","
-                << f.rmse << "," << f.rmsePenumbra << "," << f.penumbraPixels << ","
-                << 100.0 * f.misclassified << "," << f.widthMethod << "," << f.widthReference << ","
-                << f.widthError << ",";
-            if (row.flicker) csv << *row.flicker;
-            for (int k = 0; k < 4; ++k) {
-                csv << ",";
-                if (row.deltaBuckets) csv << 100.0 * (*row.deltaBuckets)[static_cast<size_t>(k)];
+            csv << row.frame << csvName(m.label) << m.width << m.height << f.rmse << f.rmsePenumbra
+                << f.penumbraPixels << 100.0 * f.misclassified << f.widthMethod << f.widthReference
+                << f.widthError;
+            if (row.flicker)
+                csv << *row.flicker;
+            else
+                csv.blank();
+            for (std::size_t k = 0; k < 4; ++k) {
+                if (row.deltaBuckets)
+                    csv << 100.0 * (*row.deltaBuckets)[k];
+                else
+                    csv.blank();
             }
-            csv << "," << row.frameMs;
-            for (const std::string& p : phases) csv << "," << phaseMs(row, p);
-            csv << "\n";
+            csv << m.times.frameMs().at(i);
+            for (const std::string& p : phases) csv << m.times.phaseMs(i, p);
+            csv.endRow();
         }
-    return csv.str();
+    return csv;
 }
 
 nlohmann::json resultsSummary(const CaptureResults& r) {
@@ -96,7 +91,7 @@ nlohmann::json resultsSummary(const CaptureResults& r) {
     j["jfaPasses"] = s.jfaPasses;
     j["reference"] = {{"samples", s.reference.samples},
                       {"mapSize", s.reference.mapSize},
-                      {"medianFrameMs", medianOf(r.referenceFrameMs)}};
+                      {"medianFrameMs", fl::median(r.referenceFrameMs)}};
     j["definitions"] = {
         {"receivers", "the pixels counted: visible surfaces facing the light (N.L > 0), where the "
                       "visibility changes the image"},
@@ -111,18 +106,13 @@ nlohmann::json resultsSummary(const CaptureResults& r) {
     nlohmann::json methods = nlohmann::json::array();
     std::optional<double> hardMs;
     for (const MethodRun& m : r.runs)
-        if (m.spec.method == "hard" && !hardMs) {
-            std::vector<double> t;
-            for (const FrameRow& row : m.rows) t.push_back(row.frameMs);
-            hardMs = medianOf(t);
-        }
+        if (m.spec.method == "hard" && !hardMs) hardMs = m.times.medianFrameMs();
     for (const MethodRun& m : r.runs) {
         double sq = 0.0, sqPen = 0.0, miscl = 0.0, widthErr = 0.0, flick = 0.0;
         double pixels = 0.0, penPixels = 0.0, wm = 0.0, wr = 0.0;
         int flickN = 0;
         std::array<double, 4> buckets{};
         int bucketN = 0;
-        std::vector<double> frameMs;
         for (const FrameRow& row : m.rows) {
             const FrameMetrics& f = row.metrics;
             sq += f.sumSquared;
@@ -141,7 +131,6 @@ nlohmann::json resultsSummary(const CaptureResults& r) {
                 for (std::size_t k = 0; k < 4; ++k) buckets[k] += (*row.deltaBuckets)[k];
                 ++bucketN;
             }
-            frameMs.push_back(row.frameMs);
         }
         const double n = std::max<double>(1.0, static_cast<double>(m.rows.size()));
         nlohmann::json e;
@@ -158,18 +147,12 @@ nlohmann::json resultsSummary(const CaptureResults& r) {
         e["meanWidthPx"] = wm / n;
         e["meanReferenceWidthPx"] = wr / n;
         e["addedFlicker"] = flickN > 0 ? flick / flickN : 0.0;
-        e["medianFrameMs"] = medianOf(frameMs);
-        if (hardMs && *hardMs > 0) e["frameTimeOverHard"] = medianOf(frameMs) / *hardMs;
+        const double frameMs = m.times.medianFrameMs();
+        e["medianFrameMs"] = frameMs;
+        if (hardMs && *hardMs > 0) e["frameTimeOverHard"] = frameMs / *hardMs;
         nlohmann::json ph = nlohmann::json::object();
-        for (const std::string& p : phases) {
-            std::vector<double> v;
-            bool any = false;
-            for (const FrameRow& row : m.rows) {
-                v.push_back(phaseMs(row, p));
-                for (const auto& pr : row.phasesMs) any = any || pr.first == p;
-            }
-            if (any) ph[p] = medianOf(v);
-        }
+        for (const std::string& p : phases)
+            if (m.times.ran(p)) ph[p] = m.times.medianPhaseMs(p);
         e["medianPhaseMs"] = ph;
         e["worstFrame"] = m.worstFrame;
         e["worstFrameRmse"] = m.worstRmse;

@@ -3,6 +3,7 @@
 // (CaptureOutput.cpp: CSV, JSON summary) and the HTML report (Report*.cpp).
 
 #include "CaptureScript.h"
+#include "FrameRunner.h"
 
 #include <renderer/ImageIO.h>
 #include <renderer/Metrics.h>
@@ -25,8 +26,6 @@ struct FrameRow {
     /// |dI| buckets against the standard-flooding counterpart (thesis Fig. 5.4(a)), for JFA
     /// methods whose counterpart is in the script.
     std::optional<std::array<double, 4>> deltaBuckets;
-    std::vector<std::pair<std::string, double>> phasesMs; // per-pass times, in pass order
-    double frameMs = 0.0;
 };
 
 /// Every frame of one method at one resolution, and its worst frame's pictures.
@@ -36,6 +35,7 @@ struct MethodRun {
     int width = 0, height = 0;
     std::string counterpart; // label of the standard-flooding run its dI buckets are against
     std::vector<FrameRow> rows;
+    PhaseTimes times; // frame and per-pass times, one entry per row
     int worstFrame = -1;
     double worstRmse = -1.0;
     FloatImage worstMethod, worstReference; // visibility
@@ -54,12 +54,10 @@ struct CaptureResults {
 std::string safeName(const std::string& label);
 
 /// The CSV: one row per frame x method.
-std::string resultsCsv(const CaptureResults& r);
+CsvTable resultsCsv(const CaptureResults& r);
 /// The JSON summary: per method, pooled RMSEs, mean misclassification, width error, added
 /// flicker, median per-phase and frame times, time relative to `hard`.
 nlohmann::json resultsSummary(const CaptureResults& r);
-/// Median of a list (0 for an empty list).
-double medianOf(std::vector<double> v);
 
 /// The report: one self-contained HTML file (inline SVG charts, images linked relatively from
 /// `imageDir`, which the caller has written: IMAGEDIR/worst_SAFENAME.png).

@@ -8,14 +8,14 @@
 #include "CaptureResults.h"
 #include "ReportSvg.h"
 
+#include <base/Text.h>
+
 #include <iomanip>
 #include <sstream>
 
 namespace fl::app {
 
 namespace {
-
-using svg::escape;
 
 std::string fmt(double v, int precision) {
     std::ostringstream s;
@@ -57,7 +57,7 @@ std::string summaryTable(const nlohmann::json& summary) {
          "<th>misclassified %</th><th>|width error| px</th><th>width px (ref.)</th>"
          "<th>added flicker</th><th>frame ms (median)</th><th>time / hard</th></tr>";
     for (const auto& m : summary["methods"]) {
-        s << "<tr><td>" << escape(m["label"].get<std::string>()) << "</td><td>"
+        s << "<tr><td>" << xmlEscape(m["label"].get<std::string>()) << "</td><td>"
           << fmt(m["rmse"].get<double>(), 4) << "</td><td>"
           << fmt(m["rmsePenumbra"].get<double>(), 4) << "</td><td>"
           << fmt(m["misclassifiedPercent"].get<double>(), 2) << "</td><td>"
@@ -137,9 +137,9 @@ std::string worstFrames(const CaptureResults& r, const std::string& imageDir) {
     std::ostringstream s;
     for (const MethodRun& m : r.runs) {
         if (m.spec.method == "reference") continue;
-        s << "<figure><img src=\"" << escape(imageDir + "/worst_" + safeName(m.label) + ".png")
-          << "\" alt=\"" << escape(m.label) << " worst frame\"><figcaption>" << escape(m.label)
-          << ": frame " << m.worstFrame << ", RMSE " << fmt(m.worstRmse, 4)
+        s << "<figure><img src=\"" << xmlEscape(imageDir + "/worst_" + safeName(m.label) + ".png")
+          << "\" alt=\"" << xmlEscape(m.label) << " worst frame\"><figcaption>"
+          << xmlEscape(m.label) << ": frame " << m.worstFrame << ", RMSE " << fmt(m.worstRmse, 4)
           << " (method | reference | |difference| x4)</figcaption></figure>";
     }
     return s.str();
@@ -153,16 +153,16 @@ std::string reportHtml(const CaptureResults& r, const nlohmann::json& summary,
     std::ostringstream h;
     h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Floodlight "
          "capture: "
-      << escape(s.file.filename().string()) << "</title>" << kStyle << kCheckScript
+      << xmlEscape(s.file.filename().string()) << "</title>" << kStyle << kCheckScript
       << "</head><body>\n<h1>Floodlight capture report</h1>\n<dl><dt>script</dt><dd>"
-      << escape(s.file.string()) << "</dd><dt>scene</dt><dd>" << escape(r.sceneName)
+      << xmlEscape(s.file.string()) << "</dd><dt>scene</dt><dd>" << xmlEscape(r.sceneName)
       << "</dd><dt>frames</dt><dd>" << s.frames << " at";
     for (const auto& [w, h2] : s.resolutions) h << " " << w << "x" << h2;
-    h << "</dd><dt>shadow map</dt><dd>" << escape(s.shadowMapProvider) << " " << s.shadowMapSize
+    h << "</dd><dt>shadow map</dt><dd>" << xmlEscape(s.shadowMapProvider) << " " << s.shadowMapSize
       << "&sup2;, " << s.jfaPasses << " flooding passes</dd><dt>reference</dt><dd>"
       << s.reference.samples << " point-light samples over the disk, " << s.reference.mapSize
       << "&sup2; maps, " << fmt(summary["reference"]["medianFrameMs"].get<double>(), 1)
-      << " ms per frame (median)</dd><dt>GL</dt><dd>" << escape(r.context) << "</dd></dl>\n"
+      << " ms per frame (median)</dd><dt>GL</dt><dd>" << xmlEscape(r.context) << "</dd></dl>\n"
       << "<p>Metrics against the reference count the receivers only: visible surfaces that "
          "face the light (N&middot;L &gt; 0), where the visibility changes the image. Penumbra "
          "pixels are receivers the reference has in "

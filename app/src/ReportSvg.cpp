@@ -1,5 +1,7 @@
 #include "ReportSvg.h"
 
+#include <base/Text.h>
+
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
@@ -47,8 +49,8 @@ std::string open(const std::string& title) {
     return "<svg class=\"chart\" xmlns=\"http://www.w3.org/2000/svg\" width=\"" +
            std::to_string(kW) + "\" height=\"" + std::to_string(kH) + "\" viewBox=\"0 0 " +
            std::to_string(kW) + " " + std::to_string(kH) + "\" role=\"img\"><title>" +
-           escape(title) + "</title><text x=\"" + std::to_string(kLeft) +
-           "\" y=\"18\" class=\"ct\">" + escape(title) + "</text>";
+           xmlEscape(title) + "</title><text x=\"" + std::to_string(kLeft) +
+           "\" y=\"18\" class=\"ct\">" + xmlEscape(title) + "</text>";
 }
 
 // Axes with ticks; x ticks only when xTicks.
@@ -70,9 +72,9 @@ std::string axes(const Frame& f, const std::string& xLabel, const std::string& y
               << "\" text-anchor=\"middle\">" << num(x) << "</text>";
     }
     s << "<text x=\"" << (kLeft + kW - kRight) / 2 << "\" y=\"" << kH - 6
-      << "\" text-anchor=\"middle\">" << escape(xLabel) << "</text><text x=\"14\" y=\""
+      << "\" text-anchor=\"middle\">" << xmlEscape(xLabel) << "</text><text x=\"14\" y=\""
       << (kTop + kH - kBottom) / 2 << "\" transform=\"rotate(-90 14 " << (kTop + kH - kBottom) / 2
-      << ")\" text-anchor=\"middle\">" << escape(yLabel) << "</text></g>";
+      << ")\" text-anchor=\"middle\">" << xmlEscape(yLabel) << "</text></g>";
     return s.str();
 }
 
@@ -83,35 +85,12 @@ std::string legend(const std::vector<std::string>& names) {
         const int y = kTop + 4 + static_cast<int>(i) * 16;
         s << "<rect x=\"" << kW - kRight + 12 << "\" y=\"" << y << "\" width=\"10\" height=\"10\" "
           << "fill=\"" << colour(i) << "\"/><text x=\"" << kW - kRight + 27 << "\" y=\"" << y + 9
-          << "\">" << escape(names[i]) << "</text>";
+          << "\">" << xmlEscape(names[i]) << "</text>";
     }
     return s.str() + "</g>";
 }
 
 } // namespace
-
-std::string escape(const std::string& text) {
-    std::string out;
-    for (char c : text) {
-        switch (c) {
-        case '&':
-            out += "&amp;";
-            break;
-        case '<':
-            out += "&lt;";
-            break;
-        case '>':
-            out += "&gt;";
-            break;
-        case '"':
-            out += "&quot;";
-            break;
-        default:
-            out += c;
-        }
-    }
-    return out;
-}
 
 const char* colour(std::size_t i) {
     static const char* kPalette[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd",
@@ -189,19 +168,19 @@ std::string phaseBars(
     std::ostringstream s;
     s << "<svg class=\"chart\" xmlns=\"http://www.w3.org/2000/svg\" width=\"" << kW
       << "\" height=\"" << height << "\" viewBox=\"0 0 " << kW << " " << height
-      << "\" role=\"img\"><title>" << escape(title) << "</title><text x=\"" << kLeft
-      << "\" y=\"18\" class=\"ct\">" << escape(title) << "</text>";
+      << "\" role=\"img\"><title>" << xmlEscape(title) << "</title><text x=\"" << kLeft
+      << "\" y=\"18\" class=\"ct\">" << xmlEscape(title) << "</text>";
     for (std::size_t r = 0; r < rows.size(); ++r) {
         const double y = kTop + static_cast<double>(r) * rowH;
         s << "<text x=\"" << left - 6 << "\" y=\"" << px(y + 15) << "\" text-anchor=\"end\">"
-          << escape(rows[r].first) << "</text>";
+          << xmlEscape(rows[r].first) << "</text>";
         double x = left, sum = 0.0;
         for (const auto& [name, ms] : rows[r].second) {
             const auto idx = static_cast<std::size_t>(
                 std::find(phaseNames.begin(), phaseNames.end(), name) - phaseNames.begin());
             s << "<rect x=\"" << px(x) << "\" y=\"" << px(y + 3) << "\" width=\""
               << px(std::max(ms * scale, 0.0)) << "\" height=\"" << rowH - 6 << "\" fill=\""
-              << colour(idx) << "\"><title>" << escape(name) << ": " << num(ms)
+              << colour(idx) << "\"><title>" << xmlEscape(name) << ": " << num(ms)
               << " ms</title></rect>";
             x += ms * scale;
             sum += ms;
@@ -229,7 +208,7 @@ std::string scatterChart(const std::string& title, const std::string& xLabel,
         names.push_back(points[i].label);
         s << "<circle class=\"point\" r=\"5\" cx=\"" << px(f.sx(points[i].x)) << "\" cy=\""
           << px(f.sy(points[i].y)) << "\" fill=\"" << colour(i) << "\"><title>"
-          << escape(points[i].label) << ": " << num(points[i].x) << " ms, " << num(points[i].y)
+          << xmlEscape(points[i].label) << ": " << num(points[i].x) << " ms, " << num(points[i].y)
           << "</title></circle>";
     }
     return s.str() + legend(names) + "</svg>";

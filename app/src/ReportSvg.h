@@ -13,8 +13,6 @@ struct Series {
     std::vector<double> values; // one per x position (frame)
 };
 
-/// Text with &, <, >, " escaped for HTML/SVG.
-std::string escape(const std::string& text);
 /// The i-th colour of the palette (cycles).
 const char* colour(std::size_t i);
 

@@ -24,12 +24,6 @@ float verticalFov(const CameraView& v) {
 
 } // namespace
 
-std::optional<std::string> floodReference(const std::string& method) {
-    const MethodDescriptor* m = findMethod(method);
-    if (!m || m->reference.empty()) return std::nullopt;
-    return std::string(m->reference);
-}
-
 std::vector<std::string> cycledMethods() {
     std::vector<std::string> out;
     for (const MethodDescriptor& m : methodTable())
@@ -237,7 +231,7 @@ void Viewer::renderFrame(glm::ivec2 size, float dt) {
     const CameraView view =
         controller_->view(static_cast<float>(size.x) / static_cast<float>(size.y));
     const bool statsFrame =
-        floodReference(renderer_->settings().method) &&
+        referenceOf(renderer_->settings().method) &&
         (statsRequested_ || (options_.statsEvery > 0 && rendered_ >= nextStatsFrame_));
     if (statsFrame)
         renderWithStats(view);

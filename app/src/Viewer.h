@@ -3,6 +3,7 @@
 // come from ViewerInput's table, scripted input from InputScript; both go through the same
 // handlers, so a script exercises exactly what a user's keys do.
 
+#include "FrameRunner.h"
 #include "CameraController.h"
 #include "Common.h"
 #include "InputScript.h"
@@ -100,8 +101,6 @@ class Viewer {
 };
 
 /// The standard-flooding reference of a JFA method (jfa-l -> flood-l, jfa-e -> flood-e).
-/// The standard-flooding reference of `method` from the method table, or nullopt.
-std::optional<std::string> floodReference(const std::string& method);
 /// The window's method list: the table's rows that cycle.
 std::vector<std::string> cycledMethods();
 

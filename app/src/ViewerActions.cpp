@@ -191,7 +191,7 @@ void Viewer::renderWithStats(const CameraView& view) {
     // The reference first, so that the method's frame is the one presented.
     const RenderSettings method = renderer_->settings();
     RenderSettings reference = method;
-    reference.method = *floodReference(method.method);
+    reference.method = *referenceOf(method.method);
     renderer_->setSettings(reference);
     renderer_->render(view);
     const double referenceMs = renderer_->timer().frameMs();
@@ -237,7 +237,7 @@ std::vector<std::string> Viewer::hudLines(const std::vector<std::string>& overla
         times += " " + p.name + " " + fixed(p.ms, 1);
     lines.push_back(times);
     if (stats_ && statsMethod_ == s.method) {
-        lines.push_back("vs " + *floodReference(s.method) + " (frame " +
+        lines.push_back("vs " + *referenceOf(s.method) + " (frame " +
                         std::to_string(statsFrame_) + "): parity differs " +
                         fixed(100.0 * stats_->parityShare, 3) + "% of pixels, |dI|<0.05 " +
                         fixed(100.0 * stats_->deltaBuckets[0], 2) + "% of penumbra pixels, max " +

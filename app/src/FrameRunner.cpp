@@ -1,0 +1,144 @@
+#include "FrameRunner.h"
+
+#include "CaptureScript.h"
+
+#include <base/Stats.h>
+#include <renderer/ImageIO.h>
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <iomanip>
+#include <iostream>
+#include <unistd.h>
+
+namespace fl::app {
+
+std::optional<std::string> referenceOf(const std::string& method) {
+    const MethodDescriptor* m = findMethod(method);
+    if (!m || m->reference.empty()) return std::nullopt;
+    return std::string(m->reference);
+}
+
+void PhaseTimes::record(const PassTimer& timer) {
+    Phases phases;
+    for (const PassTime& p : timer.passes()) phases.emplace_back(p.name, p.ms);
+    phases_.push_back(std::move(phases));
+    frameMs_.push_back(timer.frameMs());
+}
+
+double PhaseTimes::phaseMs(std::size_t i, const std::string& name) const {
+    double ms = 0.0;
+    for (const auto& [n, v] : phases_.at(i))
+        if (n == name) ms += v;
+    return ms;
+}
+
+bool PhaseTimes::ran(const std::string& name) const {
+    for (const Phases& frame : phases_)
+        for (const auto& p : frame)
+            if (p.first == name) return true;
+    return false;
+}
+
+double PhaseTimes::medianFrameMs() const {
+    return fl::median(frameMs_);
+}
+
+double PhaseTimes::medianPhaseMs(const std::string& name) const {
+    std::vector<double> v;
+    for (std::size_t i = 0; i < frames(); ++i) v.push_back(phaseMs(i, name));
+    return fl::median(std::move(v));
+}
+
+std::vector<std::string> phaseNames(const std::vector<const PhaseTimes*>& times) {
+    std::vector<std::string> names;
+    for (const PhaseTimes* t : times)
+        for (std::size_t i = 0; i < t->frames(); ++i)
+            for (const auto& p : t->phases(i))
+                if (std::find(names.begin(), names.end(), p.first) == names.end())
+                    names.push_back(p.first);
+    return names;
+}
+
+FrameRunner::FrameRunner(int totalFrames)
+    : total_(totalFrames), tty_(::isatty(STDOUT_FILENO) != 0) {}
+
+void FrameRunner::run(const FramePlan& plan, std::vector<Lane>& lanes, const OnFrame& onFrame) {
+    const Scene& scene = *plan.scene;
+    const float aspect = static_cast<float>(plan.width) / static_cast<float>(plan.height);
+    std::vector<FrameImages> images(lanes.size());
+    for (int i = 0; i < plan.frames; ++i) {
+        if (!plan.lightKeys.empty()) {
+            Light light = sceneLight(scene);
+            light.position = lightPositionAt(plan.lightKeys, i, plan.frames);
+            // A spot keeps its own direction; other lights aim at the scene as they move.
+            if (light.type != Light::Type::Spot)
+                light.direction = glm::normalize(scene.bounds.center() - light.position);
+            for (Lane& lane : lanes) lane.renderer->setLight(light);
+        }
+        const CameraView cam = plan.path.frame(i, plan.frames, scene.bounds, aspect);
+        for (std::size_t l = 0; l < lanes.size(); ++l) {
+            Renderer& r = *lanes[l].renderer;
+            r.render(cam);
+            images[l] = readFrame(r);
+            requireFinite(images[l].visibility,
+                          lanes[l].label + " visibility, frame " + std::to_string(i));
+            lanes[l].times.record(r.timer());
+        }
+        onFrame(i, images);
+        ++done_;
+        showProgress();
+    }
+}
+
+void FrameRunner::showProgress() {
+    if (!tty_) return;
+    const double s = std::chrono::duration<double>(Clock::now() - start_).count();
+    const int width = 30, filled = total_ > 0 ? width * done_ / total_ : width;
+    const double eta = done_ > 0 ? s / done_ * (total_ - done_) : 0.0;
+    std::cout << "\r[" << std::string(static_cast<size_t>(filled), '#')
+              << std::string(static_cast<size_t>(width - filled), '.') << "] " << done_ << "/"
+              << total_ << " frames, " << std::fixed << std::setprecision(0) << s << " s, ETA "
+              << eta << " s " << std::defaultfloat << std::flush;
+}
+
+void FrameRunner::finish() {
+    if (tty_) std::cout << "\n";
+}
+
+CsvTable::CsvTable(const std::vector<std::string>& columns) {
+    for (const std::string& c : columns) *this << c;
+    endRow();
+}
+
+CsvTable& CsvTable::blank() {
+    separate();
+    return *this;
+}
+
+void CsvTable::endRow() {
+    out_ << "\n";
+    rowStarted_ = false;
+}
+
+void CsvTable::separate() {
+    if (rowStarted_) out_ << ",";
+    rowStarted_ = true;
+}
+
+std::string csvName(std::string text) {
+    std::replace(text.begin(), text.end(), ' ', '_');
+    std::replace(text.begin(), text.end(), ',', ';');
+    return text;
+}
+
+void writeCsv(const std::filesystem::path& path, const CsvTable& table) {
+    writeTextFile(path, table.text());
+}
+
+void writeJson(const std::filesystem::path& path, const nlohmann::json& j) {
+    writeTextFile(path, j.dump(2) + "\n");
+}
+
+} // namespace fl::app

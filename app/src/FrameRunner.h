@@ -1,0 +1,135 @@
+#pragma once
+// The frame loop that `capture` and `compare` share: walk a camera path (and the light along its
+// keys), render every lane each frame, read the frames back, keep each lane's frame and phase
+// times from its renderer's PassTimer, show a progress bar on a terminal. Also what such runs
+// write: CSV tables and JSON summaries, each under a temporary name first, then renamed, so a
+// failed run never leaves a half-written file under the final name.
+
+#include "Common.h"
+
+#include <gpu/PassTimer.h>
+#include <renderer/CameraPath.h>
+#include <renderer/Capture.h>
+
+#include <glm/vec3.hpp>
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstddef>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace fl::app {
+
+/// The standard-flooding method a jump-flooding method is measured against (same pass count),
+/// from the method table (jfa-l -> flood-l, jfa-e -> flood-e); none for every other method.
+std::optional<std::string> referenceOf(const std::string& method);
+
+/// One renderer's times over a run: per frame, the frame's total and each pass its timer reported.
+class PhaseTimes {
+  public:
+    using Phases = std::vector<std::pair<std::string, double>>; // (pass name, ms) in pass order
+
+    /// Appends the frame `timer` has just timed.
+    void record(const PassTimer& timer);
+    [[nodiscard]] std::size_t frames() const { return frameMs_.size(); }
+    [[nodiscard]] const std::vector<double>& frameMs() const { return frameMs_; }
+    /// The passes of frame i, in the order they ran.
+    [[nodiscard]] const Phases& phases(std::size_t i) const { return phases_.at(i); }
+    /// The phase's ms in frame i: summed if it ran more than once, 0 if it did not run.
+    [[nodiscard]] double phaseMs(std::size_t i, const std::string& name) const;
+    /// Whether any frame ran the phase.
+    [[nodiscard]] bool ran(const std::string& name) const;
+    /// Median frame time (fl::median; 0 without frames).
+    [[nodiscard]] double medianFrameMs() const;
+    /// Median of the phase over every frame, counting frames without it as 0.
+    [[nodiscard]] double medianPhaseMs(const std::string& name) const;
+
+  private:
+    std::vector<double> frameMs_;
+    std::vector<Phases> phases_;
+};
+
+/// Every phase any of `times` ran, in the order first seen: the phase columns of a table.
+std::vector<std::string> phaseNames(const std::vector<const PhaseTimes*>& times);
+
+/// One renderer the loop drives. `label` names its frames in error messages.
+struct Lane {
+    std::string label;
+    Renderer* renderer = nullptr;
+    PhaseTimes times; // filled by FrameRunner::run, one entry per frame
+};
+
+/// What one loop renders: frames [0, frames) of `path` at width x height. The light moves along
+/// `lightKeys` (lightPositionAt); with none, each renderer's light stays where it is.
+struct FramePlan {
+    const Scene* scene = nullptr;
+    CameraPath path;
+    int frames = 0;
+    int width = 0, height = 0;
+    std::vector<glm::vec3> lightKeys;
+};
+
+/// Drives lanes through one or more plans, with one progress bar over all of them.
+class FrameRunner {
+  public:
+    /// The frame's images, one per lane in lane order; the callback may move from them.
+    using OnFrame = std::function<void(int frame, std::vector<FrameImages>& images)>;
+
+    /// `totalFrames`: the frames of every plan this runner will run (the progress bar's end).
+    explicit FrameRunner(int totalFrames);
+    /// Renders every frame of `plan` with every lane (in lane order), reads each back, checks
+    /// its visibility is finite, appends the lane's times, then calls `onFrame`.
+    void run(const FramePlan& plan, std::vector<Lane>& lanes, const OnFrame& onFrame);
+    /// Ends the progress line (call once, after the last plan).
+    void finish();
+
+  private:
+    void showProgress();
+
+    using Clock = std::chrono::steady_clock;
+    int total_;
+    int done_ = 0;
+    bool tty_; // the bar is drawn on a terminal only: logs and pipes get no carriage returns
+    Clock::time_point start_ = Clock::now();
+};
+
+/// A CSV table built row by row: the header line, then one line per row. Cells go through an
+/// ostream at its default 6 significant digits.
+class CsvTable {
+  public:
+    explicit CsvTable(const std::vector<std::string>& columns);
+    /// Appends a cell to the current row.
+    template <class T>
+    CsvTable& operator<<(const T& value) {
+        separate();
+        out_ << value;
+        return *this;
+    }
+    /// Appends an empty cell (a value this row does not have).
+    CsvTable& blank();
+    /// Ends the current row.
+    void endRow();
+    [[nodiscard]] std::string text() const { return out_.str(); }
+
+  private:
+    void separate();
+
+    std::ostringstream out_;
+    bool rowStarted_ = false;
+};
+
+/// `text` usable in a CSV header or cell: spaces become '_', commas ';' ("shadow map" ->
+/// "shadow_map").
+std::string csvName(std::string text);
+/// Writes the table to `path` (temporary name, then rename).
+void writeCsv(const std::filesystem::path& path, const CsvTable& table);
+/// Writes `j` indented by 2, with a final newline, to `path` (temporary name, then rename).
+void writeJson(const std::filesystem::path& path, const nlohmann::json& j);
+
+} // namespace fl::app
