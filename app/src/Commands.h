@@ -28,6 +28,11 @@ Runner addMakeSceneCommand(CLI::App& app);
 /// Renders the default scene headless into `outDir`, prints the paths; returns the exit code.
 int renderHeadless(const SceneOptions& scene, int width, int height,
                    const std::filesystem::path& outDir, const std::string& stem);
+/// The main job without a display: the scene with every method of the table and the ground
+/// truth, one labelled picture DIR/STEM.png (name, RMSE against the ground truth, time / hard)
+/// and each method's DIR/STEM.METHOD.png/.visibility.png/.exr; returns the exit code.
+int renderOverview(SceneOptions scene, int width, int height, const std::filesystem::path& outDir,
+                   const std::string& stem);
 /// The window could not be opened (no display, no GL 4.5): callers may fall back to headless.
 class NoWindow : public std::runtime_error {
   public:

@@ -43,7 +43,7 @@ int main(int argc, char** argv) {
                 std::cerr << "no window (" << e.what() << "); rendering headless instead\n";
             }
         }
-        return renderHeadless(defaults, 512, 512, "captures", "default");
+        return renderOverview(defaults, 512, 512, "captures", "overview");
     } catch (const UsageError& e) {
         std::cerr << "error: " << e.what() << "\n";
         return 2;

@@ -3,10 +3,14 @@
 // sized from the disk light's radius averages them, and each pixel takes Chebyshev's upper
 // bound on its lit fraction, with light-bleeding reduction.
 //
-// Blur size: the penumbra an occluder halfway between the light and the scene's centre casts
-// onto that centre is 2R wide (similar triangles), so the blur's radius is R (scaled by
-// --vsm-blur) in world units at the centre's light depth, converted to map texels there. With
-// TSM the blur runs over warped texels, so its world width varies across the map.
+// Blur size: one filter for the whole map (VSM has no blocker search), --vsm-blur x R in world
+// units at the scene centre's light depth, converted to map texels there. R (the penumbra of an
+// occluder halfway to the light) is far wider than most penumbrae of a scene standing on its
+// ground, and a wide blur erases thin and contact shadows (light leaks through the bound): on
+// the default scene's first view (256², radius 1.5, 64-sample ground truth) RMSE was 0.099,
+// 0.101, 0.115, 0.145 and 0.212 for 0.05, 0.1, 0.15, 0.25 and 1 (bleed 0.3), and 0.101 / 0.113
+// for bleed 0.15 / 0.5 at 0.1; the defaults are 0.1 and 0.2. With TSM the blur runs over warped
+// texels, so its world width varies across the map.
 //
 // The CPU reference of all three steps is in tests/vsm_gltest.cpp.
 

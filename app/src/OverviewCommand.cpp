@@ -1,0 +1,140 @@
+// The main job without a display: the default scene with every method of the table beside the
+// ground truth, one labelled picture (name, RMSE against the ground truth, frame time / hard) and
+// each method's PNG/EXR beside it.
+
+#include "Commands.h"
+
+#include <renderer/Capture.h>
+#include <renderer/EglContext.h>
+#include <renderer/Metrics.h>
+#include <renderer/ShadowStats.h>
+#include <renderer/passes/HudPass.h>
+
+#include <base/Stats.h>
+#include <base/Text.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <iomanip>
+#include <iostream>
+
+namespace fl::app {
+
+namespace {
+
+// The default scene's own light is nearly a point (its penumbrae are under a texel); the
+// overview shows soft shadows, so without --light-radius it uses the radius the goldens use.
+constexpr float kOverviewLightRadius = 1.5f;
+// Timed frames per method after one warm-up frame (the median is reported); the ground truth,
+// hundreds of maps per frame, is timed on one frame after its warm-up.
+constexpr int kTimedFrames = 3;
+constexpr int kColumns = 4;
+
+struct Result {
+    std::string name;
+    FrameImages frame;
+    double medianMs = 0.0;
+    double rmse = 0.0;
+};
+
+std::string fixed(double v, int digits) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+    return buf;
+}
+
+// The tiles in rows of `columns`, white between them; every tile has the same size.
+ByteImage grid(const std::vector<ByteImage>& tiles, int columns, int gap = 4) {
+    const int w = tiles.front().width, h = tiles.front().height;
+    const int rows = (static_cast<int>(tiles.size()) + columns - 1) / columns;
+    const int W = columns * w + (columns - 1) * gap, H = rows * h + (rows - 1) * gap;
+    ByteImage out{W, H, 4, std::vector<std::uint8_t>(static_cast<std::size_t>(W) * H * 4, 255)};
+    for (std::size_t t = 0; t < tiles.size(); ++t) {
+        const int x0 = static_cast<int>(t) % columns * (w + gap);
+        const int y0 = static_cast<int>(t) / columns * (h + gap);
+        for (int y = 0; y < h; ++y)
+            std::copy_n(&tiles[t].data[static_cast<std::size_t>(y) * w * 4],
+                        static_cast<std::size_t>(w) * 4,
+                        &out.data[(static_cast<std::size_t>(y0 + y) * W + x0) * 4]);
+    }
+    return out;
+}
+
+} // namespace
+
+int renderOverview(SceneOptions o, int width, int height, const std::filesystem::path& outDir,
+                   const std::string& stem) {
+    if (!o.lightRadius) o.lightRadius = kOverviewLightRadius;
+    o.strictMethodOptions = false; // every method runs, each reads its own options
+    const Scene scene = loadScene(o);
+    const CameraView camera = initialCamera(scene, o, width, height);
+    auto context = EglContext::create();
+    const ShaderLibrary shaders = makeShaderLibrary(o);
+    std::cout << "context: " << context->description() << "\n"
+              << "scene: " << scene.source << " (" << scene.triangleCount()
+              << " triangles), light radius " << *o.lightRadius << ", " << width << "x"
+              << height << ", every method of the table against the ground truth\n";
+    std::vector<Result> results;
+    for (const MethodDescriptor& m : methodTable()) {
+        RenderSettings settings = makeRenderSettings(o);
+        settings.method = std::string(m.name);
+        checkMethodOptions(settings, width, height);
+        Renderer renderer(shaders, scene, settings);
+        renderer.resize(width, height);
+        renderer.render(camera); // warm-up: first-use allocations and shader compiles
+        const bool groundTruth = m.name == "reference";
+        std::vector<double> ms;
+        for (int i = 0; i < (groundTruth ? 1 : kTimedFrames); ++i) {
+            renderer.render(camera);
+            ms.push_back(renderer.timer().frameMs());
+        }
+        results.push_back({std::string(m.name), readFrame(renderer), median(ms), 0.0});
+        std::cout << "  " << m.name << ": " << fixed(results.back().medianMs, 1) << " ms\n"
+                  << std::flush;
+    }
+    const auto byName = [&](std::string_view name) -> const Result& {
+        return *std::find_if(results.begin(), results.end(),
+                             [&](const Result& r) { return r.name == name; });
+    };
+    const Result& truth = byName("reference");
+    const double hardMs = std::max(byName("hard").medianMs, 1e-9);
+
+    // Every image is made before anything is written; each file is written under a temporary
+    // name and renamed.
+    std::vector<ByteImage> tiles;
+    std::cout << std::left << std::setw(12) << "method" << std::right << std::setw(10) << "RMSE"
+              << std::setw(12) << "ms" << std::setw(10) << "x hard" << "\n";
+    for (Result& r : results) {
+        r.rmse = compareWithReference(r.frame.visibility, truth.frame.visibility,
+                                      truth.frame.receivers)
+                     .rmse;
+        const double ratio = r.medianMs / hardMs;
+        std::cout << std::left << std::setw(12) << r.name << std::right << std::setw(10)
+                  << fixed(r.rmse, 4) << std::setw(12) << fixed(r.medianMs, 1) << std::setw(10)
+                  << fixed(ratio, 2) << "\n";
+        ByteImage tile = toSrgb8(r.frame.color);
+        const std::vector<std::string> label = {
+            r.name,
+            r.name == "reference" ? std::string("ground truth") : "RMSE " + fixed(r.rmse, 4),
+            "time " + fixed(ratio, 2) + "x hard"};
+        HudStyle style;
+        style.margin = 3;
+        rasterizeHud(layoutHud(label, style), tile);
+        tiles.push_back(std::move(tile));
+    }
+    std::vector<std::filesystem::path> written;
+    for (const Result& r : results) {
+        const CapturePaths p = writeFrame(r.frame, outDir, stem + "." + r.name);
+        written.insert(written.end(), {p.png, p.visibilityPng, p.exr});
+    }
+    const std::filesystem::path picture = outDir / (stem + ".png");
+    writePng(picture, grid(tiles, kColumns));
+    written.push_back(picture);
+    for (const std::filesystem::path& p : written) std::cout << "wrote " << p.string() << "\n";
+    std::cout << "overview: " << picture.string()
+              << " (each method's name, RMSE against the ground truth over receivers, frame "
+                 "time / hard)\n";
+    return 0;
+}
+
+} // namespace fl::app
