@@ -41,7 +41,8 @@ class NoWindow : public std::runtime_error {
 
 /// Opens the window on a scene; `frames` > 0 closes it after that many frames, `screenshot`
 /// saves the last frame shown (PNG) on close. Throws NoWindow if no window can be opened.
+/// With `autoMethod`, opens on jfa-e where it renders interactively here, else on hard shadows.
 int runViewer(const SceneOptions& scene, int width, int height, int frames,
-              const std::string& screenshot);
+              const std::string& screenshot, bool autoMethod = false);
 
 } // namespace fl::app

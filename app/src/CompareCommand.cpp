@@ -90,10 +90,9 @@ int runCompare(const CompareRequest& r) {
     referenceRenderer.resize(r.width, r.height);
     std::cout << "context: " << context->description() << "\n"
               << "scene: " << scene.source << " (" << scene.triangleCount() << " triangles)\n"
-              << method << " vs " << *reference << ", " << r.frames << " frames at "
-              << r.width << "x" << r.height << ", shadow map "
-              << providerName(settings.shadow.provider) << " " << settings.shadow.size << "^2, "
-              << passes << " passes\n";
+              << method << " vs " << *reference << ", " << r.frames << " frames at " << r.width
+              << "x" << r.height << ", shadow map " << providerName(settings.shadow.provider) << " "
+              << settings.shadow.size << "^2, " << passes << " passes\n";
 
     // Lane labels are also the CSV column and JSON key prefixes ("method_flood_ms").
     std::vector<Lane> lanes = {{"method", &methodRenderer, {}},
@@ -185,8 +184,8 @@ int runCompare(const CompareRequest& r) {
               << "% of penumbra pixels (mean; worst frame " << 100 * minBelow << "%)\n"
               << "parity differs: " << 100 * j["meanParityShare"].get<double>()
               << "% of pixels (mean; max " << 100 * maxParity << "%)\n"
-              << "flood time " << *reference << " / " << method << ": "
-              << floodRatio << " (medians)\n"
+              << "flood time " << *reference << " / " << method << ": " << floodRatio
+              << " (medians)\n"
               << "wrote " << (dir / "frames.csv").string() << ", "
               << (dir / "summary.json").string() << ", " << (dir / (stem + ".png")).string() << ", "
               << (dir / (stem + ".exr")).string() << "\n";

@@ -37,12 +37,6 @@ struct Result {
     double rmse = 0.0;
 };
 
-std::string fixed(double v, int digits) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-    return buf;
-}
-
 // The tiles in rows of `columns`, white between them; every tile has the same size.
 ByteImage grid(const std::vector<ByteImage>& tiles, int columns, int gap = 4) {
     const int w = tiles.front().width, h = tiles.front().height;
@@ -72,8 +66,8 @@ int renderOverview(SceneOptions o, int width, int height, const std::filesystem:
     const ShaderLibrary shaders = makeShaderLibrary(o);
     std::cout << "context: " << context->description() << "\n"
               << "scene: " << scene.source << " (" << scene.triangleCount()
-              << " triangles), light radius " << *o.lightRadius << ", " << width << "x"
-              << height << ", every method of the table against the ground truth\n";
+              << " triangles), light radius " << *o.lightRadius << ", " << width << "x" << height
+              << ", every method of the table against the ground truth\n";
     std::vector<Result> results;
     for (const MethodDescriptor& m : methodTable()) {
         RenderSettings settings = makeRenderSettings(o);
@@ -103,20 +97,21 @@ int renderOverview(SceneOptions o, int width, int height, const std::filesystem:
     // name and renamed.
     std::vector<ByteImage> tiles;
     std::cout << std::left << std::setw(12) << "method" << std::right << std::setw(10) << "RMSE"
-              << std::setw(12) << "ms" << std::setw(10) << "x hard" << "\n";
+              << std::setw(12) << "ms" << std::setw(10) << "x hard"
+              << "\n";
     for (Result& r : results) {
-        r.rmse = compareWithReference(r.frame.visibility, truth.frame.visibility,
-                                      truth.frame.receivers)
-                     .rmse;
+        r.rmse =
+            compareWithReference(r.frame.visibility, truth.frame.visibility, truth.frame.receivers)
+                .rmse;
         const double ratio = r.medianMs / hardMs;
         std::cout << std::left << std::setw(12) << r.name << std::right << std::setw(10)
                   << fixed(r.rmse, 4) << std::setw(12) << fixed(r.medianMs, 1) << std::setw(10)
                   << fixed(ratio, 2) << "\n";
         ByteImage tile = toSrgb8(r.frame.color);
-        const std::vector<std::string> label = {
-            r.name,
-            r.name == "reference" ? std::string("ground truth") : "RMSE " + fixed(r.rmse, 4),
-            "time " + fixed(ratio, 2) + "x hard"};
+        const std::vector<std::string> label = {r.name,
+                                                r.name == "reference" ? std::string("ground truth")
+                                                                      : "RMSE " + fixed(r.rmse, 4),
+                                                "time " + fixed(ratio, 2) + "x hard"};
         HudStyle style;
         style.margin = 3;
         rasterizeHud(layoutHud(label, style), tile);

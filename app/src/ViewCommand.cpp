@@ -4,13 +4,14 @@
 namespace fl::app {
 
 int runViewer(const SceneOptions& o, int width, int height, int frames,
-              const std::string& screenshot) {
+              const std::string& screenshot, bool autoMethod) {
     ViewerOptions v;
     v.scene = o;
     v.width = width;
     v.height = height;
     v.frames = frames;
     v.screenshot = screenshot;
+    v.autoMethod = autoMethod;
     Viewer viewer(v);
     return viewer.run();
 }

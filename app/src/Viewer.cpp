@@ -2,6 +2,7 @@
 
 #include "Commands.h"
 
+#include <base/Text.h>
 #include <renderer/Capture.h>
 #include <renderer/ImageIO.h>
 
@@ -54,12 +55,34 @@ Viewer::Viewer(const ViewerOptions& options) : options_(options), showHud_(optio
     renderer_ = std::make_unique<Renderer>(shaders_, scene_, makeRenderSettings(options_.scene));
     controller_ =
         std::make_unique<CameraController>(initial, scene_.bounds.radius(), verticalFov(initial));
+    if (options_.autoMethod) chooseOpeningMethod(initial);
     hud_ = std::make_unique<HudPass>(shaders_);
     overlay_ = std::make_unique<OverlayRenderer>(shaders_);
     installCallbacks();
 }
 
 Viewer::~Viewer() = default;
+
+void Viewer::chooseOpeningMethod(const CameraView& view) {
+    RenderSettings s = renderer_->settings();
+    s.method = "jfa-e";
+    renderer_->setSettings(s);
+    int w = 0, h = 0;
+    glfwGetFramebufferSize(window_->handle(), &w, &h);
+    renderer_->resize(std::max(w, 1), std::max(h, 1));
+    renderer_->render(view); // warm-up: allocations and shader compiles
+    renderer_->render(view);
+    const double ms = renderer_->timer().frameMs();
+    if (ms <= kInteractiveMs) {
+        openingNote_ = "opened on jfa-e: " + fixed(ms, 0) + " ms/frame here (M: other methods)";
+    } else {
+        s.method = "hard";
+        renderer_->setSettings(s);
+        openingNote_ = "opened on hard: jfa-e takes " + fixed(ms, 0) + " ms/frame here (> " +
+                       fixed(kInteractiveMs, 0) + " ms; M switches)";
+    }
+    std::cout << openingNote_ << "\n";
+}
 
 void Viewer::installCallbacks() {
     GLFWwindow* w = window_->handle();

@@ -3,9 +3,9 @@
 // come from ViewerInput's table, scripted input from InputScript; both go through the same
 // handlers, so a script exercises exactly what a user's keys do.
 
-#include "FrameRunner.h"
 #include "CameraController.h"
 #include "Common.h"
+#include "FrameRunner.h"
 #include "InputScript.h"
 #include "ViewerInput.h"
 
@@ -35,7 +35,13 @@ struct ViewerOptions {
     std::string fpsLog;   // --fps-log FILE: one CSV row per rendered frame
     bool hud = true;
     int statsEvery = 30; // frames between live flood comparisons (0 = only on G)
+    /// Open on jfa-e when this machine renders it interactively (kInteractiveMs at the window's
+    /// size, measured at start), else on hard shadows; the HUD says which and why.
+    bool autoMethod = false;
 };
+
+/// The frame time up to which a method counts as interactive (10 FPS).
+inline constexpr double kInteractiveMs = 100.0;
 
 class Viewer {
   public:
@@ -56,6 +62,8 @@ class Viewer {
 
   private:
     void installCallbacks();
+    /// autoMethod: measures jfa-e at the window size and keeps it or falls back to hard.
+    void chooseOpeningMethod(const CameraView& view);
     void applyScriptEvent(const ScriptEvent& e);
     void loadDropped(const std::string& path);
     void act(Action a);
@@ -83,6 +91,7 @@ class Viewer {
     OverlayControls overlayControls_;
     bool showHelp_ = false, showHud_ = true;
     std::string message_;
+    std::string openingNote_; // autoMethod: which method the window opened on, and why
     double messageUntil_ = 0.0;
     std::optional<SoftStats> stats_;
     std::string statsMethod_;

@@ -3,6 +3,7 @@
 
 #include "Viewer.h"
 
+#include <base/Text.h>
 #include <renderer/CameraPath.h>
 #include <renderer/Capture.h>
 #include <renderer/ImageIO.h>
@@ -40,12 +41,6 @@ int log2Floor(int v) {
     return n;
 }
 
-std::string fixed(double v, int digits) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-    return buf;
-}
-
 } // namespace
 
 void Viewer::act(Action a) {
@@ -64,6 +59,7 @@ void Viewer::act(Action a) {
                          a == Action::NextMethod ? 1 : -1);
     }
         stats_.reset();
+        openingNote_.clear(); // the user chose: the note about the opening method is stale
         break;
     case Action::ToggleProvider:
         s.shadow.provider = s.shadow.provider == ShadowMapProvider::Uniform
@@ -237,11 +233,10 @@ std::vector<std::string> Viewer::hudLines(const std::vector<std::string>& overla
         times += " " + p.name + " " + fixed(p.ms, 1);
     lines.push_back(times);
     if (stats_ && statsMethod_ == s.method) {
-        lines.push_back("vs " + *referenceOf(s.method) + " (frame " +
-                        std::to_string(statsFrame_) + "): parity differs " +
-                        fixed(100.0 * stats_->parityShare, 3) + "% of pixels, |dI|<0.05 " +
-                        fixed(100.0 * stats_->deltaBuckets[0], 2) + "% of penumbra pixels, max " +
-                        fixed(stats_->maxDelta, 3));
+        lines.push_back("vs " + *referenceOf(s.method) + " (frame " + std::to_string(statsFrame_) +
+                        "): parity differs " + fixed(100.0 * stats_->parityShare, 3) +
+                        "% of pixels, |dI|<0.05 " + fixed(100.0 * stats_->deltaBuckets[0], 2) +
+                        "% of penumbra pixels, max " + fixed(stats_->maxDelta, 3));
     }
     lines.push_back("camera " +
                     std::string(controller_->mode() == CameraController::Mode::Orbit
@@ -250,6 +245,7 @@ std::vector<std::string> Viewer::hudLines(const std::vector<std::string>& overla
                     "   overlay " + std::string(overlayName(overlayMode_)));
     lines.insert(lines.end(), overlay.begin(), overlay.end());
     if (!message_.empty() && glfwGetTime() < messageUntil_) lines.push_back(message_);
+    if (!openingNote_.empty()) lines.push_back(openingNote_);
     if (showHelp_) {
         lines.push_back("");
         const std::vector<std::string> help = helpLines();

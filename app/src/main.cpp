@@ -38,7 +38,7 @@ int main(int argc, char** argv) {
         const SceneOptions defaults;
         if (fl::displayAvailable()) {
             try {
-                return runViewer(defaults, 1024, 768, 0, "");
+                return runViewer(defaults, 1024, 768, 0, "", true);
             } catch (const NoWindow& e) {
                 std::cerr << "no window (" << e.what() << "); rendering headless instead\n";
             }

@@ -1,6 +1,14 @@
 #include <base/Text.h>
 
+#include <cstdio>
+
 namespace fl {
+
+std::string fixed(double v, int digits) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+    return buf;
+}
 
 std::string xmlEscape(std::string_view text) {
     std::string out;

@@ -16,6 +16,9 @@ std::string cat(const Args&... args) {
     return s.str();
 }
 
+/// `v` with `digits` digits after the point ("%.*f"): fixed(3.14159, 2) == "3.14".
+std::string fixed(double v, int digits);
+
 /// `text` with &, <, > and " replaced by XML entities (element text and attribute values).
 std::string xmlEscape(std::string_view text);
 
