@@ -3,8 +3,8 @@
 #include "Commands.h"
 
 #include <base/Text.h>
-#include <renderer/Capture.h>
-#include <renderer/ImageIO.h>
+#include <renderer/io/Capture.h>
+#include <renderer/io/ImageIO.h>
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>

@@ -75,7 +75,8 @@ std::vector<std::string_view> framePhases(const MethodDescriptor& m) {
     return out;
 }
 
-Renderer::Renderer(const ShaderLibrary& shaders, const Scene& scene, const RenderSettings& settings)
+Renderer::Renderer(const gl::ShaderLibrary& shaders, const Scene& scene,
+                   const RenderSettings& settings)
     : shaders_(shaders), settings_(settings), method_(&methodOrThrow(settings.method)),
       scene_(scene), light_(sceneLight(scene)), sceneBounds_(scene.bounds),
       disk_(makeDiskLight(light_, scene.bounds)), lightVolume_(lightVolume(scene, light_)),

@@ -27,7 +27,7 @@ namespace {
 
 class Vsm final : public ShadowMethod {
   public:
-    explicit Vsm(const ShaderLibrary& shaders)
+    explicit Vsm(const gl::ShaderLibrary& shaders)
         : moments_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
                                                 {GL_FRAGMENT_SHADER, "vsm_moments.frag.glsl"}})),
           blur_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
@@ -139,7 +139,7 @@ class Vsm final : public ShadowMethod {
 
 } // namespace
 
-std::unique_ptr<ShadowMethod> makeVsm(const ShaderLibrary& shaders) {
+std::unique_ptr<ShadowMethod> makeVsm(const gl::ShaderLibrary& shaders) {
     return std::make_unique<Vsm>(shaders);
 }
 

@@ -70,7 +70,7 @@ struct OverlayResult {
 class OverlayRenderer {
   public:
     /// Compiles the overlays' shaders (needs a current context).
-    explicit OverlayRenderer(const ShaderLibrary& shaders);
+    explicit OverlayRenderer(const gl::ShaderLibrary& shaders);
     ~OverlayRenderer();
     OverlayRenderer(OverlayRenderer&&) noexcept;
     OverlayRenderer& operator=(OverlayRenderer&&) noexcept;

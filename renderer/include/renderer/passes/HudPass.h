@@ -6,7 +6,7 @@
 #include <gpu/Gl.h>
 #include <gpu/Program.h>
 #include <gpu/ShaderLibrary.h>
-#include <renderer/ImageIO.h>
+#include <renderer/io/ImageIO.h>
 
 #include <glm/glm.hpp>
 
@@ -47,7 +47,7 @@ void rasterizeHud(const HudGeometry& geometry, ByteImage& image);
 
 class HudPass {
   public:
-    explicit HudPass(const ShaderLibrary& shaders);
+    explicit HudPass(const gl::ShaderLibrary& shaders);
     /// Blends the HUD for `lines` into `framebuffer` (0 = the window) of width x height pixels.
     /// Every GL state it changes (blend, depth, cull, scissor, viewport, bindings) is restored.
     void draw(std::span<const std::string> lines, int width, int height, const HudStyle& style = {},

@@ -7,14 +7,14 @@
 #include <gpu/Gl.h>
 #include <gpu/Program.h>
 #include <gpu/ShaderLibrary.h>
-#include <renderer/Scene.h>
 #include <renderer/passes/SurfacesPass.h>
+#include <renderer/scene/Scene.h>
 
 namespace fl {
 
 class ShadingPass {
   public:
-    explicit ShadingPass(const ShaderLibrary& shaders);
+    explicit ShadingPass(const gl::ShaderLibrary& shaders);
     /// (Re)allocates the colour and visibility targets.
     void resize(int width, int height);
 
@@ -38,7 +38,7 @@ class ShadingPass {
 
 class PresentPass {
   public:
-    explicit PresentPass(const ShaderLibrary& shaders);
+    explicit PresentPass(const gl::ShaderLibrary& shaders);
     void execute(const gl::Texture& color, int framebufferWidth, int framebufferHeight);
 
   private:

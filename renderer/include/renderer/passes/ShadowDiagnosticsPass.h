@@ -11,15 +11,15 @@
 #include <gpu/Gl.h>
 #include <gpu/Program.h>
 #include <gpu/ShaderLibrary.h>
-#include <renderer/GpuScene.h>
 #include <renderer/passes/ShadowMapPass.h>
 #include <renderer/passes/SurfacesPass.h>
+#include <renderer/scene/GpuScene.h>
 
 namespace fl {
 
 class ShadowDiagnosticsPass {
   public:
-    explicit ShadowDiagnosticsPass(const ShaderLibrary& shaders);
+    explicit ShadowDiagnosticsPass(const gl::ShaderLibrary& shaders);
     /// (Re)allocates the output at width x height.
     void resize(int width, int height);
     /// Forgets the previous frame's map (the next frame compares with itself).

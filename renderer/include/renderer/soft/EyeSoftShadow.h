@@ -10,9 +10,9 @@
 //   phase 5  composite: per pixel the intensity from its occluder, else 0 inside / 1 outside.
 // The CPU functions are the references the GL passes are tested against.
 
-#include <renderer/GpuScene.h>
-#include <renderer/ImageIO.h>
+#include <renderer/io/ImageIO.h>
 #include <renderer/passes/ShadowMapPass.h>
+#include <renderer/scene/GpuScene.h>
 #include <renderer/soft/DiskLight.h>
 
 #include <jfa/Grid.h>
@@ -111,7 +111,7 @@ FloatImage eyeSoftVisibility(const EyeImage& image, const jfa::Grid& flooded,
 /// the caller's; the result is the method's visibility (step 3).
 class EyeSoftShadowPass {
   public:
-    explicit EyeSoftShadowPass(const ShaderLibrary& shaders);
+    explicit EyeSoftShadowPass(const gl::ShaderLibrary& shaders);
 
     struct Inputs {
         const GpuScene& scene; // drawn from the light for the object ids
@@ -135,7 +135,7 @@ class EyeSoftShadowPass {
     };
     /// Runs phases 2-5; `timer` (optional) times them as "occluder ids", "eye hard shadows",
     /// "boundaries", "flood" and "composite".
-    Outputs execute(const Inputs& in, PassTimer* timer = nullptr);
+    Outputs execute(const Inputs& in, gl::PassTimer* timer = nullptr);
 
   private:
     void resize(int width, int height, int shadowSize);

@@ -34,7 +34,7 @@ jfa::Grid silhouetteSeeds(const ReceiverGrid& receivers, const DiskLight& light,
 /// The technique: silhouettes, then the flood.
 class PenumbraMapPass {
   public:
-    explicit PenumbraMapPass(const ShaderLibrary& shaders);
+    explicit PenumbraMapPass(const gl::ShaderLibrary& shaders);
 
     struct Inputs {
         const gl::Texture& receivers; // ShadowMapPass::Outputs::receivers
@@ -48,7 +48,7 @@ class PenumbraMapPass {
         int passes;                     // flood passes run
     };
     /// Runs both phases; `timer` (optional) times them as "silhouettes" and "flood".
-    Outputs execute(const Inputs& in, PassTimer* timer = nullptr);
+    Outputs execute(const Inputs& in, gl::PassTimer* timer = nullptr);
 
   private:
     gl::Program silhouette_;
