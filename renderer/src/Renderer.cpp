@@ -172,6 +172,8 @@ void Renderer::render(const CameraView& camera) {
     gl::throwIfErrors("frame");
 }
 
+// 6. Present (window only): the colour to the default framebuffer, sRGB-encoded; the caller draws
+//    step 5 (overlays, HUD) over it and swaps the buffers.
 void Renderer::present(int framebufferWidth, int framebufferHeight) {
     if (!color_ || framebufferWidth <= 0 || framebufferHeight <= 0) return;
     presentPass_.execute(*color_, framebufferWidth, framebufferHeight);

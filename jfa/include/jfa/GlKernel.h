@@ -34,7 +34,7 @@ Grid readGrid(const gl::Texture& texture);
 /// What one dispatch of the kernel programs does: the jfa_pass shaders' uMode, so the values are
 /// fixed by the GLSL.
 enum class GlDispatch : int {
-    Pass = 0,           // one pass of step uStep
+    Pass = 0,           // one pass of jump length uStep (a JFA step, not a frame step)
     ExpandThenPass = 1, // the first pass of the full-resolution stage (on expandProgram_)
     Downsample = 2,     // full-resolution seeds to the half-resolution stage
 };
@@ -92,7 +92,7 @@ class GlFloodKernel : public GlFloodKernelBase {
 
     /// Runs `plan` on full-resolution `seeds` (plan.width() x plan.height(), not modified);
     /// returns the full-resolution result, owned by the kernel until the next run. If `timer`
-    /// is given, each pass is timed as "jfa step K" (and "downsample").
+    /// is given, each pass is timed as "jfa step K", K the jump length (and "downsample").
     const gl::Texture& run(const Plan& plan, const gl::Texture& seeds, const C& criterion,
                            gl::PassTimer* timer = nullptr, const PassCallback& callback = {}) {
         for (const gl::Program* p : {&passProgram_, &expandProgram_})

@@ -12,7 +12,8 @@
 // for bleed 0.15 / 0.5 at 0.1; the defaults are 0.1 and 0.2. With TSM the blur runs over warped
 // texels, so its world width varies across the map.
 //
-// The CPU reference of all three steps is in tests/vsm_gltest.cpp.
+// The CPU reference of all three phases (moments, blur, lookup: parts of frame step 3) is in
+// tests/vsm_gltest.cpp.
 
 #include <renderer/methods/ShadowMethod.h>
 

@@ -170,6 +170,7 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::Pass
     const int shadowSize = in.shadow.depth.width();
     resize(in.width, in.height, shadowSize);
 
+    // Phases 2-5 are the thesis' (§5.4), all within frame step 3.
     // Phase 2a (object-ID fix only): which object the light's centre sees at each texel.
     if (in.settings.objectIdFix) {
         if (timer) timer->begin("occluder ids");

@@ -74,7 +74,7 @@ PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, gl::PassTime
         seeds_ = gl::Texture(GL_RGBA32F, size, size);
         fbo_ = gl::Framebuffer::forColor(seeds_, "silhouette seeds");
     }
-    // Phase 2: silhouettes.
+    // Phase 2 (thesis; within frame step 3): silhouettes.
     if (timer) timer->begin("silhouettes");
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glViewport(0, 0, size, size);

@@ -1,7 +1,8 @@
 #pragma once
-// The window's heads-up display: lines of text (stb_easy_font's segment font, no textures) on a
-// translucent box in the top-left corner, drawn over whatever the framebuffer shows. The layout
-// is pure CPU (testable without GL); the pass only uploads it and blends it.
+// Step 5 of a frame, with the overlays: the window's heads-up display. Lines of text
+// (stb_easy_font's segment font, no textures) on a translucent box in the top-left corner, drawn
+// over whatever the framebuffer shows. The layout is pure CPU (testable without GL); the pass
+// only uploads it and blends it.
 
 #include <gpu/Gl.h>
 #include <gpu/Program.h>

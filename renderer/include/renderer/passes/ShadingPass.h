@@ -2,7 +2,8 @@
 // Step 4 of a frame: shading, shared by every shadow method. A fullscreen pass over the surfaces
 // of step 2 applies the method's visibility (step 3): linear colour, and the visibility itself
 // with background set to 1 (what the metrics and the visibility PNG read).
-// PresentPass is step 6 in a window: the colour to the default framebuffer, sRGB-encoded.
+// PresentPass is step 6 in a window: the colour to the default framebuffer, sRGB-encoded (the
+// caller draws step 5 over it before the buffer swap).
 
 #include <gpu/Gl.h>
 #include <gpu/Program.h>

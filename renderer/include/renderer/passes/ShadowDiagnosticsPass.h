@@ -1,6 +1,6 @@
 #pragma once
-// Optional step after shading: per-pixel measurements of the shadow map as the camera sees it,
-// for comparing providers (uniform vs TSM).
+// Step 4's optional part, after shading: per-pixel measurements of the shadow map as the camera
+// sees it, for comparing providers (uniform vs TSM).
 // - Texel footprint: how many screen pixels one shadow-map texel covers, as a length: with J the
 //   Jacobian of screen pixel -> shadow texel at the visible surface, 1 / sqrt(|det J|). Above 1
 //   a texel is magnified over several pixels (blocky shadow edges); below 1 texels are wasted.

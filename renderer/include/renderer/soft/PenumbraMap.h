@@ -1,7 +1,8 @@
 #pragma once
-// JFA-L phases 2 and 3 (thesis §5.3.1): silhouette pixels of the shadow map become seeds
-// carrying their world position, and jump flooding with PenumbraCriterion spreads them into the
-// penumbra map. The CPU functions are the reference the GL pass is tested against.
+// JFA-L phases 2 and 3 (thesis §5.3.1; the thesis' numbers, both inside frame step 3, the shadow
+// method; its phase 1 is the shadow map, frame step 1): silhouette pixels of the shadow map
+// become seeds carrying their world position, and jump flooding with PenumbraCriterion spreads
+// them into the penumbra map. The CPU functions are the reference the GL pass is tested against.
 
 #include <renderer/soft/PenumbraCriterion.h>
 
