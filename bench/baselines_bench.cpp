@@ -5,10 +5,10 @@
 // against 2N samples.
 
 #include <base/Stats.h>
-#include <renderer/Capture.h>
-#include <renderer/EglContext.h>
-#include <renderer/GltfLoader.h>
 #include <renderer/Renderer.h>
+#include <renderer/context/EglContext.h>
+#include <renderer/gltf/GltfLoader.h>
+#include <renderer/io/Capture.h>
 #include <renderer/soft/ReferenceShadow.h>
 
 #include <base/Stats.h>
@@ -59,7 +59,7 @@ int main(int argc, char** argv) {
         fl::Scene scene = fl::loadGltf(std::string(FLOODLIGHT_SOURCE_DIR) + "/assets/default.glb");
         if (scene.light) scene.light->radius = radius;
         auto ctx = fl::EglContext::create(false);
-        const fl::ShaderLibrary shaders;
+        const fl::gl::ShaderLibrary shaders;
         const fl::CameraView cam = fl::makeCameraView(scene, {}, 1.0f);
         std::vector<Entry> entries;
         // The ground truth (timed and compared like the others, but last).
@@ -113,8 +113,8 @@ int main(int argc, char** argv) {
                 if (i >= 2) e.ms.push_back(e.renderer->timer().frameMs());
             }
         for (Entry& e : entries) e.visibility = fl::readTexture(e.renderer->visibility(), 1);
-        // Receivers: visible surfaces facing the light (renderer/Metrics.h), the same in every
-        // method's frame.
+        // Receivers: visible surfaces facing the light (renderer/metrics/Metrics.h), the same in
+        // every method's frame.
         const fl::FloatImage mask = fl::readTexture(entries.front().renderer->receivers(), 1);
 
         const double hardMedian = fl::median(entries.front().ms);

@@ -3,7 +3,7 @@
 // with ratios taken between medians measured side by side in this same run.
 
 #include <base/Stats.h>
-#include <renderer/EglContext.h>
+#include <renderer/context/EglContext.h>
 
 #include <jfa/CpuKernel.h>
 #include <jfa/GlKernel.h>
@@ -68,7 +68,7 @@ int main(int argc, char** argv) {
         std::cout << "context: " << ctx->description() << "\n"
                   << "grid " << size << "x" << size << ", " << runs
                   << " runs each (min / median), glFinish wall time\n";
-        const ShaderLibrary shaders;
+        const gl::ShaderLibrary shaders;
         const jfa::NearestSite crit{true};
         std::map<std::string, double> median;
         for (jfa::GlKernelKind kind : {jfa::GlKernelKind::Fragment, jfa::GlKernelKind::Compute}) {

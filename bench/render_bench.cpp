@@ -4,10 +4,10 @@
 // one process/context.
 
 #include <base/Stats.h>
-#include <renderer/EglContext.h>
-#include <renderer/GltfLoader.h>
 #include <renderer/Renderer.h>
-#include <renderer/SceneGenerator.h>
+#include <renderer/context/EglContext.h>
+#include <renderer/gltf/GltfLoader.h>
+#include <renderer/scene/SceneGenerator.h>
 
 #include <base/Stats.h>
 
@@ -83,7 +83,7 @@ int main(int argc, char** argv) {
         if (lightRadius && scene.light) scene.light->radius = *lightRadius;
         const long rssScene = peakRssKiB();
         auto ctx = fl::EglContext::create(false);
-        const fl::ShaderLibrary shaders(
+        const fl::gl::ShaderLibrary shaders(
             shaderDir.empty() ? std::nullopt : std::optional<std::filesystem::path>(shaderDir));
         fl::RenderSettings settings;
         settings.shadow.size = shadowMap;
@@ -102,7 +102,8 @@ int main(int argc, char** argv) {
             renderer.render(cam);
             if (i < warmup) continue;
             frameMs.push_back(renderer.timer().frameMs());
-            for (const fl::PassTime& p : renderer.timer().passes()) passMs[p.name].push_back(p.ms);
+            for (const fl::gl::PassTime& p : renderer.timer().passes())
+                passMs[p.name].push_back(p.ms);
         }
         std::cout << "context: " << ctx->description() << "\n"
                   << "scene: " << scene.source << ", " << scene.triangleCount() << " triangles\n"

@@ -1,4 +1,4 @@
-// TSM vs uniform shadow map on a scripted walkthrough (renderer/CameraPath.h) at equal
+// TSM vs uniform shadow map on a scripted walkthrough (renderer/scene/CameraPath.h) at equal
 // shadow-map resolution, both measured side by side in one process:
 //  - texel footprint (screen pixels per shadow texel) median and p95, over all receivers and
 //    near the viewer (nearest 25% by view depth), median over the frames;
@@ -7,13 +7,13 @@
 //  - frame time (the hard method's frame, no diagnostics) with each provider, interleaved frame by
 //    frame, min and median, and TSM / uniform.
 
-#include <renderer/CameraPath.h>
-#include <renderer/Capture.h>
-#include <renderer/EglContext.h>
-#include <renderer/GltfLoader.h>
 #include <renderer/Renderer.h>
-#include <renderer/SceneGenerator.h>
-#include <renderer/ShadowStats.h>
+#include <renderer/context/EglContext.h>
+#include <renderer/gltf/GltfLoader.h>
+#include <renderer/io/Capture.h>
+#include <renderer/metrics/ShadowStats.h>
+#include <renderer/scene/CameraPath.h>
+#include <renderer/scene/SceneGenerator.h>
 
 #include <base/Stats.h>
 
@@ -84,7 +84,7 @@ int main(int argc, char** argv) {
             scenePath.empty() ? std::string(FLOODLIGHT_SOURCE_DIR) + "/assets/default.glb"
                               : scenePath);
         auto ctx = fl::EglContext::create(false);
-        const fl::ShaderLibrary shaders;
+        const fl::gl::ShaderLibrary shaders;
         const fl::CameraPath path =
             fl::defaultWalkthrough(fl::makeCameraView(scene, {}, 1.0f), scene.bounds);
         const fl::ShadowMapProvider providers[2] = {fl::ShadowMapProvider::Uniform,

@@ -35,6 +35,6 @@ void main() {
     oPlane = vec4(g, 0.0);
     oBaseColor = base;
     // Lambert > 0: the pixels whose visibility changes the image; the error metrics count only
-    // these (renderer/Metrics.h).
+    // these (renderer/metrics/Metrics.h).
     oReceiver = dot(n, toLight(vWorld)) > 0.0 ? 1.0 : 0.0;
 }

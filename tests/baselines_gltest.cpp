@@ -7,9 +7,9 @@
 #include "TestPaths.h"
 #include "TestScenes.h"
 
-#include <renderer/Capture.h>
-#include <renderer/GltfLoader.h>
 #include <renderer/Renderer.h>
+#include <renderer/gltf/GltfLoader.h>
+#include <renderer/io/Capture.h>
 #include <renderer/passes/SurfacesPass.h>
 #include <renderer/soft/FilteredShadow.h>
 #include <renderer/soft/ReferenceShadow.h>
@@ -32,7 +32,7 @@ FrameImages renderDefault(std::string_view method, float radius, int mapSize,
                           const MethodOptions& options = {}) {
     Scene scene = loadGltf(kDefaultAsset);
     scene.light->radius = radius;
-    const ShaderLibrary shaders;
+    const gl::ShaderLibrary shaders;
     RenderSettings settings;
     settings.shadow.size = mapSize;
     settings.method = std::string(method);
@@ -55,7 +55,7 @@ FrameImages renderDefault(std::string_view method, float radius, int mapSize,
 void compareFilterWithCpu(ShadowMapProvider provider, bool pcss) {
     Scene scene = loadGltf(kDefaultAsset);
     scene.light->radius = kTestRadius;
-    const ShaderLibrary shaders;
+    const gl::ShaderLibrary shaders;
     const GpuScene gpu(scene);
     const Light light = sceneLight(scene);
     const DiskLight disk = makeDiskLight(light, scene.bounds);
@@ -152,7 +152,7 @@ struct BoxScene {
 };
 // The frame's surfaces (step 2), which the ground truth shades: positions per pixel.
 struct Surfaces {
-    Surfaces(const ShaderLibrary& shaders, const GpuScene& gpu, const BoxScene& b, int size)
+    Surfaces(const gl::ShaderLibrary& shaders, const GpuScene& gpu, const BoxScene& b, int size)
         : pass(shaders) {
         pass.resize(size, size);
         (void)pass.execute({gpu, b.camera, sceneLight(b.scene)});
@@ -176,7 +176,7 @@ BoxScene boxScene() {
 
 TEST_F(BaselinesTest, ReferenceMatchesCpuRayCastToTheSameSamples) {
     const BoxScene b = boxScene();
-    const ShaderLibrary shaders;
+    const gl::ShaderLibrary shaders;
     const GpuScene gpu(b.scene);
     ReferenceSettings rs;
     rs.samples = 16;
@@ -221,7 +221,7 @@ TEST_F(BaselinesTest, ReferenceMatchesCpuRayCastToTheSameSamples) {
 // The estimate converges: N against 2N differs less at N = 16 than at N = 2.
 TEST_F(BaselinesTest, ReferenceSamplingErrorShrinksWithN) {
     const BoxScene b = boxScene();
-    const ShaderLibrary shaders;
+    const gl::ShaderLibrary shaders;
     const GpuScene gpu(b.scene);
     ReferenceSettings rs;
     rs.mapSize = 1024;
@@ -239,7 +239,7 @@ TEST_F(BaselinesTest, ReferenceSamplingErrorShrinksWithN) {
 
 TEST_F(BaselinesTest, BadSettingsAreRejected) {
     const BoxScene b = boxScene();
-    const ShaderLibrary shaders;
+    const gl::ShaderLibrary shaders;
     const GpuScene gpu(b.scene);
     ReferenceSettings rs;
     rs.samples = 0;

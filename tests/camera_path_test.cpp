@@ -2,8 +2,8 @@
 
 #include "TestPaths.h"
 
-#include <renderer/CameraPath.h>
-#include <renderer/ImageIO.h>
+#include <renderer/io/ImageIO.h>
+#include <renderer/scene/CameraPath.h>
 
 #include <gtest/gtest.h>
 

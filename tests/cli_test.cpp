@@ -3,7 +3,7 @@
 #include "CliRun.h"
 #include "TestPaths.h"
 
-#include <renderer/ImageIO.h>
+#include <renderer/io/ImageIO.h>
 
 #include <gtest/gtest.h>
 

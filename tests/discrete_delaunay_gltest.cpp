@@ -30,7 +30,7 @@ class DiscreteDelaunayGlTest : public test::GlTest {
   public:
     // One compiled backend for the whole suite: it is what callers are meant to hold.
     static GlDiscreteDelaunay& backend() {
-        static GlDiscreteDelaunay instance{ShaderLibrary{}, floodKind()};
+        static GlDiscreteDelaunay instance{gl::ShaderLibrary{}, floodKind()};
         return instance;
     }
     // FLOODLIGHT_GL_DELAUNAY_KERNEL=compute switches G2 to the compute flood kernel.

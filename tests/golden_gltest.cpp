@@ -6,10 +6,10 @@
 #include "ImageCompare.h"
 #include "TestPaths.h"
 
-#include <renderer/Capture.h>
-#include <renderer/GltfLoader.h>
 #include <renderer/Renderer.h>
-#include <renderer/SceneGenerator.h>
+#include <renderer/gltf/GltfLoader.h>
+#include <renderer/io/Capture.h>
+#include <renderer/scene/SceneGenerator.h>
 
 #include <fstream>
 
@@ -29,7 +29,7 @@ std::string readAll(const std::filesystem::path& p) {
 FrameImages renderDefault(int size, int shadowMap,
                           ShadowMapProvider provider = ShadowMapProvider::Uniform) {
     const Scene scene = loadGltf(kDefaultAsset);
-    const ShaderLibrary shaders;
+    const gl::ShaderLibrary shaders;
     RenderSettings settings;
     settings.shadow.size = shadowMap;
     settings.shadow.provider = provider;

@@ -7,9 +7,9 @@
 #include "TestPaths.h"
 #include "TestScenes.h"
 
-#include <renderer/Capture.h>
-#include <renderer/GltfLoader.h>
 #include <renderer/Renderer.h>
+#include <renderer/gltf/GltfLoader.h>
+#include <renderer/io/Capture.h>
 #include <renderer/soft/EyeSoftShadow.h>
 
 #include <jfa/CpuKernel.h>
@@ -77,7 +77,7 @@ BoxSetup boxScene() {
 
 TEST_F(JfaETest, PhasesMatchTheCpuReference) {
     const BoxSetup s = boxScene();
-    const ShaderLibrary shaders;
+    const gl::ShaderLibrary shaders;
     RenderSettings hardSettings;
     hardSettings.shadow.size = 128;
     Renderer hard(shaders, s.scene, hardSettings);
@@ -199,7 +199,7 @@ Frame renderDefault(std::string_view method, float radius = kTestRadius, bool ob
                     bool midpointFix = true) {
     Scene scene = loadGltf(kDefaultAsset);
     scene.light->radius = radius;
-    const ShaderLibrary shaders;
+    const gl::ShaderLibrary shaders;
     RenderSettings settings;
     settings.shadow.size = 512;
     settings.method = std::string(method);
@@ -231,7 +231,7 @@ TEST_F(JfaETest, SceneWithoutCastersIsLitEverywhere) {
     Scene scene = groundAndBox(3.0f, {-0.5f, 0.0f, -0.5f}, {0.5f, 1.0f, 0.5f}, {0.3f, -1, 0.2f});
     scene.instances.erase(scene.instances.begin() + 1); // only the ground is left
     scene.light->radius = 1.0f;
-    const ShaderLibrary shaders;
+    const gl::ShaderLibrary shaders;
     RenderSettings settings;
     settings.shadow.size = 128;
     settings.method = "jfa-e";
@@ -343,30 +343,31 @@ TEST_F(JfaETest, Goldens) {
 TEST_F(JfaETest, DISABLED_Timing512) {
     Scene scene = loadGltf(kDefaultAsset);
     scene.light->radius = kTestRadius;
-    const ShaderLibrary shaders;
+    const gl::ShaderLibrary shaders;
     for (std::string_view m : {"hard", "jfa-l", "jfa-e", "flood-e"}) {
         RenderSettings settings;
         settings.shadow.size = 512;
         settings.method = std::string(m);
-        settings.timing = TimingMode::Finish;
+        settings.timing = gl::TimingMode::Finish;
         Renderer r(shaders, scene, settings);
         r.resize(512, 512);
         const CameraView camera = makeCameraView(scene, {}, 1.0f);
         r.render(camera); // warm-up: llvmpipe compiles shader variants on first use
         constexpr int kFrames = 3;
-        std::vector<PassTime> sum;
+        std::vector<gl::PassTime> sum;
         double frame = 0.0;
         for (int f = 0; f < kFrames; ++f) {
             r.render(camera);
             frame += r.timer().frameMs();
-            const std::vector<PassTime>& passes = r.timer().passes();
+            const std::vector<gl::PassTime>& passes = r.timer().passes();
             if (sum.empty())
                 sum = passes;
             else
                 for (std::size_t i = 0; i < passes.size(); ++i) sum[i].ms += passes[i].ms;
         }
         std::printf("%s:", std::string(m).c_str());
-        for (const PassTime& p : sum) std::printf(" %s %.1f ms;", p.name.c_str(), p.ms / kFrames);
+        for (const gl::PassTime& p : sum)
+            std::printf(" %s %.1f ms;", p.name.c_str(), p.ms / kFrames);
         std::printf(" frame %.1f ms\n", frame / kFrames);
     }
 }

@@ -1,7 +1,7 @@
-// Capture metrics (renderer/Metrics.h) on synthetic images with known answers: RMSE, penumbra
-// RMSE, misclassification, the 10-90% width of ramps of known width, and added flicker.
+// Capture metrics (renderer/metrics/Metrics.h) on synthetic images with known answers: RMSE,
+// penumbra RMSE, misclassification, the 10-90% width of ramps of known width, and added flicker.
 
-#include <renderer/Metrics.h>
+#include <renderer/metrics/Metrics.h>
 
 #include <gtest/gtest.h>
 

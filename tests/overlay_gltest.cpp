@@ -7,7 +7,7 @@
 #include "GlTest.h"
 #include "ImageCompare.h"
 
-#include <renderer/GltfLoader.h>
+#include <renderer/gltf/GltfLoader.h>
 #include <renderer/overlays/OverlayCapture.h>
 #include <renderer/overlays/OverlayColours.h>
 #include <renderer/overlays/SiteDiagram.h>
@@ -33,7 +33,7 @@ const std::filesystem::path kDefaultAsset =
 // penumbrae span several texels) with an overlay renderer beside it.
 struct Frame {
     Scene scene;
-    ShaderLibrary shaders;
+    gl::ShaderLibrary shaders;
     std::unique_ptr<Renderer> renderer;
     CameraView camera;
     std::unique_ptr<OverlayRenderer> overlays;

@@ -6,9 +6,9 @@
 #include "TestPaths.h"
 #include "TestScenes.h"
 
-#include <renderer/Capture.h>
-#include <renderer/GltfLoader.h>
 #include <renderer/Renderer.h>
+#include <renderer/gltf/GltfLoader.h>
+#include <renderer/io/Capture.h>
 #include <renderer/soft/PenumbraMap.h>
 
 #include <jfa/CpuKernel.h>
@@ -58,7 +58,7 @@ BoxSetup boxScene() {
 
 TEST_F(PenumbraTest, SilhouettesAndFloodMatchTheCpuReference) {
     const BoxSetup s = boxScene();
-    const ShaderLibrary shaders;
+    const gl::ShaderLibrary shaders;
     // Both providers: the flood runs in shadow-map space, whichever warp made it.
     for (ShadowMapProvider provider : {ShadowMapProvider::Uniform, ShadowMapProvider::Tsm})
         for (const MethodDescriptor* d : floodingMethods(MethodSpace::Light)) { // jfa-l, flood-l
@@ -110,7 +110,7 @@ constexpr float kTestRadius = 1.5f;
 FrameImages renderDefault(std::string_view method, std::optional<float> radius = kTestRadius) {
     Scene scene = loadGltf(kDefaultAsset);
     if (radius) scene.light->radius = *radius;
-    const ShaderLibrary shaders;
+    const gl::ShaderLibrary shaders;
     RenderSettings settings;
     settings.shadow.size = 512;
     settings.method = std::string(method);
@@ -131,7 +131,7 @@ TEST_F(PenumbraTest, SceneWithoutCastersIsLitEverywhere) {
     Scene scene = groundAndBox(3.0f, {-0.5f, 0.0f, -0.5f}, {0.5f, 1.0f, 0.5f}, {0.3f, -1, 0.2f});
     scene.instances.erase(scene.instances.begin() + 1); // only the ground is left
     scene.light->radius = 1.0f;
-    const ShaderLibrary shaders;
+    const gl::ShaderLibrary shaders;
     RenderSettings settings;
     settings.shadow.size = 128;
     settings.method = "jfa-l";

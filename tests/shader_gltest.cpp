@@ -13,7 +13,7 @@ namespace {
 class ShaderTest : public GlTest {};
 
 TEST_F(ShaderTest, EveryEmbeddedProgramCompiles) {
-    const ShaderLibrary lib;
+    const gl::ShaderLibrary lib;
     EXPECT_NO_THROW(gl::Program::build(lib, {{GL_VERTEX_SHADER, "forward.vert.glsl"},
                                              {GL_FRAGMENT_SHADER, "surfaces.frag.glsl"}}));
     EXPECT_NO_THROW(gl::Program::build(lib, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
@@ -29,7 +29,7 @@ TEST_F(ShaderTest, CompileErrorNamesIncludedFileAndLine) {
     std::ofstream(dir / "bad.frag.glsl")
         << "#version 450 core\nout vec4 o;\n#include \"broken.glsl\"\nvoid main() { o = f(); }\n";
     std::ofstream(dir / "broken.glsl") << "vec4 f() {\n  return undeclaredThing;\n}\n";
-    const ShaderLibrary lib(dir);
+    const gl::ShaderLibrary lib(dir);
     try {
         gl::Program::build(lib, {{GL_FRAGMENT_SHADER, "bad.frag.glsl"}});
         FAIL() << "a broken shader compiled";
@@ -47,7 +47,7 @@ TEST_F(ShaderTest, LinkErrorIsFatal) {
     std::ofstream(dir / "v.glsl") << "#version 450 core\nvoid main() { gl_Position = vec4(0); }\n";
     std::ofstream(dir / "f.glsl")
         << "#version 450 core\nvec4 missing();\nout vec4 o;\nvoid main() { o = missing(); }\n";
-    const ShaderLibrary lib(dir);
+    const gl::ShaderLibrary lib(dir);
     try {
         gl::Program::build(lib, {{GL_VERTEX_SHADER, "v.glsl"}, {GL_FRAGMENT_SHADER, "f.glsl"}});
         FAIL() << "a program with an undefined function linked";

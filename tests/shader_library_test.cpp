@@ -12,6 +12,8 @@
 namespace fl::test {
 namespace {
 
+using gl::ShaderLibrary;
+
 void writeFile(const std::filesystem::path& p, const std::string& text) {
     std::ofstream(p) << text;
 }
@@ -28,7 +30,7 @@ TEST(ShaderLibrary, EveryShaderFileIsEmbeddedVerbatim) {
         EXPECT_EQ(embedded.read(entry.path().filename().string()), disk) << entry.path();
     }
     EXPECT_GE(files, 5);
-    EXPECT_EQ(static_cast<size_t>(files), embeddedShaders().size());
+    EXPECT_EQ(static_cast<size_t>(files), gl::embeddedShaders().size());
 }
 
 TEST(ShaderLibrary, DirectoryOverridesEmbedded) {

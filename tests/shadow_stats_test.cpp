@@ -1,6 +1,6 @@
 // The shadow-diagnostics summaries on synthetic images with known answers.
 
-#include <renderer/ShadowStats.h>
+#include <renderer/metrics/ShadowStats.h>
 
 #include <gtest/gtest.h>
 

@@ -4,8 +4,8 @@
 #include "GlTest.h"
 #include "TestScenes.h"
 
-#include <renderer/Capture.h>
 #include <renderer/Renderer.h>
+#include <renderer/io/Capture.h>
 
 #include <cmath>
 #include <iostream>
@@ -43,7 +43,7 @@ CameraView sideCamera(const Scene& scene) {
 }
 
 FrameImages renderFrame(const Scene& scene, std::string_view method) {
-    const ShaderLibrary shaders;
+    const gl::ShaderLibrary shaders;
     RenderSettings settings;
     settings.shadow.size = 256;
     settings.method = std::string(method);

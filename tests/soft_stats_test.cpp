@@ -1,6 +1,6 @@
 // Soft-shadow comparison statistics on synthetic images with known answers.
 
-#include <renderer/soft/SoftStats.h>
+#include <renderer/metrics/SoftStats.h>
 
 #include <gtest/gtest.h>
 

@@ -7,11 +7,11 @@
 #include "TestPaths.h"
 #include "TestScenes.h"
 
-#include <renderer/CameraPath.h>
-#include <renderer/Capture.h>
-#include <renderer/GltfLoader.h>
 #include <renderer/Renderer.h>
-#include <renderer/ShadowStats.h>
+#include <renderer/gltf/GltfLoader.h>
+#include <renderer/io/Capture.h>
+#include <renderer/metrics/ShadowStats.h>
+#include <renderer/scene/CameraPath.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -34,7 +34,7 @@ struct Rendered {
 
 Rendered renderOnce(const Scene& scene, const CameraView& cam, ShadowMapProvider provider, int w,
                     int h, int mapSize) {
-    const ShaderLibrary shaders;
+    const gl::ShaderLibrary shaders;
     RenderSettings settings;
     settings.shadow.size = mapSize;
     settings.shadow.provider = provider;
@@ -139,7 +139,7 @@ TEST_F(TsmTest, FootprintMatchesCpuReferenceOnTheGround) {
     spec.yfovDegrees = 50.0f;
     const CameraView cam = makeCameraView(scene, spec, static_cast<float>(w) / h);
     for (ShadowMapProvider provider : {ShadowMapProvider::Uniform, ShadowMapProvider::Tsm}) {
-        const ShaderLibrary shaders;
+        const gl::ShaderLibrary shaders;
         RenderSettings settings;
         settings.shadow.size = 256;
         settings.shadow.provider = provider;
@@ -190,7 +190,7 @@ TEST_F(TsmTest, FootprintMatchesCpuReferenceOnTheGround) {
 TEST_F(TsmTest, FlickerIsZeroForUniformAndShrinksWithTheStepForTsm) {
     const Scene scene = loadGltf(kDefaultAsset);
     const CameraPath path = defaultWalkthrough(makeCameraView(scene, {}, 1.0f), scene.bounds);
-    const ShaderLibrary shaders;
+    const gl::ShaderLibrary shaders;
     for (ShadowMapProvider provider : {ShadowMapProvider::Uniform, ShadowMapProvider::Tsm}) {
         RenderSettings settings;
         settings.shadow.size = 512;

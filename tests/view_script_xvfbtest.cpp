@@ -5,10 +5,10 @@
 #include "ImageCompare.h"
 #include "TestPaths.h"
 
-#include <renderer/CameraPath.h>
-#include <renderer/GltfLoader.h>
 #include <renderer/Renderer.h>
+#include <renderer/gltf/GltfLoader.h>
 #include <renderer/overlays/Overlay.h>
+#include <renderer/scene/CameraPath.h>
 
 #include <gtest/gtest.h>
 

@@ -6,9 +6,9 @@
 #include "GlTest.h"
 #include "TestScenes.h"
 
-#include <renderer/Capture.h>
-#include <renderer/GltfLoader.h>
 #include <renderer/Renderer.h>
+#include <renderer/gltf/GltfLoader.h>
+#include <renderer/io/Capture.h>
 #include <renderer/soft/FilteredShadow.h>
 
 #include <glm/gtc/matrix_inverse.hpp>
@@ -77,7 +77,7 @@ VsmFrame renderVsm(float radius, float blur, float bleed, std::vector<float>* de
                    glm::mat4* lightViewProj = nullptr, glm::mat4* lightView = nullptr) {
     Scene scene = loadGltf(kDefaultAsset);
     scene.light->radius = radius;
-    const ShaderLibrary shaders;
+    const gl::ShaderLibrary shaders;
     RenderSettings s;
     s.shadow.size = 512;
     s.method = "vsm";

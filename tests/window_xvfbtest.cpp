@@ -5,10 +5,10 @@
 #include "TestPaths.h"
 #include "TestScenes.h"
 
-#include <renderer/Capture.h>
-#include <renderer/EglContext.h>
-#include <renderer/GlfwWindow.h>
 #include <renderer/Renderer.h>
+#include <renderer/context/EglContext.h>
+#include <renderer/context/GlfwWindow.h>
+#include <renderer/io/Capture.h>
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -26,7 +26,7 @@ Scene testScene() {
 
 ByteImage renderHeadless(const Scene& scene) {
     auto ctx = EglContext::create();
-    const ShaderLibrary shaders;
+    const gl::ShaderLibrary shaders;
     Renderer r(shaders, scene, {});
     r.resize(kW, kH);
     r.render(makeCameraView(scene, {}, float(kW) / kH));
@@ -40,7 +40,7 @@ TEST(Window, RendersTheSamePixelsAsHeadless) {
     auto window = GlfwWindow::create({kW, kH, "floodlight test", true});
     const glm::ivec2 fb = window->framebufferSize();
     ASSERT_EQ(fb, glm::ivec2(kW, kH));
-    const ShaderLibrary shaders;
+    const gl::ShaderLibrary shaders;
     Renderer r(shaders, scene, {});
     r.resize(fb.x, fb.y);
     ByteImage shown;
@@ -70,7 +70,7 @@ TEST(Window, RendersTheSamePixelsAsHeadless) {
 TEST(Window, SurvivesMinimiseAndTinySizes) {
     const Scene scene = testScene();
     auto window = GlfwWindow::create({kW, kH, "floodlight test", true});
-    const ShaderLibrary shaders;
+    const gl::ShaderLibrary shaders;
     Renderer r(shaders, scene, {});
     auto frame = [&] {
         glfwPollEvents();

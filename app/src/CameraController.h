@@ -1,8 +1,8 @@
 #pragma once
 // Orbit and fly camera; the viewer (Viewer.cpp) feeds it mouse and held-key input.
 
-#include <renderer/CameraPath.h>
 #include <renderer/Renderer.h>
+#include <renderer/scene/CameraPath.h>
 
 #include <functional>
 

@@ -7,11 +7,11 @@
 #include "Commands.h"
 #include "FrameRunner.h"
 
-#include <renderer/Capture.h>
-#include <renderer/EglContext.h>
-#include <renderer/ShadowStats.h>
+#include <renderer/context/EglContext.h>
+#include <renderer/io/Capture.h>
+#include <renderer/metrics/ShadowStats.h>
+#include <renderer/metrics/SoftStats.h>
 #include <renderer/soft/EyeSoftShadow.h>
-#include <renderer/soft/SoftStats.h>
 
 #include <iomanip>
 #include <iostream>
@@ -72,7 +72,7 @@ struct CaptureSetup {
     const CaptureScript& script;
     const SceneOptions& options;
     const Scene& scene;
-    const ShaderLibrary& shaders;
+    const gl::ShaderLibrary& shaders;
     RenderSettings base, reference;
     fs::path dir;
 };
@@ -262,7 +262,7 @@ int runCapture(const CaptureRequest& req) {
     so.timing = req.timing;
     const Scene scene = loadScene(so);
     auto context = EglContext::create();
-    const ShaderLibrary shaders = makeShaderLibrary(so);
+    const gl::ShaderLibrary shaders = makeShaderLibrary(so);
     CaptureSetup setup{script, so, scene, shaders, makeRenderSettings(so), {}, dir};
     setup.reference = setup.base;
     setup.reference.method = "reference";

@@ -5,8 +5,8 @@
 #include "CaptureScript.h"
 #include "FrameRunner.h"
 
-#include <renderer/ImageIO.h>
-#include <renderer/Metrics.h>
+#include <renderer/io/ImageIO.h>
+#include <renderer/metrics/Metrics.h>
 
 #include <nlohmann/json.hpp>
 

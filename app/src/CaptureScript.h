@@ -20,8 +20,8 @@
 //    "saveFrames": true}                                   // PNG + EXR per frame x method
 // Every problem is reported as "FILE: FIELD: problem".
 
-#include <renderer/CameraPath.h>
 #include <renderer/Renderer.h>
+#include <renderer/scene/CameraPath.h>
 #include <renderer/soft/ReferenceShadow.h>
 
 #include <filesystem>

@@ -1,6 +1,6 @@
 #include "Common.h"
 
-#include <renderer/SceneGenerator.h>
+#include <renderer/scene/SceneGenerator.h>
 
 #include <cmath>
 #include <iomanip>
@@ -127,9 +127,9 @@ Scene loadScene(const SceneOptions& o) {
     }
 }
 
-ShaderLibrary makeShaderLibrary(const SceneOptions& o) {
+gl::ShaderLibrary makeShaderLibrary(const SceneOptions& o) {
     try {
-        return o.shaderDir.empty() ? ShaderLibrary() : ShaderLibrary(o.shaderDir);
+        return o.shaderDir.empty() ? gl::ShaderLibrary() : gl::ShaderLibrary(o.shaderDir);
     } catch (const std::runtime_error& e) {
         throw InputError(e.what());
     }
@@ -165,9 +165,9 @@ RenderSettings makeRenderSettings(const SceneOptions& o) {
     }
     s.shadow.slopeBias = o.slopeBias;
     s.shadow.constantBias = o.constantBias;
-    s.timing = o.timing == "query"    ? TimingMode::Query
-               : o.timing == "finish" ? TimingMode::Finish
-                                      : TimingMode::Auto;
+    s.timing = o.timing == "query"    ? gl::TimingMode::Query
+               : o.timing == "finish" ? gl::TimingMode::Finish
+                                      : gl::TimingMode::Auto;
     return s;
 }
 
@@ -209,7 +209,7 @@ CameraView initialCamera(const Scene& scene, const SceneOptions& o, int width, i
 
 void printTimings(const Renderer& renderer, std::ostream& out) {
     out << std::fixed << std::setprecision(2);
-    for (const PassTime& p : renderer.timer().passes())
+    for (const gl::PassTime& p : renderer.timer().passes())
         out << "  " << p.name << ": " << p.ms << " ms\n";
     out << "  frame total: " << renderer.timer().frameMs() << " ms (" << renderer.timer().modeName()
         << ")\n";

@@ -2,9 +2,9 @@
 // Options and helpers shared by the subcommands.
 
 #include <gpu/ShaderLibrary.h>
-#include <renderer/GltfLoader.h>
 #include <renderer/Renderer.h>
-#include <renderer/Scene.h>
+#include <renderer/gltf/GltfLoader.h>
+#include <renderer/scene/Scene.h>
 
 #include <CLI/CLI.hpp>
 
@@ -63,7 +63,7 @@ Scene loadDefaultScene(const LoadOptions& options);
 /// Loads o.scene (or the default), printing warnings to stderr; throws InputError.
 Scene loadScene(const SceneOptions& o);
 /// The shader library for --shader-dir (or the embedded shaders); throws InputError.
-ShaderLibrary makeShaderLibrary(const SceneOptions& o);
+gl::ShaderLibrary makeShaderLibrary(const SceneOptions& o);
 /// The render settings the options ask for; throws UsageError for a method option the chosen
 /// method does not take (with o.strictMethodOptions).
 RenderSettings makeRenderSettings(const SceneOptions& o);

@@ -5,11 +5,11 @@
 #include "Commands.h"
 #include "FrameRunner.h"
 
-#include <renderer/CameraPath.h>
-#include <renderer/Capture.h>
-#include <renderer/EglContext.h>
-#include <renderer/ShadowStats.h>
-#include <renderer/soft/SoftStats.h>
+#include <renderer/context/EglContext.h>
+#include <renderer/io/Capture.h>
+#include <renderer/metrics/ShadowStats.h>
+#include <renderer/metrics/SoftStats.h>
+#include <renderer/scene/CameraPath.h>
 
 #include <nlohmann/json.hpp>
 
@@ -77,7 +77,7 @@ int runCompare(const CompareRequest& r) {
         return defaultWalkthrough(initialCamera(scene, r.scene, r.width, r.height), scene.bounds);
     }();
     auto context = EglContext::create();
-    const ShaderLibrary shaders = makeShaderLibrary(r.scene);
+    const gl::ShaderLibrary shaders = makeShaderLibrary(r.scene);
     RenderSettings settings = makeRenderSettings(r.scene);
     settings.method = method;
     checkMethodOptions(settings, r.width, r.height);

@@ -18,7 +18,7 @@
 #if __has_include(<geometry/GlDiscreteDelaunay.h>)
 #include <geometry/GlDiscreteDelaunay.h>
 #include <gpu/ShaderLibrary.h>
-#include <renderer/EglContext.h>
+#include <renderer/context/EglContext.h>
 #define FLOODLIGHT_HAVE_GL_DELAUNAY 1
 #endif
 
@@ -82,7 +82,7 @@ glBackend() {
     // Context, shaders and programs are made once, before the pipeline's clock starts.
     struct Gl {
         std::unique_ptr<EglContext> context = EglContext::create();
-        ShaderLibrary shaders;
+        gl::ShaderLibrary shaders;
         geom::GlDiscreteDelaunay steps{shaders};
     };
     auto gl = std::make_shared<Gl>();

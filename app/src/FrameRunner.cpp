@@ -3,7 +3,7 @@
 #include "CaptureScript.h"
 
 #include <base/Stats.h>
-#include <renderer/ImageIO.h>
+#include <renderer/io/ImageIO.h>
 
 #include <glm/geometric.hpp>
 
@@ -20,9 +20,9 @@ std::optional<std::string> referenceOf(const std::string& method) {
     return std::string(m->reference);
 }
 
-void PhaseTimes::record(const PassTimer& timer) {
+void PhaseTimes::record(const gl::PassTimer& timer) {
     Phases phases;
-    for (const PassTime& p : timer.passes()) phases.emplace_back(p.name, p.ms);
+    for (const gl::PassTime& p : timer.passes()) phases.emplace_back(p.name, p.ms);
     phases_.push_back(std::move(phases));
     frameMs_.push_back(timer.frameMs());
 }

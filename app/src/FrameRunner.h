@@ -8,8 +8,8 @@
 #include "Common.h"
 
 #include <gpu/PassTimer.h>
-#include <renderer/CameraPath.h>
-#include <renderer/Capture.h>
+#include <renderer/io/Capture.h>
+#include <renderer/scene/CameraPath.h>
 
 #include <glm/vec3.hpp>
 #include <nlohmann/json.hpp>
@@ -36,7 +36,7 @@ class PhaseTimes {
     using Phases = std::vector<std::pair<std::string, double>>; // (pass name, ms) in pass order
 
     /// Appends the frame `timer` has just timed.
-    void record(const PassTimer& timer);
+    void record(const gl::PassTimer& timer);
     [[nodiscard]] std::size_t frames() const { return frameMs_.size(); }
     [[nodiscard]] const std::vector<double>& frameMs() const { return frameMs_; }
     /// The passes of frame i, in the order they ran.

@@ -1,6 +1,6 @@
 #include "Commands.h"
 
-#include <renderer/SceneGenerator.h>
+#include <renderer/scene/SceneGenerator.h>
 
 #include <chrono>
 #include <iostream>

@@ -4,10 +4,10 @@
 
 #include "Commands.h"
 
-#include <renderer/Capture.h>
-#include <renderer/EglContext.h>
-#include <renderer/Metrics.h>
-#include <renderer/ShadowStats.h>
+#include <renderer/context/EglContext.h>
+#include <renderer/io/Capture.h>
+#include <renderer/metrics/Metrics.h>
+#include <renderer/metrics/ShadowStats.h>
 #include <renderer/passes/HudPass.h>
 
 #include <base/Stats.h>
@@ -63,7 +63,7 @@ int renderOverview(SceneOptions o, int width, int height, const std::filesystem:
     const Scene scene = loadScene(o);
     const CameraView camera = initialCamera(scene, o, width, height);
     auto context = EglContext::create();
-    const ShaderLibrary shaders = makeShaderLibrary(o);
+    const gl::ShaderLibrary shaders = makeShaderLibrary(o);
     std::cout << "context: " << context->description() << "\n"
               << "scene: " << scene.source << " (" << scene.triangleCount()
               << " triangles), light radius " << *o.lightRadius << ", " << width << "x" << height

@@ -1,8 +1,8 @@
 #include "Commands.h"
 
-#include <renderer/Capture.h>
-#include <renderer/EglContext.h>
-#include <renderer/ShadowStats.h>
+#include <renderer/context/EglContext.h>
+#include <renderer/io/Capture.h>
+#include <renderer/metrics/ShadowStats.h>
 #include <renderer/overlays/OverlayCapture.h>
 
 #include <iomanip>
@@ -45,7 +45,7 @@ struct ProviderResult {
     std::optional<OverlayCapture> overlay;
 };
 
-ProviderResult renderWith(const ShaderLibrary& shaders, const Scene& scene,
+ProviderResult renderWith(const gl::ShaderLibrary& shaders, const Scene& scene,
                           const CameraView& camera, RenderSettings settings, int width, int height,
                           const RenderRequest& request) {
     settings.diagnostics = true;
@@ -77,7 +77,7 @@ int renderHeadless(const RenderRequest& r) {
     auto context = EglContext::create();
     std::cout << "context: " << context->description() << "\n"
               << "scene: " << scene.source << " (" << scene.triangleCount() << " triangles)\n";
-    const ShaderLibrary shaders = makeShaderLibrary(r.scene);
+    const gl::ShaderLibrary shaders = makeShaderLibrary(r.scene);
     const RenderSettings base = makeRenderSettings(r.scene);
     checkMethodOptions(base, r.width, r.height);
     std::vector<ShadowMapProvider> providers{base.shadow.provider};

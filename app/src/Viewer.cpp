@@ -3,8 +3,8 @@
 #include "Commands.h"
 
 #include <base/Text.h>
-#include <renderer/Capture.h>
-#include <renderer/ImageIO.h>
+#include <renderer/io/Capture.h>
+#include <renderer/io/ImageIO.h>
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -256,12 +256,15 @@ void Viewer::renderFrame(glm::ivec2 size, float dt) {
     const bool statsFrame =
         referenceOf(renderer_->settings().method) &&
         (statsRequested_ || (options_.statsEvery > 0 && rendered_ >= nextStatsFrame_));
+    // Steps 1-4 of the frame (renderer/Renderer.h).
     if (statsFrame)
         renderWithStats(view);
     else
         renderer_->render(view);
     const double renderMs = renderer_->timer().frameMs();
+    // Step 6 starts: the colour to the window's framebuffer, for step 5 to draw over.
     renderer_->present(size.x, size.y);
+    // Step 5: overlays and HUD.
     std::vector<std::string> overlayLines;
     if (overlayMode_ != OverlayMode::None) {
         try {
@@ -277,7 +280,7 @@ void Viewer::renderFrame(glm::ivec2 size, float dt) {
         std::cout << "wrote " << options_.screenshot << "\n";
     }
     for (const std::string& name : std::exchange(pendingScreenshots_, {})) screenshot(name, size);
-    window_->swapBuffers();
+    window_->swapBuffers(); // step 6 ends: the frame is shown
     ++rendered_;
     recordPose(false);
     const double end = glfwGetTime();

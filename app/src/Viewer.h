@@ -9,11 +9,11 @@
 #include "InputScript.h"
 #include "ViewerInput.h"
 
-#include <renderer/GlfwWindow.h>
 #include <renderer/Renderer.h>
+#include <renderer/context/GlfwWindow.h>
+#include <renderer/metrics/SoftStats.h>
 #include <renderer/overlays/Overlay.h>
 #include <renderer/passes/HudPass.h>
-#include <renderer/soft/SoftStats.h>
 
 #include <filesystem>
 #include <memory>
@@ -81,7 +81,7 @@ class Viewer {
 
     ViewerOptions options_;
     std::unique_ptr<GlfwWindow> window_;
-    ShaderLibrary shaders_;
+    gl::ShaderLibrary shaders_;
     Scene scene_;
     std::unique_ptr<Renderer> renderer_;
     std::unique_ptr<CameraController> controller_;

@@ -4,9 +4,9 @@
 #include "Viewer.h"
 
 #include <base/Text.h>
-#include <renderer/CameraPath.h>
-#include <renderer/Capture.h>
-#include <renderer/ImageIO.h>
+#include <renderer/io/Capture.h>
+#include <renderer/io/ImageIO.h>
+#include <renderer/scene/CameraPath.h>
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -229,7 +229,7 @@ std::vector<std::string> Viewer::hudLines(const std::vector<std::string>& overla
                     fixed(renderer_->light().radius, 3));
     std::string times = fixed(renderer_->timer().frameMs(), 1) + " ms/frame, " + fixed(fps_, 1) +
                         " FPS (" + renderer_->timer().modeName() + "):";
-    for (const PassTime& p : renderer_->timer().passes())
+    for (const gl::PassTime& p : renderer_->timer().passes())
         times += " " + p.name + " " + fixed(p.ms, 1);
     lines.push_back(times);
     if (stats_ && statsMethod_ == s.method) {

@@ -3,8 +3,8 @@
 
 #include "Commands.h"
 
-#include <renderer/EglContext.h>
-#include <renderer/ImageIO.h>
+#include <renderer/context/EglContext.h>
+#include <renderer/io/ImageIO.h>
 
 #include <jfa/CpuKernel.h>
 #include <jfa/DistanceTransform.h>
@@ -229,11 +229,11 @@ int runVoronoi(const VoronoiOptions& o) {
     const std::vector<jfa::Cell> siteList = jfa::siteCells(in.seeds);
     const jfa::ExactDiagramView view{w, h, siteList, exact.distSq, in.integer};
 
-    std::unique_ptr<ShaderLibrary> shaders;
+    std::unique_ptr<gl::ShaderLibrary> shaders;
     std::unique_ptr<jfa::GlFloodKernel<jfa::NearestSite>> kernel;
     if (o.backend == "gl") {
-        shaders = std::make_unique<ShaderLibrary>(o.shaderDir.empty() ? ShaderLibrary()
-                                                                      : ShaderLibrary(o.shaderDir));
+        shaders = std::make_unique<gl::ShaderLibrary>(
+            o.shaderDir.empty() ? gl::ShaderLibrary() : gl::ShaderLibrary(o.shaderDir));
         kernel = std::make_unique<jfa::GlFloodKernel<jfa::NearestSite>>(
             *shaders,
             o.kernel == "compute" ? jfa::GlKernelKind::Compute : jfa::GlKernelKind::Fragment);

@@ -4,7 +4,7 @@
 #include "Commands.h"
 
 #include <gpu/Gl.h>
-#include <renderer/GlfwWindow.h>
+#include <renderer/context/GlfwWindow.h>
 
 #include <iostream>
 

@@ -99,7 +99,7 @@ using gl_stages::readCorners;
 using gl_stages::readIds;
 using gl_stages::uploadIds;
 
-GlDiscreteDelaunay::GlDiscreteDelaunay(const ShaderLibrary& shaders, jfa::GlKernelKind flood)
+GlDiscreteDelaunay::GlDiscreteDelaunay(const gl::ShaderLibrary& shaders, jfa::GlKernelKind flood)
     : impl_(std::make_unique<Impl>(shaders, flood)) {}
 GlDiscreteDelaunay::~GlDiscreteDelaunay() = default;
 GlDiscreteDelaunay::GlDiscreteDelaunay(GlDiscreteDelaunay&&) noexcept = default;
@@ -212,7 +212,7 @@ DiscreteTriangles GlDiscreteDelaunay::buildTriangles(const IdTexture& ids,
 
 DiscreteDelaunay glDiscreteDelaunay(const std::vector<glm::dvec2>& sites,
                                     const DiscreteDelaunayOptions& options) {
-    const ShaderLibrary shaders;
+    const gl::ShaderLibrary shaders;
     GlDiscreteDelaunay backend(shaders);
     return backend.run(sites, options);
 }

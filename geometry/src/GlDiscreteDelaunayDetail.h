@@ -35,7 +35,7 @@ VertexChain readChain(const gl::Texture& texture);
 using gl_stages::CornerCounts;
 
 struct GlDiscreteDelaunay::Impl {
-    Impl(const ShaderLibrary& shaders, jfa::GlKernelKind flood);
+    Impl(const gl::ShaderLibrary& shaders, jfa::GlKernelKind flood);
 
     /// (Re)allocates the textures for a W x H run; keeps them when the size is unchanged.
     void resize(int w, int h);

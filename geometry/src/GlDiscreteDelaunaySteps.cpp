@@ -25,7 +25,7 @@ constexpr GLbitfield kAfterWrites = GL_TEXTURE_FETCH_BARRIER_BIT |
                                     GL_TEXTURE_UPDATE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT |
                                     GL_ATOMIC_COUNTER_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT;
 
-gl::Program buildStep(const ShaderLibrary& shaders, const char* file) {
+gl::Program buildStep(const gl::ShaderLibrary& shaders, const char* file) {
     return gl::Program::build(shaders, {{GL_COMPUTE_SHADER, file}});
 }
 
@@ -86,7 +86,7 @@ void bindImage(GLuint unit, const gl::Texture& texture, GLenum access) {
 
 } // namespace
 
-GlDiscreteDelaunay::Impl::Impl(const ShaderLibrary& shaders, jfa::GlKernelKind flood)
+GlDiscreteDelaunay::Impl::Impl(const gl::ShaderLibrary& shaders, jfa::GlKernelKind flood)
     : sitesProgram(buildStep(shaders, "delaunay_sites.comp.glsl")),
       idsProgram(buildStep(shaders, "delaunay_ids.comp.glsl")),
       islandsProgram(buildStep(shaders, "delaunay_islands.comp.glsl")),

@@ -1,6 +1,6 @@
 #include <gpu/PassTimer.h>
 
-namespace fl {
+namespace fl::gl {
 
 namespace {
 double msSince(std::chrono::steady_clock::time_point t) {
@@ -10,7 +10,7 @@ double msSince(std::chrono::steady_clock::time_point t) {
 
 PassTimer::PassTimer(TimingMode mode) : mode_(mode) {
     if (mode_ == TimingMode::Auto)
-        mode_ = gl::isSoftwareRenderer() ? TimingMode::Finish : TimingMode::Query;
+        mode_ = isSoftwareRenderer() ? TimingMode::Finish : TimingMode::Query;
 }
 
 const char* PassTimer::modeName() const {
@@ -26,8 +26,7 @@ void PassTimer::beginFrame() {
 void PassTimer::begin(const char* name) {
     results_.push_back({name, 0.0});
     if (mode_ == TimingMode::Query) {
-        if (queries_.size() < results_.size())
-            queries_.push_back(gl::Query::create(GL_TIME_ELAPSED));
+        if (queries_.size() < results_.size()) queries_.push_back(Query::create(GL_TIME_ELAPSED));
         glBeginQuery(GL_TIME_ELAPSED, queries_[results_.size() - 1].id());
     } else {
         glFinish();
@@ -55,4 +54,4 @@ void PassTimer::endFrame() {
     }
 }
 
-} // namespace fl
+} // namespace fl::gl

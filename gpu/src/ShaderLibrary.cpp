@@ -4,7 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace fl {
+namespace fl::gl {
 
 ShaderLibrary::ShaderLibrary(std::optional<std::filesystem::path> dir) : dir_(std::move(dir)) {
     if (dir_ && !std::filesystem::is_directory(*dir_))
@@ -64,4 +64,4 @@ void ShaderLibrary::expandInto(const std::string& name, std::string& out,
     }
 }
 
-} // namespace fl
+} // namespace fl::gl

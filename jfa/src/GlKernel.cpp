@@ -37,7 +37,7 @@ Grid readGrid(const gl::Texture& texture) {
 
 namespace {
 
-gl::Program buildKernel(const ShaderLibrary& shaders, const std::string& criterionFile,
+gl::Program buildKernel(const gl::ShaderLibrary& shaders, const std::string& criterionFile,
                         GlKernelKind kind, bool expand) {
     const std::vector<std::string> defines =
         expand ? std::vector<std::string>{"JFA_EXPAND"} : std::vector<std::string>{};
@@ -54,8 +54,8 @@ gl::Program buildKernel(const ShaderLibrary& shaders, const std::string& criteri
 
 } // namespace
 
-GlFloodKernelBase::GlFloodKernelBase(const ShaderLibrary& shaders, const std::string& criterionFile,
-                                     GlKernelKind kind)
+GlFloodKernelBase::GlFloodKernelBase(const gl::ShaderLibrary& shaders,
+                                     const std::string& criterionFile, GlKernelKind kind)
     : passProgram_(buildKernel(shaders, criterionFile, kind, false)),
       expandProgram_(buildKernel(shaders, criterionFile, kind, true)), kind_(kind),
       emptyVao_(gl::VertexArray::create()),
@@ -114,7 +114,7 @@ void GlFloodKernelBase::dispatch(const gl::Texture& src, const gl::Texture& seed
 }
 
 const gl::Texture& GlFloodKernelBase::runPlan(const Plan& plan, const gl::Texture& seeds,
-                                              PassTimer* timer, const PassCallback& callback) {
+                                              gl::PassTimer* timer, const PassCallback& callback) {
     if (seeds.width() != plan.width() || seeds.height() != plan.height())
         throw std::invalid_argument("jfa: seeds are " + std::to_string(seeds.width()) + "x" +
                                     std::to_string(seeds.height()) + " but the plan is for " +

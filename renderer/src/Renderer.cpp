@@ -75,7 +75,8 @@ std::vector<std::string_view> framePhases(const MethodDescriptor& m) {
     return out;
 }
 
-Renderer::Renderer(const ShaderLibrary& shaders, const Scene& scene, const RenderSettings& settings)
+Renderer::Renderer(const gl::ShaderLibrary& shaders, const Scene& scene,
+                   const RenderSettings& settings)
     : shaders_(shaders), settings_(settings), method_(&methodOrThrow(settings.method)),
       scene_(scene), light_(sceneLight(scene)), sceneBounds_(scene.bounds),
       disk_(makeDiskLight(light_, scene.bounds)), lightVolume_(lightVolume(scene, light_)),
@@ -171,6 +172,8 @@ void Renderer::render(const CameraView& camera) {
     gl::throwIfErrors("frame");
 }
 
+// 6. Present (window only): the colour to the default framebuffer, sRGB-encoded; the caller draws
+//    step 5 (overlays, HUD) over it and swaps the buffers.
 void Renderer::present(int framebufferWidth, int framebufferHeight) {
     if (!color_ || framebufferWidth <= 0 || framebufferHeight <= 0) return;
     presentPass_.execute(*color_, framebufferWidth, framebufferHeight);

@@ -3,7 +3,7 @@
 // the debug callback during a test fails that test.
 
 #include <gpu/Gl.h>
-#include <renderer/EglContext.h>
+#include <renderer/context/EglContext.h>
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 #pragma once
 // Small hand-built scenes with known answers, and a CPU ray caster as the reference for shadows.
 
-#include <renderer/Scene.h>
+#include <renderer/scene/Scene.h>
 
 namespace fl::test {
 

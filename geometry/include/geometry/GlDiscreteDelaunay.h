@@ -34,7 +34,7 @@ class GlDiscreteDelaunay {
   public:
     /// Builds the step programs from `shaders` (needs a current GL 4.5 context); G2 floods with
     /// the `flood` kernel (fragment: never slower on llvmpipe, docs/BENCHMARKS.md).
-    explicit GlDiscreteDelaunay(const ShaderLibrary& shaders,
+    explicit GlDiscreteDelaunay(const gl::ShaderLibrary& shaders,
                                 jfa::GlKernelKind flood = jfa::GlKernelKind::Fragment);
     ~GlDiscreteDelaunay();
     GlDiscreteDelaunay(GlDiscreteDelaunay&&) noexcept;

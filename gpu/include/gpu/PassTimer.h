@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace fl {
+namespace fl::gl {
 
 struct PassTime {
     std::string name;
@@ -37,10 +37,10 @@ class PassTimer {
   private:
     using Clock = std::chrono::steady_clock;
     TimingMode mode_;
-    std::vector<gl::Query> queries_; // grows to the most passes a frame has used
+    std::vector<Query> queries_; // grows to the most passes a frame has used
     std::vector<PassTime> results_;
     Clock::time_point frameStart_{}, passStart_{};
     double frameMs_ = 0.0;
 };
 
-} // namespace fl
+} // namespace fl::gl

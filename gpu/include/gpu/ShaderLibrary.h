@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-namespace fl {
+namespace fl::gl {
 
 /// The shaders/*.glsl files compiled into the binary, by file name.
 const std::map<std::string, std::string_view>& embeddedShaders();
@@ -36,4 +36,4 @@ class ShaderLibrary {
     std::optional<std::filesystem::path> dir_;
 };
 
-} // namespace fl
+} // namespace fl::gl

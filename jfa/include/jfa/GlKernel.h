@@ -34,7 +34,7 @@ Grid readGrid(const gl::Texture& texture);
 /// What one dispatch of the kernel programs does: the jfa_pass shaders' uMode, so the values are
 /// fixed by the GLSL.
 enum class GlDispatch : int {
-    Pass = 0,           // one pass of step uStep
+    Pass = 0,           // one pass of jump length uStep (a JFA step, not a frame step)
     ExpandThenPass = 1, // the first pass of the full-resolution stage (on expandProgram_)
     Downsample = 2,     // full-resolution seeds to the half-resolution stage
 };
@@ -52,11 +52,11 @@ class GlFloodKernelBase {
 
   protected:
     /// Builds the kernel programs with `criterionFile` (a criterion's glslFile) linked in.
-    GlFloodKernelBase(const ShaderLibrary& shaders, const std::string& criterionFile,
+    GlFloodKernelBase(const gl::ShaderLibrary& shaders, const std::string& criterionFile,
                       GlKernelKind kind);
 
     /// The plan loop, once the criterion's uniforms are set on both programs.
-    const gl::Texture& runPlan(const Plan& plan, const gl::Texture& seeds, PassTimer* timer,
+    const gl::Texture& runPlan(const Plan& plan, const gl::Texture& seeds, gl::PassTimer* timer,
                                const PassCallback& callback);
 
     gl::Program passProgram_;   // passes and downsampling
@@ -87,14 +87,14 @@ class GlFloodKernel : public GlFloodKernelBase {
 
   public:
     /// Builds the kernel programs with C::glslFile linked in.
-    GlFloodKernel(const ShaderLibrary& shaders, GlKernelKind kind)
+    GlFloodKernel(const gl::ShaderLibrary& shaders, GlKernelKind kind)
         : GlFloodKernelBase(shaders, C::glslFile, kind) {}
 
     /// Runs `plan` on full-resolution `seeds` (plan.width() x plan.height(), not modified);
     /// returns the full-resolution result, owned by the kernel until the next run. If `timer`
-    /// is given, each pass is timed as "jfa step K" (and "downsample").
+    /// is given, each pass is timed as "jfa step K", K the jump length (and "downsample").
     const gl::Texture& run(const Plan& plan, const gl::Texture& seeds, const C& criterion,
-                           PassTimer* timer = nullptr, const PassCallback& callback = {}) {
+                           gl::PassTimer* timer = nullptr, const PassCallback& callback = {}) {
         for (const gl::Program* p : {&passProgram_, &expandProgram_})
             setCriterionUniforms(*p, criterion);
         return runPlan(plan, seeds, timer, callback);

@@ -2,21 +2,25 @@
 // The frame, as numbered steps (the same numbers wherever a step is written):
 //   1. shadow map from the light (uniform or TSM provider);
 //   2. surfaces: one geometry pass from the eye (SurfacesPass);
-//   3. the shadow method: visibility per pixel (renderer/methods/ShadowMethod.h);
+//   3. the shadow method: visibility per pixel (renderer/methods/ShadowMethod.h); a method's
+//      own phases (its timed names; JFA-L's and JFA-E's "phase 2..5" are the thesis' numbers)
+//      are parts of this step, not frame steps;
 //   4. shading with that visibility (ShadingPass); then, optionally, the shadow-map diagnostics;
 //   5. overlays and HUD (renderer/overlays, HudPass: drawn by the caller over the frame);
-//   6. present (window only).
+//   6. present (window only): present() puts the colour in the window's framebuffer
+//      (PresentPass) before the caller draws step 5 over it, and the caller's buffer swap shows it.
+// render() runs steps 1-4.
 // Owns the passes, one instance of every method of the table, and the uploaded scene.
 
 #include <gpu/PassTimer.h>
 #include <gpu/ShaderLibrary.h>
-#include <renderer/GpuScene.h>
-#include <renderer/Scene.h>
 #include <renderer/methods/ShadowMethod.h>
 #include <renderer/passes/ShadingPass.h>
 #include <renderer/passes/ShadowDiagnosticsPass.h>
 #include <renderer/passes/ShadowMapPass.h>
 #include <renderer/passes/SurfacesPass.h>
+#include <renderer/scene/GpuScene.h>
+#include <renderer/scene/Scene.h>
 #include <renderer/soft/DiskLight.h>
 
 #include <geometry/Framing.h>
@@ -33,7 +37,7 @@ struct RenderSettings {
     ShadowMapSettings shadow;
     std::string method = "hard"; // a name of the method table (methodTable())
     MethodOptions options;       // the methods' options by flag; unset ones take their defaults
-    TimingMode timing = TimingMode::Auto;
+    gl::TimingMode timing = gl::TimingMode::Auto;
     bool diagnostics = false; // measure the shadow map after shading (ShadowDiagnosticsPass)
 };
 
@@ -65,7 +69,7 @@ class Renderer {
     /// Compiles the passes' and the chosen method's shaders and uploads the scene (needs a
     /// current context); other methods are built when first chosen. Throws
     /// std::invalid_argument for a method name the table does not have.
-    Renderer(const ShaderLibrary& shaders, const Scene& scene, const RenderSettings& settings);
+    Renderer(const gl::ShaderLibrary& shaders, const Scene& scene, const RenderSettings& settings);
 
     /// Replaces the settings (building the method if it is new); throws std::invalid_argument for
     /// an unknown method name.
@@ -102,7 +106,7 @@ class Renderer {
     [[nodiscard]] int eyeGeometryDraws() const { return eyeDraws_; }
     /// Makes the next diagnostics frame compare with itself (e.g. after a camera cut).
     void resetDiagnostics() { diagnosticsPass_.reset(); }
-    [[nodiscard]] const PassTimer& timer() const { return timer_; }
+    [[nodiscard]] const gl::PassTimer& timer() const { return timer_; }
     [[nodiscard]] const Light& light() const { return light_; }
     /// Replaces the light (e.g. moved from the window): recomputes the disk light and the light's
     /// view volume from the scene bounds; the next render() uses it.
@@ -114,7 +118,7 @@ class Renderer {
     /// The current method's instance, built on first use.
     ShadowMethod& currentMethod();
 
-    ShaderLibrary shaders_;
+    gl::ShaderLibrary shaders_;
     RenderSettings settings_;
     const MethodDescriptor* method_ = nullptr;
     GpuScene scene_;
@@ -128,7 +132,7 @@ class Renderer {
     ShadingPass shadingPass_;
     ShadowDiagnosticsPass diagnosticsPass_;
     PresentPass presentPass_;
-    PassTimer timer_;
+    gl::PassTimer timer_;
     const gl::Texture* color_ = nullptr;
     const gl::Texture* visibility_ = nullptr;
     const gl::Texture* diagnostics_ = nullptr;

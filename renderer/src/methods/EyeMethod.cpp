@@ -12,7 +12,7 @@ namespace {
 
 class EyeMethod final : public ShadowMethod {
   public:
-    EyeMethod(const ShaderLibrary& shaders, bool standardFlooding)
+    EyeMethod(const gl::ShaderLibrary& shaders, bool standardFlooding)
         : standardFlooding_(standardFlooding), pass_(shaders) {}
     void resize(int, int) override {} // the pass sizes itself to the frame
 
@@ -48,10 +48,10 @@ class EyeMethod final : public ShadowMethod {
 
 } // namespace
 
-std::unique_ptr<ShadowMethod> makeJfaE(const ShaderLibrary& shaders) {
+std::unique_ptr<ShadowMethod> makeJfaE(const gl::ShaderLibrary& shaders) {
     return std::make_unique<EyeMethod>(shaders, false);
 }
-std::unique_ptr<ShadowMethod> makeFloodE(const ShaderLibrary& shaders) {
+std::unique_ptr<ShadowMethod> makeFloodE(const gl::ShaderLibrary& shaders) {
     return std::make_unique<EyeMethod>(shaders, true);
 }
 

@@ -9,7 +9,7 @@ namespace {
 
 class FilteredMethod final : public ShadowMethod {
   public:
-    FilteredMethod(const ShaderLibrary& shaders, bool pcss) : pcss_(pcss), pass_(shaders) {}
+    FilteredMethod(const gl::ShaderLibrary& shaders, bool pcss) : pcss_(pcss), pass_(shaders) {}
     void resize(int, int) override {} // the pass sizes itself to the frame
 
     const gl::Texture& execute(const FrameInputs& in) override {
@@ -29,10 +29,10 @@ class FilteredMethod final : public ShadowMethod {
 
 } // namespace
 
-std::unique_ptr<ShadowMethod> makePcf(const ShaderLibrary& shaders) {
+std::unique_ptr<ShadowMethod> makePcf(const gl::ShaderLibrary& shaders) {
     return std::make_unique<FilteredMethod>(shaders, false);
 }
-std::unique_ptr<ShadowMethod> makePcss(const ShaderLibrary& shaders) {
+std::unique_ptr<ShadowMethod> makePcss(const gl::ShaderLibrary& shaders) {
     return std::make_unique<FilteredMethod>(shaders, true);
 }
 

@@ -10,7 +10,7 @@ namespace {
 
 class GroundTruth final : public ShadowMethod {
   public:
-    explicit GroundTruth(const ShaderLibrary& shaders) : pass_(shaders) {}
+    explicit GroundTruth(const gl::ShaderLibrary& shaders) : pass_(shaders) {}
     void resize(int, int) override {} // the pass sizes itself to the frame
 
     const gl::Texture& execute(const FrameInputs& in) override {
@@ -30,7 +30,7 @@ class GroundTruth final : public ShadowMethod {
 
 } // namespace
 
-std::unique_ptr<ShadowMethod> makeGroundTruth(const ShaderLibrary& shaders) {
+std::unique_ptr<ShadowMethod> makeGroundTruth(const gl::ShaderLibrary& shaders) {
     return std::make_unique<GroundTruth>(shaders);
 }
 

@@ -8,7 +8,7 @@ namespace {
 
 class Hard final : public ShadowMethod {
   public:
-    explicit Hard(const ShaderLibrary& shaders) : lookup_(shaders, false) {}
+    explicit Hard(const gl::ShaderLibrary& shaders) : lookup_(shaders, false) {}
     void resize(int width, int height) override { lookup_.resize(width, height); }
     const gl::Texture& execute(const FrameInputs& in) override {
         if (in.timer) in.timer->begin("hard shadows");
@@ -23,7 +23,7 @@ class Hard final : public ShadowMethod {
 
 } // namespace
 
-std::unique_ptr<ShadowMethod> makeHard(const ShaderLibrary& shaders) {
+std::unique_ptr<ShadowMethod> makeHard(const gl::ShaderLibrary& shaders) {
     return std::make_unique<Hard>(shaders);
 }
 

@@ -6,7 +6,7 @@
 
 namespace fl {
 
-LightLookup::LightLookup(const ShaderLibrary& shaders, bool penumbra)
+LightLookup::LightLookup(const gl::ShaderLibrary& shaders, bool penumbra)
     : penumbra_(penumbra),
       program_(gl::Program::build(shaders,
                                   {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},

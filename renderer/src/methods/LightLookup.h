@@ -13,7 +13,7 @@ namespace fl {
 class LightLookup {
   public:
     /// `penumbra`: look up a penumbra map (SOFT_PENUMBRA_MAP) instead of the hard test.
-    LightLookup(const ShaderLibrary& shaders, bool penumbra);
+    LightLookup(const gl::ShaderLibrary& shaders, bool penumbra);
     void resize(int width, int height);
     /// Visibility per pixel; `penumbraMap` is required when built with `penumbra`.
     const gl::Texture& execute(const FrameInputs& in, const gl::Texture* penumbraMap = nullptr);

@@ -12,6 +12,8 @@
 
 namespace fl {
 
+using gl::ShaderLibrary;
+
 // Each method's factory, defined in its own file (renderer/src/methods/NAME.cpp).
 std::unique_ptr<ShadowMethod> makeHard(const ShaderLibrary&);
 std::unique_ptr<ShadowMethod> makeJfaL(const ShaderLibrary&);

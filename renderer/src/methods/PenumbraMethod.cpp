@@ -13,7 +13,7 @@ namespace {
 
 class PenumbraMethod final : public ShadowMethod {
   public:
-    PenumbraMethod(const ShaderLibrary& shaders, bool standardFlooding)
+    PenumbraMethod(const gl::ShaderLibrary& shaders, bool standardFlooding)
         : standardFlooding_(standardFlooding), pass_(shaders), lookup_(shaders, true) {}
     void resize(int width, int height) override { lookup_.resize(width, height); }
 
@@ -47,10 +47,10 @@ class PenumbraMethod final : public ShadowMethod {
 
 } // namespace
 
-std::unique_ptr<ShadowMethod> makeJfaL(const ShaderLibrary& shaders) {
+std::unique_ptr<ShadowMethod> makeJfaL(const gl::ShaderLibrary& shaders) {
     return std::make_unique<PenumbraMethod>(shaders, false);
 }
-std::unique_ptr<ShadowMethod> makeFloodL(const ShaderLibrary& shaders) {
+std::unique_ptr<ShadowMethod> makeFloodL(const gl::ShaderLibrary& shaders) {
     return std::make_unique<PenumbraMethod>(shaders, true);
 }
 

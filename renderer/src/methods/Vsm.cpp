@@ -12,7 +12,8 @@
 // for bleed 0.15 / 0.5 at 0.1; the defaults are 0.1 and 0.2. With TSM the blur runs over warped
 // texels, so its world width varies across the map.
 //
-// The CPU reference of all three steps is in tests/vsm_gltest.cpp.
+// The CPU reference of all three phases (moments, blur, lookup: parts of frame step 3) is in
+// tests/vsm_gltest.cpp.
 
 #include <renderer/methods/ShadowMethod.h>
 
@@ -27,7 +28,7 @@ namespace {
 
 class Vsm final : public ShadowMethod {
   public:
-    explicit Vsm(const ShaderLibrary& shaders)
+    explicit Vsm(const gl::ShaderLibrary& shaders)
         : moments_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
                                                 {GL_FRAGMENT_SHADER, "vsm_moments.frag.glsl"}})),
           blur_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
@@ -139,7 +140,7 @@ class Vsm final : public ShadowMethod {
 
 } // namespace
 
-std::unique_ptr<ShadowMethod> makeVsm(const ShaderLibrary& shaders) {
+std::unique_ptr<ShadowMethod> makeVsm(const gl::ShaderLibrary& shaders) {
     return std::make_unique<Vsm>(shaders);
 }
 

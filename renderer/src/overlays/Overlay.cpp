@@ -49,18 +49,18 @@ std::optional<OverlayMode> parseOverlay(std::string_view name) {
 }
 
 struct OverlayRenderer::Impl {
-    explicit Impl(const ShaderLibrary& shaders) : state(shaders) {}
+    explicit Impl(const gl::ShaderLibrary& shaders) : state(shaders) {}
     overlay::State state;
 };
 
 namespace overlay {
-State::State(const ShaderLibrary& shaders)
+State::State(const gl::ShaderLibrary& shaders)
     : canvas(shaders), siteKernel(shaders, jfa::GlKernelKind::Fragment),
       penumbraKernel(shaders, jfa::GlKernelKind::Fragment),
       eyeKernel(shaders, jfa::GlKernelKind::Fragment) {}
 } // namespace overlay
 
-OverlayRenderer::OverlayRenderer(const ShaderLibrary& shaders)
+OverlayRenderer::OverlayRenderer(const gl::ShaderLibrary& shaders)
     : impl_(std::make_unique<Impl>(shaders)) {}
 OverlayRenderer::~OverlayRenderer() = default;
 OverlayRenderer::OverlayRenderer(OverlayRenderer&&) noexcept = default;

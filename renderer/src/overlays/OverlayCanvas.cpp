@@ -60,7 +60,7 @@ gl::Texture uploadMask(const std::vector<std::uint8_t>& mask, int width, int hei
     return t;
 }
 
-OverlayCanvas::OverlayCanvas(const ShaderLibrary& shaders)
+OverlayCanvas::OverlayCanvas(const gl::ShaderLibrary& shaders)
     : grid_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
                                          {GL_FRAGMENT_SHADER, "overlay_grid.frag.glsl"}})),
       lines_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "overlay_lines.vert.glsl"},

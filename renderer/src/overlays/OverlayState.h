@@ -48,7 +48,7 @@ struct ReferenceCache {
 };
 
 struct State {
-    explicit State(const ShaderLibrary& shaders);
+    explicit State(const gl::ShaderLibrary& shaders);
     OverlayCanvas canvas;
     jfa::GlFloodKernel<jfa::NearestSite> siteKernel;      // Voronoi, distance transform, playground
     jfa::GlFloodKernel<PenumbraCriterion> penumbraKernel; // JFA-L pass by pass, reference flood

@@ -131,7 +131,7 @@ void rasterizeHud(const HudGeometry& geometry, ByteImage& image) {
     }
 }
 
-HudPass::HudPass(const ShaderLibrary& shaders)
+HudPass::HudPass(const gl::ShaderLibrary& shaders)
     : program_(gl::Program::build(
           shaders, {{GL_VERTEX_SHADER, "hud.vert.glsl"}, {GL_FRAGMENT_SHADER, "hud.frag.glsl"}})),
       vao_(gl::VertexArray::create()) {

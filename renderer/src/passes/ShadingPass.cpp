@@ -2,7 +2,7 @@
 
 namespace fl {
 
-ShadingPass::ShadingPass(const ShaderLibrary& shaders)
+ShadingPass::ShadingPass(const gl::ShaderLibrary& shaders)
     : program_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
                                             {GL_FRAGMENT_SHADER, "shading.frag.glsl"}})),
       emptyVao_(gl::VertexArray::create()) {}
@@ -36,7 +36,7 @@ ShadingPass::Outputs ShadingPass::execute(const Inputs& in) {
     return {color_, visibility_};
 }
 
-PresentPass::PresentPass(const ShaderLibrary& shaders)
+PresentPass::PresentPass(const gl::ShaderLibrary& shaders)
     : program_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
                                             {GL_FRAGMENT_SHADER, "present.frag.glsl"}})),
       emptyVao_(gl::VertexArray::create()) {}

@@ -2,10 +2,9 @@
 
 namespace fl {
 
-ShadowDiagnosticsPass::ShadowDiagnosticsPass(const ShaderLibrary& shaders)
-    : program_(
-          gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
-                                       {GL_FRAGMENT_SHADER, "shadow_diagnostics.frag.glsl"}})),
+ShadowDiagnosticsPass::ShadowDiagnosticsPass(const gl::ShaderLibrary& shaders)
+    : program_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
+                                            {GL_FRAGMENT_SHADER, "shadow_diagnostics.frag.glsl"}})),
       emptyVao_(gl::VertexArray::create()) {}
 
 void ShadowDiagnosticsPass::resize(int width, int height) {

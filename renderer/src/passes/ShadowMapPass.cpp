@@ -12,7 +12,7 @@ std::optional<ShadowMapProvider> parseProvider(std::string_view name) {
     return std::nullopt;
 }
 
-ShadowMapPass::ShadowMapPass(const ShaderLibrary& shaders)
+ShadowMapPass::ShadowMapPass(const gl::ShaderLibrary& shaders)
     : program_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "shadow_depth.vert.glsl"},
                                             {GL_FRAGMENT_SHADER, "shadow_depth.frag.glsl"}})) {}
 

@@ -2,7 +2,7 @@
 
 namespace fl {
 
-SurfacesPass::SurfacesPass(const ShaderLibrary& shaders)
+SurfacesPass::SurfacesPass(const gl::ShaderLibrary& shaders)
     : program_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "forward.vert.glsl"},
                                             {GL_FRAGMENT_SHADER, "surfaces.frag.glsl"}})) {}
 

@@ -1,7 +1,7 @@
 #include <renderer/soft/EyeSoftShadow.h>
 
-#include <renderer/GpuScene.h>
 #include <renderer/passes/SurfacesPass.h>
+#include <renderer/scene/GpuScene.h>
 #include <renderer/soft/PenumbraCriterion.h>
 
 #include <jfa/CpuKernel.h>
@@ -132,7 +132,7 @@ FloatImage eyeSoftVisibility(const EyeImage& im, const jfa::Grid& flooded, const
     return out;
 }
 
-EyeSoftShadowPass::EyeSoftShadowPass(const ShaderLibrary& shaders)
+EyeSoftShadowPass::EyeSoftShadowPass(const gl::ShaderLibrary& shaders)
     : lightIds_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "shadow_depth.vert.glsl"},
                                              {GL_FRAGMENT_SHADER, "jfae_light_id.frag.glsl"}})),
       eyePass_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
@@ -159,7 +159,7 @@ void EyeSoftShadowPass::resize(int width, int height, int shadowSize) {
     visibilityFbo_ = gl::Framebuffer::forColor(visibility_, "JFA-E visibility");
 }
 
-EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, PassTimer* timer) {
+EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::PassTimer* timer) {
     if (in.shadow.receivers == nullptr)
         throw std::invalid_argument("JFA-E needs the shadow map's receiver positions");
     // The pass count is the thesis' for a 512² frame; a smaller frame (a window being resized)
@@ -170,6 +170,7 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, PassTime
     const int shadowSize = in.shadow.depth.width();
     resize(in.width, in.height, shadowSize);
 
+    // Phases 2-5 are the thesis' (§5.4), all within frame step 3.
     // Phase 2a (object-ID fix only): which object the light's centre sees at each texel.
     if (in.settings.objectIdFix) {
         if (timer) timer->begin("occluder ids");

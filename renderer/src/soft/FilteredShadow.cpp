@@ -123,7 +123,7 @@ float filteredVisibility(const FilterFrame& f, glm::vec3 p, glm::vec3 n) {
     return filter(glm::vec2(fd), glm::vec2(fd.z, fd.w));
 }
 
-FilteredShadowPass::FilteredShadowPass(const ShaderLibrary& shaders)
+FilteredShadowPass::FilteredShadowPass(const gl::ShaderLibrary& shaders)
     : program_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
                                             {GL_FRAGMENT_SHADER, "filtered_shadow.frag.glsl"}})),
       emptyVao_(gl::VertexArray::create()) {
@@ -166,7 +166,7 @@ FilterFrame FilteredShadowPass::frame(const Inputs& in) const {
     return f;
 }
 
-FilteredShadowPass::Outputs FilteredShadowPass::execute(const Inputs& in, PassTimer* timer) {
+FilteredShadowPass::Outputs FilteredShadowPass::execute(const Inputs& in, gl::PassTimer* timer) {
     const FilteredShadowSettings& s = in.settings;
     if (s.pcfKernel < 1 || s.pcfKernel > kMaxPcfKernel)
         throw std::invalid_argument("PCF kernel " + std::to_string(s.pcfKernel) +

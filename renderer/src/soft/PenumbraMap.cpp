@@ -62,19 +62,19 @@ jfa::Grid silhouetteSeeds(const ReceiverGrid& r, const DiskLight& light, float t
     return out;
 }
 
-PenumbraMapPass::PenumbraMapPass(const ShaderLibrary& shaders)
+PenumbraMapPass::PenumbraMapPass(const gl::ShaderLibrary& shaders)
     : silhouette_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
                                                {GL_FRAGMENT_SHADER, "silhouette.frag.glsl"}})),
       emptyVao_(gl::VertexArray::create()), kernel_(shaders, jfa::GlKernelKind::Fragment) {}
 
-PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, PassTimer* timer) {
+PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, gl::PassTimer* timer) {
     const int size = in.receivers.width();
     const jfa::Plan plan = penumbraPlan(in.settings, size); // validates before any GL work
     if (!seeds_ || seeds_.width() != size) {
         seeds_ = gl::Texture(GL_RGBA32F, size, size);
         fbo_ = gl::Framebuffer::forColor(seeds_, "silhouette seeds");
     }
-    // Phase 2: silhouettes.
+    // Phase 2 (thesis; within frame step 3): silhouettes.
     if (timer) timer->begin("silhouettes");
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glViewport(0, 0, size, size);

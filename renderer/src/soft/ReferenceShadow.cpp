@@ -1,6 +1,6 @@
 #include <renderer/soft/ReferenceShadow.h>
 
-#include <renderer/Metrics.h>
+#include <renderer/metrics/Metrics.h>
 
 #include <geometry/Framing.h>
 
@@ -71,7 +71,7 @@ VisibilityDifference visibilityDifference(const FloatImage& a, const FloatImage&
     return d;
 }
 
-ReferenceShadowPass::ReferenceShadowPass(const ShaderLibrary& shaders)
+ReferenceShadowPass::ReferenceShadowPass(const gl::ShaderLibrary& shaders)
     : depth_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "shadow_depth.vert.glsl"},
                                           {GL_FRAGMENT_SHADER, "shadow_depth.frag.glsl"}})),
       accumulate_(
@@ -97,7 +97,7 @@ void ReferenceShadowPass::resize(int width, int height, int mapSize) {
     visibilityFbo_ = gl::Framebuffer::forColor(visibility_, "reference visibility");
 }
 
-ReferenceShadowPass::Outputs ReferenceShadowPass::execute(const Inputs& in, PassTimer* timer) {
+ReferenceShadowPass::Outputs ReferenceShadowPass::execute(const Inputs& in, gl::PassTimer* timer) {
     const std::vector<glm::vec3> samples = referenceDiskSamples(in.light, in.settings.samples);
     GLint maxSize = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);

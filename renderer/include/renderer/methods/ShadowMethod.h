@@ -11,11 +11,11 @@
 #include <gpu/Gl.h>
 #include <gpu/PassTimer.h>
 #include <gpu/ShaderLibrary.h>
-#include <renderer/GpuScene.h>
-#include <renderer/Scene.h>
 #include <renderer/methods/MethodOptions.h>
 #include <renderer/passes/ShadowMapPass.h>
 #include <renderer/passes/SurfacesPass.h>
+#include <renderer/scene/GpuScene.h>
+#include <renderer/scene/Scene.h>
 #include <renderer/soft/DiskLight.h>
 
 #include <geometry/Aabb.h>
@@ -43,7 +43,7 @@ struct FrameInputs {
     const SurfacesPass::Outputs& surfaces; // step 2
     const MethodDescriptor& method;        // this method's table row
     const MethodOptions& options;          // values by flag; a row's defaults fill the rest
-    PassTimer* timer = nullptr;            // times the method's phases (the row's names)
+    gl::PassTimer* timer = nullptr;        // times the method's phases (the row's names)
 
     /// This method's option `key` (its capture-script key), as the row declares it.
     [[nodiscard]] int integer(std::string_view key) const;
@@ -100,7 +100,7 @@ struct MethodDescriptor {
     bool cycles = true;                           // the window's M key steps through it
     bool shadowMapPositions = false; // needs the shadow map's receiver positions (step 1)
     bool floods = false;             // a flooding method: passes and FloodFrame
-    std::unique_ptr<ShadowMethod> (*make)(const ShaderLibrary&) = nullptr;
+    std::unique_ptr<ShadowMethod> (*make)(const gl::ShaderLibrary&) = nullptr;
     /// Checks the options for a frame before any rendering; throws std::invalid_argument with the
     /// option's flag and the valid range. Null: nothing to check beyond each option's range.
     void (*check)(const MethodOptions&, const MethodDescriptor&, int mapSize, int width,

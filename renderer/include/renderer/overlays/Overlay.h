@@ -1,8 +1,8 @@
 #pragma once
-// Overlay modes for the window (issue 7): pictures of the frame's intermediate data (shadow map,
-// seeds, penumbra map, flood passes, Voronoi diagram / distance transform of the seeds, JFA vs
-// standard flooding, the TSM trapezoid), a Voronoi playground and the Delaunay visualiser.
-// Each is drawn over the current framebuffer by OverlayRenderer::draw.
+// Step 5 of a frame, with the HUD: the window's overlay modes (issue 7). Pictures of the frame's
+// intermediate data (shadow map, seeds, penumbra map, flood passes, Voronoi diagram / distance
+// transform of the seeds, JFA vs standard flooding, the TSM trapezoid), a Voronoi playground and
+// the Delaunay visualiser. Each is drawn over the current framebuffer by OverlayRenderer::draw.
 
 #include <gpu/ShaderLibrary.h>
 #include <renderer/Renderer.h>
@@ -70,7 +70,7 @@ struct OverlayResult {
 class OverlayRenderer {
   public:
     /// Compiles the overlays' shaders (needs a current context).
-    explicit OverlayRenderer(const ShaderLibrary& shaders);
+    explicit OverlayRenderer(const gl::ShaderLibrary& shaders);
     ~OverlayRenderer();
     OverlayRenderer(OverlayRenderer&&) noexcept;
     OverlayRenderer& operator=(OverlayRenderer&&) noexcept;

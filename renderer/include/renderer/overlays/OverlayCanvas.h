@@ -46,7 +46,7 @@ gl::Texture uploadMask(const std::vector<std::uint8_t>& mask, int width, int hei
 class OverlayCanvas {
   public:
     /// Compiles the overlay programs (needs a current context).
-    explicit OverlayCanvas(const ShaderLibrary& shaders);
+    explicit OverlayCanvas(const gl::ShaderLibrary& shaders);
     /// Draws a grid into `viewport` ({x, y, width, height} of the bound framebuffer).
     void drawGrid(const GridDraw& grid, glm::ivec4 viewport) const;
     /// Draws vertices as GL_LINES, GL_LINE_STRIP, GL_LINE_LOOP or GL_POINTS into `viewport`.

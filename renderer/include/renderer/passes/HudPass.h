@@ -1,12 +1,13 @@
 #pragma once
-// The window's heads-up display: lines of text (stb_easy_font's segment font, no textures) on a
-// translucent box in the top-left corner, drawn over whatever the framebuffer shows. The layout
-// is pure CPU (testable without GL); the pass only uploads it and blends it.
+// Step 5 of a frame, with the overlays: the window's heads-up display. Lines of text
+// (stb_easy_font's segment font, no textures) on a translucent box in the top-left corner, drawn
+// over whatever the framebuffer shows. The layout is pure CPU (testable without GL); the pass
+// only uploads it and blends it.
 
 #include <gpu/Gl.h>
 #include <gpu/Program.h>
 #include <gpu/ShaderLibrary.h>
-#include <renderer/ImageIO.h>
+#include <renderer/io/ImageIO.h>
 
 #include <glm/glm.hpp>
 
@@ -47,7 +48,7 @@ void rasterizeHud(const HudGeometry& geometry, ByteImage& image);
 
 class HudPass {
   public:
-    explicit HudPass(const ShaderLibrary& shaders);
+    explicit HudPass(const gl::ShaderLibrary& shaders);
     /// Blends the HUD for `lines` into `framebuffer` (0 = the window) of width x height pixels.
     /// Every GL state it changes (blend, depth, cull, scissor, viewport, bindings) is restored.
     void draw(std::span<const std::string> lines, int width, int height, const HudStyle& style = {},

@@ -2,19 +2,20 @@
 // Step 4 of a frame: shading, shared by every shadow method. A fullscreen pass over the surfaces
 // of step 2 applies the method's visibility (step 3): linear colour, and the visibility itself
 // with background set to 1 (what the metrics and the visibility PNG read).
-// PresentPass is step 6 in a window: the colour to the default framebuffer, sRGB-encoded.
+// PresentPass is step 6 in a window: the colour to the default framebuffer, sRGB-encoded (the
+// caller draws step 5 over it before the buffer swap).
 
 #include <gpu/Gl.h>
 #include <gpu/Program.h>
 #include <gpu/ShaderLibrary.h>
-#include <renderer/Scene.h>
 #include <renderer/passes/SurfacesPass.h>
+#include <renderer/scene/Scene.h>
 
 namespace fl {
 
 class ShadingPass {
   public:
-    explicit ShadingPass(const ShaderLibrary& shaders);
+    explicit ShadingPass(const gl::ShaderLibrary& shaders);
     /// (Re)allocates the colour and visibility targets.
     void resize(int width, int height);
 
@@ -38,7 +39,7 @@ class ShadingPass {
 
 class PresentPass {
   public:
-    explicit PresentPass(const ShaderLibrary& shaders);
+    explicit PresentPass(const gl::ShaderLibrary& shaders);
     void execute(const gl::Texture& color, int framebufferWidth, int framebufferHeight);
 
   private:

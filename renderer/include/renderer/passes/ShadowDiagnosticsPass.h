@@ -1,6 +1,6 @@
 #pragma once
-// Optional step after shading: per-pixel measurements of the shadow map as the camera sees it,
-// for comparing providers (uniform vs TSM).
+// Step 4's optional part, after shading: per-pixel measurements of the shadow map as the camera
+// sees it, for comparing providers (uniform vs TSM).
 // - Texel footprint: how many screen pixels one shadow-map texel covers, as a length: with J the
 //   Jacobian of screen pixel -> shadow texel at the visible surface, 1 / sqrt(|det J|). Above 1
 //   a texel is magnified over several pixels (blocky shadow edges); below 1 texels are wasted.
@@ -11,15 +11,15 @@
 #include <gpu/Gl.h>
 #include <gpu/Program.h>
 #include <gpu/ShaderLibrary.h>
-#include <renderer/GpuScene.h>
 #include <renderer/passes/ShadowMapPass.h>
 #include <renderer/passes/SurfacesPass.h>
+#include <renderer/scene/GpuScene.h>
 
 namespace fl {
 
 class ShadowDiagnosticsPass {
   public:
-    explicit ShadowDiagnosticsPass(const ShaderLibrary& shaders);
+    explicit ShadowDiagnosticsPass(const gl::ShaderLibrary& shaders);
     /// (Re)allocates the output at width x height.
     void resize(int width, int height);
     /// Forgets the previous frame's map (the next frame compares with itself).

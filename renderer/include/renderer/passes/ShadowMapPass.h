@@ -13,7 +13,7 @@
 #include <gpu/Gl.h>
 #include <gpu/Program.h>
 #include <gpu/ShaderLibrary.h>
-#include <renderer/GpuScene.h>
+#include <renderer/scene/GpuScene.h>
 
 #include <geometry/Aabb.h>
 #include <geometry/Framing.h>
@@ -45,7 +45,7 @@ struct ShadowMapSettings {
 
 class ShadowMapPass {
   public:
-    explicit ShadowMapPass(const ShaderLibrary& shaders);
+    explicit ShadowMapPass(const gl::ShaderLibrary& shaders);
     /// (Re)allocates the depth texture at size x size.
     void resize(int size);
 

@@ -6,8 +6,8 @@
 #include <gpu/Gl.h>
 #include <gpu/Program.h>
 #include <gpu/ShaderLibrary.h>
-#include <renderer/GpuScene.h>
-#include <renderer/Scene.h>
+#include <renderer/scene/GpuScene.h>
+#include <renderer/scene/Scene.h>
 
 namespace fl {
 
@@ -20,7 +20,7 @@ struct CameraView {
 
 class SurfacesPass {
   public:
-    explicit SurfacesPass(const ShaderLibrary& shaders);
+    explicit SurfacesPass(const gl::ShaderLibrary& shaders);
     /// (Re)allocates the targets at width x height (both > 0).
     void resize(int width, int height);
 

@@ -6,7 +6,7 @@
 // the part holding c; inside (JFA-E's inner penumbrae) it is the other part. The shaders
 // (shaders/disk_light.glsl) compute the same in float with the same operations.
 
-#include <renderer/Scene.h>
+#include <renderer/scene/Scene.h>
 
 #include <geometry/Aabb.h>
 

@@ -1,18 +1,20 @@
 #pragma once
 // JFA-E (thesis §5.4.1): soft shadows flooded in eye space from an image with hard shadows.
-//   phase 2  per pixel of the frame's surfaces (SurfacesPass): its world position and hard-shadow
-//   flag, and its occluder (the
-//            surface the light's centre sees at the pixel's shadow-map texel) with that
-//            occluder's object id (from a light-space id pass over the shadow map);
+// The phases are the thesis' numbers (§5.4); its phase 1, the shadow map with receiver
+// positions, is frame step 1, and phases 2-5 all run inside frame step 3 (the shadow method).
+//   phase 2  per pixel of the frame's surfaces (step 2, SurfacesPass): its world position and
+//            hard-shadow flag, and its occluder (the surface the light's centre sees at the
+//            pixel's shadow-map texel) with that occluder's object id (from a light-space id
+//            pass over the shadow map);
 //   phase 3  boundary pixels (in hard shadow, with a lit neighbour nearer than a 3D distance
 //            threshold) become seeds carrying their occluder;
 //   phase 4  jump flooding with EyeSoftCriterion (or standard flooding, the reference);
 //   phase 5  composite: per pixel the intensity from its occluder, else 0 inside / 1 outside.
 // The CPU functions are the references the GL passes are tested against.
 
-#include <renderer/GpuScene.h>
-#include <renderer/ImageIO.h>
+#include <renderer/io/ImageIO.h>
 #include <renderer/passes/ShadowMapPass.h>
+#include <renderer/scene/GpuScene.h>
 #include <renderer/soft/DiskLight.h>
 
 #include <jfa/Grid.h>
@@ -107,17 +109,17 @@ void setCriterionUniforms(const gl::Program& program, const EyeSoftCriterion& cr
 FloatImage eyeSoftVisibility(const EyeImage& image, const jfa::Grid& flooded,
                              const DiskLight& light);
 
-/// The technique's phases 2-5 on the GPU. Phase 1 (the shadow map with receiver positions) is
-/// the caller's; the result is the method's visibility (step 3).
+/// The technique's phases 2-5 on the GPU, inside frame step 3. Phase 1 (the shadow map with
+/// receiver positions) is the caller's frame step 1; the result is the method's visibility.
 class EyeSoftShadowPass {
   public:
-    explicit EyeSoftShadowPass(const ShaderLibrary& shaders);
+    explicit EyeSoftShadowPass(const gl::ShaderLibrary& shaders);
 
     struct Inputs {
         const GpuScene& scene; // drawn from the light for the object ids
         const CameraView& camera;
         const gl::Texture& positions;         // the frame's surfaces (SurfacesPass::position)
-        const ShadowMapPass::Outputs& shadow; // phase 1, made with writeReceivers
+        const ShadowMapPass::Outputs& shadow; // phase 1 (frame step 1), made with writeReceivers
         const ShadowMapSettings& shadowSettings;
         const DiskLight& light;
         const EyeSoftSettings& settings;
@@ -135,7 +137,7 @@ class EyeSoftShadowPass {
     };
     /// Runs phases 2-5; `timer` (optional) times them as "occluder ids", "eye hard shadows",
     /// "boundaries", "flood" and "composite".
-    Outputs execute(const Inputs& in, PassTimer* timer = nullptr);
+    Outputs execute(const Inputs& in, gl::PassTimer* timer = nullptr);
 
   private:
     void resize(int width, int height, int shadowSize);

@@ -23,9 +23,9 @@
 #include <gpu/PassTimer.h>
 #include <gpu/Program.h>
 #include <gpu/ShaderLibrary.h>
-#include <renderer/GpuScene.h>
 #include <renderer/passes/ShadowMapPass.h>
 #include <renderer/passes/SurfacesPass.h>
+#include <renderer/scene/GpuScene.h>
 #include <renderer/soft/DiskLight.h>
 
 #include <geometry/Framing.h>
@@ -81,7 +81,7 @@ float filteredVisibility(const FilterFrame& f, glm::vec3 p, glm::vec3 n);
 /// Per-eye-pixel PCF or PCSS visibility; the result is the method's visibility (step 3).
 class FilteredShadowPass {
   public:
-    explicit FilteredShadowPass(const ShaderLibrary& shaders);
+    explicit FilteredShadowPass(const gl::ShaderLibrary& shaders);
 
     struct Inputs {
         const SurfacesPass::Outputs& surfaces; // positions and receiver planes per pixel
@@ -98,7 +98,7 @@ class FilteredShadowPass {
     };
     /// Filters per pixel of the frame's surfaces; `timer` times it as "pcf filter" or
     /// "blocker search+filter".
-    Outputs execute(const Inputs& in, PassTimer* timer = nullptr);
+    Outputs execute(const Inputs& in, gl::PassTimer* timer = nullptr);
     /// The CPU-side description of execute(in), without the depths (see readDepthMap).
     [[nodiscard]] FilterFrame frame(const Inputs& in) const;
 

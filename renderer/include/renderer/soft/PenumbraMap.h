@@ -1,7 +1,8 @@
 #pragma once
-// JFA-L phases 2 and 3 (thesis §5.3.1): silhouette pixels of the shadow map become seeds
-// carrying their world position, and jump flooding with PenumbraCriterion spreads them into the
-// penumbra map. The CPU functions are the reference the GL pass is tested against.
+// JFA-L phases 2 and 3 (thesis §5.3.1; the thesis' numbers, both inside frame step 3, the shadow
+// method; its phase 1 is the shadow map, frame step 1): silhouette pixels of the shadow map
+// become seeds carrying their world position, and jump flooding with PenumbraCriterion spreads
+// them into the penumbra map. The CPU functions are the reference the GL pass is tested against.
 
 #include <renderer/soft/PenumbraCriterion.h>
 
@@ -34,7 +35,7 @@ jfa::Grid silhouetteSeeds(const ReceiverGrid& receivers, const DiskLight& light,
 /// The technique: silhouettes, then the flood.
 class PenumbraMapPass {
   public:
-    explicit PenumbraMapPass(const ShaderLibrary& shaders);
+    explicit PenumbraMapPass(const gl::ShaderLibrary& shaders);
 
     struct Inputs {
         const gl::Texture& receivers; // ShadowMapPass::Outputs::receivers
@@ -48,7 +49,7 @@ class PenumbraMapPass {
         int passes;                     // flood passes run
     };
     /// Runs both phases; `timer` (optional) times them as "silhouettes" and "flood".
-    Outputs execute(const Inputs& in, PassTimer* timer = nullptr);
+    Outputs execute(const Inputs& in, gl::PassTimer* timer = nullptr);
 
   private:
     gl::Program silhouette_;

@@ -14,9 +14,9 @@
 #include <gpu/PassTimer.h>
 #include <gpu/Program.h>
 #include <gpu/ShaderLibrary.h>
-#include <renderer/GpuScene.h>
-#include <renderer/ImageIO.h>
+#include <renderer/io/ImageIO.h>
 #include <renderer/passes/ShadowMapPass.h>
+#include <renderer/scene/GpuScene.h>
 #include <renderer/soft/DiskLight.h>
 
 #include <geometry/Aabb.h>
@@ -45,7 +45,7 @@ VisibilityDifference visibilityDifference(const FloatImage& a, const FloatImage&
 
 class ReferenceShadowPass {
   public:
-    explicit ReferenceShadowPass(const ShaderLibrary& shaders);
+    explicit ReferenceShadowPass(const gl::ShaderLibrary& shaders);
 
     struct Inputs {
         const GpuScene& scene;         // drawn into each sample's map
@@ -61,7 +61,7 @@ class ReferenceShadowPass {
     /// Renders the N maps and accumulates over the frame's surfaces; `timer` times "reference
     /// maps" and "reference resolve". Throws std::invalid_argument for samples < 1 or a bad map
     /// size.
-    Outputs execute(const Inputs& in, PassTimer* timer = nullptr);
+    Outputs execute(const Inputs& in, gl::PassTimer* timer = nullptr);
 
   private:
     void resize(int width, int height, int mapSize);

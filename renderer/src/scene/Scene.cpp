@@ -1,4 +1,4 @@
-#include <renderer/Scene.h>
+#include <renderer/scene/Scene.h>
 
 namespace fl {
 

@@ -1,5 +1,5 @@
 #include <gpu/Gl.h>
-#include <renderer/EglContext.h>
+#include <renderer/context/EglContext.h>
 
 #include <epoxy/egl.h>
 

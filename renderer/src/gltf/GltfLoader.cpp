@@ -13,7 +13,7 @@
 //   cameras (skipped), invalid light parameters (defaults).
 // - Sparse accessors are supported. Missing normals become flat normals, as the spec requires.
 
-#include <renderer/GltfLoader.h>
+#include <renderer/gltf/GltfLoader.h>
 
 #include "GltfInternal.h"
 

@@ -4,7 +4,7 @@
 
 #include <gpu/Gl.h>
 #include <gpu/Program.h>
-#include <renderer/Scene.h>
+#include <renderer/scene/Scene.h>
 
 #include <vector>
 

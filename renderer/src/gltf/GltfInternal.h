@@ -9,8 +9,8 @@
 // through Context::fail (reject) or Context::warn (repair).
 
 #include <base/Text.h>
-#include <renderer/GltfLoader.h>
-#include <renderer/Scene.h>
+#include <renderer/gltf/GltfLoader.h>
+#include <renderer/scene/Scene.h>
 
 #include <tiny_gltf.h>
 

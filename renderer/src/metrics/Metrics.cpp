@@ -1,4 +1,4 @@
-#include <renderer/Metrics.h>
+#include <renderer/metrics/Metrics.h>
 
 #include <algorithm>
 #include <cmath>

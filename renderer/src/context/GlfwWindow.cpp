@@ -1,5 +1,5 @@
 #include <gpu/Gl.h>
-#include <renderer/GlfwWindow.h>
+#include <renderer/context/GlfwWindow.h>
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>

@@ -1,4 +1,4 @@
-#include <renderer/Capture.h>
+#include <renderer/io/Capture.h>
 
 #include <algorithm>
 #include <cmath>

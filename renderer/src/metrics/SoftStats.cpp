@@ -1,6 +1,6 @@
-#include <renderer/soft/SoftStats.h>
+#include <renderer/metrics/SoftStats.h>
 
-#include <renderer/Metrics.h>
+#include <renderer/metrics/Metrics.h>
 
 #include <algorithm>
 #include <cmath>

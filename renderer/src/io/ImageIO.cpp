@@ -1,4 +1,4 @@
-#include <renderer/ImageIO.h>
+#include <renderer/io/ImageIO.h>
 
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
@@ -21,8 +21,8 @@
 
 #include <cmath>
 #include <cstring>
-#include <stdexcept>
 #include <fstream>
+#include <stdexcept>
 #include <system_error>
 #include <unistd.h>
 

@@ -2,7 +2,7 @@
 // An interactive window with a GL 4.5 core context (GLFW). The renderer draws into its own FBOs
 // and the window only presents the result.
 
-#include <renderer/GlContext.h>
+#include <renderer/context/GlContext.h>
 
 #include <memory>
 #include <string>

@@ -1,8 +1,8 @@
 #pragma once
 // Saving a rendered frame: PNG (sRGB, for looking) and EXR (linear float, for measuring).
 
-#include <renderer/ImageIO.h>
 #include <renderer/Renderer.h>
+#include <renderer/io/ImageIO.h>
 
 #include <filesystem>
 #include <string>

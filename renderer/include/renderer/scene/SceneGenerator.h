@@ -2,7 +2,7 @@
 // Deterministic procedural scenes in the spirit of the thesis' "fantasy" test scene, and GLB
 // output.
 
-#include <renderer/Scene.h>
+#include <renderer/scene/Scene.h>
 
 #include <cstdint>
 #include <filesystem>

@@ -2,7 +2,7 @@
 // Headless GL 4.5 core context through EGL: EGL_EXT_platform_device first, then
 // EGL_MESA_platform_surfaceless. Rendering goes into FBOs (there is no default framebuffer).
 
-#include <renderer/GlContext.h>
+#include <renderer/context/GlContext.h>
 
 #include <memory>
 

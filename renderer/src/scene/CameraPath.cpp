@@ -1,6 +1,6 @@
-#include <renderer/CameraPath.h>
+#include <renderer/scene/CameraPath.h>
 
-#include <renderer/ImageIO.h>
+#include <renderer/io/ImageIO.h>
 
 #include <geometry/Framing.h>
 

@@ -1,5 +1,5 @@
 #include <gpu/Gl.h>
-#include <renderer/GlContext.h>
+#include <renderer/context/GlContext.h>
 
 namespace fl {
 

@@ -1,7 +1,7 @@
 #pragma once
 // glTF 2.0 (.gltf / .glb) loading with validation of everything Floodlight uses.
 
-#include <renderer/Scene.h>
+#include <renderer/scene/Scene.h>
 
 #include <filesystem>
 #include <functional>

@@ -1,4 +1,4 @@
-#include <renderer/ShadowStats.h>
+#include <renderer/metrics/ShadowStats.h>
 
 #include <algorithm>
 #include <cmath>

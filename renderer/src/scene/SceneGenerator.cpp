@@ -1,7 +1,7 @@
 // The default scene: layout after the thesis' fantasy scene, a triangle budget shared among the
 // objects, the exact count settled by the terrain, and the light and camera.
 
-#include <renderer/SceneGenerator.h>
+#include <renderer/scene/SceneGenerator.h>
 
 #include "SceneGenObjects.h"
 

@@ -1,7 +1,7 @@
 // Binary glTF 2.0 output of a Scene: what loadGltf reads back to the same scene. The bytes depend
 // only on the scene (sorted JSON keys, fixed layout), so the same scene gives the same file.
 
-#include <renderer/SceneGenerator.h>
+#include <renderer/scene/SceneGenerator.h>
 
 #include <geometry/Framing.h>
 

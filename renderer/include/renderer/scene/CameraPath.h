@@ -4,8 +4,8 @@
 // Measurements of temporal behaviour (TSM continuity, flicker) need a camera that moves smoothly
 // over a static scene.
 
-#include <renderer/Scene.h>
 #include <renderer/passes/SurfacesPass.h>
+#include <renderer/scene/Scene.h>
 
 #include <filesystem>
 #include <vector>

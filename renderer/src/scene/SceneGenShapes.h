@@ -4,7 +4,7 @@
 // the primitive shapes the objects are made of. Everything here uses only + - * /, sqrt, sin and
 // cos, so the generated numbers are the same on every IEEE-754 machine.
 
-#include <renderer/Scene.h>
+#include <renderer/scene/Scene.h>
 
 #include <glm/glm.hpp>
 
