@@ -55,6 +55,28 @@ Framebuffer Framebuffer::forColor(const Texture& color, const char* what) {
     return fbo;
 }
 
+Framebuffer Framebuffer::withTargets(std::initializer_list<const Texture*> colors,
+                                     const Texture* depth, const char* what) {
+    Framebuffer fbo = create();
+    GLenum attachment = GL_COLOR_ATTACHMENT0;
+    for (const Texture* c : colors) fbo.attach(attachment++, *c);
+    if (depth) fbo.attach(GL_DEPTH_ATTACHMENT, *depth);
+    fbo.setDrawBuffers(static_cast<int>(colors.size()));
+    fbo.check(what);
+    return fbo;
+}
+
+Handle<detail::SamplerDeleter> makeRawTexelSampler() {
+    GLuint id = 0;
+    glCreateSamplers(1, &id);
+    glSamplerParameteri(id, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glSamplerParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return Handle<detail::SamplerDeleter>(id);
+}
+
 void Framebuffer::attach(GLenum attachment, const Texture& tex) {
     glNamedFramebufferTexture(id(), attachment, tex.id(), 0);
 }

@@ -109,6 +109,10 @@ class Framebuffer : public Handle<detail::FramebufferDeleter> {
     /// A checked framebuffer drawing into `color` alone (attachment 0, no depth); throws GlError
     /// naming `what` if it is incomplete.
     static Framebuffer forColor(const Texture& color, const char* what);
+    /// A checked framebuffer drawing into `colors` (attachments 0..n-1, all of them draw
+    /// buffers) with an optional depth attachment; throws GlError naming `what` if incomplete.
+    static Framebuffer withTargets(std::initializer_list<const Texture*> colors,
+                                   const Texture* depth, const char* what);
     /// Attaches level 0 of `tex` at `attachment` (GL_COLOR_ATTACHMENTi / GL_DEPTH_ATTACHMENT).
     void attach(GLenum attachment, const Texture& tex);
     /// Sets the draw buffers to COLOR_ATTACHMENT0..count-1 (0 = none).
@@ -119,6 +123,10 @@ class Framebuffer : public Handle<detail::FramebufferDeleter> {
   private:
     using Handle::Handle;
 };
+
+/// A sampler object that reads stored texels: NEAREST, clamped to the edge, no depth comparison
+/// (a depth texture read through it gives its depths, whatever its own compare mode).
+Handle<detail::SamplerDeleter> makeRawTexelSampler();
 
 /// A vertex array object.
 class VertexArray : public Handle<detail::VertexArrayDeleter> {

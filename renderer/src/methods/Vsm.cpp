@@ -35,14 +35,8 @@ class Vsm final : public ShadowMethod {
                                              {GL_FRAGMENT_SHADER, "vsm_blur.frag.glsl"}})),
           lookup_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
                                                {GL_FRAGMENT_SHADER, "vsm_lookup.frag.glsl"}})),
-          emptyVao_(gl::VertexArray::create()) {
-        GLuint id = 0;
-        glCreateSamplers(1, &id);
-        rawDepth_ = gl::Handle<gl::detail::SamplerDeleter>(id);
-        glSamplerParameteri(id, GL_TEXTURE_COMPARE_MODE, GL_NONE); // read depths, not tests
-        glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    }
+          emptyVao_(gl::VertexArray::create()), rawDepth_(gl::makeRawTexelSampler()) {
+    } // the map's depths, not depth tests
 
     void resize(int width, int height) override {
         if (visibility_ && visibility_.width() == width && visibility_.height() == height) return;

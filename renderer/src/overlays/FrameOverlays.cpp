@@ -120,18 +120,24 @@ Lines drawSeeds(State& s, const Frame& f) {
             std::to_string(nonEmpty(s.result.grid)) + " seeds"};
 }
 
-Lines drawPenumbraMap(State& s, const Frame& f) {
-    const std::optional<Soft> soft = softOf(f.renderer);
-    if (!soft) return {kNeedsSoft};
-    const glm::ivec4 vp = viewportOf(*soft, f);
-    s.result.grid = jfa::readGrid(*soft->flooded);
-    GridDraw g{GridMode::Occluder, soft->flooded, soft->receivers};
-    g.eyeSpace = soft->eye;
+// Draws a flood's occluder grid (penumbra map or eye-space flood) coloured by light fraction,
+// and keeps it as the overlay's result.
+static void drawOccluders(State& s, const Frame& f, const Soft& soft, const gl::Texture& grid) {
+    const glm::ivec4 vp = viewportOf(soft, f);
+    s.result.grid = jfa::readGrid(grid);
+    GridDraw g{GridMode::Occluder, &grid, soft.receivers};
+    g.eyeSpace = soft.eye;
     g.light = &f.renderer.disk();
     f.bindTarget();
     s.canvas.drawGrid(g, vp);
     s.result.viewport = vp;
     s.result.drawn = true;
+}
+
+Lines drawPenumbraMap(State& s, const Frame& f) {
+    const std::optional<Soft> soft = softOf(f.renderer);
+    if (!soft) return {kNeedsSoft};
+    drawOccluders(s, f, *soft, *soft->flooded);
     return {std::string(soft->eye ? "eye-space flood (JFA-E phase 4)" : "penumbra map (JFA-L)") +
                 ": " + std::to_string(nonEmpty(s.result.grid)) + " texels hold an occluder",
             "colour: light fraction from the occluder (dark 0 .. pale 1); grey: none"};
@@ -148,15 +154,7 @@ Lines drawFloodPasses(State& s, const Frame& f) {
     const int shown = k < 0 ? total : k;
     const jfa::Plan plan = truncatePlan(full, shown);
     const gl::Texture& out = floodFrame(s, f.renderer, *soft, plan);
-    s.result.grid = jfa::readGrid(out);
-    const glm::ivec4 vp = viewportOf(*soft, f);
-    GridDraw g{GridMode::Occluder, &out, soft->receivers};
-    g.eyeSpace = soft->eye;
-    g.light = &f.renderer.disk();
-    f.bindTarget();
-    s.canvas.drawGrid(g, vp);
-    s.result.viewport = vp;
-    s.result.drawn = true;
+    drawOccluders(s, f, *soft, out);
     const std::vector<int> steps = full.steps();
     std::string step =
         shown == 0 ? "seeds only" : "last step " + std::to_string(steps[std::size_t(shown - 1)]);

@@ -66,12 +66,7 @@ OverlayCanvas::OverlayCanvas(const gl::ShaderLibrary& shaders)
       lines_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "overlay_lines.vert.glsl"},
                                           {GL_FRAGMENT_SHADER, "overlay_lines.frag.glsl"}})),
       emptyVao_(gl::VertexArray::create()), linesVao_(gl::VertexArray::create()) {
-    GLuint s = 0;
-    glCreateSamplers(1, &s);
-    nearest_ = gl::Handle<gl::detail::SamplerDeleter>(s);
-    glSamplerParameteri(s, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glSamplerParameteri(s, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glSamplerParameteri(s, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    nearest_ = gl::makeRawTexelSampler();
     glEnableVertexArrayAttrib(linesVao_.id(), 0);
     glEnableVertexArrayAttrib(linesVao_.id(), 1);
     glVertexArrayAttribFormat(linesVao_.id(), 0, 2, GL_FLOAT, GL_FALSE, offsetof(Vertex, ndc));

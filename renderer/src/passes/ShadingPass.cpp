@@ -11,11 +11,7 @@ void ShadingPass::resize(int width, int height) {
     if (color_ && color_.width() == width && color_.height() == height) return;
     color_ = gl::Texture(GL_RGBA16F, width, height);
     visibility_ = gl::Texture(GL_R32F, width, height);
-    fbo_ = gl::Framebuffer::create();
-    fbo_.attach(GL_COLOR_ATTACHMENT0, color_);
-    fbo_.attach(GL_COLOR_ATTACHMENT1, visibility_);
-    fbo_.setDrawBuffers(2);
-    fbo_.check("shading pass");
+    fbo_ = gl::Framebuffer::withTargets({&color_, &visibility_}, nullptr, "shading pass");
 }
 
 ShadingPass::Outputs ShadingPass::execute(const Inputs& in) {

@@ -29,16 +29,10 @@ gl::Texture makeShadowDepthTexture(int size) {
 void ShadowMapPass::resize(int size) {
     if (depth_ && depth_.width() == size) return;
     depth_ = makeShadowDepthTexture(size);
-    fbo_ = gl::Framebuffer::create();
-    fbo_.attach(GL_DEPTH_ATTACHMENT, depth_);
-    fbo_.setDrawBuffers(0);
-    fbo_.check("shadow map");
+    fbo_ = gl::Framebuffer::withTargets({}, &depth_, "shadow map");
     receivers_ = gl::Texture(GL_RGBA32F, size, size);
-    receiversFbo_ = gl::Framebuffer::create();
-    receiversFbo_.attach(GL_DEPTH_ATTACHMENT, depth_);
-    receiversFbo_.attach(GL_COLOR_ATTACHMENT0, receivers_);
-    receiversFbo_.setDrawBuffers(1);
-    receiversFbo_.check("shadow map with receiver positions");
+    receiversFbo_ =
+        gl::Framebuffer::withTargets({&receivers_}, &depth_, "shadow map with receiver positions");
 }
 
 ShadowMapPass::Outputs ShadowMapPass::execute(const Inputs& in) {

@@ -14,15 +14,8 @@ void SurfacesPass::resize(int width, int height) {
     baseColor_ = gl::Texture(GL_RGBA32F, width, height);
     receivers_ = gl::Texture(GL_R8, width, height);
     depth_ = gl::Texture(GL_DEPTH_COMPONENT32F, width, height);
-    fbo_ = gl::Framebuffer::create();
-    fbo_.attach(GL_COLOR_ATTACHMENT0, position_);
-    fbo_.attach(GL_COLOR_ATTACHMENT1, normal_);
-    fbo_.attach(GL_COLOR_ATTACHMENT2, plane_);
-    fbo_.attach(GL_COLOR_ATTACHMENT3, baseColor_);
-    fbo_.attach(GL_COLOR_ATTACHMENT4, receivers_);
-    fbo_.attach(GL_DEPTH_ATTACHMENT, depth_);
-    fbo_.setDrawBuffers(5);
-    fbo_.check("surfaces pass");
+    fbo_ = gl::Framebuffer::withTargets({&position_, &normal_, &plane_, &baseColor_, &receivers_},
+                                        &depth_, "surfaces pass");
 }
 
 SurfacesPass::Outputs SurfacesPass::outputs() const {

@@ -150,11 +150,7 @@ void EyeSoftShadowPass::resize(int width, int height, int shadowSize) {
     occluders_ = gl::Texture(GL_RGBA32F, width, height);
     seeds_ = gl::Texture(GL_RGBA32F, width, height);
     visibility_ = gl::Texture(GL_R32F, width, height);
-    eyeFbo_ = gl::Framebuffer::create();
-    eyeFbo_.attach(GL_COLOR_ATTACHMENT0, points_);
-    eyeFbo_.attach(GL_COLOR_ATTACHMENT1, occluders_);
-    eyeFbo_.setDrawBuffers(2);
-    eyeFbo_.check("JFA-E eye pass");
+    eyeFbo_ = gl::Framebuffer::withTargets({&points_, &occluders_}, nullptr, "JFA-E eye pass");
     seedsFbo_ = gl::Framebuffer::forColor(seeds_, "JFA-E boundary seeds");
     visibilityFbo_ = gl::Framebuffer::forColor(visibility_, "JFA-E visibility");
 }
@@ -174,11 +170,8 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::Pass
     // Phase 2a (object-ID fix only): which object the light's centre sees at each texel.
     if (in.settings.objectIdFix) {
         if (timer) timer->begin("occluder ids");
-        gl::Framebuffer fbo = gl::Framebuffer::create();
-        fbo.attach(GL_COLOR_ATTACHMENT0, ids_);
-        fbo.attach(GL_DEPTH_ATTACHMENT, in.shadow.depth);
-        fbo.setDrawBuffers(1);
-        fbo.check("JFA-E occluder ids");
+        const gl::Framebuffer fbo =
+            gl::Framebuffer::withTargets({&ids_}, &in.shadow.depth, "JFA-E occluder ids");
         const float none = -1.0f;
         glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, &none);
         glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());

@@ -126,16 +126,7 @@ float filteredVisibility(const FilterFrame& f, glm::vec3 p, glm::vec3 n) {
 FilteredShadowPass::FilteredShadowPass(const gl::ShaderLibrary& shaders)
     : program_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
                                             {GL_FRAGMENT_SHADER, "filtered_shadow.frag.glsl"}})),
-      emptyVao_(gl::VertexArray::create()) {
-    GLuint id = 0;
-    glCreateSamplers(1, &id);
-    rawDepth_ = gl::Handle<gl::detail::SamplerDeleter>(id);
-    glSamplerParameteri(id, GL_TEXTURE_COMPARE_MODE, GL_NONE);
-    glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glSamplerParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glSamplerParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-}
+      rawDepth_(gl::makeRawTexelSampler()), emptyVao_(gl::VertexArray::create()) {}
 
 void FilteredShadowPass::resize(int width, int height) {
     if (visibility_ && visibility_.width() == width && visibility_.height() == height) return;

@@ -85,10 +85,7 @@ void ReferenceShadowPass::resize(int width, int height, int mapSize) {
     if (!map_ || map_.width() != mapSize) {
         // The shadow pass's kind of map, so one sample is exactly the hard test.
         map_ = makeShadowDepthTexture(mapSize);
-        mapFbo_ = gl::Framebuffer::create();
-        mapFbo_.attach(GL_DEPTH_ATTACHMENT, map_);
-        mapFbo_.setDrawBuffers(0);
-        mapFbo_.check("reference depth map");
+        mapFbo_ = gl::Framebuffer::withTargets({}, &map_, "reference depth map");
     }
     if (sum_ && sum_.width() == width && sum_.height() == height) return;
     sum_ = gl::Texture(GL_R32F, width, height);
