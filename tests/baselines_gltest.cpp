@@ -22,15 +22,13 @@ namespace {
 
 class BaselinesTest : public GlTest {};
 
-const std::filesystem::path kDefaultAsset =
-    std::filesystem::path(FLOODLIGHT_SOURCE_DIR) / "assets" / "default.glb";
 // As penumbra_gltest: the default light's own radius casts penumbrae under a texel.
 constexpr float kTestRadius = 1.5f;
 
 FrameImages renderDefault(std::string_view method, float radius, int mapSize,
                           const ReferenceSettings& reference = {}, int size = 256,
                           const MethodOptions& options = {}) {
-    Scene scene = loadGltf(kDefaultAsset);
+    Scene scene = loadGltf(defaultAsset());
     scene.light->radius = radius;
     const gl::ShaderLibrary shaders;
     RenderSettings settings;
@@ -53,7 +51,7 @@ FrameImages renderDefault(std::string_view method, float radius, int mapSize,
 // moves the filter radius too. So: at most 0.5% of surface pixels may differ by more than 1e-5, and
 // the mean difference must stay under 1e-3.
 void compareFilterWithCpu(ShadowMapProvider provider, bool pcss) {
-    Scene scene = loadGltf(kDefaultAsset);
+    Scene scene = loadGltf(defaultAsset());
     scene.light->radius = kTestRadius;
     const gl::ShaderLibrary shaders;
     const GpuScene gpu(scene);
@@ -174,19 +172,30 @@ BoxScene boxScene() {
     return b;
 }
 
-TEST_F(BaselinesTest, ReferenceMatchesCpuRayCastToTheSameSamples) {
+// The ground truth's pass and boxScene's surfaces at size x size pixels, the shadow maps at their
+// default settings.
+struct ReferenceSetup {
+    explicit ReferenceSetup(int size) : surfaces(shaders, gpu, b, size) {}
+    [[nodiscard]] ReferenceShadowPass::Inputs inputs(const ReferenceSettings& rs) const {
+        return {gpu, surfaces.positions(), b.scene.bounds, b.disk, ss, rs};
+    }
     const BoxScene b = boxScene();
     const gl::ShaderLibrary shaders;
-    const GpuScene gpu(b.scene);
+    const GpuScene gpu{b.scene};
+    const ShadowMapSettings ss{};
+    ReferenceShadowPass pass{shaders};
+    const Surfaces surfaces;
+};
+
+TEST_F(BaselinesTest, ReferenceMatchesCpuRayCastToTheSameSamples) {
+    const int size = 96;
+    ReferenceSetup setup(size);
+    const BoxScene& b = setup.b;
     ReferenceSettings rs;
     rs.samples = 16;
     rs.mapSize = 2048;
-    const ShadowMapSettings ss{};
-    ReferenceShadowPass pass(shaders);
-    const int size = 96;
-    const Surfaces surfaces(shaders, gpu, b, size);
-    const ReferenceShadowPass::Outputs out =
-        pass.execute({gpu, surfaces.positions(), b.scene.bounds, b.disk, ss, rs});
+    const Surfaces& surfaces = setup.surfaces;
+    const ReferenceShadowPass::Outputs out = setup.pass.execute(setup.inputs(rs));
     const FloatImage vis = readTexture(out.visibility, 1);
     const FloatImage points = readTexture(surfaces.positions(), 4);
     const std::vector<glm::vec3> samples = referenceDiskSamples(b.disk, rs.samples);
@@ -220,17 +229,12 @@ TEST_F(BaselinesTest, ReferenceMatchesCpuRayCastToTheSameSamples) {
 
 // The estimate converges: N against 2N differs less at N = 16 than at N = 2.
 TEST_F(BaselinesTest, ReferenceSamplingErrorShrinksWithN) {
-    const BoxScene b = boxScene();
-    const gl::ShaderLibrary shaders;
-    const GpuScene gpu(b.scene);
+    ReferenceSetup setup(64);
     ReferenceSettings rs;
     rs.mapSize = 1024;
-    const ShadowMapSettings ss{};
-    ReferenceShadowPass pass(shaders);
-    const Surfaces surfaces(shaders, gpu, b, 64);
-    const ReferenceShadowPass::Inputs in{gpu, surfaces.positions(), b.scene.bounds, b.disk, ss, rs};
-    const VisibilityDifference coarse = referenceSamplingError(pass, in, 2);
-    const VisibilityDifference fine = referenceSamplingError(pass, in, 16);
+    const ReferenceShadowPass::Inputs in = setup.inputs(rs);
+    const VisibilityDifference coarse = referenceSamplingError(setup.pass, in, 2);
+    const VisibilityDifference fine = referenceSamplingError(setup.pass, in, 16);
     std::printf("N=2 vs 4: rmse %.4f max %.3f; N=16 vs 32: rmse %.4f max %.3f\n", coarse.rmse,
                 coarse.maxAbs, fine.rmse, fine.maxAbs);
     EXPECT_GT(coarse.rmse, 0.0);
@@ -238,22 +242,16 @@ TEST_F(BaselinesTest, ReferenceSamplingErrorShrinksWithN) {
 }
 
 TEST_F(BaselinesTest, BadSettingsAreRejected) {
-    const BoxScene b = boxScene();
-    const gl::ShaderLibrary shaders;
-    const GpuScene gpu(b.scene);
+    ReferenceSetup setup(16);
     ReferenceSettings rs;
     rs.samples = 0;
-    const ShadowMapSettings ss{};
-    ReferenceShadowPass pass(shaders);
-    const Surfaces surfaces(shaders, gpu, b, 16);
-    EXPECT_THROW((void)pass.execute({gpu, surfaces.positions(), b.scene.bounds, b.disk, ss, rs}),
-                 std::invalid_argument);
+    EXPECT_THROW((void)setup.pass.execute(setup.inputs(rs)), std::invalid_argument);
     RenderSettings settings;
     settings.method = "pcf";
     settings.options.set("--pcf-kernel", 0);
-    Renderer r(shaders, b.scene, settings);
+    Renderer r(setup.shaders, setup.b.scene, settings);
     r.resize(16, 16);
-    EXPECT_THROW(r.render(b.camera), std::invalid_argument);
+    EXPECT_THROW(r.render(setup.b.camera), std::invalid_argument);
 }
 
 // Image regression at 256² with a 512² map, light radius 1.5 (the penumbra goldens' set-up);
@@ -269,17 +267,7 @@ TEST_F(BaselinesTest, Goldens) {
     options.set("--pcss-preset", "16/16");
     for (std::string_view m : {"pcf", "pcss", "reference"}) {
         const FrameImages f = renderDefault(m, kTestRadius, 512, rs, 256, options);
-        const std::string name = "default_256_" + std::string(m);
-        Tolerance colour;
-        colour.maxAbs = 255;
-        colour.meanAbs = 1.5;
-        colour.pixelThreshold = 16;
-        colour.maxPercentOver = 1.0;
-        const CompareResult c = compareWithGolden(toSrgb8(f.color), name + "_colour", colour);
-        EXPECT_TRUE(c.pass) << c.report;
-        const CompareResult v =
-            compareWithGolden(visibilityToGrey(f.visibility), name + "_visibility", colour);
-        EXPECT_TRUE(v.pass) << v.report;
+        expectFrameMatchesGoldens(f, "default_256_" + std::string(m));
     }
 }
 

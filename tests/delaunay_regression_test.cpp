@@ -6,6 +6,8 @@
 
 #include <jfa/Sites.h>
 
+#include "TriangleSet.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -18,18 +20,7 @@ namespace fl::geom {
 namespace {
 
 using glm::dvec2;
-using Tri = std::array<std::uint32_t, 3>;
-
-std::vector<Tri> triangleSet(const std::vector<std::uint32_t>& tris) {
-    std::vector<Tri> out;
-    for (std::size_t i = 0; i + 2 < tris.size(); i += 3) {
-        Tri t{tris[i], tris[i + 1], tris[i + 2]};
-        std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
-        out.push_back(t);
-    }
-    std::sort(out.begin(), out.end());
-    return out;
-}
+using test::triangleSet;
 
 DelaunayResult run(const std::vector<dvec2>& points, int size) {
     DelaunayOptions options;

@@ -11,6 +11,8 @@
 // The pipeline's private mesh, to test its local edits (vertex removal, site shifting) directly.
 #include "../geometry/src/DelaunaySteps.h"
 
+#include "TriangleSet.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -27,25 +29,13 @@ namespace fl::geom {
 namespace {
 
 using glm::dvec2;
-using Tri = std::array<std::uint32_t, 3>;
+using test::triangleSet;
 
 DelaunayResult run(const std::vector<dvec2>& points, int size, bool stages = false) {
     DelaunayOptions options;
     options.discrete.size = size;
     options.keepStages = stages;
     return delaunay(points, options);
-}
-
-// Triangles rotated to start at their smallest index, sorted: equal for equal triangle sets.
-std::vector<Tri> triangleSet(const std::vector<std::uint32_t>& tris) {
-    std::vector<Tri> out;
-    for (std::size_t i = 0; i + 2 < tris.size(); i += 3) {
-        Tri t{tris[i], tris[i + 1], tris[i + 2]};
-        std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
-        out.push_back(t);
-    }
-    std::sort(out.begin(), out.end());
-    return out;
 }
 
 std::size_t distinctCount(std::vector<dvec2> pts) {

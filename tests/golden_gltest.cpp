@@ -18,9 +18,6 @@ namespace {
 
 class GoldenTest : public GlTest {};
 
-const std::filesystem::path kDefaultAsset =
-    std::filesystem::path(FLOODLIGHT_SOURCE_DIR) / "assets" / "default.glb";
-
 std::string readAll(const std::filesystem::path& p) {
     std::ifstream in(p, std::ios::binary);
     return {std::istreambuf_iterator<char>(in), {}};
@@ -28,7 +25,7 @@ std::string readAll(const std::filesystem::path& p) {
 
 FrameImages renderDefault(int size, int shadowMap,
                           ShadowMapProvider provider = ShadowMapProvider::Uniform) {
-    const Scene scene = loadGltf(kDefaultAsset);
+    const Scene scene = loadGltf(defaultAsset());
     const gl::ShaderLibrary shaders;
     RenderSettings settings;
     settings.shadow.size = shadowMap;
@@ -39,24 +36,9 @@ FrameImages renderDefault(int size, int shadowMap,
     return readFrame(r);
 }
 
-// Tolerances of the colour goldens; the reasons are given at DefaultSceneColour.
-Tolerance colourTolerance() {
-    Tolerance tol;
-    tol.maxAbs = 255;
-    tol.meanAbs = 1.5;
-    tol.pixelThreshold = 16;
-    tol.maxPercentOver = 1.0;
-    return tol;
-}
-
 // Tolerances of the visibility goldens; the reasons are given at DefaultSceneVisibility.
 Tolerance visibilityTolerance() {
-    Tolerance tol;
-    tol.maxAbs = 255;
-    tol.meanAbs = 255 * 0.01;
-    tol.pixelThreshold = 127;
-    tol.maxPercentOver = 1.0;
-    return tol;
+    return {.maxAbs = 255, .meanAbs = 255 * 0.01, .pixelThreshold = 127, .maxPercentOver = 1.0};
 }
 
 void expectMatchesGolden(const ByteImage& image, const std::string& name, const Tolerance& tol) {
@@ -69,7 +51,7 @@ void expectMatchesGolden(const ByteImage& image, const std::string& name, const 
 TEST(DefaultAsset, IsTheGeneratorOutput) {
     const auto fresh = outputDir("asset") / "default.glb";
     writeGlb(generateScene({6320, 1}), fresh);
-    EXPECT_TRUE(readAll(fresh) == readAll(kDefaultAsset))
+    EXPECT_TRUE(readAll(fresh) == readAll(defaultAsset()))
         << "assets/default.glb differs from `floodlight make-scene --triangles 6320 --seed 1`; "
            "regenerate it (assets/README.md) and the goldens (tests/golden/README.md)";
 }
@@ -82,7 +64,7 @@ TEST_F(GoldenTest, DefaultSceneColour) {
     // a full light/shadow difference at one pixel. So: any single pixel may differ completely,
     // but the mean difference stays under 1.5 steps and under 1% of pixels differ by more
     // than 16 steps. A moved shadow, camera or light breaks both limits by far.
-    expectMatchesGolden(toSrgb8(f.color), "default_256_colour", colourTolerance());
+    expectMatchesGolden(toSrgb8(f.color), "default_256_colour", frameTolerance());
 }
 
 TEST_F(GoldenTest, DefaultSceneVisibility) {
@@ -103,7 +85,7 @@ TEST_F(GoldenTest, DefaultSceneVisibility) {
 // apply). A 512² map keeps the difference from the uniform map visible near the viewer.
 TEST_F(GoldenTest, DefaultSceneTsmColour) {
     const FrameImages f = renderDefault(256, 512, ShadowMapProvider::Tsm);
-    expectMatchesGolden(toSrgb8(f.color), "default_256_tsm_colour", colourTolerance());
+    expectMatchesGolden(toSrgb8(f.color), "default_256_tsm_colour", frameTolerance());
 }
 
 TEST_F(GoldenTest, DefaultSceneTsmVisibility) {

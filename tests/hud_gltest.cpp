@@ -58,11 +58,8 @@ TEST_F(HudTest, MatchesTheCpuReferenceAndTheGolden) {
     rasterizeHud(layoutHud(kLines), cpu);
     // Every edge is on a pixel boundary, so coverage is exact; the blend of an 8-bit target may
     // round the last bit differently from the CPU's float formula, nothing more.
-    Tolerance exact;
-    exact.maxAbs = 1;
-    exact.meanAbs = 0.5;
-    exact.pixelThreshold = 0;
-    exact.maxPercentOver = 100.0;
+    const Tolerance exact{
+        .maxAbs = 1, .meanAbs = 0.5, .pixelThreshold = 0, .maxPercentOver = 100.0};
     const CompareResult c = compareImages(gpu, cpu, exact);
     EXPECT_TRUE(c.pass) << c.report;
     // Golden: the same bound (it was made by this pass on llvmpipe); it guards the font and

@@ -23,9 +23,6 @@ namespace {
 
 class JfaETest : public GlTest {};
 
-const std::filesystem::path kDefaultAsset =
-    std::filesystem::path(FLOODLIGHT_SOURCE_DIR) / "assets" / "default.glb";
-
 std::vector<glm::vec4> readVec4(const gl::Texture& t) {
     const jfa::Grid g = jfa::readGrid(t);
     std::vector<glm::vec4> out;
@@ -55,28 +52,10 @@ std::size_t nonEmpty(const jfa::Grid& g) {
     return n;
 }
 
-struct BoxSetup {
-    Scene scene;
-    CameraView camera;
-};
-
-// A box on a ground plane under a large disk light (the JFA-L test's scene): inner and outer
-// penumbrae on the ground, self-shadowing on the box.
-BoxSetup boxScene() {
-    Scene scene = groundAndBox(3.0f, {-0.5f, 0.0f, -0.5f}, {0.5f, 1.0f, 0.5f}, {0.3f, -1, 0.2f});
-    scene.light->type = Light::Type::Spot;
-    scene.light->position = {-1.5f, 6.0f, -1.0f};
-    scene.light->direction = glm::normalize(glm::vec3(1.5f, -6.0f, 1.0f));
-    scene.light->radius = 2.0f;
-    CameraSpec spec;
-    spec.kind = CameraSpec::Kind::LookAt;
-    spec.eye = {2.5f, 4.0f, 4.0f};
-    spec.target = {0.3f, 0.0f, 0.3f};
-    return {scene, makeCameraView(scene, spec, 1.0f)};
-}
-
 TEST_F(JfaETest, PhasesMatchTheCpuReference) {
-    const BoxSetup s = boxScene();
+    // A box on a ground plane under a large disk light (the JFA-L test's scene): inner and outer
+    // penumbrae on the ground, self-shadowing on the box.
+    const SceneView s = spotLitBox();
     const gl::ShaderLibrary shaders;
     RenderSettings hardSettings;
     hardSettings.shadow.size = 128;
@@ -197,7 +176,7 @@ struct Frame {
 
 Frame renderDefault(std::string_view method, float radius = kTestRadius, bool objectIdFix = true,
                     bool midpointFix = true) {
-    Scene scene = loadGltf(kDefaultAsset);
+    Scene scene = loadGltf(defaultAsset());
     scene.light->radius = radius;
     const gl::ShaderLibrary shaders;
     RenderSettings settings;
@@ -321,18 +300,7 @@ TEST_F(JfaETest, JfaEIsCloseToStandardFlooding) {
 TEST_F(JfaETest, Goldens) {
     for (const MethodDescriptor* d : floodingMethods(MethodSpace::Eye)) { // jfa-e, flood-e
         const Frame f = renderDefault(d->name);
-        const std::string name = "default_256_" + std::string(d->name);
-        Tolerance colour;
-        colour.maxAbs = 255;
-        colour.meanAbs = 1.5;
-        colour.pixelThreshold = 16;
-        colour.maxPercentOver = 1.0;
-        const CompareResult c =
-            compareWithGolden(toSrgb8(f.pictures.color), name + "_colour", colour);
-        EXPECT_TRUE(c.pass) << c.report;
-        const CompareResult v = compareWithGolden(visibilityToGrey(f.pictures.visibility),
-                                                  name + "_visibility", colour);
-        EXPECT_TRUE(v.pass) << v.report;
+        expectFrameMatchesGoldens(f.pictures, "default_256_" + std::string(d->name));
     }
 }
 
@@ -341,7 +309,7 @@ TEST_F(JfaETest, Goldens) {
 // with
 // --gtest_also_run_disabled_tests --gtest_filter=*Timing*.
 TEST_F(JfaETest, DISABLED_Timing512) {
-    Scene scene = loadGltf(kDefaultAsset);
+    Scene scene = loadGltf(defaultAsset());
     scene.light->radius = kTestRadius;
     const gl::ShaderLibrary shaders;
     for (std::string_view m : {"hard", "jfa-l", "jfa-e", "flood-e"}) {

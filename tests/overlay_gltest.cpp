@@ -113,11 +113,7 @@ void expectGolden(const ByteImage& img, const std::string& name) {
     // tests within float precision of the surface, which moves single seeds and the regions
     // they own: allow 2% of pixels to differ by more than 16 steps and a mean of 3 steps. A
     // wrong colour map, a wrong mode or a shifted grid breaks both by far.
-    Tolerance tol;
-    tol.maxAbs = 255;
-    tol.meanAbs = 3.0;
-    tol.pixelThreshold = 16;
-    tol.maxPercentOver = 2.0;
+    const Tolerance tol{.maxAbs = 255, .meanAbs = 3.0, .pixelThreshold = 16, .maxPercentOver = 2.0};
     const CompareResult c = compareWithGolden(img, name, tol);
     std::printf("%s: %s\n", name.c_str(), c.report.c_str());
     EXPECT_TRUE(c.pass) << c.report;

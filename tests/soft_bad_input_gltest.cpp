@@ -43,14 +43,7 @@ CameraView sideCamera(const Scene& scene) {
 }
 
 FrameImages renderFrame(const Scene& scene, std::string_view method) {
-    const gl::ShaderLibrary shaders;
-    RenderSettings settings;
-    settings.shadow.size = 256;
-    settings.method = std::string(method);
-    Renderer r(shaders, scene, settings);
-    r.resize(64, 64);
-    r.render(sideCamera(scene));
-    return readFrame(r);
+    return test::renderFrame(scene, sideCamera(scene), method, 256, 64);
 }
 
 FloatImage renderVisibility(const Scene& scene, std::string_view method) {

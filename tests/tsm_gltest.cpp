@@ -22,9 +22,6 @@ namespace {
 
 class TsmTest : public GlTest {};
 
-const std::filesystem::path kDefaultAsset =
-    std::filesystem::path(FLOODLIGHT_SOURCE_DIR) / "assets" / "default.glb";
-
 struct Rendered {
     FrameImages frame;
     FloatImage diagnostics;
@@ -81,7 +78,7 @@ Agreement agreeWithRayCast(const Scene& scene, const CameraView& cam, const Rend
 }
 
 TEST_F(TsmTest, DefaultSceneHardShadowsAgreeWithRayCastAtLeastAsWellAsUniform) {
-    const Scene scene = loadGltf(kDefaultAsset);
+    const Scene scene = loadGltf(defaultAsset());
     ASSERT_TRUE(scene.light.has_value());
     const int w = 128, h = 128;
     const CameraView cam = makeCameraView(scene, {}, 1.0f);
@@ -112,7 +109,7 @@ TEST_F(TsmTest, DefaultSceneHardShadowsAgreeWithRayCastAtLeastAsWellAsUniform) {
 }
 
 TEST_F(TsmTest, TsmFootprintNearTheViewerIsFinerThanUniform) {
-    const Scene scene = loadGltf(kDefaultAsset);
+    const Scene scene = loadGltf(defaultAsset());
     const CameraView cam = makeCameraView(scene, {}, 1.0f);
     const Rendered uni = renderOnce(scene, cam, ShadowMapProvider::Uniform, 256, 256, 1024);
     const Rendered tsm = renderOnce(scene, cam, ShadowMapProvider::Tsm, 256, 256, 1024);
@@ -188,7 +185,7 @@ TEST_F(TsmTest, FootprintMatchesCpuReferenceOnTheGround) {
 // the camera, so the flicker must shrink with the camera step. A fit that jumps (say, a hull or
 // focus decision that switches) would flip pixels however small the step.
 TEST_F(TsmTest, FlickerIsZeroForUniformAndShrinksWithTheStepForTsm) {
-    const Scene scene = loadGltf(kDefaultAsset);
+    const Scene scene = loadGltf(defaultAsset());
     const CameraPath path = defaultWalkthrough(makeCameraView(scene, {}, 1.0f), scene.bounds);
     const gl::ShaderLibrary shaders;
     for (ShadowMapProvider provider : {ShadowMapProvider::Uniform, ShadowMapProvider::Tsm}) {
@@ -249,7 +246,7 @@ TEST_F(TsmTest, DegenerateCamerasRenderFiniteImages) {
 }
 
 TEST_F(TsmTest, AliasingMapExrIsFiniteEverywhere) {
-    const Scene scene = loadGltf(kDefaultAsset);
+    const Scene scene = loadGltf(defaultAsset());
     const CameraView cam = makeCameraView(scene, {}, 1.5f);
     const Rendered r = renderOnce(scene, cam, ShadowMapProvider::Tsm, 96, 64, 256);
     const auto path = outputDir("tsm") / "aliasing.exr";

@@ -50,20 +50,8 @@ ViewRun runView(const fs::path& dir, const std::string& script, const std::strin
     return r;
 }
 
-// Same tolerances as golden_gltest's colour goldens, for the same reasons: bit-exact on the
-// machine that made them; another driver may round shading by a few steps and flip shadow tests
-// within float precision at single pixels, so any pixel may differ but the mean stays under 1.5
-// steps and under 1% of pixels differ by more than 16. A wrong method, overlay, camera or light
-// changes far more than that.
-Tolerance frameTolerance() {
-    Tolerance tol;
-    tol.maxAbs = 255;
-    tol.meanAbs = 1.5;
-    tol.pixelThreshold = 16;
-    tol.maxPercentOver = 1.0;
-    return tol;
-}
-
+// The tolerance of the frame goldens (frameTolerance): a wrong method, overlay, camera or light
+// changes far more than it allows.
 void expectGolden(const fs::path& file, const std::string& golden) {
     ASSERT_TRUE(fs::exists(file)) << file << " was not written";
     const CompareResult c = compareWithGolden(readPng(file), golden, frameTolerance());

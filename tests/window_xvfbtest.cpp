@@ -54,11 +54,7 @@ TEST(Window, RendersTheSamePixelsAsHeadless) {
     EXPECT_NO_THROW(gl::throwIfErrors("window frames"));
     // The window encodes sRGB in a shader, the headless path on the CPU; both use the same
     // formula, so they may differ by one 8-bit step from float rounding, nowhere by more.
-    Tolerance tol;
-    tol.maxAbs = 1;
-    tol.meanAbs = 0.5;
-    tol.pixelThreshold = 1;
-    tol.maxPercentOver = 0.0;
+    const Tolerance tol{.maxAbs = 1, .meanAbs = 0.5, .pixelThreshold = 1, .maxPercentOver = 0.0};
     const CompareResult c = compareImages(shown, headless, tol);
     EXPECT_TRUE(c.pass) << c.report;
     if (!c.pass) {

@@ -102,6 +102,14 @@ void addMesh(geom::SvgPicture& pic, const std::vector<glm::dvec2>& at,
     pic.addLayer("triangles", geom::SvgStyle::lines(kEdgeColour)).addTriangleEdges(at, triangles);
 }
 
+// The mesh after a step, with the edges the step made (absent from `before`) drawn over it.
+void addMeshStep(geom::SvgPicture& pic, const std::vector<glm::dvec2>& at,
+                 const std::vector<std::uint32_t>& before, const std::vector<std::uint32_t>& after,
+                 const char* id, const char* colour) {
+    addMesh(pic, at, after);
+    pic.addLayer(id, geom::SvgStyle::lines(colour, 2.0)).addSegments(newEdges(before, after, at));
+}
+
 void addGrid(geom::SvgPicture& pic, const char* id, const geom::IdTexture& ids,
              const geom::TextureMapping& m, double opacity) {
     geom::SvgStyle style = geom::SvgStyle::areas("none", opacity);
@@ -152,74 +160,59 @@ void writeStepPictures(const std::filesystem::path& dir, const std::vector<glm::
     const geom::DiscreteDelaunay& d = r.discrete;
     const geom::TextureMapping& m = d.snapped.mapping;
     const std::vector<glm::dvec2> pixels = pixelPositions(d);
-    auto save = [&](const char* name, const geom::SvgPicture& pic, const std::string& what) {
+    // One picture: `draw` fills it, then it is written to dir/name and logged with `what`.
+    auto save = [&](const char* name, const std::string& what, const auto& draw) {
+        geom::SvgPicture pic;
+        draw(pic);
         geom::writeSvg(dir / name, pic);
         log << "wrote " << (dir / name).string() << ": " << what << "\n";
     };
-    {
-        geom::SvgPicture pic;
+    save("01_sites.svg", "input points; red: lose their pixel in G1", [&](geom::SvgPicture& pic) {
         addSites(pic, points, r);
         addMissing(pic, points, d);
-        save("01_sites.svg", pic, "input points; red: lose their pixel in G1");
-    }
-    {
-        geom::SvgPicture pic;
-        addGrid(pic, "voronoi", d.voronoi, m, 1.0);
-        addSites(pic, pixels, r);
-        save("02_voronoi.svg", pic, "G2 discrete Voronoi diagram, sites on their pixels");
-    }
-    {
-        geom::SvgPicture pic;
-        addGrid(pic, "cleaned", d.cleaned, m, 0.6);
-        addIslandPixels(pic, d);
-        addSites(pic, pixels, r);
-        save("03_islands.svg", pic, "G3: red pixels were islands and got recoloured");
-    }
-    {
-        geom::SvgPicture pic;
-        addGrid(pic, "cleaned", d.cleaned, m, 0.35);
-        addVertices(pic, d);
-        addSites(pic, pixels, r, 0.7);
-        save("04_vertices.svg", pic, "G4 Voronoi vertices (blue: three colours, red: four)");
-    }
-    {
-        geom::SvgPicture pic;
+    });
+    save("02_voronoi.svg", "G2 discrete Voronoi diagram, sites on their pixels",
+         [&](geom::SvgPicture& pic) {
+             addGrid(pic, "voronoi", d.voronoi, m, 1.0);
+             addSites(pic, pixels, r);
+         });
+    save("03_islands.svg", "G3: red pixels were islands and got recoloured",
+         [&](geom::SvgPicture& pic) {
+             addGrid(pic, "cleaned", d.cleaned, m, 0.6);
+             addIslandPixels(pic, d);
+             addSites(pic, pixels, r);
+         });
+    save("04_vertices.svg", "G4 Voronoi vertices (blue: three colours, red: four)",
+         [&](geom::SvgPicture& pic) {
+             addGrid(pic, "cleaned", d.cleaned, m, 0.35);
+             addVertices(pic, d);
+             addSites(pic, pixels, r, 0.7);
+         });
+    save("05_mesh.svg", "G6 mesh T' on the pixel positions", [&](geom::SvgPicture& pic) {
         addMesh(pic, pixels, r.stages[0]);
         addSites(pic, pixels, r);
-        save("05_mesh.svg", pic, "G6 mesh T' on the pixel positions");
-    }
-    {
-        geom::SvgPicture pic;
-        addMesh(pic, pixels, r.stages[1]);
-        pic.addLayer("added", geom::SvgStyle::lines(kNewColour, 2.0))
-            .addSegments(newEdges(r.stages[0], r.stages[1], pixels));
+    });
+    save("06_hull.svg", "C1 convex hull completed (orange: new edges)", [&](geom::SvgPicture& pic) {
+        addMeshStep(pic, pixels, r.stages[0], r.stages[1], "added", kNewColour);
         addSites(pic, pixels, r);
-        save("06_hull.svg", pic, "C1 convex hull completed (orange: new edges)");
-    }
-    {
-        geom::SvgPicture pic;
-        addMesh(pic, points, r.stages[2]);
-        addShifts(pic, pixels, points, d);
-        addSites(pic, points, r);
-        save("07_shifted.svg", pic, "C2 sites shifted to their positions (blue: shift vectors)");
-    }
-    {
-        geom::SvgPicture pic;
-        addMesh(pic, points, r.stages[3]);
-        pic.addLayer("added", geom::SvgStyle::lines(kNewColour, 2.0))
-            .addSegments(newEdges(r.stages[2], r.stages[3], points));
-        addSites(pic, points, r);
-        addMissing(pic, points, d);
-        save("08_missing.svg", pic, "C3 missing sites (red) inserted (orange: new edges)");
-    }
-    {
-        geom::SvgPicture pic;
-        addMesh(pic, points, r.stages[4]);
-        pic.addLayer("flipped", geom::SvgStyle::lines(kFlipColour, 2.0))
-            .addSegments(newEdges(r.stages[3], r.stages[4], points));
-        addSites(pic, points, r);
-        save("09_flipped.svg", pic, "C4 edges flipped (green) into the Delaunay triangulation");
-    }
+    });
+    save("07_shifted.svg", "C2 sites shifted to their positions (blue: shift vectors)",
+         [&](geom::SvgPicture& pic) {
+             addMesh(pic, points, r.stages[2]);
+             addShifts(pic, pixels, points, d);
+             addSites(pic, points, r);
+         });
+    save("08_missing.svg", "C3 missing sites (red) inserted (orange: new edges)",
+         [&](geom::SvgPicture& pic) {
+             addMeshStep(pic, points, r.stages[2], r.stages[3], "added", kNewColour);
+             addSites(pic, points, r);
+             addMissing(pic, points, d);
+         });
+    save("09_flipped.svg", "C4 edges flipped (green) into the Delaunay triangulation",
+         [&](geom::SvgPicture& pic) {
+             addMeshStep(pic, points, r.stages[3], r.stages[4], "flipped", kFlipColour);
+             addSites(pic, points, r);
+         });
 }
 
 } // namespace fl::app

@@ -1,5 +1,8 @@
 #include "GlTest.h"
 
+#include <renderer/Renderer.h>
+#include <renderer/io/Capture.h>
+
 #include <cstdlib>
 
 namespace fl::test {
@@ -32,6 +35,18 @@ void GlTest::TearDown() {
     } catch (const gl::GlError& e) {
         ADD_FAILURE() << e.what();
     }
+}
+
+FrameImages renderFrame(const Scene& scene, const CameraView& camera, std::string_view method,
+                        int mapSize, int size) {
+    const gl::ShaderLibrary shaders;
+    RenderSettings settings;
+    settings.shadow.size = mapSize;
+    settings.method = std::string(method);
+    Renderer r(shaders, scene, settings);
+    r.resize(size, size);
+    r.render(camera);
+    return readFrame(r);
 }
 
 } // namespace fl::test

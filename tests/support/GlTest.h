@@ -8,6 +8,13 @@
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <string_view>
+
+namespace fl {
+struct CameraView;
+struct FrameImages;
+struct Scene;
+} // namespace fl
 
 namespace fl::test {
 
@@ -22,5 +29,10 @@ class GlTest : public ::testing::Test {
   private:
     static std::unique_ptr<EglContext> context_;
 };
+
+/// One frame of `scene` from `camera` with `method` at size x size pixels and a mapSize² shadow
+/// map (the method's other settings at their defaults), read back.
+FrameImages renderFrame(const Scene& scene, const CameraView& camera, std::string_view method,
+                        int mapSize, int size);
 
 } // namespace fl::test

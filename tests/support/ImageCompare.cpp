@@ -1,6 +1,10 @@
 #include "ImageCompare.h"
 #include "TestPaths.h"
 
+#include <renderer/io/Capture.h>
+
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
@@ -86,6 +90,19 @@ CompareResult compareWithGolden(const ByteImage& actual, const std::string& name
     r.report += "\n  wrote " + (dir / (name + ".actual.png")).string() + " and " +
                 (dir / (name + ".diff.png")).string();
     return r;
+}
+
+Tolerance frameTolerance() {
+    return {.maxAbs = 255, .meanAbs = 1.5, .pixelThreshold = 16, .maxPercentOver = 1.0};
+}
+
+void expectFrameMatchesGoldens(const FrameImages& frame, const std::string& name) {
+    const CompareResult c =
+        compareWithGolden(toSrgb8(frame.color), name + "_colour", frameTolerance());
+    EXPECT_TRUE(c.pass) << c.report;
+    const CompareResult v = compareWithGolden(visibilityToGrey(frame.visibility),
+                                              name + "_visibility", frameTolerance());
+    EXPECT_TRUE(v.pass) << v.report;
 }
 
 } // namespace fl::test

@@ -6,6 +6,10 @@
 #include <filesystem>
 #include <string>
 
+namespace fl {
+struct FrameImages;
+}
+
 namespace fl::test {
 
 struct Tolerance {
@@ -33,5 +37,16 @@ CompareResult compareImages(const ByteImage& actual, const ByteImage& golden, co
 /// them in the report.
 CompareResult compareWithGolden(const ByteImage& actual, const std::string& name,
                                 const Tolerance& tol);
+
+/// The tolerance of the goldens of rendered frames (colour, and soft visibility as grey levels).
+/// They are bit-exact on the machine that made them; another driver may round shading by a few
+/// steps and flip shadow tests within float precision at single pixels, so any pixel may differ
+/// but the mean stays under 1.5 steps and under 1% of pixels differ by more than 16. A wrong
+/// method, camera or light changes far more than that.
+Tolerance frameTolerance();
+
+/// Expects `frame`'s colour and visibility to match goldens NAME_colour and NAME_visibility under
+/// frameTolerance().
+void expectFrameMatchesGoldens(const FrameImages& frame, const std::string& name);
 
 } // namespace fl::test

@@ -8,6 +8,8 @@ namespace fl::test {
 
 /// The tests/ source folder (goldens, fixtures).
 std::filesystem::path dataDir();
+/// assets/default.glb, the default scene that the goldens show.
+std::filesystem::path defaultAsset();
 /// A per-test output folder under the build tree, created on demand.
 std::filesystem::path outputDir(const std::string& sub = {});
 

@@ -90,4 +90,17 @@ float rayCastVisibility(const Scene& scene, const Light& light, glm::vec3 p, flo
     return 1.0f;
 }
 
+SceneView spotLitBox() {
+    Scene scene = groundAndBox(3.0f, {-0.5f, 0.0f, -0.5f}, {0.5f, 1.0f, 0.5f}, {0.3f, -1, 0.2f});
+    scene.light->type = Light::Type::Spot;
+    scene.light->position = {-1.5f, 6.0f, -1.0f};
+    scene.light->direction = glm::normalize(glm::vec3(1.5f, -6.0f, 1.0f));
+    scene.light->radius = 2.0f;
+    CameraSpec spec;
+    spec.kind = CameraSpec::Kind::LookAt;
+    spec.eye = {2.5f, 4.0f, 4.0f};
+    spec.target = {0.3f, 0.0f, 0.3f};
+    return {scene, makeCameraView(scene, spec, 1.0f)};
+}
+
 } // namespace fl::test

@@ -1,6 +1,7 @@
 #pragma once
 // Small hand-built scenes with known answers, and a CPU ray caster as the reference for shadows.
 
+#include <renderer/Renderer.h>
 #include <renderer/scene/Scene.h>
 
 namespace fl::test {
@@ -8,6 +9,16 @@ namespace fl::test {
 /// A ground quad (y = 0, [-half, half]²) and an axis-aligned box [lo, hi], each its own object,
 /// lit by a directional light travelling along `lightDir`.
 Scene groundAndBox(float half, glm::vec3 lo, glm::vec3 hi, glm::vec3 lightDir);
+
+/// A scene and the camera that views it.
+struct SceneView {
+    Scene scene;
+    CameraView camera;
+};
+
+/// groundAndBox's unit box under a spot light of radius 2 above and to the side of it, seen from
+/// above the other side: inner and outer penumbrae on the ground, self-shadowing on the box.
+SceneView spotLitBox();
 
 /// CPU reference for a hard shadow: 1 if the segment from `p` towards the light (direction
 /// -light.direction for directional lights, else to light.position) hits no triangle, 0 if it

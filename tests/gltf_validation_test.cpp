@@ -1,0 +1,305 @@
+// glTF loader validation: one test per rule, each writes a minimal malformed file and expects a
+// SceneError naming the file, the element and the problem.
+
+#include <renderer/gltf/GltfLoader.h>
+
+#include "GltfBuilder.h"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+
+namespace fl::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+// --- validation: each rule rejects with file, element and problem ----------------------------
+
+TEST(GltfLoaderValidation, IndexPastVertexCount) {
+    Gltf g = triangle();
+    g.prim()["indices"] = g.indices(std::vector<std::uint16_t>{0, 1, 812}, kU16);
+    expectRejected(g, "index_past_vertex_count.gltf",
+                   {"meshes[0].primitives[0]", "index 812 past vertex count 3"});
+}
+
+TEST(GltfLoaderValidation, NodeCycle) {
+    Gltf g = triangle();
+    // As in assimp's RecursiveNodes.gltf: a child lists its parent as its child.
+    g.node(0)["children"] = {1};
+    g.push("nodes", {{"children", {0}}});
+    expectRejected(g, "node_cycle.gltf",
+                   {"nodes[0]: node cycle: nodes[0] -> nodes[1] -> nodes[0]"});
+}
+
+TEST(GltfLoaderValidation, NodeCycleOutsideTheScene) {
+    Gltf g = triangle();
+    g.push("nodes", {{"children", {2}}});
+    g.push("nodes", {{"children", {1}}});
+    expectRejected(g, "node_cycle_unreachable.gltf", {"node cycle"});
+}
+
+TEST(GltfLoaderValidation, NodeIsItsOwnChild) {
+    Gltf g = triangle();
+    g.node(0)["children"] = {0};
+    expectRejected(g, "node_own_child.gltf", {"nodes[0]", "node cycle"});
+}
+
+TEST(GltfLoaderValidation, NodeWithTwoParents) {
+    Gltf g = triangle();
+    g.push("nodes", {{"children", {3}}});
+    g.push("nodes", {{"children", {3}}});
+    g.push("nodes", {{"mesh", 0}});
+    g.doc["scenes"][0]["nodes"] = {0, 1, 2};
+    expectRejected(g, "node_two_parents.gltf", {"nodes[3]", "two parents", "nodes[1]", "nodes[2]"});
+}
+
+TEST(GltfLoaderValidation, SceneListsNonRootNode) {
+    Gltf g = triangle();
+    g.push("nodes", {{"children", {0}}});
+    g.doc["scenes"][0]["nodes"] = {1, 0};
+    expectRejected(g, "non_root_scene_node.gltf", {"scenes[0].nodes[1]", "not a root node"});
+}
+
+TEST(GltfLoaderValidation, NaNPosition) {
+    Gltf g = triangle();
+    g.prim()["attributes"]["POSITION"] =
+        g.vec3({{0, 0, 0}, {std::numeric_limits<float>::quiet_NaN(), 0, 0}, {0, 1, 0}});
+    expectRejected(g, "nan_position.gltf", {"accessors[3]", "POSITION", "vertex 1 is not finite"});
+}
+
+TEST(GltfLoaderValidation, InfinitePosition) {
+    Gltf g = triangle();
+    g.prim()["attributes"]["POSITION"] =
+        g.vec3({{0, 0, 0}, {1, 0, 0}, {0, std::numeric_limits<float>::infinity(), 0}});
+    expectRejected(g, "inf_position.gltf", {"accessors[3]", "vertex 2 is not finite"});
+}
+
+TEST(GltfLoaderValidation, AccessorPastBufferView) {
+    Gltf g = triangle();
+    g.accessorAt(0)["count"] = 4; // 4 * 12 bytes > the view's 36
+    expectRejected(g, "accessor_past_view.gltf",
+                   {"accessors[0]", "past the end of bufferViews[0]", "byteLength 36"});
+}
+
+TEST(GltfLoaderValidation, AccessorByteOffsetPastBufferView) {
+    Gltf g = triangle();
+    g.accessorAt(0)["byteOffset"] = 4;
+    expectRejected(g, "accessor_offset_past_view.gltf", {"accessors[0]", "byteOffset 4", "past"});
+}
+
+TEST(GltfLoaderValidation, StridedAccessorPastBufferView) {
+    // 3 VEC3 floats with stride 16 need 16 * 2 + 12 = 44 bytes; the view has 36.
+    Gltf g = triangle();
+    g.doc["bufferViews"][0]["byteStride"] = 16;
+    expectRejected(g, "stride_past_view.gltf", {"accessors[0]", "stride 16", "= 44 bytes", "past"});
+}
+
+TEST(GltfLoaderValidation, StrideSmallerThanElement) {
+    Gltf g = triangle();
+    g.doc["bufferViews"][0]["byteStride"] = 8;
+    expectRejected(g, "stride_too_small.gltf", {"bufferViews[0]", "byteStride 8"});
+}
+
+TEST(GltfLoaderValidation, BufferViewPastBuffer) {
+    Gltf g = triangle();
+    g.doc["bufferViews"][2]["byteLength"] = 4096;
+    expectRejected(g, "view_past_buffer.gltf", {"bufferViews[2]", "past the end of buffers[0]"});
+}
+
+TEST(GltfLoaderValidation, PositionNotVec3) {
+    Gltf g = triangle();
+    g.accessorAt(0)["type"] = "VEC2";
+    expectRejected(g, "position_vec2.gltf",
+                   {"accessors[0]", "POSITION needs VEC3 FLOAT, got VEC2 FLOAT"});
+}
+
+TEST(GltfLoaderValidation, PositionNotFloat) {
+    Gltf g = triangle();
+    g.accessorAt(0)["componentType"] = kU16;
+    expectRejected(g, "position_u16.gltf",
+                   {"accessors[0]", "POSITION needs VEC3 FLOAT, got VEC3 UNSIGNED_SHORT"});
+}
+
+TEST(GltfLoaderValidation, NormalNotVec3) {
+    Gltf g = triangle();
+    g.accessorAt(1)["type"] = "VEC4";
+    g.accessorAt(1)["count"] = 2;
+    expectRejected(g, "normal_vec4.gltf", {"accessors[1]", "NORMAL needs VEC3 FLOAT"});
+}
+
+TEST(GltfLoaderValidation, FloatIndices) {
+    Gltf g = triangle();
+    g.prim()["indices"] = g.accessor(g.view(std::vector<float>{0, 1, 2}), kFloat, "SCALAR", 3);
+    expectRejected(
+        g, "float_indices.gltf",
+        {"accessors[3]", "indices needs SCALAR UNSIGNED_BYTE/UNSIGNED_SHORT/UNSIGNED_INT"});
+}
+
+TEST(GltfLoaderValidation, UnnormalizedByteTexcoords) {
+    Gltf g = triangle();
+    g.prim()["attributes"]["TEXCOORD_0"] =
+        g.accessor(g.view(std::vector<std::uint8_t>{0, 0, 255, 0, 0, 255}), kU8, "VEC2", 3);
+    expectRejected(g, "texcoord_u8_unnormalized.gltf", {"accessors[3]", "must be normalized"});
+}
+
+TEST(GltfLoaderValidation, AttributeCountMismatch) {
+    Gltf g = triangle();
+    g.prim()["attributes"]["NORMAL"] = g.vec3({{0, 0, 1}, {0, 0, 1}});
+    expectRejected(g, "normal_count_mismatch.gltf",
+                   {"meshes[0].primitives[0]", "NORMAL has 2 elements but POSITION has 3"});
+}
+
+TEST(GltfLoaderValidation, SparseIndexPastCount) {
+    Gltf g = triangle();
+    const int idx = g.view(std::vector<std::uint8_t>{7});
+    const int val = g.view(std::vector<glm::vec3>{{5, 5, 5}});
+    g.accessorAt(0)["sparse"] = {{"count", 1},
+                                 {"indices", {{"bufferView", idx}, {"componentType", kU8}}},
+                                 {"values", {{"bufferView", val}}}};
+    expectRejected(g, "sparse_index_past_count.gltf",
+                   {"accessors[0].sparse.indices", "index 7 past accessor count 3"});
+}
+
+TEST(GltfLoaderValidation, SparseCountLargerThanAccessor) {
+    Gltf g = triangle();
+    const int idx = g.view(std::vector<std::uint8_t>{0, 1, 2, 2});
+    const int val = g.view(std::vector<glm::vec3>(4));
+    g.accessorAt(0)["sparse"] = {{"count", 4},
+                                 {"indices", {{"bufferView", idx}, {"componentType", kU8}}},
+                                 {"values", {{"bufferView", val}}}};
+    expectRejected(g, "sparse_count_too_large.gltf", {"accessors[0].sparse", "count 4"});
+}
+
+TEST(GltfLoaderValidation, AbsurdAccessorCount) {
+    Gltf g = triangle();
+    g.accessorAt(0).erase("bufferView"); // all zeros: no byte range would catch it
+    g.accessorAt(0)["count"] = 1u << 31;
+    expectRejected(g, "absurd_count.gltf", {"accessors[0]", "absurd count 2147483648"});
+}
+
+TEST(GltfLoaderValidation, MissingImageFile) {
+    Gltf g = triangle();
+    g.texturedMaterial(g.texture({{"uri", "no_such_texture.png"}}));
+    expectRejected(g, "missing_image.gltf", {"images[0]", "'no_such_texture.png' not found"});
+}
+
+TEST(GltfLoaderValidation, ImageBufferViewPastBuffer) {
+    Gltf g = triangle();
+    g.push("bufferViews", {{"buffer", 0}, {"byteOffset", 0}, {"byteLength", 100000}});
+    g.texturedMaterial(g.texture({{"bufferView", 3}, {"mimeType", "image/png"}}));
+    expectRejected(g, "image_view_past_buffer.gltf",
+                   {"bufferViews[3]", "past the end of buffers[0]"});
+}
+
+// Invalid indices into every array the loader follows.
+TEST(GltfLoaderValidation, InvalidMeshIndex) {
+    Gltf g = triangle();
+    g.node(0)["mesh"] = 5;
+    expectRejected(g, "bad_mesh_index.gltf", {"nodes[0]", "mesh 5 does not exist (1 in meshes)"});
+}
+
+TEST(GltfLoaderValidation, InvalidMaterialIndex) {
+    Gltf g = triangle();
+    g.prim()["material"] = 3;
+    expectRejected(g, "bad_material_index.gltf",
+                   {"meshes[0].primitives[0]", "material 3 does not exist"});
+}
+
+TEST(GltfLoaderValidation, InvalidImageIndex) {
+    Gltf g = triangle();
+    g.push("textures", {{"source", 2}});
+    g.texturedMaterial(0);
+    expectRejected(g, "bad_image_index.gltf", {"textures[0]", "image 2 does not exist"});
+}
+
+TEST(GltfLoaderValidation, InvalidAccessorIndex) {
+    Gltf g = triangle();
+    g.prim()["attributes"]["POSITION"] = 9;
+    expectRejected(g, "bad_accessor_index.gltf",
+                   {"meshes[0].primitives[0].attributes.POSITION", "accessor 9 does not exist"});
+}
+
+TEST(GltfLoaderValidation, InvalidBufferViewIndex) {
+    Gltf g = triangle();
+    g.accessorAt(0)["bufferView"] = 7;
+    expectRejected(g, "bad_view_index.gltf", {"accessors[0]", "bufferView 7 does not exist"});
+}
+
+TEST(GltfLoaderValidation, InvalidBufferIndex) {
+    Gltf g = triangle();
+    g.doc["bufferViews"][0]["buffer"] = 3;
+    expectRejected(g, "bad_buffer_index.gltf", {"bufferViews[0]", "buffer 3 does not exist"});
+}
+
+TEST(GltfLoaderValidation, InvalidCameraIndex) {
+    Gltf g = triangle();
+    g.node(0)["camera"] = 2;
+    expectRejected(g, "bad_camera_index.gltf", {"nodes[0]", "camera 2 does not exist"});
+}
+
+TEST(GltfLoaderValidation, InvalidLightIndex) {
+    Gltf g = triangle();
+    g.node(0)["extensions"] = {{"KHR_lights_punctual", {{"light", 4}}}};
+    expectRejected(g, "bad_light_index.gltf",
+                   {"nodes[0].extensions.KHR_lights_punctual", "light 4 does not exist"});
+}
+
+TEST(GltfLoaderValidation, InvalidChildIndex) {
+    Gltf g = triangle();
+    g.node(0)["children"] = {9};
+    expectRejected(g, "bad_child_index.gltf", {"nodes[0].children[0]", "node 9 does not exist"});
+}
+
+TEST(GltfLoaderValidation, InvalidSceneNodeIndex) {
+    Gltf g = triangle();
+    g.doc["scenes"][0]["nodes"] = {4};
+    expectRejected(g, "bad_scene_node_index.gltf", {"scenes[0].nodes[0]", "node 4 does not exist"});
+}
+
+TEST(GltfLoaderValidation, InvalidDefaultScene) {
+    Gltf g = triangle();
+    g.doc["scene"] = 5;
+    expectRejected(g, "bad_default_scene.gltf", {"scene: scene 5 does not exist"});
+}
+
+TEST(GltfLoaderValidation, MatrixOfWrongSize) {
+    Gltf g = triangle();
+    g.node(0)["matrix"] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    expectRejected(g, "matrix_9_values.gltf", {"nodes[0]", "matrix has 9 values (expected 16)"});
+}
+
+TEST(GltfLoaderValidation, JsonNumberOverflowPassedOn) {
+    // JSON has no infinity; 1e400 is tinygltf's (nlohmann's) parse error, passed on.
+    Gltf g = triangle();
+    g.node(0)["translation"] = {0, 12345.5, 0};
+    const fs::path path = g.write("translation_1e400.gltf");
+    replaceInFile(path, "12345.5", "1e400");
+    const std::string message = errorOf(path);
+    EXPECT_EQ(message.rfind("translation_1e400.gltf: ", 0), 0u) << message;
+    EXPECT_NE(message.find("1e400"), std::string::npos) << message;
+}
+
+TEST(GltfLoaderValidation, TransformOverflowsFloat) {
+    Gltf g = triangle();
+    g.node(0)["translation"] = {0, 1e300, 0}; // a finite double, infinite as float
+    expectRejected(g, "translation_1e300.gltf", {"nodes[0]", "world transform is not finite"});
+}
+
+TEST(GltfLoaderValidation, InvalidPrimitiveMode) {
+    Gltf g = triangle();
+    g.prim()["mode"] = 9;
+    expectRejected(g, "bad_mode.gltf", {"meshes[0].primitives[0]", "invalid mode 9"});
+}
+
+TEST(GltfLoaderValidation, DracoWithoutFallback) {
+    Gltf g = triangle();
+    g.accessorAt(0).erase("bufferView");
+    g.prim()["extensions"] = {
+        {"KHR_draco_mesh_compression", {{"bufferView", 0}, {"attributes", {{"POSITION", 0}}}}}};
+    expectRejected(g, "draco_no_fallback.gltf",
+                   {"meshes[0].primitives[0]", "KHR_draco_mesh_compression"});
+}
+
+} // namespace
+} // namespace fl::test
