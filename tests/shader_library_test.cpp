@@ -38,7 +38,7 @@ TEST(ShaderLibrary, DirectoryOverridesEmbedded) {
     writeFile(dir / "x.glsl", "#version 450 core\nvoid main() {}\n");
     const ShaderLibrary lib(dir);
     EXPECT_EQ(lib.read("x.glsl"), "#version 450 core\nvoid main() {}\n");
-    EXPECT_THROW((void)lib.read("forward.frag.glsl"), std::runtime_error);
+    EXPECT_THROW((void)lib.read("surfaces.frag.glsl"), std::runtime_error); // embedded, not here
 }
 
 TEST(ShaderLibrary, MissingDirectoryIsAnError) {
