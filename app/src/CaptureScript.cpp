@@ -139,10 +139,8 @@ MethodSpec parseMethodEntry(const Json& j, const std::string& field) {
         const MethodOption* o = d->option(key);
         if (!o) {
             // Another method's option, or no option at all: say which.
-            std::string takers;
-            for (const MethodDescriptor& other : methodTable())
-                if (other.option(key))
-                    takers += (takers.empty() ? "" : ", ") + std::string(other.name);
+            const std::string takers = methodNamesWhere(
+                [&](const MethodDescriptor& other) { return other.option(key) != nullptr; });
             fail(f, takers.empty()
                         ? "unknown key (" + name + " takes: " +
                               [&] {

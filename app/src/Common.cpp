@@ -76,10 +76,8 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool sceneAsOption) {
 void addMethodOptions(CLI::App& cmd, SceneOptions& o) {
     for (const MethodOption* opt : allMethodOptions()) {
         // "jfa-l, flood-l: ..." — which methods take it, from the table.
-        std::string takers;
-        for (const MethodDescriptor& m : methodTable())
-            if (m.takesFlag(opt->flag))
-                takers += (takers.empty() ? "" : ", ") + std::string(m.name);
+        const std::string takers =
+            methodNamesWhere([&](const MethodDescriptor& m) { return m.takesFlag(opt->flag); });
         const std::string help = takers + ": " + std::string(opt->help);
         const std::string flag(opt->flag);
         if (opt->kind == OptionKind::Flag) {
@@ -155,9 +153,8 @@ RenderSettings makeRenderSettings(const SceneOptions& o) {
     s.method = o.method;
     for (const auto& [flag, value] : o.methodOptions) {
         if (o.strictMethodOptions && !method->takesFlag(flag)) {
-            std::string takers;
-            for (const MethodDescriptor& m : methodTable())
-                if (m.takesFlag(flag)) takers += (takers.empty() ? "" : ", ") + std::string(m.name);
+            const std::string takers =
+                methodNamesWhere([&](const MethodDescriptor& m) { return m.takesFlag(flag); });
             throw UsageError(flag + ": method " + o.method + " does not take it (only " + takers +
                              " do)");
         }

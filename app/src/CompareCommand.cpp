@@ -59,9 +59,8 @@ int runCompare(const CompareRequest& r) {
     const std::string method = r.method;
     const std::optional<std::string> reference = referenceOf(method);
     if (!reference) {
-        std::string valid;
-        for (const MethodDescriptor& d : methodTable())
-            if (!d.reference.empty()) valid += (valid.empty() ? "" : ", ") + std::string(d.name);
+        const std::string valid =
+            methodNamesWhere([](const MethodDescriptor& d) { return !d.reference.empty(); });
         throw InputError("--method " + method + ": no standard-flooding reference for it (" +
                          valid + " have one)");
     }

@@ -88,8 +88,7 @@ Renderer::Renderer(const gl::ShaderLibrary& shaders, const Scene& scene,
 }
 
 ShadowMethod& Renderer::currentMethod() {
-    std::unique_ptr<ShadowMethod>& m =
-        methods_[static_cast<std::size_t>(method_ - methodTable().data())];
+    std::unique_ptr<ShadowMethod>& m = methods_[slot()];
     if (!m) {
         m = method_->make(shaders_);
         if (width_ > 0) m->resize(width_, height_);
@@ -104,8 +103,7 @@ void Renderer::setSettings(const RenderSettings& settings) {
 }
 
 const FloodFrame* Renderer::flood() const {
-    const std::unique_ptr<ShadowMethod>& m =
-        methods_[static_cast<std::size_t>(method_ - methodTable().data())];
+    const std::unique_ptr<ShadowMethod>& m = methods_[slot()];
     return method_->floods && m ? m->flood() : nullptr;
 }
 

@@ -117,6 +117,10 @@ class Renderer {
   private:
     /// The current method's instance, built on first use.
     ShadowMethod& currentMethod();
+    /// The instance slot of the current method (methods_ follows the table's order).
+    [[nodiscard]] std::size_t slot() const {
+        return static_cast<std::size_t>(method_ - methodTable().data());
+    }
 
     gl::ShaderLibrary shaders_;
     RenderSettings settings_;

@@ -201,6 +201,13 @@ std::string methodNames(std::string_view separator) {
     return out;
 }
 
+std::string methodNamesWhere(const std::function<bool(const MethodDescriptor&)>& pred) {
+    std::string out;
+    for (const MethodDescriptor& m : kTable)
+        if (pred(m)) out += (out.empty() ? "" : ", ") + std::string(m.name);
+    return out;
+}
+
 const MethodDescriptor& methodOrThrow(std::string_view name) {
     if (const MethodDescriptor* m = findMethod(name)) return *m;
     throw std::invalid_argument(

@@ -40,12 +40,9 @@ std::string timing(const SiteDiagram& d) {
 }
 
 // "needs a soft method's last frame (jfa-l, ...)": the flooding methods of the table.
-const std::string kNeedsSoft = [] {
-    std::string names;
-    for (const MethodDescriptor& m : methodTable())
-        if (m.floods) names += (names.empty() ? "" : ", ") + std::string(m.name);
-    return "needs a soft method's last frame (" + names + ")";
-}();
+const std::string kNeedsSoft =
+    "needs a soft method's last frame (" +
+    methodNamesWhere([](const MethodDescriptor& m) { return m.floods; }) + ")";
 
 glm::ivec4 viewportOf(const Soft& soft, const Frame& f) {
     return soft.eye ? glm::ivec4(0, 0, f.width, f.height) : squareViewport(f.width, f.height);

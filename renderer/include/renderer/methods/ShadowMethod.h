@@ -21,6 +21,7 @@
 #include <geometry/Aabb.h>
 #include <geometry/Framing.h>
 
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -120,6 +121,9 @@ const MethodDescriptor* findMethod(std::string_view name);
 const MethodDescriptor& methodOrThrow(std::string_view name);
 /// Every method name, separated by `separator`.
 std::string methodNames(std::string_view separator = ", ");
+/// The names of the methods for which `pred` holds, ", "-separated, in table order (for messages
+/// such as "only pcf takes --pcf-kernel").
+std::string methodNamesWhere(const std::function<bool(const MethodDescriptor&)>& pred);
 /// Every option of the table once (by flag), in table order.
 std::vector<const MethodOption*> allMethodOptions();
 /// The pass-count option every flooding method takes (--jfa-passes; the window's -/= keys and the

@@ -20,9 +20,6 @@ struct PenumbraSettings {
     int passes = 6;
     /// The standard-flooding reference: 2^passes - 1 passes of step 1 (same reach).
     bool standardFlooding = false;
-    /// Silhouette depth-jump threshold in world units along the light's normal, on top of the
-    /// slope allowance (shaders/silhouette.frag.glsl); 0 = 0.1% of the scene's bounding radius.
-    float silhouetteThreshold = 0.0f;
 };
 
 /// The flood plan for a size x size shadow map. Throws std::invalid_argument when passes is
