@@ -27,12 +27,8 @@ TEST(ShadowStats, PercentileIsNearestRank) {
 
 TEST(ShadowStats, SummaryOverReceiversOnly) {
     // Four receivers at depths 1..4 with footprints 8, 6, 2, 1; two background pixels.
-    const FloatImage d = image({{8, 1, 1, 1},
-                                {0, 0, 1, 1},
-                                {6, 2, 0, 1},
-                                {2, 3, 0, 0},
-                                {0, 0, 1, 0},
-                                {1, 4, 1, 1}});
+    const FloatImage d =
+        image({{8, 1, 1, 1}, {0, 0, 1, 1}, {6, 2, 0, 1}, {2, 3, 0, 0}, {0, 0, 1, 0}, {1, 4, 1, 1}});
     const ShadowMapStats s = summarizeShadowDiagnostics(d);
     EXPECT_EQ(s.receivers, 4u);
     EXPECT_EQ(s.footprint.median, 2.0); // nearest rank of {1, 2, 6, 8} at 50%
