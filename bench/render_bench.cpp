@@ -19,6 +19,7 @@
 #include <iostream>
 #include <map>
 #include <optional>
+#include <set>
 #include <sys/resource.h>
 
 namespace {
@@ -36,12 +37,10 @@ int main(int argc, char** argv) {
                  "peak RSS"};
     std::string scenePath;
     std::size_t triangles = 0;
-    int width = 512, height = 512, shadowMap = 1024, frames = 20, warmup = 3, passes = 6;
+    int width = 512, height = 512, shadowMap = 1024, frames = 20, warmup = 3;
     std::string method = "hard";
     std::optional<float> lightRadius;
     std::string shaderDir;
-    bool noObjectIdFix = false, noMidpointFix = false;
-    std::string pcssPreset = "16/24";
     app.add_option("--scene", scenePath, "glTF scene (default: generated, see --triangles)");
     app.add_option("--triangles", triangles,
                    "Generate the default-style scene with this many triangles");
@@ -54,17 +53,19 @@ int main(int argc, char** argv) {
     app.add_option("--warmup", warmup)->check(CLI::Range(0, 1000))->capture_default_str();
     app.add_option("--method", method, "Shadow method (" + fl::methodNames() + ")")
         ->capture_default_str();
-    app.add_option("--jfa-passes", passes, "Flooding passes of jfa-l/jfa-e (flood-*: 2^N - 1)")
-        ->check(CLI::Range(1, 13))
-        ->capture_default_str();
     app.add_option("--light-radius", lightRadius, "Disk light radius (default: the scene's)");
-    app.add_flag("--no-object-id-fix", noObjectIdFix,
-                 "jfa-e/flood-e: first jump-too-far fix off (to time what it costs)");
-    app.add_flag("--no-midpoint-fix", noMidpointFix,
-                 "jfa-e/flood-e: second jump-too-far fix off (to time what it costs)");
-    app.add_option("--pcss-preset", pcssPreset, "pcss: blocker-search/filter samples")
-        ->check(CLI::IsMember({"16/16", "16/24", "32/64"}))
-        ->capture_default_str();
+    // Every method option of the table (--jfa-passes, --flood-region, --pcss-preset, ...), as the
+    // app registers them; values are checked by the table's own rules.
+    std::map<std::string, std::string> optionText;
+    std::map<std::string, bool> optionFlags;
+    for (const fl::MethodOption* o : fl::allMethodOptions()) {
+        const std::string flag(o->flag), help(o->help);
+        if (o->kind == fl::OptionKind::Flag)
+            app.add_flag(flag, optionFlags[flag], help);
+        else
+            app.add_option(flag, optionText[flag],
+                           help + " (default " + std::string(o->defaultValue) + ")");
+    }
     app.add_option("--shader-dir", shaderDir,
                    "Load shaders from this folder instead of the binary (to time shader edits)");
     CLI11_PARSE(app, argc, argv);
@@ -88,28 +89,45 @@ int main(int argc, char** argv) {
         fl::RenderSettings settings;
         settings.shadow.size = shadowMap;
         settings.method = method;
-        settings.options.set(fl::floodPassesOption().flag, passes);
-        settings.options.set("--no-object-id-fix", noObjectIdFix);
-        settings.options.set("--no-midpoint-fix", noMidpointFix);
-        settings.options.set("--pcss-preset", pcssPreset);
+        for (const auto& [flag, value] : optionText)
+            if (!app.get_option(flag)->empty()) settings.options.set(flag, value);
+        for (const auto& [flag, on] : optionFlags)
+            if (on) settings.options.set(flag, true);
+        for (const fl::MethodOption* o : fl::allMethodOptions())
+            if (settings.options.has(o->flag)) (void)settings.options.text(*o); // validates
         fl::Renderer renderer(shaders, scene, settings);
         renderer.resize(width, height);
         const fl::CameraView cam =
             fl::makeCameraView(scene, {}, static_cast<float>(width) / static_cast<float>(height));
         std::map<std::string, std::vector<double>> passMs;
-        std::vector<double> frameMs;
+        std::vector<double> frameMs, activeShare;
+        std::set<int> passCounts;
         for (int i = 0; i < warmup + frames; ++i) {
             renderer.render(cam);
             if (i < warmup) continue;
             frameMs.push_back(renderer.timer().frameMs());
+            if (const fl::FloodFrame* f = renderer.flood()) {
+                passCounts.insert(f->passes);
+                if (f->kernel) activeShare.push_back(f->kernel->activeShare());
+            }
             for (const fl::gl::PassTime& p : renderer.timer().passes())
                 passMs[p.name].push_back(p.ms);
         }
         std::cout << "context: " << ctx->description() << "\n"
                   << "scene: " << scene.source << ", " << scene.triangleCount() << " triangles\n"
-                  << "method: " << method << ", " << passes << " passes, light radius "
-                  << (scene.light ? scene.light->radius : 0.0f) << "\n"
-                  << "frame " << width << "x" << height << ", shadow map " << shadowMap << "^2, "
+                  << "method: " << method << ", light radius "
+                  << (scene.light ? scene.light->radius : 0.0f) << "\n";
+        for (const auto& [flag, value] : settings.options.values())
+            std::cout << "  " << flag << " " << value << "\n";
+        if (!passCounts.empty()) {
+            std::cout << "flood passes:";
+            for (int p : passCounts) std::cout << " " << p;
+            std::cout << "\n";
+        }
+        if (!activeShare.empty())
+            std::cout << "active share: min " << fl::minimum(activeShare) << " median "
+                      << fl::median(activeShare) << "\n";
+        std::cout << "frame " << width << "x" << height << ", shadow map " << shadowMap << "^2, "
                   << frames << " frames after " << warmup
                   << " warm-up, timing: " << renderer.timer().modeName() << "\n"
                   << std::fixed << std::setprecision(2);

@@ -41,3 +41,39 @@ float occluderIntensity(vec3 p, vec3 o, bool insideHardShadow) {
     float seg = segmentFraction(sqrt(d2) / uDiskRadius);
     return insideHardShadow ? seg : 1.0 - seg;
 }
+
+// The penumbra bound of band-limited flooding: fl::penumbraReachRect on the CPU
+// (renderer/soft/PenumbraReach.h explains the geometry), in float. Both are conservative.
+uniform int uReachEnabled;
+uniform mat4 uReachMatrix; // world -> the flooded grid's clip space
+uniform ivec2 uReachSize;
+uniform float uReachFarDepth;
+const int kJfaUnboundedReach = 0x3fffffff;
+const ivec4 kJfaUnboundedRect = ivec4(-kJfaUnboundedReach, -kJfaUnboundedReach,
+                                      kJfaUnboundedReach, kJfaUnboundedReach);
+
+// Texels x0..x1 (.x, .z), y0..y1 (.y, .w) that can take occluder o.
+ivec4 penumbraRect(vec3 o) {
+    if (uReachEnabled == 0) return kJfaUnboundedRect;
+    vec3 n = uDiskNormal;
+    float depth = abs(dot(o - uDiskCenter, n));
+    if (!(depth > 1e-6)) return kJfaUnboundedRect;
+    float t = max((uReachFarDepth - depth) / depth, 0.0) * 1.01 + 1e-3;
+    vec3 capCenter = o + t * (o - uDiskCenter);
+    float capRadius = t * uDiskRadius * 1.01;
+    vec3 a = abs(n.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0);
+    vec3 u = normalize(cross(n, a)) * capRadius;
+    vec3 w = cross(normalize(n), normalize(u)) * capRadius;
+    vec2 lo = vec2(1e30), hi = vec2(-1e30);
+    bool front = true;
+    for (int i = 0; i < 5; ++i) {
+        vec3 q = i == 4 ? o : capCenter + ((i & 1) != 0 ? -u : u) + ((i & 2) != 0 ? -w : w);
+        vec4 c = uReachMatrix * vec4(q, 1.0);
+        front = front && c.w > 1e-6;
+        vec2 texel = (c.xy / c.w * 0.5 + 0.5) * vec2(uReachSize);
+        lo = min(lo, texel);
+        hi = max(hi, texel);
+    }
+    if (!front || !(hi.x - lo.x < 1e9 && hi.y - lo.y < 1e9)) return kJfaUnboundedRect;
+    return ivec4(ivec2(floor(lo)) - 2, ivec2(floor(hi)) + 2);
+}

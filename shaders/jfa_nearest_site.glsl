@@ -10,6 +10,9 @@ bool jfaEmpty(vec4 c) { return c.z < 0.0; }
 // Every site is a candidate everywhere.
 bool jfaAccept(ivec2 p, vec4 c) { return true; }
 
+// So only the plan bounds how far a site spreads (band-limited flooding, jfa/Band.h).
+ivec4 jfaSeedRect(ivec2 p, vec4 c) { return ivec4(-0x3fffffff, -0x3fffffff, 0x3fffffff, 0x3fffffff); }
+
 // The full-resolution pixel the site was seeded at, floor(v + 0.5) per coordinate, computed
 // exactly (NearestSite::seedPixel on the CPU).
 ivec2 jfaSeedPixel(vec4 c) {

@@ -1,6 +1,8 @@
 #version 450 core
 // Jump-flooding kernel, compute version: the same passes as jfa_pass.frag.glsl, one invocation
-// per texel, written with imageStore.
+// per texel, written with imageStore. Built with JFA_BAND it runs over a tile list
+// (jfa_band_compact.comp.glsl) by an indirect dispatch: group x = the list entry, group y = the
+// 8x8 block within the tile.
 #include "jfa_select.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -16,8 +18,21 @@ uniform int uMode;
 uniform int uCountChanges;
 layout(binding = 0, offset = 0) uniform atomic_uint uChanged;
 
+#ifdef JFA_BAND
+layout(std430, binding = 4) readonly buffer TileList { uint tiles[]; };
+uniform int uTile;
+#endif
+
 void main() {
+#ifdef JFA_BAND
+    uint entry = tiles[gl_WorkGroupID.x];
+    int blocks = uTile / 8;
+    ivec2 block = ivec2(int(gl_WorkGroupID.y) % blocks, int(gl_WorkGroupID.y) / blocks);
+    ivec2 t = ivec2(int(entry & 0xffffu), int(entry >> 16)) * uTile + block * 8 +
+              ivec2(gl_LocalInvocationID.xy);
+#else
     ivec2 t = ivec2(gl_GlobalInvocationID.xy);
+#endif
     if (any(greaterThanEqual(t, uSize))) return;
     vec4 before;
     vec4 result = jfaTexel(uSrc, uSeeds, t, uSize, uSrcSize, uStep, uScale, uMode, before);

@@ -21,9 +21,21 @@ float penumbraKey(vec3 receiver, vec3 o) {
     return o == receiver ? uintBitsToFloat(0x7f7fffffu) : penumbraHit(receiver, o);
 }
 
+// Band-limited flooding (jfa/Band.h): the widest penumbra the occluder can cast on the map.
+ivec4 jfaSeedRect(ivec2 p, vec4 c) { return penumbraRect(c.xyz); }
+
 bool jfaAccept(ivec2 p, vec4 c) {
     vec4 receiver = texelFetch(uPenumbraPositions, p, 0);
     return receiver.w != 0.0 && penumbraKey(receiver.xyz, c.xyz) >= 0.0;
+}
+
+// The keyed form (jfa_select.glsl): one receiver fetch per texel, one penumbraHit per candidate.
+vec4 jfaContext(ivec2 p) { return texelFetch(uPenumbraPositions, p, 0); }
+float jfaKey(ivec2 p, vec4 receiver, vec4 c) {
+    return receiver.w != 0.0 ? penumbraKey(receiver.xyz, c.xyz) : -1.0;
+}
+bool jfaTieWins(vec4 a, vec4 b) {
+    return a.x < b.x || (a.x == b.x && (a.y < b.y || (a.y == b.y && a.z < b.z)));
 }
 
 bool jfaBetter(ivec2 p, vec4 a, vec4 b) {

@@ -11,6 +11,18 @@ ivec2 jfaSeedPixel(vec4 c);
 
 const vec4 kJfaEmptyCell = vec4(0.0, 0.0, -1.0, 0.0);
 
+#ifdef JFA_KEYED
+// Keyed criteria (the kernel defines JFA_KEYED for them) rank by a key computed once per
+// candidate instead of twice per comparison: jfaKey(p, ctx, c) < 0 where jfaAccept(p, c) is
+// false, else the ranking key, smaller better, equal keys to jfaTieWins. It must hold that
+// jfaBetter(p, a, b) == (key(a) < key(b) || (key(a) == key(b) && jfaTieWins(a, b))), so the
+// pass selects exactly what the accept/better form (and the CPU kernel) selects. `ctx` is what
+// the criterion reads at p itself (jfaContext), fetched once per texel rather than per call.
+vec4 jfaContext(ivec2 p);
+float jfaKey(ivec2 p, vec4 ctx, vec4 c);
+bool jfaTieWins(vec4 a, vec4 b);
+#endif
+
 // `scale`: 1 at full resolution, 2 in the half-resolution stage (texel t stands for grid
 // point t * 2, whose distances are measured in full-resolution coordinates).
 // Expansion (thesis §4.3.2): full-resolution texel q takes the half-resolution cell r = q / 2,
@@ -53,6 +65,23 @@ vec4 jfaSelect(sampler2D src, sampler2D seeds, ivec2 t, ivec2 size, int step, in
     // Clamped reads plus an "inside" flag instead of skipping: branch-light code runs much
     // faster on SIMD rasterisers (llvmpipe), and an outside candidate still never wins.
     ivec2 hi = size - 1;
+#ifdef JFA_KEYED
+    vec4 ctx = jfaContext(p);
+    float bestKey = 0.0;
+    for (int j = -1; j <= 1; ++j) {
+        for (int i = -1; i <= 1; ++i) {
+            ivec2 q = t + ivec2(i, j) * step;
+            ivec2 qc = clamp(q, ivec2(0), hi);
+            vec4 c = jfaCandidate(src, seeds, qc, size);
+            float k = q == qc && !jfaEmpty(c) ? jfaKey(p, ctx, c) : -1.0;
+            bool take = k >= 0.0 && (!have || k < bestKey || (k == bestKey && jfaTieWins(c, best)));
+            best = take ? c : best;
+            bestKey = take ? k : bestKey;
+            have = have || take;
+        }
+    }
+    return best;
+#endif
     for (int j = -1; j <= 1; ++j) {
         for (int i = -1; i <= 1; ++i) {
             ivec2 q = t + ivec2(i, j) * step;

@@ -25,6 +25,10 @@ bool jfaEmpty(vec4 c) { return c.w == 0.0; }
 // Occluders are not sites at pixels: the half-resolution expansion copies them verbatim.
 ivec2 jfaSeedPixel(vec4 c) { return ivec2(-1); }
 
+// Band-limited flooding (jfa/Band.h): the widest penumbra the occluder can cast in the image
+// (it was seeded at its boundary pixel p).
+ivec4 jfaSeedRect(ivec2 p, vec4 c) { return penumbraRect(c.xyz); }
+
 bool jfaAccept(ivec2 p, vec4 c) {
     vec4 r = texelFetch(uEyePoints, p, 0);
     ivec2 size = textureSize(uEyePoints, 0);
@@ -38,6 +42,29 @@ bool jfaAccept(ivec2 p, vec4 c) {
         ok = m.w >= 0.0 && penumbraHit(m.xyz, c.xyz) >= 0.0;
     }
     return ok;
+}
+
+// The keyed form (jfa_select.glsl): jfaAccept's tests, then penumbraHit once as the key.
+vec4 jfaContext(ivec2 p) { return texelFetch(uEyePoints, p, 0); }
+float jfaKey(ivec2 p, vec4 r, vec4 c) {
+    float k = r.w >= 0.0 ? penumbraHit(r.xyz, c.xyz) : -1.0;
+    bool ok = k >= 0.0;
+    if (ok && (uObjectIdFix != 0 || uMidpointFix != 0)) {
+        ivec2 size = textureSize(uEyePoints, 0);
+        int index = int(c.w) - 1;
+        ivec2 s = ivec2(index % size.x, index / size.x);
+        if (uObjectIdFix != 0 && r.w == 1.0)
+            ok = texelFetch(uEyeOccluders, p, 0).w == texelFetch(uEyeOccluders, s, 0).w;
+        if (ok && uMidpointFix != 0) {
+            vec4 m = texelFetch(uEyePoints, (p + s) / 2, 0);
+            ok = m.w >= 0.0 && penumbraHit(m.xyz, c.xyz) >= 0.0;
+        }
+    }
+    return ok ? k : -1.0;
+}
+bool jfaTieWins(vec4 a, vec4 b) {
+    return a.x < b.x ||
+           (a.x == b.x && (a.y < b.y || (a.y == b.y && (a.z < b.z || (a.z == b.z && a.w < b.w)))));
 }
 
 bool jfaBetter(ivec2 p, vec4 a, vec4 b) {

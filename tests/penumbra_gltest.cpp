@@ -38,47 +38,67 @@ TEST_F(PenumbraTest, SilhouettesAndFloodMatchTheCpuReference) {
     const SceneView s = spotLitBox(); // a box on a ground plane under a large disk light
     const gl::ShaderLibrary shaders;
     // Both providers: the flood runs in shadow-map space, whichever warp made it.
-    for (ShadowMapProvider provider : {ShadowMapProvider::Uniform, ShadowMapProvider::Tsm})
-        for (const MethodDescriptor* d : floodingMethods(MethodSpace::Light)) { // jfa-l, flood-l
-            const std::string_view method = d->name;
-            RenderSettings settings;
-            settings.shadow.size = 128;
-            settings.shadow.provider = provider;
-            settings.method = std::string(method);
-            settings.options.set(floodPassesOption().flag, 4);
-            Renderer r(shaders, s.scene, settings);
-            r.resize(64, 64);
-            r.render(s.camera);
-            const FloodFrame* flood = r.flood();
-            ASSERT_NE(flood, nullptr);
-            ASSERT_NE(flood->flooded, nullptr);
-            ASSERT_NE(flood->seeds, nullptr);
-            EXPECT_FALSE(flood->eye);
-            EXPECT_EQ(flood->passes, 4);
-            EXPECT_EQ(flood->standardFlooding, isStandardFlooding(*d)) << method;
-            const ReceiverGrid receivers = readReceivers(*r.shadow()->receivers);
-            const jfa::Grid gpuSeeds = jfa::readGrid(*flood->seeds);
-            const float threshold = 0.001f * s.scene.bounds.radius();
-            const jfa::Grid cpuSeeds = silhouetteSeeds(receivers, r.disk(), threshold);
-            ASSERT_EQ(gpuSeeds, cpuSeeds) << "silhouette seeds differ";
-            EXPECT_GT(nonEmpty(cpuSeeds), 50u) << "the box must have a silhouette";
+    // Band-limited and full-grid floods (jfa/Band.h) must both equal the CPU's full flood.
+    for (const char* region : {"band", "full"})
+        for (ShadowMapProvider provider : {ShadowMapProvider::Uniform, ShadowMapProvider::Tsm})
+            for (const MethodDescriptor* d :
+                 floodingMethods(MethodSpace::Light)) { // jfa-l, flood-l
+                const std::string_view method = d->name;
+                RenderSettings settings;
+                settings.shadow.size = 128;
+                settings.shadow.provider = provider;
+                settings.method = std::string(method);
+                settings.options.set(floodPassesOption().flag, 4);
+                settings.options.set(floodRegionOption().flag, region);
+                Renderer r(shaders, s.scene, settings);
+                r.resize(64, 64);
+                r.render(s.camera);
+                const FloodFrame* flood = r.flood();
+                ASSERT_NE(flood, nullptr);
+                ASSERT_NE(flood->flooded, nullptr);
+                ASSERT_NE(flood->seeds, nullptr);
+                EXPECT_FALSE(flood->eye);
+                EXPECT_EQ(flood->passes, 4);
+                EXPECT_EQ(flood->standardFlooding, isStandardFlooding(*d)) << method;
+                const ReceiverGrid receivers = readReceivers(*r.shadow()->receivers);
+                const jfa::Grid gpuSeeds = jfa::readGrid(*flood->seeds);
+                const float threshold = 0.001f * s.scene.bounds.radius();
+                const jfa::Grid cpuSeeds = silhouetteSeeds(receivers, r.disk(), threshold);
+                ASSERT_EQ(gpuSeeds, cpuSeeds) << "silhouette seeds differ";
+                EXPECT_GT(nonEmpty(cpuSeeds), 50u) << "the box must have a silhouette";
 
-            PenumbraCriterion criterion;
-            criterion.light = r.disk();
-            criterion.receivers = &receivers;
-            PenumbraSettings ps;
-            ps.passes = 4;
-            ps.standardFlooding = isStandardFlooding(*d);
-            const jfa::Grid cpuMap = jfa::flood(penumbraPlan(ps, 128), cpuSeeds, criterion);
-            const jfa::Grid gpuMap = jfa::readGrid(*flood->flooded);
-            std::size_t differ = 0;
-            for (std::size_t i = 0; i < cpuMap.cells.size(); ++i)
-                differ += !(cpuMap.cells[i] == gpuMap.cells[i]);
-            EXPECT_EQ(differ, 0u) << method << " on " << providerName(provider);
-            EXPECT_GT(nonEmpty(cpuMap), nonEmpty(cpuSeeds)) << "the flood must spread occluders";
-            std::printf("%s: %zu seeds, %zu penumbra-map texels\n", std::string(method).c_str(),
-                        nonEmpty(cpuSeeds), nonEmpty(cpuMap));
-        }
+                PenumbraCriterion criterion;
+                criterion.light = r.disk();
+                criterion.receivers = &receivers;
+                PenumbraSettings ps;
+                ps.passes = 4;
+                ps.standardFlooding = isStandardFlooding(*d);
+                const jfa::Grid cpuMap = jfa::flood(penumbraPlan(ps, 128), cpuSeeds, criterion);
+                const jfa::Grid gpuMap = jfa::readGrid(*flood->flooded);
+                std::size_t differ = 0;
+                for (std::size_t i = 0; i < cpuMap.cells.size(); ++i)
+                    differ += !(cpuMap.cells[i] == gpuMap.cells[i]);
+                EXPECT_EQ(differ, 0u)
+                    << method << " on " << providerName(provider) << ", " << region;
+                // The CPU's band-limited flood (the GL band's reference) is the same grid too, and
+                // the band leaves texels out.
+                criterion.reachBound = flood->reach;
+                jfa::FloodOptions banded;
+                banded.region = jfa::FloodRegion::Band;
+                const jfa::FloodResult cpuBand =
+                    jfa::floodWithStats(penumbraPlan(ps, 128), cpuSeeds, criterion, banded);
+                EXPECT_EQ(cpuBand.grid, cpuMap) << method << " on " << providerName(provider);
+                EXPECT_LT(cpuBand.activeShare, 1.0) << method << " on " << providerName(provider);
+                if (std::string_view(region) == "band") {
+                    ASSERT_NE(flood->kernel, nullptr);
+                    EXPECT_TRUE(flood->kernel->lastRunBanded());
+                    EXPECT_LT(flood->kernel->activeShare(), 1.0);
+                }
+                EXPECT_GT(nonEmpty(cpuMap), nonEmpty(cpuSeeds))
+                    << "the flood must spread occluders";
+                std::printf("%s: %zu seeds, %zu penumbra-map texels\n", std::string(method).c_str(),
+                            nonEmpty(cpuSeeds), nonEmpty(cpuMap));
+            }
 }
 
 // The default scene's light (radius 0.3, 24 units away) casts penumbrae of only a few

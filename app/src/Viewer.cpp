@@ -295,9 +295,10 @@ void Viewer::renderFrame(glm::ivec2 size, float dt) {
         fpsRows_ += std::to_string(rendered_) + "," + s.method + "," +
                     std::string(providerName(s.shadow.provider)) + "," +
                     std::to_string(s.shadow.size) + "," +
-                    std::to_string(s.options.integer(floodPassesOption())) + "," +
-                    std::string(overlayName(overlayMode_)) + "," + std::to_string(size.x) + "," +
-                    std::to_string(size.y) + "," + std::to_string(renderMs) + "," +
+                    (renderer_->flood() ? std::to_string(renderer_->flood()->passes)
+                                        : s.options.text(floodPassesOption())) +
+                    "," + std::string(overlayName(overlayMode_)) + "," + std::to_string(size.x) +
+                    "," + std::to_string(size.y) + "," + std::to_string(renderMs) + "," +
                     std::to_string((end - start) * 1000.0) + "," + (statsFrame ? "1" : "0") + "\n";
     }
 }

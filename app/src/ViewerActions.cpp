@@ -68,20 +68,29 @@ void Viewer::act(Action a) {
         break;
     case Action::ShadowMapSmaller:
         s.shadow.size = std::max(256, s.shadow.size / 2);
-        s.options.set(floodPassesOption().flag,
-                      std::min(s.options.integer(floodPassesOption()), log2Floor(s.shadow.size)));
+        if (s.options.integer(floodPassesOption()) != kAutoPasses) // auto adapts by itself
+            s.options.set(floodPassesOption().flag, std::min(s.options.integer(floodPassesOption()),
+                                                             log2Floor(s.shadow.size)));
         break;
     case Action::ShadowMapLarger:
         s.shadow.size = std::min(4096, s.shadow.size * 2);
         break;
-    case Action::FewerPasses:
-        s.options.set(floodPassesOption().flag,
-                      std::max(1, s.options.integer(floodPassesOption()) - 1));
+    case Action::FewerPasses: {
+        // From auto, one fewer than the passes auto chose last frame.
+        int now = s.options.integer(floodPassesOption());
+        if (now == kAutoPasses) now = renderer_->flood() ? renderer_->flood()->passes : maxPasses;
+        s.options.set(floodPassesOption().flag, std::max(1, now - 1));
         break;
-    case Action::MorePasses:
-        s.options.set(floodPassesOption().flag,
-                      std::min(maxPasses, s.options.integer(floodPassesOption()) + 1));
+    }
+    case Action::MorePasses: {
+        // Past the most the map allows comes auto again.
+        const int now = s.options.integer(floodPassesOption());
+        if (now == kAutoPasses || now >= maxPasses)
+            s.options.set(floodPassesOption().flag, std::string(floodPassesOption().word));
+        else
+            s.options.set(floodPassesOption().flag, now + 1);
         break;
+    }
     case Action::NextVariant: {
         const auto n = static_cast<int>(OverlayRenderer::variantNames().size());
         if (n > 0) overlayControls_.variant = (overlayControls_.variant + 1) % n;
@@ -145,8 +154,7 @@ void Viewer::act(Action a) {
     }
     renderer_->setSettings(s);
     std::cout << "method " << s.method << ", shadow map " << providerName(s.shadow.provider) << " "
-              << s.shadow.size << "^2, JFA passes " << s.options.integer(floodPassesOption())
-              << "\n";
+              << s.shadow.size << "^2, JFA passes " << s.options.text(floodPassesOption()) << "\n";
 }
 
 void Viewer::moveLight(float dAzimuth, float dElevation) {
@@ -218,9 +226,13 @@ std::vector<std::string> Viewer::hudLines(const std::vector<std::string>& overla
     std::vector<std::string> lines;
     // The passes line shows the passes the flood ran (--full-jfa resolves them per frame).
     const FloodFrame* flood = renderer_->flood();
-    const std::string passes =
-        flood ? "   JFA passes " + std::to_string(flood->passes)
-              : "   JFA passes " + std::to_string(s.options.integer(floodPassesOption()));
+    const bool autoPasses = s.options.integer(floodPassesOption()) == kAutoPasses;
+    std::string passes = "   JFA passes " + (flood ? std::to_string(flood->passes)
+                                                   : s.options.text(floodPassesOption()));
+    if (flood && autoPasses) passes += " (auto)";
+    if (flood && flood->kernel && flood->kernel->lastRunBanded())
+        passes += "   band " + std::to_string(int(flood->kernel->activeShare() * 100.0 + 0.5)) +
+                  "% of texels";
     lines.push_back("method " + s.method + " (" +
                     std::to_string(indexOf(std::span<const std::string>(methods), s.method) + 1) +
                     "/" + std::to_string(methods.size()) + ")   shadow map " +

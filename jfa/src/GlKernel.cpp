@@ -38,9 +38,10 @@ Grid readGrid(const gl::Texture& texture) {
 namespace {
 
 gl::Program buildKernel(const gl::ShaderLibrary& shaders, const std::string& criterionFile,
-                        GlKernelKind kind, bool expand) {
-    const std::vector<std::string> defines =
-        expand ? std::vector<std::string>{"JFA_EXPAND"} : std::vector<std::string>{};
+                        GlKernelKind kind, bool expand, bool keyed) {
+    std::vector<std::string> defines;
+    if (expand) defines.emplace_back("JFA_EXPAND");
+    if (keyed) defines.emplace_back("JFA_KEYED");
     if (kind == GlKernelKind::Fragment)
         return gl::Program::build(shaders,
                                   {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
@@ -55,9 +56,11 @@ gl::Program buildKernel(const gl::ShaderLibrary& shaders, const std::string& cri
 } // namespace
 
 GlFloodKernelBase::GlFloodKernelBase(const gl::ShaderLibrary& shaders,
-                                     const std::string& criterionFile, GlKernelKind kind)
-    : passProgram_(buildKernel(shaders, criterionFile, kind, false)),
-      expandProgram_(buildKernel(shaders, criterionFile, kind, true)), kind_(kind),
+                                     const std::string& criterionFile, GlKernelKind kind,
+                                     bool keyed)
+    : passProgram_(buildKernel(shaders, criterionFile, kind, false, keyed)),
+      expandProgram_(buildKernel(shaders, criterionFile, kind, true, keyed)), shaders_(shaders),
+      criterionFile_(criterionFile), keyed_(keyed), kind_(kind),
       emptyVao_(gl::VertexArray::create()),
       changedCounter_(sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT) {}
 
@@ -76,8 +79,11 @@ const gl::Texture& GlFloodKernelBase::otherTexture(int width, int height,
 
 void GlFloodKernelBase::dispatch(const gl::Texture& src, const gl::Texture& seeds,
                                  const gl::Texture& dst, GlDispatch what, int step, int scale,
-                                 bool countChanges) {
-    const gl::Program& p = what == GlDispatch::ExpandThenPass ? expandProgram_ : passProgram_;
+                                 bool countChanges, int bandStage) {
+    const bool banded = bandStage >= 0 && what != GlDispatch::Downsample;
+    const bool expand = what == GlDispatch::ExpandThenPass;
+    const gl::Program& p = banded ? (expand ? bandExpandProgram_ : bandPassProgram_)
+                                  : (expand ? expandProgram_ : passProgram_);
     p.set("uSize", glm::ivec2(dst.width(), dst.height()));
     p.set("uSrcSize", glm::ivec2(src.width(), src.height()));
     p.set("uStep", step);
@@ -87,11 +93,22 @@ void GlFloodKernelBase::dispatch(const gl::Texture& src, const gl::Texture& seed
     glBindTextureUnit(0, src.id());
     glBindTextureUnit(1, seeds.id());
     glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, 0, changedCounter_.id());
+    if (banded) {
+        p.set("uTile", tile_);
+        const StageBand& band = stageBands_[bandStage];
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, band.tiles.id());
+        glBindBuffer(kind_ == GlKernelKind::Compute ? GL_DISPATCH_INDIRECT_BUFFER
+                                                    : GL_DRAW_INDIRECT_BUFFER,
+                     band.commands.id());
+    }
     glUseProgram(p.id());
     if (kind_ == GlKernelKind::Compute) {
         glBindImageTexture(0, dst.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-        glDispatchCompute(static_cast<GLuint>((dst.width() + 7) / 8),
-                          static_cast<GLuint>((dst.height() + 7) / 8), 1);
+        if (banded)
+            glDispatchComputeIndirect(0);
+        else
+            glDispatchCompute(static_cast<GLuint>((dst.width() + 7) / 8),
+                              static_cast<GLuint>((dst.height() + 7) / 8), 1);
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_ATOMIC_COUNTER_BARRIER_BIT |
                         GL_BUFFER_UPDATE_BARRIER_BIT);
         glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
@@ -103,7 +120,11 @@ void GlFloodKernelBase::dispatch(const gl::Texture& src, const gl::Texture& seed
         glDisable(GL_DEPTH_TEST);
         glDisable(GL_BLEND);
         glBindVertexArray(emptyVao_.id());
-        glDrawArrays(GL_TRIANGLES, 0, 3);
+        if (banded) // DrawArraysIndirectCommand at uint 4 of the commands
+            glDrawArraysIndirect(GL_TRIANGLES,
+                                 reinterpret_cast<const void*>(4 * sizeof(GLuint))); // NOLINT
+        else
+            glDrawArrays(GL_TRIANGLES, 0, 3);
         glBindVertexArray(0);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glMemoryBarrier(GL_ATOMIC_COUNTER_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
@@ -111,6 +132,11 @@ void GlFloodKernelBase::dispatch(const gl::Texture& src, const gl::Texture& seed
     glUseProgram(0);
     glBindTextureUnit(0, 0);
     glBindTextureUnit(1, 0);
+    if (banded) {
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, 0);
+        glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+        glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+    }
 }
 
 const gl::Texture& GlFloodKernelBase::runPlan(const Plan& plan, const gl::Texture& seeds,
@@ -130,12 +156,14 @@ const gl::Texture& GlFloodKernelBase::runPlan(const Plan& plan, const gl::Textur
         throw std::invalid_argument("jfa: GL kernels run plans of at most two stages, got " +
                                     std::to_string(stages.size()));
     const bool halfRes = stages.size() > 1;
+    lastRunBanded_ = region_ == FloodRegion::Band && buildBand(plan, seeds);
+    measuredSeeds_ = 0; // step A is consumed: the next frame's seeds may reuse the texture
     const gl::Texture* current = &seeds;
     if (halfRes) {
         const Stage& s0 = stages.front();
         const gl::Texture& dst = otherTexture(s0.width, s0.height, nullptr);
         if (timer) timer->begin("downsample");
-        dispatch(seeds, seeds, dst, GlDispatch::Downsample, 0, 2, false);
+        dispatch(seeds, seeds, dst, GlDispatch::Downsample, 0, 2, false, -1);
         if (timer) timer->end();
         current = &dst;
     }
@@ -159,7 +187,9 @@ const gl::Texture& GlFloodKernelBase::runPlan(const Plan& plan, const gl::Textur
             glNamedBufferSubData(changedCounter_.id(), 0, sizeof(zero), &zero);
         }
         if (timer) timer->begin("jfa step");
-        dispatch(*current, seeds, dst, what, pass.step, scale, pass.untilUnchanged);
+        const int stage = halfRes && !expanded ? 0 : (halfRes ? 1 : 0);
+        dispatch(*current, seeds, dst, what, pass.step, scale, pass.untilUnchanged,
+                 lastRunBanded_ ? stage : -1);
         if (timer) timer->end();
         ++passesRun_;
         if (pass.untilUnchanged) {

@@ -39,11 +39,15 @@
 //    are not run and not reported; later stages still run.
 //  * Result: the full-resolution grid after the last pass run (the seeded grid if the plan has
 //    no passes at all; a stage after the first always has at least one pass).
+//  * Region (FloodOptions::region, jfa/Band.h). With FloodRegion::Band a pass computes only the
+//    texels of the band's tiles (at a reduced-resolution stage: texels whose grid point lies in
+//    one) and writes kEmptyCell elsewhere; the result is identical to the full grid's.
 //  * Threads. Each pass splits the stage's rows into min(threads, rows) contiguous bands, one per
 //    thread; every texel depends only on the previous grid, so results are identical for every
 //    thread count.
 
 #include <base/Parallel.h>
+#include <jfa/Band.h>
 #include <jfa/Grid.h>
 #include <jfa/Plan.h>
 
@@ -52,6 +56,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -69,6 +74,9 @@ struct FloodOptions {
     /// Called on the calling thread after every pass that runs, with the pass' index in
     /// plan.passes(), the pass and the grid it wrote (valid only during the call).
     std::function<void(int passIndex, const Pass& pass, const Grid& after)> onPass;
+    /// Band: compute only the texels the seeds can reach (jfa/Band.h); Full: every texel.
+    FloodRegion region = FloodRegion::Full;
+    int bandTile = kDefaultBandTile;
 };
 
 /// What one executed pass did.
@@ -85,6 +93,8 @@ struct FloodResult {
     /// Number of passes actually run (less than plan.passCount() if an until-unchanged stage
     /// stopped early).
     [[nodiscard]] int passesRun() const { return static_cast<int>(passes.size()); }
+    /// Share of the full-resolution grid the passes computed (1 for FloodRegion::Full).
+    double activeShare = 1.0;
 };
 
 // The thread fan-out is base/Parallel.h, shared with every CPU path.
@@ -179,15 +189,17 @@ Grid expandStage(const Grid& prev, int width, int height, int prevScale, const G
 
 /// Runs one pass of step `step` from `src` into `dst` (resized to src's size; must not be src)
 /// for a stage at `scale`; returns the number of changed texels (compared with src).
+/// With `band` (not full), only texels whose grid point lies in the band are computed; the others
+/// get kEmptyCell (jfa/Band.h says why that is exact).
 template <Criterion C>
 std::int64_t runPass(const Grid& src, Grid& dst, int step, int scale, const C& criterion,
-                     int threads) {
+                     int threads, const Band* band = nullptr) {
     const int w = src.width, h = src.height;
     dst.width = w;
     dst.height = h;
     dst.cells.resize(src.cells.size());
     std::vector<std::int64_t> changedPerBand(static_cast<std::size_t>(bandCount(h, threads)), 0);
-    parallelRows(h, threads, [&](int rowBegin, int rowEnd, int band) {
+    parallelRows(h, threads, [&](int rowBegin, int rowEnd, int part) {
         std::int64_t changed = 0;
         for (int y = rowBegin; y < rowEnd; ++y) {
             const int py = y * scale;
@@ -200,6 +212,11 @@ std::int64_t runPass(const Grid& src, Grid& dst, int step, int scale, const C& c
             if (step < h - y) rows[rowCount++] = own + std::size_t(step) * std::size_t(w);
             for (int x = 0; x < w; ++x) {
                 const int px = x * scale;
+                if (band != nullptr && !band->covers(px, py)) {
+                    if (!criterion.empty(own[x])) ++changed; // cannot happen: see jfa/Band.h
+                    dst.cells[std::size_t(y) * std::size_t(w) + std::size_t(x)] = kEmptyCell;
+                    continue;
+                }
                 const bool left = x >= step, right = step < w - x;
                 const Cell* best = nullptr;
                 auto offer = [&](const Cell& c) {
@@ -218,7 +235,7 @@ std::int64_t runPass(const Grid& src, Grid& dst, int step, int scale, const C& c
                 dst.cells[std::size_t(y) * std::size_t(w) + std::size_t(x)] = result;
             }
         }
-        changedPerBand[static_cast<std::size_t>(band)] = changed;
+        changedPerBand[static_cast<std::size_t>(part)] = changed;
     });
     std::int64_t total = 0;
     for (std::int64_t c : changedPerBand) total += c;
@@ -240,6 +257,14 @@ FloodResult floodWithStats(const Plan& plan, const Grid& fullResSeeds, const C& 
     }
     resolveThreads(options.threads); // validates
     FloodResult result;
+    std::optional<Band> band;
+    if (options.region == FloodRegion::Band) {
+        if (const std::string bad = checkBandTile(options.bandTile); !bad.empty())
+            throw std::invalid_argument("flood: " + bad);
+        band = floodBand(plan, fullResSeeds, criterion, options.bandTile);
+        result.activeShare = band->activeShare();
+        if (band->full) band.reset();
+    }
     Grid current = downsample(fullResSeeds, stageScale(plan, 0), criterion);
     Grid next;
     int passIndex = 0;
@@ -255,8 +280,8 @@ FloodResult floodWithStats(const Plan& plan, const Grid& fullResSeeds, const C& 
             if (skipRest) continue;
             const Pass pass{stage.steps[k], stage.width, stage.height, s > 0 && k == 0,
                             stage.untilUnchanged};
-            const std::int64_t changed =
-                runPass(current, next, pass.step, scale, criterion, options.threads);
+            const std::int64_t changed = runPass(current, next, pass.step, scale, criterion,
+                                                 options.threads, band ? &*band : nullptr);
             std::swap(current, next);
             result.passes.push_back(PassStats{passIndex, pass, changed});
             if (options.onPass) options.onPass(passIndex, pass, current);

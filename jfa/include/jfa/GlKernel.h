@@ -3,7 +3,12 @@
 // either as fragment passes (full-screen triangle into an FBO) or as compute passes (imageStore).
 // Semantics are exactly those of jfa/CpuKernel.h — downsampling to the half-resolution stage,
 // candidate reads, expansion, "until unchanged" — and tests compare the two texel for texel.
+// With FloodRegion::Band (setRegion) the passes run only over the band's tiles (jfa/Band.h): the
+// tile list is built on the GPU (per-tile seed reach, dilation, compaction into indirect
+// commands) with no read-back, and each pass is an indirect dispatch (compute) or an instanced
+// draw of tile quads (fragment) over it.
 
+#include <jfa/Band.h>
 #include <jfa/Grid.h>
 #include <jfa/NearestSite.h>
 #include <jfa/Plan.h>
@@ -50,10 +55,32 @@ class GlFloodKernelBase {
     [[nodiscard]] int passesRun() const { return passesRun_; }
     [[nodiscard]] GlKernelKind kind() const { return kind_; }
 
+    /// Where the next runs flood: the band (tiles of side `tile`, a multiple of 8) or the full
+    /// grid. Throws std::invalid_argument for a bad tile. Full by default.
+    void setRegion(FloodRegion region, int tile = kDefaultBandTile);
+    [[nodiscard]] FloodRegion region() const { return region_; }
+    /// False when the last run flooded the full grid: the region is Full, or the plan alone
+    /// reaches every texel and the criterion bounds nothing (nothing to save; callers say so).
+    [[nodiscard]] bool lastRunBanded() const { return lastRunBanded_; }
+    /// Share of the full-resolution grid the last run's passes computed: 1 after a full run.
+    /// Reads one counter back from the GPU (a sync point): call it after the frame, not in it.
+    [[nodiscard]] double activeShare() const;
+
   protected:
     /// Builds the kernel programs with `criterionFile` (a criterion's glslFile) linked in.
     GlFloodKernelBase(const gl::ShaderLibrary& shaders, const std::string& criterionFile,
-                      GlKernelKind kind);
+                      GlKernelKind kind, bool keyed);
+
+    /// The programs that link the criterion (their uniforms are the criterion's), the band
+    /// programs included once built; `needBand` builds them first.
+    std::vector<const gl::Program*> criterionPrograms(bool needBand);
+    /// Band step A on `seeds` (jfa_band_reach.comp.glsl), once the criterion's uniforms are set;
+    /// runPlan() reuses it for the same seeds texture.
+    void measureReach(const gl::Texture& seeds);
+    /// The largest seed reach step A found (reads it back); -1 without seeds.
+    long long readMaxReach() const;
+    /// Whether the criterion can bound a seed's reach (a Reaching criterion).
+    bool criterionBounds_ = false;
 
     /// The plan loop, once the criterion's uniforms are set on both programs.
     const gl::Texture& runPlan(const Plan& plan, const gl::Texture& seeds, gl::PassTimer* timer,
@@ -64,10 +91,31 @@ class GlFloodKernelBase {
 
   private:
     void dispatch(const gl::Texture& src, const gl::Texture& seeds, const gl::Texture& dst,
-                  GlDispatch what, int step, int scale, bool countChanges);
+                  GlDispatch what, int step, int scale, bool countChanges, int bandStage);
     const gl::Texture& otherTexture(int width, int height, const gl::Texture* current);
+    /// Builds the tile lists of the plan's stages (steps B and C; A if not measured for
+    /// `seeds`) and clears the stages' ping-pong textures. False: the band is the whole grid.
+    bool buildBand(const Plan& plan, const gl::Texture& seeds);
+    void buildBandPrograms();
 
+    gl::ShaderLibrary shaders_;
+    std::string criterionFile_;
+    bool keyed_ = false;
     GlKernelKind kind_;
+    FloodRegion region_ = FloodRegion::Full;
+    int tile_ = kDefaultBandTile;
+    gl::Program reachProgram_, markProgram_, compactProgram_; // band steps A, B, C
+    gl::Program bandPassProgram_, bandExpandProgram_;         // passes over a tile list
+    gl::Buffer tileReach_, maxReach_, flags_;
+    struct StageBand {
+        gl::Buffer tiles;    // packed tile coordinates (x | y << 16)
+        gl::Buffer commands; // jfa_band_compact.comp.glsl's indirect commands
+    };
+    StageBand stageBands_[2];  // per stage of a (at most two-stage) plan
+    GLuint measuredSeeds_ = 0; // seeds texture step A last ran on (0: none pending)
+    bool lastRunBanded_ = false;
+    int bandStages_ = 0;    // stages of the last banded run
+    double bandArea_ = 0.0; // its full-resolution texels
     gl::VertexArray emptyVao_;
     gl::Buffer changedCounter_;
     struct Pair {
@@ -76,6 +124,13 @@ class GlFloodKernelBase {
     };
     std::map<std::pair<int, int>, Pair> pairs_;
     int passesRun_ = 0;
+};
+
+/// Criteria whose GLSL also has the keyed form of jfa_select.glsl (jfaContext, jfaKey,
+/// jfaTieWins): the kernels are built with JFA_KEYED, one key per candidate.
+template <class C>
+concept Keyed = requires {
+    requires C::keyed;
 };
 
 /// A GL kernel for criterion C. Its programs link C::glslFile when it is built, and run() takes
@@ -88,14 +143,25 @@ class GlFloodKernel : public GlFloodKernelBase {
   public:
     /// Builds the kernel programs with C::glslFile linked in.
     GlFloodKernel(const gl::ShaderLibrary& shaders, GlKernelKind kind)
-        : GlFloodKernelBase(shaders, C::glslFile, kind) {}
+        : GlFloodKernelBase(shaders, C::glslFile, kind, Keyed<C>) {
+        criterionBounds_ = Reaching<C>;
+    }
+
+    /// Band step A: the largest reach of any seed under `criterion` (what a pass count must
+    /// cover), -1 without seeds, kUnboundedReach-ish (2^30 - 1) when unbounded. Reads one value
+    /// back; the next run() on the same seeds reuses the step.
+    long long maxSeedReach(const gl::Texture& seeds, const C& criterion) {
+        for (const gl::Program* p : criterionPrograms(true)) setCriterionUniforms(*p, criterion);
+        measureReach(seeds);
+        return readMaxReach();
+    }
 
     /// Runs `plan` on full-resolution `seeds` (plan.width() x plan.height(), not modified);
     /// returns the full-resolution result, owned by the kernel until the next run. If `timer`
     /// is given, each pass is timed as "jfa step K", K the jump length (and "downsample").
     const gl::Texture& run(const Plan& plan, const gl::Texture& seeds, const C& criterion,
                            gl::PassTimer* timer = nullptr, const PassCallback& callback = {}) {
-        for (const gl::Program* p : {&passProgram_, &expandProgram_})
+        for (const gl::Program* p : criterionPrograms(region() == FloodRegion::Band))
             setCriterionUniforms(*p, criterion);
         return runPlan(plan, seeds, timer, callback);
     }

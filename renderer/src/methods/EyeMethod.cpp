@@ -23,19 +23,16 @@ class EyeMethod final : public ShadowMethod {
         es.boundaryThreshold = in.real("boundaryThreshold");
         const int passes = requestedPasses(in.method, in.options, in.shadow.depth.width(),
                                            in.width(), in.height());
-        const EyeSoftShadowPass::Outputs out =
-            pass_.execute({in.scene, in.camera, in.surfaces.position, in.shadow, in.shadowSettings,
-                           in.disk, es, passes, standardFlooding_, in.width(), in.height()},
-                          in.timer);
-        flood_ = {&out.seeds,
-                  &out.flooded,
-                  &out.points,
-                  &out.occluders,
-                  true,
-                  standardFlooding_,
-                  std::min(passes, eyeSoftMaxPasses(in.width(), in.height())),
-                  es.objectIdFix,
-                  es.midpointFix};
+        const jfa::FloodRegion region = floodRegion(in.options);
+        const PenumbraReach reach = penumbraReach(in.disk, in.camera.proj * in.camera.view,
+                                                  {in.width(), in.height()}, in.sceneBounds);
+        const EyeSoftShadowPass::Outputs out = pass_.execute(
+            {in.scene, in.camera, in.surfaces.position, in.shadow, in.shadowSettings, in.disk, es,
+             passes, standardFlooding_, in.width(), in.height(), region, reach},
+            in.timer);
+        flood_ = {
+            &out.seeds,    &out.flooded,   &out.points,    &out.occluders, true,  standardFlooding_,
+            out.jfaPasses, es.objectIdFix, es.midpointFix, region,         reach, &pass_.kernel()};
         return out.visibility;
     }
     [[nodiscard]] const FloodFrame* flood() const override { return &flood_; }

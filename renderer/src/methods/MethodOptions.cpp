@@ -29,8 +29,10 @@ std::string checkOptionValue(const MethodOption& o, std::string_view value) {
     double v = 0.0;
     switch (o.kind) {
     case OptionKind::Int:
+        if (!o.word.empty() && value == o.word) return {};
         if (!parseNumber(value, v) || v != std::floor(v) || v < o.min || v > o.max)
-            return cat("must be an integer in ", range(o), ", got '", value, "'");
+            return cat("must be ", o.word.empty() ? "" : cat(o.word, " or "), "an integer in ",
+                       range(o), ", got '", value, "'");
         return {};
     case OptionKind::Float:
         if (!parseNumber(value, v) || !std::isfinite(v) || v < o.min || v > o.max)
@@ -72,7 +74,7 @@ std::string MethodOptions::text(const MethodOption& o) const {
 
 int MethodOptions::integer(const MethodOption& o) const {
     double v = 0.0;
-    parseNumber(text(o), v);
+    parseNumber(text(o), v); // o.word leaves it 0
     return static_cast<int>(v);
 }
 

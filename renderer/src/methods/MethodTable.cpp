@@ -33,11 +33,24 @@ constexpr MethodOption kPasses{
     "--jfa-passes",
     "passes",
     OptionKind::Int,
-    "6",
+    "auto",
     "Flooding passes: penumbrae up to 2^N - 1 shadow-map texels (-l) or pixels (-e) wide; 1 to "
-    "log2(size)",
+    "log2(size), or auto: the fewest that cover the widest penumbra the frame's occluders can "
+    "cast",
     1,
-    13};
+    13,
+    {},
+    "auto"};
+constexpr MethodOption kFloodRegion{
+    "--flood-region",
+    "floodRegion",
+    OptionKind::Choice,
+    "band",
+    "band: flood only the tiles the occluders' penumbrae can reach (the same result, texel for "
+    "texel); full: every texel of the grid",
+    0,
+    0,
+    "band|full"};
 constexpr MethodOption kFullJfa{
     "--full-jfa", "fullJfa", OptionKind::Flag, "false",
     "Full JFA: as many passes as the grid allows (log2 of the shadow-map size for -l, of the "
@@ -107,9 +120,9 @@ constexpr MethodOption kVsmBleed{"--vsm-bleed",
                                  0.0,
                                  0.95};
 
-constexpr const MethodOption* kLightFloodOptions[] = {&kPasses, &kFullJfa};
-constexpr const MethodOption* kEyeFloodOptions[] = {&kPasses, &kFullJfa, &kNoObjectIdFix,
-                                                    &kNoMidpointFix, &kBoundaryThreshold};
+constexpr const MethodOption* kLightFloodOptions[] = {&kPasses, &kFullJfa, &kFloodRegion};
+constexpr const MethodOption* kEyeFloodOptions[] = {
+    &kPasses, &kFullJfa, &kFloodRegion, &kNoObjectIdFix, &kNoMidpointFix, &kBoundaryThreshold};
 constexpr const MethodOption* kPcfOptions[] = {&kPcfKernel};
 constexpr const MethodOption* kPcssOptions[] = {&kPcssPreset};
 constexpr const MethodOption* kGroundTruthOptions[] = {&kReferenceSamples, &kReferenceMapSize};
@@ -131,6 +144,7 @@ constexpr std::string_view kVsmPhases[] = {"vsm moments", "vsm blur", "vsm looku
 void checkLightFlood(const MethodOptions& o, const MethodDescriptor& m, int mapSize, int w, int h) {
     PenumbraSettings ps;
     ps.passes = requestedPasses(m, o, mapSize, w, h);
+    if (ps.passes == kAutoPasses) return; // chosen per frame within the range
     try {
         (void)penumbraPlan(ps, mapSize);
     } catch (const std::invalid_argument& e) {
@@ -140,6 +154,7 @@ void checkLightFlood(const MethodOptions& o, const MethodDescriptor& m, int mapS
 
 void checkEyeFlood(const MethodOptions& o, const MethodDescriptor& m, int mapSize, int w, int h) {
     if (o.flag(kFullJfa)) return; // capped at the frame
+    if (requestedPasses(m, o, mapSize, w, h) == kAutoPasses) return;
     try {
         (void)eyeSoftPlan(requestedPasses(m, o, mapSize, w, h), false, w, h);
     } catch (const std::invalid_argument& e) {
@@ -227,6 +242,14 @@ std::vector<const MethodOption*> allMethodOptions() {
 
 const MethodOption& floodPassesOption() {
     return kPasses;
+}
+
+const MethodOption& floodRegionOption() {
+    return kFloodRegion;
+}
+
+jfa::FloodRegion floodRegion(const MethodOptions& options) {
+    return *jfa::parseFloodRegion(options.text(kFloodRegion)); // text() validated the choice
 }
 
 int requestedPasses(const MethodDescriptor& m, const MethodOptions& options, int mapSize, int width,

@@ -24,13 +24,27 @@ class PenumbraMethod final : public ShadowMethod {
         ps.passes = requestedPasses(in.method, in.options, in.shadow.depth.width(), in.width(),
                                     in.height());
         ps.standardFlooding = standardFlooding_;
+        ps.region = floodRegion(in.options);
+        const int size = in.shadow.depth.width();
+        const PenumbraReach reach =
+            penumbraReach(in.disk, in.shadow.mapViewProj(), {size, size}, in.sceneBounds);
         // A silhouette needs a depth step of a thousandth of the scene: smaller steps are the
         // receiver's own slope, not an occluder's edge.
         const float threshold = 0.001f * std::max(in.sceneBounds.radius(), 1e-3f);
         const PenumbraMapPass::Outputs pm =
-            pass_.execute({*in.shadow.receivers, in.disk, ps, threshold}, in.timer);
-        flood_ = {&pm.seeds,         &pm.penumbraMap, in.shadow.receivers, nullptr, false,
-                  standardFlooding_, ps.passes};
+            pass_.execute({*in.shadow.receivers, in.disk, ps, threshold, reach}, in.timer);
+        flood_ = {&pm.seeds,
+                  &pm.penumbraMap,
+                  in.shadow.receivers,
+                  nullptr,
+                  false,
+                  standardFlooding_,
+                  pm.jfaPasses,
+                  true,
+                  true,
+                  ps.region,
+                  reach,
+                  &pass_.kernel()};
         if (in.timer) in.timer->begin("penumbra lookup");
         const gl::Texture& v = lookup_.execute(in, &pm.penumbraMap);
         if (in.timer) in.timer->end();

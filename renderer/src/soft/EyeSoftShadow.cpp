@@ -109,6 +109,7 @@ bool EyeSoftCriterion::better(int px, int py, const jfa::Cell& a, const jfa::Cel
 
 void setCriterionUniforms(const gl::Program& program, const EyeSoftCriterion& criterion) {
     setDiskLightUniforms(program, criterion.light);
+    setPenumbraReachUniforms(program, criterion.reachBound);
     program.set("uObjectIdFix", criterion.objectIdFix ? 1 : 0);
     program.set("uMidpointFix", criterion.midpointFix ? 1 : 0);
     glBindTextureUnit(2, criterion.pointsTexture);
@@ -161,8 +162,9 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::Pass
     // The pass count is the thesis' for a 512² frame; a smaller frame (a window being resized)
     // cannot use steps beyond its size, so the count is capped there rather than refused.
     // Validates before any GL work.
-    const int passes = std::min(in.passes, eyeSoftMaxPasses(in.width, in.height));
-    const jfa::Plan plan = eyeSoftPlan(passes, in.standardFlooding, in.width, in.height);
+    const int maxPasses = eyeSoftMaxPasses(in.width, in.height);
+    int passes = std::min(in.passes, maxPasses);
+    if (passes != 0) (void)eyeSoftPlan(passes, in.standardFlooding, in.width, in.height);
     const int shadowSize = in.shadow.depth.width();
     resize(in.width, in.height, shadowSize);
 
@@ -236,6 +238,11 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::Pass
     criterion.midpointFix = in.settings.midpointFix;
     criterion.pointsTexture = points_.id();
     criterion.occludersTexture = occluders_.id();
+    criterion.reachBound = in.reach;
+    kernel_.setRegion(in.region);
+    if (passes == 0) // auto: one value read back, since the plan is recorded on the CPU
+        passes = jfa::passesForReach(kernel_.maxSeedReach(seeds_, criterion), maxPasses);
+    const jfa::Plan plan = eyeSoftPlan(passes, in.standardFlooding, in.width, in.height);
     const gl::Texture& flooded = kernel_.run(plan, seeds_, criterion);
     glBindTextureUnit(2, 0);
     glBindTextureUnit(3, 0);
@@ -254,7 +261,7 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::Pass
     glBindTextureUnit(1, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (timer) timer->end();
-    return {points_, occluders_, seeds_, flooded, visibility_, kernel_.passesRun()};
+    return {points_, occluders_, seeds_, flooded, visibility_, kernel_.passesRun(), passes};
 }
 
 } // namespace fl

@@ -10,6 +10,7 @@ void setDiskLightUniforms(const gl::Program& program, const DiskLight& light) {
 
 void setCriterionUniforms(const gl::Program& program, const PenumbraCriterion& criterion) {
     setDiskLightUniforms(program, criterion.light);
+    setPenumbraReachUniforms(program, criterion.reachBound);
     glBindTextureUnit(2, criterion.receiverTexture);
 }
 

@@ -8,9 +8,14 @@
 
 namespace fl {
 
-jfa::Plan penumbraPlan(const PenumbraSettings& settings, int size) {
+int penumbraMaxPasses(int size) {
     int maxPasses = 0;
     while ((2 << maxPasses) <= size) ++maxPasses; // largest k with 2^k <= size
+    return maxPasses;
+}
+
+jfa::Plan penumbraPlan(const PenumbraSettings& settings, int size) {
+    const int maxPasses = penumbraMaxPasses(size);
     if (settings.passes < 1 || settings.passes > maxPasses)
         throw std::invalid_argument("JFA pass count " + std::to_string(settings.passes) +
                                     " is outside [1, " + std::to_string(maxPasses) + "] for a " +
@@ -69,7 +74,8 @@ PenumbraMapPass::PenumbraMapPass(const gl::ShaderLibrary& shaders)
 
 PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, gl::PassTimer* timer) {
     const int size = in.receivers.width();
-    const jfa::Plan plan = penumbraPlan(in.settings, size); // validates before any GL work
+    if (in.settings.passes != 0)
+        (void)penumbraPlan(in.settings, size); // validates before any GL work
     if (!seeds_ || seeds_.width() != size) {
         seeds_ = gl::Texture(GL_RGBA32F, size, size);
         fbo_ = gl::Framebuffer::forColor(seeds_, "silhouette seeds");
@@ -91,10 +97,17 @@ PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, gl::PassTime
     PenumbraCriterion criterion;
     criterion.light = in.light;
     criterion.receiverTexture = in.receivers.id();
+    criterion.reachBound = in.reach;
+    kernel_.setRegion(in.settings.region, in.settings.bandTile);
+    PenumbraSettings settings = in.settings;
+    if (settings.passes == 0) // auto: one value read back, since the plan is recorded on the CPU
+        settings.passes =
+            jfa::passesForReach(kernel_.maxSeedReach(seeds_, criterion), penumbraMaxPasses(size));
+    const jfa::Plan plan = penumbraPlan(settings, size);
     const gl::Texture& map = kernel_.run(plan, seeds_, criterion);
     glBindTextureUnit(2, 0);
     if (timer) timer->end();
-    return {seeds_, map, kernel_.passesRun()};
+    return {seeds_, map, kernel_.passesRun(), settings.passes};
 }
 
 } // namespace fl

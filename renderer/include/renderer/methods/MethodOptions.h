@@ -19,6 +19,8 @@ struct MethodOption {
     std::string_view help;
     double min = 0.0, max = 0.0;   // Int / Float: the closed range
     std::string_view choices = {}; // Choice: the values, '|'-separated
+    std::string_view word = {};    // Int: a word accepted besides the range ("auto"); integer()
+                                   // reads it as 0
 };
 
 /// "" when `value` is valid for `o`, else the problem in words ("must be an integer in

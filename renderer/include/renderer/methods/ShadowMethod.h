@@ -11,12 +11,15 @@
 #include <gpu/Gl.h>
 #include <gpu/PassTimer.h>
 #include <gpu/ShaderLibrary.h>
+#include <jfa/Band.h>
+#include <jfa/GlKernel.h>
 #include <renderer/methods/MethodOptions.h>
 #include <renderer/passes/ShadowMapPass.h>
 #include <renderer/passes/SurfacesPass.h>
 #include <renderer/scene/GpuScene.h>
 #include <renderer/scene/Scene.h>
 #include <renderer/soft/DiskLight.h>
+#include <renderer/soft/PenumbraReach.h>
 
 #include <geometry/Aabb.h>
 #include <geometry/Framing.h>
@@ -67,6 +70,9 @@ struct FloodFrame {
     int passes = 0;          // flood passes run
     bool objectIdFix = true; // eye only: the criterion's switches
     bool midpointFix = true;
+    jfa::FloodRegion region = jfa::FloodRegion::Full; // --flood-region
+    PenumbraReach reach;                              // the criterion's band bound
+    const jfa::GlFloodKernelBase* kernel = nullptr;   // ran the flood (activeShare())
 };
 
 class ShadowMethod {
@@ -129,8 +135,14 @@ std::vector<const MethodOption*> allMethodOptions();
 /// The pass-count option every flooding method takes (--jfa-passes; the window's -/= keys and the
 /// capture scripts' "jfaPasses" set it).
 const MethodOption& floodPassesOption();
+/// The option that chooses band-limited or full-grid flooding (--flood-region).
+const MethodOption& floodRegionOption();
+/// Its value.
+jfa::FloodRegion floodRegion(const MethodOptions& options);
+/// requestedPasses() for --jfa-passes auto: the method chooses per frame (passesForReach).
+inline constexpr int kAutoPasses = 0;
 /// The flood pass count a flooding method's options ask for at this map and frame size (what
-/// --jfa-passes, --full-jfa mean for it); 0 for the other methods.
+/// --jfa-passes, --full-jfa mean for it), kAutoPasses for auto; 0 for the other methods.
 int requestedPasses(const MethodDescriptor& m, const MethodOptions& options, int mapSize, int width,
                     int height);
 

@@ -16,6 +16,7 @@
 #include <renderer/passes/ShadowMapPass.h>
 #include <renderer/scene/GpuScene.h>
 #include <renderer/soft/DiskLight.h>
+#include <renderer/soft/PenumbraReach.h>
 
 #include <jfa/Grid.h>
 #include <jfa/Plan.h>
@@ -90,12 +91,20 @@ jfa::Grid eyeBoundarySeeds(const EyeImage& image, glm::vec3 eye, BoundaryThresho
 /// GL kernel (bit for bit the same). See the GLSL file for the rule.
 struct EyeSoftCriterion {
     static constexpr const char* glslFile = "jfae_criterion.glsl";
+    static constexpr bool keyed = true; // the GLSL has jfaKey (jfa_select.glsl)
     DiskLight light;
     bool objectIdFix = true;
     bool midpointFix = true;
     const EyeImage* image = nullptr; // CPU kernel
     GLuint pointsTexture = 0;        // GL kernel: RGBA32F, EyeImage::points
     GLuint occludersTexture = 0;     // GL kernel: RGBA32F, EyeImage::occluders
+    PenumbraReach reachBound;        // the eye's: bounds the band (jfa/Band.h)
+
+    /// Band-limited flooding: the widest penumbra occluder c, seeded at boundary pixel (px, py),
+    /// can cast in the image.
+    [[nodiscard]] jfa::ReachRect reach(int, int, const jfa::Cell& c) const {
+        return penumbraReachRect(light, reachBound, {c.x, c.y, c.z});
+    }
 
     [[nodiscard]] bool empty(const jfa::Cell& c) const { return c.w == 0.0f; }
     [[nodiscard]] bool accepts(int px, int py, const jfa::Cell& c) const;
@@ -123,9 +132,11 @@ class EyeSoftShadowPass {
         const ShadowMapSettings& shadowSettings;
         const DiskLight& light;
         const EyeSoftSettings& settings;
-        int passes;            // PenumbraSettings::passes (capped at eyeSoftMaxPasses)
+        int passes;            // PenumbraSettings::passes (capped at eyeSoftMaxPasses); 0: auto
         bool standardFlooding; // flood-E
         int width, height;     // frame size
+        jfa::FloodRegion region = jfa::FloodRegion::Band; // jfa/Band.h: the same result
+        PenumbraReach reach = {}; // the image's penumbra bound (band and auto passes)
     };
     struct Outputs {
         const gl::Texture& points;     // phase 2, RGBA32F (EyeImage::points)
@@ -134,6 +145,7 @@ class EyeSoftShadowPass {
         const gl::Texture& flooded;    // phase 4, RGBA32F cells
         const gl::Texture& visibility; // phase 5, R32F
         int passes;                    // flood passes run
+        int jfaPasses;                 // the JFA pass count used (auto resolved)
     };
     /// Runs phases 2-5; `timer` (optional) times them as "occluder ids", "eye hard shadows",
     /// "boundaries", "flood" and "composite".
@@ -147,6 +159,10 @@ class EyeSoftShadowPass {
     gl::Texture ids_, points_, occluders_, seeds_, visibility_;
     gl::Framebuffer eyeFbo_, seedsFbo_, visibilityFbo_;
     jfa::GlFloodKernel<EyeSoftCriterion> kernel_;
+
+  public:
+    /// The flood's kernel (its region and the last run's active share).
+    [[nodiscard]] const jfa::GlFloodKernelBase& kernel() const { return kernel_; }
 };
 
 } // namespace fl

@@ -4,6 +4,7 @@
 // agree bit for bit. See the GLSL file for the rule.
 
 #include <renderer/soft/DiskLight.h>
+#include <renderer/soft/PenumbraReach.h>
 
 #include <jfa/Grid.h>
 
@@ -31,9 +32,16 @@ struct ReceiverGrid {
 
 struct PenumbraCriterion {
     static constexpr const char* glslFile = "jfa_penumbra.glsl";
+    static constexpr bool keyed = true; // the GLSL has jfaKey (jfa_select.glsl)
     DiskLight light;
     const ReceiverGrid* receivers = nullptr; // CPU kernel
     GLuint receiverTexture = 0;              // GL kernels: RGBA32F, same layout
+    PenumbraReach reachBound;                // the shadow map's: bounds the band (jfa/Band.h)
+
+    /// Band-limited flooding: the widest penumbra occluder c (seeded at its own texel) can cast.
+    [[nodiscard]] jfa::ReachRect reach(int, int, const jfa::Cell& c) const {
+        return penumbraReachRect(light, reachBound, {c.x, c.y, c.z});
+    }
 
     /// The ranking key of occluder c at receiver r: |cq|^2 if its ray reaches the light, the
     /// largest float if c is the receiver itself (a silhouette texel keeps its own occluder, so

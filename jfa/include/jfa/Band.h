@@ -1,0 +1,155 @@
+#pragma once
+// Band-limited flooding: any plan run over only the part of the grid its seeds can reach.
+//
+// Why it is exact. A pass writes a texel only a cell that some candidate held and that the
+// criterion accepts there (jfaAccept / Criterion::accepts), and a cell moves at most one step per
+// pass. So after any pass, a texel holds a cell from seed s only if
+//   (a) it lies within the plan's reach of s (the sum of the steps, bandReach()), and
+//   (b) the criterion accepts s's cell there; a criterion with reach() bounds that distance
+//       (for the penumbra criteria: the widest penumbra the occluder can cast).
+// A texel farther than min(a, b) from every seed therefore holds "empty" after every pass of the
+// full-grid flood. The band is the set of tiles within that distance of a seed tile; texels
+// outside it are left empty (cleared once) and never computed, and every texel inside is computed
+// exactly as the full flood computes it, from neighbours that are either computed or truly empty.
+// By induction the result equals the full flood texel for texel, for every plan and criterion.
+// Computing more than the band is harmless, so stage grids at half resolution use the tiles that
+// cover any band texel's grid point.
+
+#include <jfa/Grid.h>
+#include <jfa/Plan.h>
+
+#include <algorithm>
+#include <concepts>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace fl::jfa {
+
+/// Where a flood runs: only over the band its seeds can reach, or over the whole grid.
+enum class FloodRegion { Band, Full };
+/// "band" or "full".
+std::string_view floodRegionName(FloodRegion region);
+/// Parses "band" or "full"; nullopt otherwise.
+std::optional<FloodRegion> parseFloodRegion(std::string_view text);
+
+/// Tile side in texels. 16 measured fastest on llvmpipe for the penumbra floods (docs/BENCHMARKS.md
+/// "Band-limited flooding"); tiles must be a multiple of 8 (the compute kernels' 8x8 groups).
+inline constexpr int kDefaultBandTile = 16;
+inline constexpr int kMinBandTile = 8;
+inline constexpr int kMaxBandTile = 256;
+/// "" when `tile` is a valid tile side, else the problem in words.
+std::string checkBandTile(int tile);
+
+/// A reach that bounds nothing (the plan's reach then decides); the shaders' 2^30 - 1.
+inline constexpr long long kUnboundedReach = (1LL << 30) - 1;
+
+/// Where a seed's cell may be accepted: texels x0..x1, y0..y1 (inclusive, full resolution; may
+/// extend past the grid). x0 > x1 or y0 > y1: nowhere.
+struct ReachRect {
+    long long x0 = -kUnboundedReach, y0 = -kUnboundedReach;
+    long long x1 = kUnboundedReach, y1 = kUnboundedReach;
+    [[nodiscard]] bool empty() const { return x0 > x1 || y0 > y1; }
+};
+
+/// Criteria that bound, per seed, where its cell may be accepted (Criterion::accepts): nowhere
+/// outside reach(px, py, c) (px, py: the seed pixel), so the flood never holds it there.
+template <class C>
+concept Reaching = Criterion<C> && requires(const C& c, int px, int py, const Cell& a) {
+    { c.reach(px, py, a) } -> std::convertible_to<ReachRect>;
+};
+
+/// How far (full-resolution texels per axis) a plan can move a seed: its maxReach() plus one
+/// texel per change of resolution for the downsampling and the 2x2 expansion offsets.
+long long planBandReach(const Plan& plan);
+
+/// The criterion's rect for the seed cell at (px, py), or an unbounded one.
+template <Criterion C>
+ReachRect criterionRect(const C& criterion, int px, int py, const Cell& c) {
+    if constexpr (Reaching<C>)
+        return criterion.reach(px, py, c);
+    else
+        return {};
+}
+
+/// `r` clipped to a width x height grid and to the square of half-side `reach` around (px, py).
+ReachRect clipRect(ReachRect r, int px, int py, long long reach, int width, int height);
+/// The farthest (per axis) texel of non-empty `r` from (px, py); -1 when r is empty.
+long long rectReach(const ReachRect& r, int px, int py);
+
+/// The tiles of a flood's band over a width x height (full-resolution) grid.
+struct Band {
+    int width = 0, height = 0;
+    int tile = kDefaultBandTile;
+    int tilesX = 0, tilesY = 0;
+    /// Every tile active: no seed is far enough from any texel to save work (the caller runs the
+    /// full grid).
+    bool full = false;
+    std::vector<std::uint8_t> active; // tilesX * tilesY, row-major; 1 = in the band
+
+    /// Whether full-resolution texel (x, y) lies in an active tile.
+    [[nodiscard]] bool covers(int x, int y) const {
+        return active[std::size_t(y / tile) * std::size_t(tilesX) + std::size_t(x / tile)] != 0;
+    }
+    /// Texels in active tiles (clipped to the grid).
+    [[nodiscard]] long long activeTexels() const;
+    /// activeTexels() / (width * height); 1 for an empty grid.
+    [[nodiscard]] double activeShare() const;
+};
+
+/// Builds the band from per-tile rects (the union of the grid-clipped rects of the tile's seeds;
+/// empty for a tile without seeds): every tile a rect touches within `planReach` of the tile.
+/// The GPU does the same (shaders/jfa_band_mark.comp.glsl), so both bands are equal.
+Band markTiles(int width, int height, int tile, const std::vector<ReachRect>& tileRects,
+               long long planReach = kUnboundedReach);
+
+/// The band of `plan` over full-resolution `seeds` with `criterion`: the union of each tile's
+/// seeds' criterion rects, within the square the plan can reach from the tile (planBandReach).
+/// Band::full when that is every tile.
+template <Criterion C>
+Band floodBand(const Plan& plan, const Grid& seeds, const C& criterion,
+               int tile = kDefaultBandTile) {
+    const long long planReach = planBandReach(plan);
+    const int tilesX = (seeds.width + tile - 1) / tile, tilesY = (seeds.height + tile - 1) / tile;
+    std::vector<ReachRect> rects(std::size_t(tilesX) * std::size_t(tilesY), ReachRect{1, 1, 0, 0});
+    for (int y = 0; y < seeds.height; ++y)
+        for (int x = 0; x < seeds.width; ++x) {
+            const Cell& c = seeds.at(x, y);
+            if (criterion.empty(c)) continue;
+            const ReachRect r = clipRect(criterionRect(criterion, x, y, c), x, y, kUnboundedReach,
+                                         seeds.width, seeds.height);
+            if (r.empty()) continue;
+            ReachRect& u =
+                rects[std::size_t(y / tile) * std::size_t(tilesX) + std::size_t(x / tile)];
+            u = u.empty() ? r
+                          : ReachRect{std::min(u.x0, r.x0), std::min(u.y0, r.y0),
+                                      std::max(u.x1, r.x1), std::max(u.y1, r.y1)};
+        }
+    return markTiles(seeds.width, seeds.height, tile, rects, planReach);
+}
+
+/// The largest distance (per axis) from a seed to where the criterion may accept its cell, on
+/// the grid: what a pass count must cover so that no accepted cell is cut off. -1 without seeds
+/// (or none accepted anywhere); criteria that are not Reaching reach the grid's far side.
+template <Criterion C>
+long long maxSeedReach(const Grid& seeds, const C& criterion) {
+    long long best = -1;
+    for (int y = 0; y < seeds.height; ++y)
+        for (int x = 0; x < seeds.width; ++x) {
+            const Cell& c = seeds.at(x, y);
+            if (criterion.empty(c)) continue;
+            const ReachRect r = clipRect(criterionRect(criterion, x, y, c), x, y, kUnboundedReach,
+                                         seeds.width, seeds.height);
+            best = std::max(best, rectReach(r, x, y));
+        }
+    return best;
+}
+
+/// The fewest halving JFA passes (steps 2^(k-1) .. 1, reach 2^k - 1) that cover `reach` texels,
+/// clamped to [1, maxPasses]; maxPasses for an unbounded reach, 1 without seeds (reach < 0).
+int passesForReach(long long reach, int maxPasses);
+
+} // namespace fl::jfa

@@ -1,0 +1,93 @@
+#include <jfa/Band.h>
+
+#include <base/Text.h>
+
+namespace fl::jfa {
+
+std::string_view floodRegionName(FloodRegion region) {
+    return region == FloodRegion::Band ? "band" : "full";
+}
+
+std::optional<FloodRegion> parseFloodRegion(std::string_view text) {
+    if (text == "band") return FloodRegion::Band;
+    if (text == "full") return FloodRegion::Full;
+    return std::nullopt;
+}
+
+std::string checkBandTile(int tile) {
+    if (tile < kMinBandTile || tile > kMaxBandTile || tile % 8 != 0)
+        return cat("the band tile must be a multiple of 8 in [", kMinBandTile, ", ", kMaxBandTile,
+                   "], got ", tile);
+    return {};
+}
+
+long long planBandReach(const Plan& plan) {
+    // Downsampling moves a seed to its block's grid point and expansion copies a block's cell to
+    // its 2x2 texels: at most one texel per axis each, per change of resolution.
+    return plan.maxReach() + 2 * (static_cast<long long>(plan.stages().size()) - 1);
+}
+
+long long Band::activeTexels() const {
+    long long n = 0;
+    for (int ty = 0; ty < tilesY; ++ty)
+        for (int tx = 0; tx < tilesX; ++tx)
+            if (active[std::size_t(ty) * std::size_t(tilesX) + std::size_t(tx)] != 0)
+                n += static_cast<long long>(std::min(tile, width - tx * tile)) *
+                     std::min(tile, height - ty * tile);
+    return n;
+}
+
+double Band::activeShare() const {
+    const double all = double(width) * double(height);
+    return all > 0.0 ? double(activeTexels()) / all : 1.0;
+}
+
+ReachRect clipRect(ReachRect r, int px, int py, long long reach, int width, int height) {
+    r.x0 = std::max({r.x0, px - reach, 0LL});
+    r.y0 = std::max({r.y0, py - reach, 0LL});
+    r.x1 = std::min({r.x1, px + reach, width - 1LL});
+    r.y1 = std::min({r.y1, py + reach, height - 1LL});
+    return r;
+}
+
+long long rectReach(const ReachRect& r, int px, int py) {
+    if (r.empty()) return -1;
+    return std::max({px - r.x0, r.x1 - px, py - r.y0, r.y1 - py, 0LL});
+}
+
+Band markTiles(int width, int height, int tile, const std::vector<ReachRect>& tileRects,
+               long long planReach) {
+    Band b;
+    b.width = width;
+    b.height = height;
+    b.tile = tile;
+    b.tilesX = (width + tile - 1) / tile;
+    b.tilesY = (height + tile - 1) / tile;
+    b.active.assign(std::size_t(b.tilesX) * std::size_t(b.tilesY), 0);
+    for (int ty = 0; ty < b.tilesY; ++ty)
+        for (int tx = 0; tx < b.tilesX; ++tx) {
+            const ReachRect& u =
+                tileRects[std::size_t(ty) * std::size_t(b.tilesX) + std::size_t(tx)];
+            if (u.empty()) continue;
+            // The plan's square around the tile's texels.
+            const long long t0x = tx * 1LL * tile, t0y = ty * 1LL * tile;
+            const ReachRect r{std::max(u.x0, t0x - planReach), std::max(u.y0, t0y - planReach),
+                              std::min(u.x1, t0x + tile - 1 + planReach),
+                              std::min(u.y1, t0y + tile - 1 + planReach)};
+            if (r.empty()) continue;
+            for (long long y = r.y0 / tile; y <= r.y1 / tile; ++y)
+                for (long long x = r.x0 / tile; x <= r.x1 / tile; ++x)
+                    b.active[std::size_t(y) * std::size_t(b.tilesX) + std::size_t(x)] = 1;
+        }
+    b.full = std::all_of(b.active.begin(), b.active.end(), [](std::uint8_t a) { return a != 0; });
+    return b;
+}
+
+int passesForReach(long long reach, int maxPasses) {
+    if (reach < 0) return 1;
+    int k = 1;
+    while (k < maxPasses && (1LL << k) - 1 < reach) ++k;
+    return k;
+}
+
+} // namespace fl::jfa

@@ -1,0 +1,170 @@
+// Band-limited flooding on the GPU (jfa/Band.h, jfa/GlKernel.h): steps A (per-tile seed reach),
+// B (dilation into tile flags) and C (compaction into a tile list and indirect commands per
+// stage), all without read-back, and the band programs that run a pass over a tile list.
+
+#include <jfa/CpuKernel.h> // stageScale
+#include <jfa/GlKernel.h>
+
+#include <base/Text.h>
+
+#include <algorithm>
+#include <array>
+#include <stdexcept>
+
+namespace fl::jfa {
+
+namespace {
+
+constexpr GLbitfield kStorage = GL_DYNAMIC_STORAGE_BIT;
+constexpr long long kMaxShaderReach = 0x3fffffff; // kJfaUnboundedReach in the shaders
+
+/// A buffer of at least `uints` 32-bit words (kept when already large enough).
+void ensureBuffer(gl::Buffer& b, std::size_t uints) {
+    const auto bytes = static_cast<GLsizeiptr>(std::max<std::size_t>(uints, 1) * sizeof(GLuint));
+    if (!b || b.size() < bytes) b = gl::Buffer(bytes, nullptr, kStorage);
+}
+
+void clearBuffer(const gl::Buffer& b) {
+    const GLuint zero = 0;
+    glClearNamedBufferData(b.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+}
+
+GLuint groups(int n) {
+    return static_cast<GLuint>((n + 7) / 8);
+}
+
+} // namespace
+
+void GlFloodKernelBase::setRegion(FloodRegion region, int tile) {
+    if (const std::string bad = checkBandTile(tile); !bad.empty())
+        throw std::invalid_argument("jfa: " + bad);
+    region_ = region;
+    tile_ = tile;
+}
+
+void GlFloodKernelBase::buildBandPrograms() {
+    if (reachProgram_.id() != 0) return;
+    reachProgram_ = gl::Program::build(shaders_, {{GL_COMPUTE_SHADER, "jfa_band_reach.comp.glsl"},
+                                                  {GL_COMPUTE_SHADER, criterionFile_}});
+    markProgram_ = gl::Program::build(shaders_, {{GL_COMPUTE_SHADER, "jfa_band_mark.comp.glsl"}});
+    compactProgram_ =
+        gl::Program::build(shaders_, {{GL_COMPUTE_SHADER, "jfa_band_compact.comp.glsl"}});
+    for (bool expand : {false, true}) {
+        std::vector<std::string> defines{"JFA_BAND"};
+        if (expand) defines.emplace_back("JFA_EXPAND");
+        if (keyed_) defines.emplace_back("JFA_KEYED");
+        gl::Program p = kind_ == GlKernelKind::Compute
+                            ? gl::Program::build(shaders_,
+                                                 {{GL_COMPUTE_SHADER, "jfa_pass.comp.glsl"},
+                                                  {GL_COMPUTE_SHADER, criterionFile_}},
+                                                 defines)
+                            : gl::Program::build(shaders_,
+                                                 {{GL_VERTEX_SHADER, "jfa_band_tile.vert.glsl"},
+                                                  {GL_FRAGMENT_SHADER, "jfa_pass.frag.glsl"},
+                                                  {GL_FRAGMENT_SHADER, criterionFile_}},
+                                                 defines);
+        (expand ? bandExpandProgram_ : bandPassProgram_) = std::move(p);
+    }
+}
+
+std::vector<const gl::Program*> GlFloodKernelBase::criterionPrograms(bool needBand) {
+    std::vector<const gl::Program*> out{&passProgram_, &expandProgram_};
+    if (needBand) buildBandPrograms();
+    if (reachProgram_.id() != 0) {
+        out.insert(out.end(), {&reachProgram_, &bandPassProgram_, &bandExpandProgram_});
+    }
+    return out;
+}
+
+void GlFloodKernelBase::measureReach(const gl::Texture& seeds) {
+    buildBandPrograms();
+    const int tilesX = (seeds.width() + tile_ - 1) / tile_;
+    const int tilesY = (seeds.height() + tile_ - 1) / tile_;
+    ensureBuffer(tileReach_, 4 * std::size_t(tilesX) * std::size_t(tilesY));
+    ensureBuffer(maxReach_, 1);
+    const std::array<GLuint, 4> emptyRect{~0u, ~0u, 0u, 0u}; // min > max
+    glClearNamedBufferData(tileReach_.id(), GL_RGBA32UI, GL_RGBA_INTEGER, GL_UNSIGNED_INT,
+                           emptyRect.data());
+    clearBuffer(maxReach_);
+    reachProgram_.set("uSize", glm::ivec2(seeds.width(), seeds.height()));
+    reachProgram_.set("uTile", tile_);
+    reachProgram_.set("uTilesX", tilesX);
+    glBindTextureUnit(1, seeds.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, tileReach_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, maxReach_.id());
+    glUseProgram(reachProgram_.id());
+    glDispatchCompute(groups(seeds.width()), groups(seeds.height()), 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    glUseProgram(0);
+    glBindTextureUnit(1, 0);
+    measuredSeeds_ = seeds.id();
+}
+
+long long GlFloodKernelBase::readMaxReach() const {
+    GLuint stored = 0;
+    glGetNamedBufferSubData(maxReach_.id(), 0, sizeof(stored), &stored);
+    if (stored == 0) return -1;
+    const long long r = static_cast<long long>(stored) - 1;
+    return r >= kMaxShaderReach ? kUnboundedReach : r;
+}
+
+bool GlFloodKernelBase::buildBand(const Plan& plan, const gl::Texture& seeds) {
+    const int w = plan.width(), h = plan.height();
+    const long long planReach = planBandReach(plan);
+    if (!criterionBounds_ && planReach >= std::max(w, h) - 1) return false; // the plan fills it
+    if (measuredSeeds_ != seeds.id()) measureReach(seeds);
+    const glm::ivec2 tiles((w + tile_ - 1) / tile_, (h + tile_ - 1) / tile_);
+    ensureBuffer(flags_, std::size_t(tiles.x) * std::size_t(tiles.y));
+    clearBuffer(flags_);
+    // Step B: mark the tiles each seed tile's rect touches, within the plan's square.
+    markProgram_.set("uTiles", tiles);
+    markProgram_.set("uTile", tile_);
+    markProgram_.set("uPlanReach", int(std::min(planReach, kMaxShaderReach)));
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, tileReach_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, flags_.id());
+    glUseProgram(markProgram_.id());
+    glDispatchCompute(groups(tiles.x), groups(tiles.y), 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    // Step C: per stage, the tiles holding a band texel's grid point, and the commands.
+    const std::vector<Stage>& stages = plan.stages();
+    compactProgram_.set("uTiles", tiles);
+    compactProgram_.set("uTile", tile_);
+    for (std::size_t s = 0; s < stages.size(); ++s) {
+        const glm::ivec2 size(stages[s].width, stages[s].height);
+        const glm::ivec2 stageTiles = (size + tile_ - 1) / tile_;
+        StageBand& band = stageBands_[s];
+        ensureBuffer(band.tiles, std::size_t(stageTiles.x) * std::size_t(stageTiles.y));
+        if (!band.commands) band.commands = gl::Buffer(8 * sizeof(GLuint), nullptr, kStorage);
+        const auto blocks = static_cast<GLuint>((tile_ / 8) * (tile_ / 8));
+        const std::array<GLuint, 8> init{0, blocks, 1, 0, 6, 0, 0, 0};
+        glNamedBufferSubData(band.commands.id(), 0, sizeof(init), init.data());
+        compactProgram_.set("uStageTiles", stageTiles);
+        compactProgram_.set("uStageSize", size);
+        compactProgram_.set("uScale", stageScale(plan, s));
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, band.tiles.id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, band.commands.id());
+        glUseProgram(compactProgram_.id());
+        glDispatchCompute(groups(stageTiles.x), groups(stageTiles.y), 1);
+        // The stage's ping-pong pair starts empty: texels outside the band are never written.
+        (void)otherTexture(size.x, size.y, nullptr);               // allocates the pair
+        const std::array<float, 4> empty{0.0f, 0.0f, -1.0f, 0.0f}; // kEmptyCell
+        for (const gl::Texture& t : pairs_.at({size.x, size.y}).tex)
+            glClearTexImage(t.id(), 0, GL_RGBA, GL_FLOAT, empty.data());
+    }
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+    glUseProgram(0);
+    for (GLuint i = 1; i <= 5; ++i) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, i, 0);
+    bandStages_ = static_cast<int>(stages.size());
+    bandArea_ = double(w) * double(h);
+    return true;
+}
+
+double GlFloodKernelBase::activeShare() const {
+    if (!lastRunBanded_) return 1.0;
+    GLuint texels = 0;
+    glGetNamedBufferSubData(stageBands_[bandStages_ - 1].commands.id(), 3 * sizeof(GLuint),
+                            sizeof(texels), &texels);
+    return bandArea_ > 0.0 ? double(texels) / bandArea_ : 1.0;
+}
+
+} // namespace fl::jfa

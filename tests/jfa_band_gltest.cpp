@@ -1,0 +1,90 @@
+// Band-limited flooding on the GPU (jfa/GlKernel.h, jfa/Band.h): the tile list built on the GPU
+// and the passes over it give the full grid's result texel for texel, for both kernel kinds,
+// plans of every shape and grids that are not powers of two; the GPU's band is the CPU's.
+
+#include "GlTest.h"
+
+#include <jfa/Band.h>
+#include <jfa/CpuKernel.h>
+#include <jfa/GlKernel.h>
+#include <jfa/NearestSite.h>
+
+#include <cstdint>
+
+namespace fl::jfa {
+namespace {
+
+class JfaBandGlTest : public test::GlTest, public ::testing::WithParamInterface<GlKernelKind> {};
+
+Grid randomSites(int w, int h, int count, std::uint64_t seed) {
+    Grid g(w, h);
+    std::uint64_t s = seed;
+    auto next = [&s] {
+        s = s * 6364136223846793005ull + 1442695040888963407ull;
+        return s >> 33;
+    };
+    for (int i = 0; i < count; ++i) {
+        const int x = int(next() % std::uint64_t(w)), y = int(next() % std::uint64_t(h));
+        g.at(x, y) = Cell{float(x), float(y), float(i), 0.0f};
+    }
+    return g;
+}
+
+TEST_P(JfaBandGlTest, BandEqualsFullAndTheCpuTexelForTexel) {
+    const gl::ShaderLibrary shaders;
+    GlFloodKernel<NearestSite> band(shaders, GetParam()), full(shaders, GetParam());
+    band.setRegion(FloodRegion::Band, 16);
+    const NearestSite crit{true};
+    for (auto [w, h] : {std::pair{7, 3}, {64, 64}, {200, 150}, {513, 7}}) {
+        const Grid seeds = randomSites(w, h, 5, 3);
+        // Short plans (the band is smaller than the grid) and ones that fill it (run full).
+        for (const char* spec : {"flood:3", "flood:12", "half:flood:6", "jfa", "half:jfa+2"}) {
+            const Plan plan = parsePlan(spec, w, h);
+            const Grid b = band.run(plan, seeds, crit);
+            const Grid f = full.run(plan, seeds, crit);
+            FloodOptions cpuBand;
+            cpuBand.region = FloodRegion::Band;
+            cpuBand.bandTile = 16;
+            const FloodResult cpu = floodWithStats(plan, seeds, crit, cpuBand);
+            EXPECT_EQ(b, f) << spec << " " << w << "x" << h;
+            EXPECT_EQ(b, cpu.grid) << spec << " " << w << "x" << h;
+            const Band expected = floodBand(plan, seeds, crit, 16);
+            // NearestSite bounds nothing: the kernel bands only plans of shorter reach than the
+            // grid.
+            EXPECT_EQ(band.lastRunBanded(), planBandReach(plan) < std::max(w, h) - 1)
+                << spec << " " << w << "x" << h;
+            if (band.lastRunBanded()) {
+                EXPECT_DOUBLE_EQ(band.activeShare(), expected.activeShare())
+                    << spec << " " << w << "x" << h;
+            }
+        }
+    }
+}
+
+TEST_P(JfaBandGlTest, EmptySeedsAndStaleTexturesStayEmpty) {
+    const gl::ShaderLibrary shaders;
+    GlFloodKernel<NearestSite> kernel(shaders, GetParam());
+    kernel.setRegion(FloodRegion::Band);
+    const Plan plan = parsePlan("flood:4", 96, 80);
+    // A first run fills part of the ping-pong textures; a run with sites elsewhere must not see
+    // them (the band's texels are cleared, not left from the last frame).
+    (void)kernel.run(plan, randomSites(96, 80, 8, 1), NearestSite{true});
+    const Grid other = randomSites(96, 80, 2, 99);
+    EXPECT_EQ(kernel.run(plan, other, NearestSite{true}), flood(plan, other, NearestSite{true}));
+    const Grid none = kernel.run(plan, Grid(96, 80), NearestSite{true});
+    for (const Cell& c : none.cells) ASSERT_EQ(c, kEmptyCell);
+    EXPECT_EQ(kernel.activeShare(), 0.0);
+}
+
+TEST_P(JfaBandGlTest, BadTilesAreRefused) {
+    const gl::ShaderLibrary shaders;
+    GlFloodKernel<NearestSite> kernel(shaders, GetParam());
+    EXPECT_THROW(kernel.setRegion(FloodRegion::Band, 12), std::invalid_argument);
+    EXPECT_THROW(kernel.setRegion(FloodRegion::Band, 0), std::invalid_argument);
+}
+
+INSTANTIATE_TEST_SUITE_P(Kinds, JfaBandGlTest,
+                         ::testing::Values(GlKernelKind::Fragment, GlKernelKind::Compute));
+
+} // namespace
+} // namespace fl::jfa

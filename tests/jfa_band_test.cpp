@@ -1,0 +1,153 @@
+// Band-limited flooding on the CPU (jfa/Band.h): for every plan, criterion, tile size and grid,
+// the band's result equals the full grid's texel for texel; the tile logic itself; and that the
+// band leaves work out where seeds cannot reach.
+
+#include <jfa/Band.h>
+#include <jfa/CpuKernel.h>
+#include <jfa/NearestSite.h>
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+
+namespace fl::jfa {
+namespace {
+
+// Nearest site, but a site is accepted only within Chebyshev distance R of its pixel (R in w):
+// a Reaching criterion whose reach() is exact, like the penumbra criteria's bound.
+struct NearestWithin {
+    static constexpr const char* glslFile = nullptr; // CPU only
+    NearestSite nearest{true};
+    [[nodiscard]] bool empty(const Cell& c) const { return nearest.empty(c); }
+    [[nodiscard]] bool accepts(int px, int py, const Cell& c) const {
+        return std::abs(px - int(c.x)) <= int(c.w) && std::abs(py - int(c.y)) <= int(c.w);
+    }
+    [[nodiscard]] bool better(int px, int py, const Cell& a, const Cell& b) const {
+        return nearest.better(px, py, a, b);
+    }
+    [[nodiscard]] ReachRect reach(int px, int py, const Cell& c) const {
+        const long long r = static_cast<long long>(c.w);
+        return {px - r, py - r, px + r, py + r};
+    }
+};
+static_assert(Reaching<NearestWithin>);
+static_assert(!Reaching<NearestSite>);
+
+Grid randomSeeds(int w, int h, int count, std::uint64_t seed, int maxRadius) {
+    Grid g(w, h);
+    std::uint64_t s = seed;
+    auto next = [&s] {
+        s = s * 6364136223846793005ull + 1442695040888963407ull;
+        return s >> 33;
+    };
+    for (int i = 0; i < count; ++i) {
+        const int x = int(next() % std::uint64_t(w)), y = int(next() % std::uint64_t(h));
+        g.at(x, y) =
+            Cell{float(x), float(y), float(i), float(1 + next() % std::uint64_t(maxRadius))};
+    }
+    return g;
+}
+
+const char* const kPlans[] = {"jfa",      "jfa+2",   "1+jfa",    "half:jfa+2",
+                              "doubling", "flood:3", "flood:20", "flood"};
+
+TEST(JfaBand, BandEqualsFullForEveryPlanTileAndGrid) {
+    for (auto [w, h] : {std::pair{1, 1}, {7, 3}, {64, 64}, {200, 150}, {513, 7}}) {
+        const Grid seeds = randomSeeds(w, h, 6, 11, 9);
+        for (const char* spec : kPlans) {
+            const Plan plan = parsePlan(spec, w, h);
+            for (int tile : {8, 16, 32}) {
+                FloodOptions band;
+                band.region = FloodRegion::Band;
+                band.bandTile = tile;
+                // A plain criterion: only the plan bounds the band.
+                const NearestSite nearest{true};
+                EXPECT_EQ(flood(plan, seeds, nearest, band), flood(plan, seeds, nearest))
+                    << spec << " " << w << "x" << h << " tile " << tile;
+                // A reaching criterion: the per-seed rects bound it.
+                const NearestWithin within;
+                const FloodResult b = floodWithStats(plan, seeds, within, band);
+                const FloodResult f = floodWithStats(plan, seeds, within);
+                EXPECT_EQ(b.grid, f.grid) << spec << " " << w << "x" << h << " tile " << tile;
+                ASSERT_EQ(b.passes.size(), f.passes.size()) << spec;
+                for (std::size_t i = 0; i < b.passes.size(); ++i)
+                    EXPECT_EQ(b.passes[i].changed, f.passes[i].changed) << spec << " pass " << i;
+            }
+        }
+    }
+}
+
+TEST(JfaBand, EmptySeedsGiveAnEmptyBandAndAnEmptyGrid) {
+    const Grid seeds(100, 60);
+    FloodOptions band;
+    band.region = FloodRegion::Band;
+    const FloodResult r =
+        floodWithStats(parsePlan("flood:9", 100, 60), seeds, NearestWithin{}, band);
+    EXPECT_EQ(r.activeShare, 0.0);
+    for (const Cell& c : r.grid.cells) EXPECT_EQ(c, kEmptyCell);
+}
+
+TEST(JfaBand, TheBandFollowsTheSeedsReachNotTheGrid) {
+    // Two seeds of radius 3 on a 256^2 grid: the band is their tiles, a few percent of the grid.
+    Grid seeds(256, 256);
+    seeds.at(40, 40) = Cell{40, 40, 0, 3};
+    seeds.at(200, 100) = Cell{200, 100, 1, 3};
+    const Band b = floodBand(parsePlan("jfa", 256, 256), seeds, NearestWithin{}, 16);
+    EXPECT_FALSE(b.full);
+    EXPECT_EQ(b.activeTexels(), 2 * 16 * 16); // each rect lies within one tile
+    EXPECT_TRUE(b.covers(40, 40));
+    EXPECT_FALSE(b.covers(120, 120));
+    // Without a criterion bound, a plan of short reach still limits it: flood:20 reaches 20.
+    const Band p = floodBand(parsePlan("flood:20", 256, 256), seeds, NearestSite{true}, 16);
+    EXPECT_FALSE(p.full);
+    // Each seed's tile (32..47 and 192..207 per axis) widened by 20 texels touches 5 x 5 tiles:
+    // 50 of the grid's 256.
+    EXPECT_EQ(p.activeTexels(), 50 * 16 * 16);
+    // A plan that reaches the whole grid from a seed with no criterion bound: every tile.
+    EXPECT_TRUE(floodBand(parsePlan("jfa", 256, 256), seeds, NearestSite{true}, 16).full);
+}
+
+TEST(JfaBand, MaxSeedReachAndAutoPasses) {
+    Grid seeds(300, 300);
+    seeds.at(150, 150) = Cell{150, 150, 0, 40};
+    seeds.at(5, 5) = Cell{5, 5, 1, 10};
+    EXPECT_EQ(maxSeedReach(seeds, NearestWithin{}), 40);
+    EXPECT_EQ(maxSeedReach(Grid(30, 30), NearestWithin{}), -1);
+    // An unbounded criterion reaches the grid's far side from its farthest seed.
+    EXPECT_EQ(maxSeedReach(seeds, NearestSite{true}), 294);
+    // The fewest halving passes whose reach 2^k - 1 covers it.
+    EXPECT_EQ(passesForReach(40, 9), 6); // 63 >= 40 > 31
+    EXPECT_EQ(passesForReach(31, 9), 5);
+    EXPECT_EQ(passesForReach(0, 9), 1);
+    EXPECT_EQ(passesForReach(-1, 9), 1);
+    EXPECT_EQ(passesForReach(1000, 8), 8);
+}
+
+TEST(JfaBand, TileLogic) {
+    EXPECT_EQ(checkBandTile(16), "");
+    EXPECT_NE(checkBandTile(12), "");
+    EXPECT_NE(checkBandTile(0), "");
+    EXPECT_NE(checkBandTile(512), "");
+    EXPECT_EQ(parseFloodRegion("band"), FloodRegion::Band);
+    EXPECT_EQ(parseFloodRegion("full"), FloodRegion::Full);
+    EXPECT_FALSE(parseFloodRegion("half").has_value());
+    const ReachRect r = clipRect({-50, 3, 500, 9}, 10, 5, 4, 100, 100);
+    EXPECT_EQ(r.x0, 6);
+    EXPECT_EQ(r.x1, 14);
+    EXPECT_EQ(r.y0, 3);
+    EXPECT_EQ(r.y1, 9);
+    EXPECT_EQ(rectReach(r, 10, 5), 4);
+    EXPECT_EQ(rectReach({1, 1, 0, 0}, 0, 0), -1);
+    // Partial edge tiles count only their texels.
+    const Band b = markTiles(20, 10, 16, {ReachRect{0, 0, 19, 9}, ReachRect{1, 1, 0, 0}});
+    EXPECT_TRUE(b.full);
+    EXPECT_EQ(b.activeTexels(), 200);
+    FloodOptions bad;
+    bad.region = FloodRegion::Band;
+    bad.bandTile = 10;
+    EXPECT_THROW((void)flood(parsePlan("jfa", 8, 8), Grid(8, 8), NearestSite{}, bad),
+                 std::invalid_argument);
+}
+
+} // namespace
+} // namespace fl::jfa
