@@ -1,11 +1,11 @@
 #version 450 core
-// Band-limited flooding, step A (jfa/Band.h): one invocation per full-resolution seed texel. The
+// Band-limited flooding, step A (jfa/Band.h): one invocation per seed of step A0's list. The
 // criterion bounds where the seed's cell can be accepted (jfaSeedRect); clipped to the grid, the
 // rect joins its tile's union (4 words per tile: min x, min y, max x, max y; an empty tile keeps
 // min > max), and uMaxReach keeps the largest distance + 1 from a seed to its rect (for choosing
 // a pass count). Same as fl::jfa::floodBand / maxSeedReach on the CPU before the plan's square.
 
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = 64) in;
 
 bool jfaEmpty(vec4 c);
 // Texels x0..x1 (.x, .z), y0..y1 (.y, .w) where seed cell c seeded at p may be accepted.
@@ -14,15 +14,16 @@ ivec4 jfaSeedRect(ivec2 p, vec4 c);
 layout(binding = 1) uniform sampler2D uSeeds;
 layout(std430, binding = 1) buffer TileRects { uint tileRects[]; };
 layout(std430, binding = 2) buffer MaxReach { uint maxReach; };
+layout(std430, binding = 6) readonly buffer SeedList { uint seedCount; uint dispatch[3]; uint seeds[]; };
 uniform ivec2 uSize;
 uniform int uTile;
 uniform int uTilesX;
 
 void main() {
-    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-    if (any(greaterThanEqual(p, uSize))) return;
+    if (gl_GlobalInvocationID.x >= seedCount) return;
+    uint entry = seeds[gl_GlobalInvocationID.x];
+    ivec2 p = ivec2(int(entry & 0xffffu), int(entry >> 16));
     vec4 c = texelFetch(uSeeds, p, 0);
-    if (jfaEmpty(c)) return;
     ivec4 r = jfaSeedRect(p, c);
     r.xy = max(r.xy, ivec2(0));
     r.zw = min(r.zw, uSize - 1);

@@ -46,6 +46,8 @@ void GlFloodKernelBase::buildBandPrograms() {
     if (reachProgram_.id() != 0) return;
     reachProgram_ = gl::Program::build(shaders_, {{GL_COMPUTE_SHADER, "jfa_band_reach.comp.glsl"},
                                                   {GL_COMPUTE_SHADER, criterionFile_}});
+    seedsProgram_ = gl::Program::build(shaders_, {{GL_COMPUTE_SHADER, "jfa_band_seeds.comp.glsl"},
+                                                  {GL_COMPUTE_SHADER, criterionFile_}});
     markProgram_ = gl::Program::build(shaders_, {{GL_COMPUTE_SHADER, "jfa_band_mark.comp.glsl"}});
     compactProgram_ =
         gl::Program::build(shaders_, {{GL_COMPUTE_SHADER, "jfa_band_compact.comp.glsl"}});
@@ -71,7 +73,8 @@ std::vector<const gl::Program*> GlFloodKernelBase::criterionPrograms(bool needBa
     std::vector<const gl::Program*> out{&passProgram_, &expandProgram_};
     if (needBand) buildBandPrograms();
     if (reachProgram_.id() != 0) {
-        out.insert(out.end(), {&reachProgram_, &bandPassProgram_, &bandExpandProgram_});
+        out.insert(out.end(),
+                   {&seedsProgram_, &reachProgram_, &bandPassProgram_, &bandExpandProgram_});
     }
     return out;
 }
@@ -86,6 +89,22 @@ void GlFloodKernelBase::measureReach(const gl::Texture& seeds) {
     glClearNamedBufferData(tileReach_.id(), GL_RGBA32UI, GL_RGBA_INTEGER, GL_UNSIGNED_INT,
                            emptyRect.data());
     clearBuffer(maxReach_);
+    // Step A0: the seed texels in a list, and step A's indirect dispatch over it.
+    ensureBuffer(seedList_, 4 + std::size_t(seeds.width()) * std::size_t(seeds.height()));
+    const GLuint zero = 0;
+    glClearNamedBufferSubData(seedList_.id(), GL_R32UI, 0, sizeof(GLuint), GL_RED_INTEGER,
+                              GL_UNSIGNED_INT, &zero);
+    seedsProgram_.set("uSize", glm::ivec2(seeds.width(), seeds.height()));
+    glBindTextureUnit(1, seeds.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, seedList_.id());
+    glUseProgram(seedsProgram_.id());
+    seedsProgram_.set("uMode", 0);
+    glDispatchCompute(groups(seeds.width()), groups(seeds.height()), 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    seedsProgram_.set("uMode", 1);
+    glDispatchCompute(1, 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+    // Step A over the list.
     reachProgram_.set("uSize", glm::ivec2(seeds.width(), seeds.height()));
     reachProgram_.set("uTile", tile_);
     reachProgram_.set("uTilesX", tilesX);
@@ -93,8 +112,11 @@ void GlFloodKernelBase::measureReach(const gl::Texture& seeds) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, tileReach_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, maxReach_.id());
     glUseProgram(reachProgram_.id());
-    glDispatchCompute(groups(seeds.width()), groups(seeds.height()), 1);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, seedList_.id());
+    glDispatchComputeIndirect(sizeof(GLuint)); // SeedList::dispatch
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, 0);
     glUseProgram(0);
     glBindTextureUnit(1, 0);
     measuredSeeds_ = seeds.id();

@@ -156,8 +156,13 @@ const gl::Texture& GlFloodKernelBase::runPlan(const Plan& plan, const gl::Textur
         throw std::invalid_argument("jfa: GL kernels run plans of at most two stages, got " +
                                     std::to_string(stages.size()));
     const bool halfRes = stages.size() > 1;
-    lastRunBanded_ = region_ == FloodRegion::Band && buildBand(plan, seeds);
-    measuredSeeds_ = 0; // step A is consumed: the next frame's seeds may reuse the texture
+    if (preparedSeeds_ == seeds.id())
+        lastRunBanded_ = preparedBanded_; // prepareBand() built it for this plan and seeds
+    else
+        lastRunBanded_ = region_ == FloodRegion::Band && buildBand(plan, seeds);
+    // Steps A-C are consumed: the next frame's seeds may reuse the texture.
+    measuredSeeds_ = 0;
+    preparedSeeds_ = 0;
     const gl::Texture* current = &seeds;
     if (halfRes) {
         const Stage& s0 = stages.front();

@@ -104,15 +104,27 @@ class GlFloodKernelBase {
     GlKernelKind kind_;
     FloodRegion region_ = FloodRegion::Full;
     int tile_ = kDefaultBandTile;
+    gl::Program seedsProgram_;                                // band step A0: the seed list
     gl::Program reachProgram_, markProgram_, compactProgram_; // band steps A, B, C
     gl::Program bandPassProgram_, bandExpandProgram_;         // passes over a tile list
-    gl::Buffer tileReach_, maxReach_, flags_;
+    gl::Buffer tileReach_, maxReach_, flags_, seedList_;
     struct StageBand {
         gl::Buffer tiles;    // packed tile coordinates (x | y << 16)
         gl::Buffer commands; // jfa_band_compact.comp.glsl's indirect commands
     };
     StageBand stageBands_[2];  // per stage of a (at most two-stage) plan
     GLuint measuredSeeds_ = 0; // seeds texture step A last ran on (0: none pending)
+    GLuint preparedSeeds_ = 0; // seeds texture prepareBand() built the band for
+    bool preparedBanded_ = false;
+
+  protected:
+    /// prepareBand()'s work once the criterion's uniforms are set.
+    void prepare(const Plan& plan, const gl::Texture& seeds) {
+        preparedBanded_ = region_ == FloodRegion::Band && buildBand(plan, seeds);
+        preparedSeeds_ = seeds.id();
+    }
+
+  private:
     bool lastRunBanded_ = false;
     int bandStages_ = 0;    // stages of the last banded run
     double bandArea_ = 0.0; // its full-resolution texels
@@ -154,6 +166,14 @@ class GlFloodKernel : public GlFloodKernelBase {
         for (const gl::Program* p : criterionPrograms(true)) setCriterionUniforms(*p, criterion);
         measureReach(seeds);
         return readMaxReach();
+    }
+
+    /// Builds the band for `plan` on `seeds` now (steps A-C, no read-back), so that it can be
+    /// timed apart from the passes; the next run() with the same seeds uses it. Optional.
+    void prepareBand(const Plan& plan, const gl::Texture& seeds, const C& criterion) {
+        for (const gl::Program* p : criterionPrograms(region() == FloodRegion::Band))
+            setCriterionUniforms(*p, criterion);
+        prepare(plan, seeds);
     }
 
     /// Runs `plan` on full-resolution `seeds` (plan.width() x plan.height(), not modified);

@@ -33,6 +33,9 @@ std::string checkOptionValue(const MethodOption& o, std::string_view value) {
         if (!parseNumber(value, v) || v != std::floor(v) || v < o.min || v > o.max)
             return cat("must be ", o.word.empty() ? "" : cat(o.word, " or "), "an integer in ",
                        range(o), ", got '", value, "'");
+        if (o.multipleOf > 0 && static_cast<long long>(v) % o.multipleOf != 0)
+            return cat("must be a multiple of ", o.multipleOf, " in ", range(o), ", got '", value,
+                       "'");
         return {};
     case OptionKind::Float:
         if (!parseNumber(value, v) || !std::isfinite(v) || v < o.min || v > o.max)

@@ -55,6 +55,18 @@ constexpr MethodOption kFullJfa{
     "--full-jfa", "fullJfa", OptionKind::Flag, "false",
     "Full JFA: as many passes as the grid allows (log2 of the shadow-map size for -l, of the "
     "frame for -e), instead of --jfa-passes"};
+constexpr MethodOption kBandTile{
+    "--band-tile",
+    "bandTile",
+    OptionKind::Int,
+    "16",
+    "Tile side of --flood-region band, in texels (a multiple of 8); the band is the tiles the "
+    "penumbrae can reach",
+    jfa::kMinBandTile,
+    jfa::kMaxBandTile,
+    {},
+    {},
+    8};
 constexpr MethodOption kNoObjectIdFix{
     "--no-object-id-fix", "noObjectIdFix", OptionKind::Flag, "false",
     "Let occluders flood into the hard shadows of other objects (thesis 5.4.2, first "
@@ -120,9 +132,11 @@ constexpr MethodOption kVsmBleed{"--vsm-bleed",
                                  0.0,
                                  0.95};
 
-constexpr const MethodOption* kLightFloodOptions[] = {&kPasses, &kFullJfa, &kFloodRegion};
+constexpr const MethodOption* kLightFloodOptions[] = {&kPasses, &kFullJfa, &kFloodRegion,
+                                                      &kBandTile};
 constexpr const MethodOption* kEyeFloodOptions[] = {
-    &kPasses, &kFullJfa, &kFloodRegion, &kNoObjectIdFix, &kNoMidpointFix, &kBoundaryThreshold};
+    &kPasses,        &kFullJfa,       &kFloodRegion,      &kBandTile,
+    &kNoObjectIdFix, &kNoMidpointFix, &kBoundaryThreshold};
 constexpr const MethodOption* kPcfOptions[] = {&kPcfKernel};
 constexpr const MethodOption* kPcssOptions[] = {&kPcssPreset};
 constexpr const MethodOption* kGroundTruthOptions[] = {&kReferenceSamples, &kReferenceMapSize};
@@ -131,9 +145,10 @@ constexpr const MethodOption* kVsmOptions[] = {&kVsmBlur, &kVsmBleed};
 // --- Timed phases (step 3's parts, as PassTimer names them) ------------------------------------
 
 constexpr std::string_view kHardPhases[] = {"hard shadows"};
-constexpr std::string_view kLightFloodPhases[] = {"silhouettes", "flood", "penumbra lookup"};
-constexpr std::string_view kEyeFloodPhases[] = {"occluder ids", "eye hard shadows", "boundaries",
-                                                "flood", "composite"};
+constexpr std::string_view kLightFloodPhases[] = {"silhouettes", "band", "flood",
+                                                  "penumbra lookup"};
+constexpr std::string_view kEyeFloodPhases[] = {
+    "occluder ids", "eye hard shadows", "boundaries", "band", "flood", "composite"};
 constexpr std::string_view kPcfPhases[] = {"pcf filter"};
 constexpr std::string_view kPcssPhases[] = {"blocker search+filter"};
 constexpr std::string_view kGroundTruthPhases[] = {"reference maps", "reference resolve"};
@@ -246,6 +261,10 @@ const MethodOption& floodPassesOption() {
 
 const MethodOption& floodRegionOption() {
     return kFloodRegion;
+}
+
+int bandTile(const MethodOptions& options) {
+    return options.integer(kBandTile);
 }
 
 jfa::FloodRegion floodRegion(const MethodOptions& options) {

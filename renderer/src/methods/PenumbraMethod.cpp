@@ -25,6 +25,7 @@ class PenumbraMethod final : public ShadowMethod {
                                     in.height());
         ps.standardFlooding = standardFlooding_;
         ps.region = floodRegion(in.options);
+        ps.bandTile = bandTile(in.options);
         const int size = in.shadow.depth.width();
         const PenumbraReach reach =
             penumbraReach(in.disk, in.shadow.mapViewProj(), {size, size}, in.sceneBounds);

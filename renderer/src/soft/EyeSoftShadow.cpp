@@ -142,7 +142,8 @@ EyeSoftShadowPass::EyeSoftShadowPass(const gl::ShaderLibrary& shaders)
                                              {GL_FRAGMENT_SHADER, "jfae_boundary.frag.glsl"}})),
       composite_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
                                               {GL_FRAGMENT_SHADER, "jfae_composite.frag.glsl"}})),
-      emptyVao_(gl::VertexArray::create()), kernel_(shaders, jfa::GlKernelKind::Fragment) {}
+      emptyVao_(gl::VertexArray::create()), kernel_(shaders, jfa::GlKernelKind::Fragment),
+      depth_(shaders) {}
 
 void EyeSoftShadowPass::resize(int width, int height, int shadowSize) {
     if (!ids_ || ids_.width() != shadowSize) ids_ = gl::Texture(GL_R32F, shadowSize, shadowSize);
@@ -230,8 +231,9 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::Pass
     }
     if (timer) timer->end();
 
-    // Phase 4: flood the occluders through the penumbrae, in eye space.
-    if (timer) timer->begin("flood");
+    // Phase 4: flood the occluders through the penumbrae, in eye space; its band (jfa/Band.h)
+    // and, with auto, its pass count first, timed apart.
+    if (timer) timer->begin("band");
     EyeSoftCriterion criterion;
     criterion.light = in.light;
     criterion.objectIdFix = in.settings.objectIdFix;
@@ -239,13 +241,19 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::Pass
     criterion.pointsTexture = points_.id();
     criterion.occludersTexture = occluders_.id();
     criterion.reachBound = in.reach;
-    kernel_.setRegion(in.region);
+    if (criterion.reachBound.enabled) // receivers are the surface pixels (w >= 0)
+        depth_.build(points_, -0.5f, in.light, criterion.reachBound);
+    kernel_.setRegion(in.region, in.bandTile);
     if (passes == 0) // auto: one value read back, since the plan is recorded on the CPU
         passes = jfa::passesForReach(kernel_.maxSeedReach(seeds_, criterion), maxPasses);
     const jfa::Plan plan = eyeSoftPlan(passes, in.standardFlooding, in.width, in.height);
+    kernel_.prepareBand(plan, seeds_, criterion);
+    if (timer) timer->end();
+    if (timer) timer->begin("flood");
     const gl::Texture& flooded = kernel_.run(plan, seeds_, criterion);
     glBindTextureUnit(2, 0);
     glBindTextureUnit(3, 0);
+    glBindTextureUnit(4, 0);
     if (timer) timer->end();
 
     // Phase 5: visibility per pixel.

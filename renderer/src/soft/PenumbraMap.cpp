@@ -70,7 +70,8 @@ jfa::Grid silhouetteSeeds(const ReceiverGrid& r, const DiskLight& light, float t
 PenumbraMapPass::PenumbraMapPass(const gl::ShaderLibrary& shaders)
     : silhouette_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
                                                {GL_FRAGMENT_SHADER, "silhouette.frag.glsl"}})),
-      emptyVao_(gl::VertexArray::create()), kernel_(shaders, jfa::GlKernelKind::Fragment) {}
+      emptyVao_(gl::VertexArray::create()), kernel_(shaders, jfa::GlKernelKind::Fragment),
+      depth_(shaders) {}
 
 PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, gl::PassTimer* timer) {
     const int size = in.receivers.width();
@@ -92,20 +93,27 @@ PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, gl::PassTime
     glBindTextureUnit(0, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (timer) timer->end();
-    // Phase 3: flood the occluders through the penumbra region.
-    if (timer) timer->begin("flood");
+    // Phase 3: flood the occluders through the penumbra region; its band (jfa/Band.h) and,
+    // with auto, its pass count first, timed apart.
+    if (timer) timer->begin("band");
     PenumbraCriterion criterion;
     criterion.light = in.light;
     criterion.receiverTexture = in.receivers.id();
     criterion.reachBound = in.reach;
+    if (criterion.reachBound.enabled) // receivers are the texels with w = 1
+        depth_.build(in.receivers, 0.5f, in.light, criterion.reachBound);
     kernel_.setRegion(in.settings.region, in.settings.bandTile);
     PenumbraSettings settings = in.settings;
     if (settings.passes == 0) // auto: one value read back, since the plan is recorded on the CPU
         settings.passes =
             jfa::passesForReach(kernel_.maxSeedReach(seeds_, criterion), penumbraMaxPasses(size));
     const jfa::Plan plan = penumbraPlan(settings, size);
+    kernel_.prepareBand(plan, seeds_, criterion);
+    if (timer) timer->end();
+    if (timer) timer->begin("flood");
     const gl::Texture& map = kernel_.run(plan, seeds_, criterion);
     glBindTextureUnit(2, 0);
+    glBindTextureUnit(4, 0);
     if (timer) timer->end();
     return {seeds_, map, kernel_.passesRun(), settings.passes};
 }

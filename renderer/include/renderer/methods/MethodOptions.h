@@ -21,6 +21,7 @@ struct MethodOption {
     std::string_view choices = {}; // Choice: the values, '|'-separated
     std::string_view word = {};    // Int: a word accepted besides the range ("auto"); integer()
                                    // reads it as 0
+    int multipleOf = 0;            // Int: the value must be a multiple of this (0: any)
 };
 
 /// "" when `value` is valid for `o`, else the problem in words ("must be an integer in

@@ -139,6 +139,8 @@ const MethodOption& floodPassesOption();
 const MethodOption& floodRegionOption();
 /// Its value.
 jfa::FloodRegion floodRegion(const MethodOptions& options);
+/// --band-tile's value (checked by the flooding rows' check()).
+int bandTile(const MethodOptions& options);
 /// requestedPasses() for --jfa-passes auto: the method chooses per frame (passesForReach).
 inline constexpr int kAutoPasses = 0;
 /// The flood pass count a flooding method's options ask for at this map and frame size (what

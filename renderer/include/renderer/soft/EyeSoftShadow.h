@@ -137,6 +137,7 @@ class EyeSoftShadowPass {
         int width, height;     // frame size
         jfa::FloodRegion region = jfa::FloodRegion::Band; // jfa/Band.h: the same result
         PenumbraReach reach = {}; // the image's penumbra bound (band and auto passes)
+        int bandTile = jfa::kDefaultBandTile;
     };
     struct Outputs {
         const gl::Texture& points;     // phase 2, RGBA32F (EyeImage::points)
@@ -148,7 +149,7 @@ class EyeSoftShadowPass {
         int jfaPasses;                 // the JFA pass count used (auto resolved)
     };
     /// Runs phases 2-5; `timer` (optional) times them as "occluder ids", "eye hard shadows",
-    /// "boundaries", "flood" and "composite".
+    /// "boundaries", "band", "flood" and "composite".
     Outputs execute(const Inputs& in, gl::PassTimer* timer = nullptr);
 
   private:
@@ -159,6 +160,7 @@ class EyeSoftShadowPass {
     gl::Texture ids_, points_, occluders_, seeds_, visibility_;
     gl::Framebuffer eyeFbo_, seedsFbo_, visibilityFbo_;
     jfa::GlFloodKernel<EyeSoftCriterion> kernel_;
+    ReceiverDepthPyramid depth_; // tightens the band's bound (PenumbraReach)
 
   public:
     /// The flood's kernel (its region and the last run's active share).

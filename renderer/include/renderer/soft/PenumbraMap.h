@@ -54,7 +54,8 @@ class PenumbraMapPass {
         int passes;                     // flood passes run
         int jfaPasses;                  // the JFA pass count used (auto resolved)
     };
-    /// Runs both phases; `timer` (optional) times them as "silhouettes" and "flood".
+    /// Runs both phases; `timer` (optional) times them as "silhouettes", "band" (the flood's
+    /// band and pass count) and "flood".
     Outputs execute(const Inputs& in, gl::PassTimer* timer = nullptr);
 
   private:
@@ -63,6 +64,7 @@ class PenumbraMapPass {
     gl::Texture seeds_;
     gl::Framebuffer fbo_;
     jfa::GlFloodKernel<PenumbraCriterion> kernel_;
+    ReceiverDepthPyramid depth_; // tightens the band's bound (PenumbraReach)
 
   public:
     /// The flood's kernel (its region and the last run's active share).

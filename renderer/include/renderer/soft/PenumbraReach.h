@@ -11,14 +11,22 @@
 // that can accept o; a corner behind the projection (w <= 0) bounds nothing. Margins (1% on t and
 // r, 2 texels) cover float rounding in the criterion.
 //
-// Measured and not kept: clipping the pyramid by the scene's box and the view volume before
-// projecting (11 planes, Sutherland-Hodgman per face) halves the light-space band (22% -> 11%
-// of a 1024^2 map) and bounds the eye-space cones that pass behind the camera, but costs ~50x
-// more per seed on llvmpipe: the seed pass went from ~5 to ~300 ms (docs/BENCHMARKS.md).
+// On the GPU, D is first the deepest receiver on the grid, and the cone is then cut again at the
+// deepest receiver inside that first rect, read from a depth pyramid of the receivers
+// (ReceiverDepthPyramid): every receiver that can take o lies in the rect, so none is deeper.
+// On JFA-L's 1024^2 map this took the band from 22% to 12.5% of the texels. The CPU bound (the
+// tests' reference) stops at the scene's D: both are conservative, so the floods agree whatever
+// rect each one draws.
+//
+// Measured and not kept (docs/BENCHMARKS.md): clipping the pyramid by the scene's box and the
+// view volume before projecting (11 planes, Sutherland-Hodgman per face) also halved the band,
+// but made the seed pass ~400 ms on llvmpipe; three rounds of the depth cut instead of one gave
+// 10.7% instead of 12.5% and a slower flood.
 
 #include <renderer/soft/DiskLight.h>
 
 #include <gpu/Program.h>
+#include <gpu/ShaderLibrary.h>
 #include <jfa/Band.h>
 
 #include <geometry/Aabb.h>
@@ -33,6 +41,28 @@ struct PenumbraReach {
     glm::mat4 worldToClip{1.0f}; // world -> the grid's clip space (texel = (ndc / 2 + 1/2) size)
     glm::ivec2 size{0};          // grid texels
     float farDepth = 0.0f;       // deepest receiver's distance from the light's plane
+    /// GPU only: the receivers' depth pyramid (ReceiverDepthPyramid) and its level count; 0 =
+    /// none. The shaders cut each cone again at the deepest receiver inside its first rect.
+    GLuint depthPyramid = 0;
+    int depthLevels = 0;
+};
+
+/// The receivers' depth pyramid of the GPU bound (shaders/reach_depth.comp.glsl): per 8x8 block
+/// of the flooded grid the deepest receiver (distance from the light's plane), then 2x2 maxima
+/// up to one texel. Receivers lie in the grid itself (JFA-L: shadow-map texels; JFA-E: eye
+/// pixels), so the deepest one in a rect bounds every receiver that can take an occluder there.
+class ReceiverDepthPyramid {
+  public:
+    explicit ReceiverDepthPyramid(const gl::ShaderLibrary& shaders);
+    /// Builds it from receiver positions (texels with w >= validMin are receivers) and stores
+    /// it in `reach` (depthPyramid, depthLevels).
+    void build(const gl::Texture& positions, float validMin, const DiskLight& light,
+               PenumbraReach& reach);
+
+  private:
+    gl::Program program_;
+    gl::Texture pyramid_;
+    int levels_ = 0;
 };
 
 /// The deepest point of `bounds` measured from the light's plane (either side), with a margin.
