@@ -36,9 +36,10 @@ std::string_view floodRegionName(FloodRegion region);
 /// Parses "band" or "full"; nullopt otherwise.
 std::optional<FloodRegion> parseFloodRegion(std::string_view text);
 
-/// Tile side in texels. 16 measured fastest on llvmpipe for the penumbra floods (docs/BENCHMARKS.md
-/// "Band-limited flooding"); tiles must be a multiple of 8 (the compute kernels' 8x8 groups).
-inline constexpr int kDefaultBandTile = 16;
+/// Tile side in texels: 8 measured fastest on llvmpipe for JFA-L (frame 99 ms against 109 at 16
+/// and ~145 at 32; docs/BENCHMARKS.md "Band-limited flooding"). Tiles must be a multiple of 8
+/// (the compute kernels' 8x8 groups).
+inline constexpr int kDefaultBandTile = 8;
 inline constexpr int kMinBandTile = 8;
 inline constexpr int kMaxBandTile = 256;
 /// "" when `tile` is a valid tile side, else the problem in words.

@@ -59,7 +59,7 @@ constexpr MethodOption kBandTile{
     "--band-tile",
     "bandTile",
     OptionKind::Int,
-    "16",
+    "8",
     "Tile side of --flood-region band, in texels (a multiple of 8); the band is the tiles the "
     "penumbrae can reach",
     jfa::kMinBandTile,
