@@ -103,7 +103,10 @@ ivec4 penumbraRect(vec3 o) {
         while (level + 1 < uReachDepthLevels &&
                any(greaterThan(hi / (8 << level) - lo / (8 << level), ivec2(1))))
             ++level;
-        ivec2 size = textureSize(uReachDepth, level);
+        // Level sizes from the grid, not textureSize(uReachDepth, level): llvmpipe (Mesa 22.3)
+        // answers that with the next level's size, which clamped the query to half the cells
+        // and cut cones short (band != full on flood-E; tests/penumbra_gltest.cpp).
+        ivec2 size = max(((uReachSize + 7) / 8) >> level, ivec2(1));
         ivec2 c0 = min(lo / (8 << level), size - 1), c1 = min(hi / (8 << level), size - 1);
         float far = max(max(texelFetch(uReachDepth, c0, level).r,
                             texelFetch(uReachDepth, ivec2(c1.x, c0.y), level).r),

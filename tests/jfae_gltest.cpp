@@ -197,6 +197,46 @@ Frame renderDefault(std::string_view method, float radius = kTestRadius, bool ob
     return f;
 }
 
+// Band-limited flooding equals the full grid on the default view, where the penumbra bound's
+// depth pyramid is queried near the frame's last cells. Named after the bug it reproduces:
+// llvmpipe's textureSize(sampler, lod) answered the next level's size, so the pyramid query was
+// clamped to half the cells, cones were cut short and flood-E lost a seed's penumbra (6 pixels).
+TEST_F(JfaETest, BandEqualsFullWherePyramidQueryReachesTheLastCells) {
+    Scene scene = loadGltf(defaultAsset());
+    scene.light->radius = kTestRadius;
+    const gl::ShaderLibrary shaders;
+    const auto camera = makeCameraView(scene, {}, 1.0f);
+    for (const char* method : {"flood-e", "jfa-e"})
+        for (const char* passes : {"3", "auto"}) {
+            SCOPED_TRACE(std::string(method) + ", passes " + passes);
+            jfa::Grid grids[2];
+            double share = 1.0;
+            for (int i = 0; i < 2; ++i) {
+                RenderSettings settings;
+                settings.shadow.size = 256;
+                settings.method = method;
+                settings.options.set(floodPassesOption().flag, std::string(passes));
+                settings.options.set(floodRegionOption().flag, i == 0 ? "band" : "full");
+                Renderer r(shaders, scene, settings);
+                r.resize(256, 256);
+                r.render(camera);
+                ASSERT_NE(r.flood(), nullptr);
+                grids[i] = jfa::readGrid(*r.flood()->flooded);
+                if (i == 0) {
+                    ASSERT_NE(r.flood()->kernel, nullptr);
+                    EXPECT_TRUE(r.flood()->kernel->lastRunBanded());
+                    share = r.flood()->kernel->activeShare();
+                }
+            }
+            std::size_t differ = 0;
+            for (std::size_t k = 0; k < grids[0].cells.size(); ++k)
+                differ += !(grids[0].cells[k] == grids[1].cells[k]);
+            EXPECT_EQ(differ, 0u);
+            EXPECT_GT(nonEmpty(grids[1]), 1000u) << "the view must have penumbrae";
+            EXPECT_LT(share, 1.0);
+        }
+}
+
 TEST_F(JfaETest, ZeroLightRadiusGivesExactlyTheHardShadows) {
     const Frame hard = renderDefault("hard", 0.0f);
     for (const MethodDescriptor* d : floodingMethods(MethodSpace::Eye)) { // jfa-e, flood-e
@@ -319,7 +359,7 @@ TEST_F(JfaETest, DISABLED_Timing512) {
         settings.timing = gl::TimingMode::Finish;
         Renderer r(shaders, scene, settings);
         r.resize(512, 512);
-        const CameraView camera = makeCameraView(scene, {}, 1.0f);
+        const auto camera = makeCameraView(scene, {}, 1.0f);
         r.render(camera); // warm-up: llvmpipe compiles shader variants on first use
         constexpr int kFrames = 3;
         std::vector<gl::PassTime> sum;

@@ -111,6 +111,40 @@ FrameImages renderDefault(std::string_view method, std::optional<float> radius =
     return renderFrame(scene, makeCameraView(scene, {}, 1.0f), method, 512, 256);
 }
 
+// Band-limited flooding equals the full grid on the default scene at 256² and 512² maps, where
+// the depth pyramid of the penumbra bound is queried up to its last cells (see
+// jfae_gltest.cpp, BandEqualsFullWherePyramidQueryReachesTheLastCells, for the bug).
+TEST_F(PenumbraTest, BandEqualsFullOnTheDefaultScene) {
+    Scene scene = loadGltf(defaultAsset());
+    scene.light->radius = kTestRadius;
+    const gl::ShaderLibrary shaders;
+    const auto camera = makeCameraView(scene, {}, 1.0f);
+    for (int mapSize : {256, 512})
+        for (const char* method : {"jfa-l", "flood-l"})
+            for (const char* passes : {"4", "auto"}) {
+                SCOPED_TRACE(std::string(method) + ", passes " + passes + ", map " +
+                             std::to_string(mapSize));
+                jfa::Grid grids[2];
+                for (int i = 0; i < 2; ++i) {
+                    RenderSettings settings;
+                    settings.shadow.size = mapSize;
+                    settings.method = method;
+                    settings.options.set(floodPassesOption().flag, std::string(passes));
+                    settings.options.set(floodRegionOption().flag, i == 0 ? "band" : "full");
+                    Renderer r(shaders, scene, settings);
+                    r.resize(128, 128);
+                    r.render(camera);
+                    ASSERT_NE(r.flood(), nullptr);
+                    grids[i] = jfa::readGrid(*r.flood()->flooded);
+                    if (i == 0) {
+                        EXPECT_LT(r.flood()->kernel->activeShare(), 1.0);
+                    }
+                }
+                EXPECT_EQ(grids[0], grids[1]);
+                EXPECT_GT(nonEmpty(grids[1]), 100u) << "the map must have penumbrae";
+            }
+}
+
 TEST_F(PenumbraTest, ZeroLightRadiusGivesExactlyTheHardShadows) {
     const FrameImages hard = renderDefault("hard", 0.0f);
     const FrameImages soft = renderDefault("jfa-l", 0.0f);
