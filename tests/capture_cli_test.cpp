@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <fstream>
@@ -68,9 +69,39 @@ void checkCsv(const fs::path& dir) {
     std::string header, line;
     std::getline(csv, header);
     EXPECT_EQ(header.rfind("frame,method,width,height,rmse,rmse_penumbra,", 0), 0u) << header;
-    int rows = 0;
-    while (std::getline(csv, line)) ++rows;
+    auto split = [](const std::string& text) {
+        std::vector<std::string> cells;
+        std::stringstream in(text);
+        for (std::string cell; std::getline(in, cell, ',');) cells.push_back(cell);
+        if (!text.empty() && text.back() == ',') cells.emplace_back();
+        return cells;
+    };
+    const std::vector<std::string> columns = split(header);
+    const auto column = [&](const char* name) {
+        return static_cast<std::size_t>(std::find(columns.begin(), columns.end(), name) -
+                                         columns.begin());
+    };
+    const std::size_t method = column("method"), passes = column("jfa_passes"),
+                      share = column("active_share");
+    ASSERT_LT(passes, columns.size()) << header;
+    ASSERT_LT(share, columns.size()) << header;
+    int rows = 0, floodRows = 0;
+    while (std::getline(csv, line)) {
+        ++rows;
+        const std::vector<std::string> cells = split(line);
+        ASSERT_EQ(cells.size(), columns.size()) << line;
+        const std::string& m = cells[method];
+        if (m == "jfa-l" || m == "flood-l" || m == "jfa-e" || m == "flood-e") {
+            ++floodRows; // the flood's passes (auto: chosen per frame) and band share
+            EXPECT_GE(std::stoi(cells[passes]), 1) << line;
+            EXPECT_GT(std::stod(cells[share]), 0.0) << line;
+            EXPECT_LE(std::stod(cells[share]), 1.0) << line;
+        } else {
+            EXPECT_TRUE(cells[passes].empty() && cells[share].empty()) << line;
+        }
+    }
     EXPECT_EQ(rows, kFrames * static_cast<int>(std::size(kMethods)));
+    EXPECT_EQ(floodRows, kFrames * 4);
 }
 
 void checkSummary(const fs::path& dir) {
@@ -166,10 +197,12 @@ TEST(CaptureBadInput, ScriptErrorsNameTheField) {
     expectCleanFailure(capture(scriptFile("broken.json", "{" + camera), out), "not valid JSON",
                        out);
     expectCleanFailure(capture(outputDir("capture_bad") / "absent.json", out), "absent.json", out);
-    // JFA-E's 6 default passes reach 63 pixels: more than an 8x8 frame holds.
+    // 6 JFA-E passes reach 63 pixels: more than an 8x8 frame holds ("auto", the default,
+    // chooses what fits).
     expectCleanFailure(
-        capture(scriptFile("eye.json",
-                           "{" + camera + R"(, "resolutions": [[8, 8]], "methods": ["jfa-e"]})"),
+        capture(scriptFile("eye.json", "{" + camera +
+                                           R"(, "jfaPasses": 6, "resolutions": [[8, 8]], )"
+                                           R"("methods": ["jfa-e"]})"),
                 out),
         "jfaPasses at 8x8", out);
 }

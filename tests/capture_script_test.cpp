@@ -27,6 +27,8 @@ std::string script(const std::string& extra = "",
 TEST(CaptureScript, MinimalScriptHasDefaults) {
     const CaptureScript s = parse(script());
     EXPECT_EQ(s.frames, 3);
+    EXPECT_EQ(s.jfaPasses, "auto"); // as --jfa-passes
+    EXPECT_EQ(parse(script(R"(, "jfaPasses": "auto")")).jfaPasses, "auto");
     EXPECT_FALSE(s.camera); // the default walkthrough
     EXPECT_TRUE(s.scene.empty());
     ASSERT_EQ(s.resolutions.size(), 1u);
@@ -67,7 +69,7 @@ TEST(CaptureScript, EveryField) {
     EXPECT_EQ(s.resolutions[1], std::make_pair(128, 128));
     EXPECT_EQ(s.shadowMapProvider, "tsm");
     EXPECT_EQ(s.shadowMapSize, 512);
-    EXPECT_EQ(s.jfaPasses, 5);
+    EXPECT_EQ(s.jfaPasses, "5");
     EXPECT_EQ(s.reference.samples, 16);
     EXPECT_EQ(s.reference.mapSize, 256);
     EXPECT_FALSE(s.saveFrames);
@@ -148,6 +150,8 @@ TEST(CaptureScript, EveryMalformedFieldIsNamed) {
         {script(R"(, "shadowMap": {"provider": "cascaded"})"), "shadowMap.provider"},
         {script(R"(, "shadowMap": {"size": 4})"), "shadowMap.size"},
         {script(R"(, "jfaPasses": 99)"), "jfaPasses"},
+        {script(R"(, "jfaPasses": "many")"), "jfaPasses"},
+        {script(R"(, "jfaPasses": 2.5)"), "jfaPasses"},
         {script(R"(, "jfaPasses": 10, "shadowMap": {"size": 256})"), "jfaPasses"},
         {script(R"(, "reference": {"samples": 0})"), "reference.samples"},
         {script(R"(, "reference": {"mapSize": "big"})"), "reference.mapSize"},

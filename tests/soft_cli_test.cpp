@@ -89,12 +89,25 @@ TEST(SoftCli, CompareWritesCsvSummaryAndTheWorstFrame) {
                           dir.string());
     ASSERT_EQ(r.code, 0) << r.output;
     std::ifstream csv(dir / "frames.csv");
-    std::string line;
+    std::string header, line;
+    ASSERT_TRUE(std::getline(csv, header));
+    // Each lane's flood: passes chosen (auto by default) and the band's share of the texels.
+    for (const char* column : {"method_jfa_passes", "method_active_share",
+                               "reference_jfa_passes", "reference_active_share"})
+        EXPECT_NE(header.find(column), std::string::npos) << column << " in " << header;
     int rows = 0;
     while (std::getline(csv, line)) ++rows;
-    EXPECT_EQ(rows, 1 + 3) << "a header and one row per frame";
+    EXPECT_EQ(rows, 3) << "one row per frame";
     std::ifstream js(dir / "summary.json");
     const nlohmann::json j = nlohmann::json::parse(js);
+    EXPECT_EQ(j["passes"], "auto");
+    for (const char* lane : {"method", "reference"}) {
+        ASSERT_TRUE(j["flood"].contains(lane)) << j.dump();
+        EXPECT_GE(j["flood"][lane]["medianPasses"].get<int>(), 1) << lane;
+        const double share = j["flood"][lane]["medianActiveShare"].get<double>();
+        EXPECT_GT(share, 0.0) << lane;
+        EXPECT_LT(share, 1.0) << lane << ": banded by default";
+    }
     EXPECT_EQ(j["method"], "jfa-l");
     EXPECT_EQ(j["reference"], "flood-l");
     EXPECT_EQ(j["frames"], 3);

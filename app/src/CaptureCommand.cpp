@@ -166,7 +166,9 @@ void captureSize(const CaptureSetup& c, int w, int h, FrameRunner& runner,
         }
         results.runs.push_back(std::move(run));
     }
-    FrameScorer scorer(results.runs, first, script.jfaPasses);
+    MethodOptions defaults; // the script's jfaPasses as a number (0: auto)
+    defaults.set(floodPassesOption().flag, script.jfaPasses);
+    FrameScorer scorer(results.runs, first, defaults.integer(floodPassesOption()));
     const FramePlan plan{
         &c.scene,
         script.camera ? *script.camera
@@ -257,7 +259,7 @@ int runCapture(const CaptureRequest& req) {
     so.shaderDir = req.shaderDir;
     so.shadowMapSize = script.shadowMapSize;
     so.shadowMap = script.shadowMapProvider;
-    so.methodOptions[std::string(floodPassesOption().flag)] = std::to_string(script.jfaPasses);
+    so.methodOptions[std::string(floodPassesOption().flag)] = script.jfaPasses;
     so.strictMethodOptions = false; // the script's methods each take their own
     so.timing = req.timing;
     const Scene scene = loadScene(so);

@@ -51,7 +51,9 @@ CsvTable resultsCsv(const CaptureResults& r) {
                                         "dI_0.05_0.1",
                                         "dI_0.1_0.2",
                                         "dI_ge_0.2",
-                                        "frame_ms"};
+                                        "frame_ms",
+                                        "jfa_passes",
+                                        "active_share"};
     for (const std::string& p : phases) columns.push_back(csvName(p) + "_ms");
     CsvTable csv(columns);
     for (const MethodRun& m : r.runs)
@@ -72,6 +74,10 @@ CsvTable resultsCsv(const CaptureResults& r) {
                     csv.blank();
             }
             csv << m.times.frameMs().at(i);
+            if (const std::optional<FloodSample>& fl = m.times.flood(i))
+                csv << fl->passes << fl->activeShare;
+            else
+                csv.blank().blank();
             for (const std::string& p : phases) csv << m.times.phaseMs(i, p);
             csv.endRow();
         }
@@ -154,6 +160,10 @@ nlohmann::json resultsSummary(const CaptureResults& r) {
         for (const std::string& p : phases)
             if (m.times.ran(p)) ph[p] = m.times.medianPhaseMs(p);
         e["medianPhaseMs"] = ph;
+        if (const std::optional<FloodSample> fl = m.times.medianFlood()) {
+            e["medianJfaPasses"] = fl->passes;
+            e["medianActiveShare"] = fl->activeShare;
+        }
         e["worstFrame"] = m.worstFrame;
         e["worstFrameRmse"] = m.worstRmse;
         if (bucketN > 0) {

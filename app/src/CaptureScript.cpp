@@ -215,7 +215,19 @@ CaptureScript parseCaptureScript(const std::string& text, const std::filesystem:
             if (m.contains("size"))
                 s.shadowMapSize = readInt(m["size"], "shadowMap.size", 16, 8192);
         }
-        if (j.contains("jfaPasses")) s.jfaPasses = readInt(j["jfaPasses"], "jfaPasses", 1, 13);
+        if (j.contains("jfaPasses")) {
+            // The --jfa-passes option's own validation: 1 to 13, or "auto".
+            const Json& p = j["jfaPasses"];
+            if (p.is_number_integer())
+                s.jfaPasses = std::to_string(p.get<long long>());
+            else if (p.is_string())
+                s.jfaPasses = p.get<std::string>();
+            else
+                fail("jfaPasses", "expected an integer or \"auto\"");
+            if (const std::string bad = checkOptionValue(floodPassesOption(), s.jfaPasses);
+                !bad.empty())
+                fail("jfaPasses", bad);
+        }
         if (j.contains("reference")) {
             const Json& r = j["reference"];
             checkKeys(r, "reference", {"samples", "mapSize"});

@@ -11,7 +11,7 @@
 //    "light": {"radius": R, "keys": [[x,y,z], ...]},        // keys: positions, piecewise linear
 //    "resolutions": [[W, H], ...],                         // default [[512, 512]]
 //    "shadowMap": {"provider": "uniform" | "tsm", "size": S},
-//    "jfaPasses": P,
+//    "jfaPasses": P | "auto",                              // default "auto" (as --jfa-passes)
 //    "reference": {"samples": N, "mapSize": S},
 //    "methods": ["hard", "pcss:16/24", "pcf:5", {"method": "jfa-l", "passes": 7, "label": ".."}],
 //                                                          // keys: the method's options in the
@@ -55,7 +55,7 @@ struct CaptureScript {
     std::vector<std::pair<int, int>> resolutions;
     std::string shadowMapProvider = "uniform";
     int shadowMapSize = 1024;
-    int jfaPasses = 6;
+    std::string jfaPasses{floodPassesOption().defaultValue}; // --jfa-passes of every flood method
     ReferenceSettings reference;
     std::vector<MethodSpec> methods;
     bool saveFrames = true;

@@ -31,7 +31,8 @@ struct CompareRequest {
 };
 
 // frames.csv: per frame the |dI| statistics, then each lane's time per phase (the phases either
-// renderer's timer reported, in the order they ran) and per frame.
+// renderer's timer reported, in the order they ran) and per frame, then each lane's flood: the
+// passes it ran and the share of texels its band covered.
 CsvTable compareCsv(const std::vector<SoftStats>& stats, const std::vector<Lane>& lanes) {
     const std::vector<std::string> phases = phaseNames({&lanes[0].times, &lanes[1].times});
     std::vector<std::string> columns = {
@@ -41,6 +42,10 @@ CsvTable compareCsv(const std::vector<SoftStats>& stats, const std::vector<Lane>
         for (const std::string& p : phases)
             columns.push_back(lane.label + "_" + csvName(p) + "_ms");
     for (const Lane& lane : lanes) columns.push_back(lane.label + "_frame_ms");
+    for (const Lane& lane : lanes) {
+        columns.push_back(lane.label + "_jfa_passes");
+        columns.push_back(lane.label + "_active_share");
+    }
     CsvTable csv(columns);
     for (std::size_t i = 0; i < stats.size(); ++i) {
         const SoftStats& s = stats[i];
@@ -50,6 +55,12 @@ CsvTable compareCsv(const std::vector<SoftStats>& stats, const std::vector<Lane>
         for (const Lane& lane : lanes)
             for (const std::string& p : phases) csv << lane.times.phaseMs(i, p);
         for (const Lane& lane : lanes) csv << lane.times.frameMs().at(i);
+        for (const Lane& lane : lanes) {
+            if (const std::optional<FloodSample>& f = lane.times.flood(i))
+                csv << f->passes << f->activeShare;
+            else
+                csv.blank().blank();
+        }
         csv.endRow();
     }
     return csv;
@@ -91,7 +102,9 @@ int runCompare(const CompareRequest& r) {
               << "scene: " << scene.source << " (" << scene.triangleCount() << " triangles)\n"
               << method << " vs " << *reference << ", " << r.frames << " frames at " << r.width
               << "x" << r.height << ", shadow map " << providerName(settings.shadow.provider) << " "
-              << settings.shadow.size << "^2, " << passes << " passes\n";
+              << settings.shadow.size << "^2, "
+              << (passes == kAutoPasses ? std::string("auto") : std::to_string(passes))
+              << " passes\n";
 
     // Lane labels are also the CSV column and JSON key prefixes ("method_flood_ms").
     std::vector<Lane> lanes = {{"method", &methodRenderer, {}},
@@ -134,7 +147,10 @@ int runCompare(const CompareRequest& r) {
     j["height"] = r.height;
     j["shadowMap"] = {{"provider", providerName(settings.shadow.provider)},
                       {"size", settings.shadow.size}};
-    j["passes"] = passes;
+    if (passes == kAutoPasses)
+        j["passes"] = "auto"; // chosen per frame: frames.csv and "flood" below
+    else
+        j["passes"] = passes;
     j["meanPenumbraPixelsReference"] =
         mean([](const SoftStats& s) { return static_cast<double>(s.penumbraReference); });
     j["meanShareDeltaBelow0.05"] = mean([](const SoftStats& s) { return s.deltaBuckets[0]; });
@@ -158,6 +174,10 @@ int runCompare(const CompareRequest& r) {
     const double floodRatio = lanes[1].times.medianPhaseMs("flood") /
                               std::max(lanes[0].times.medianPhaseMs("flood"), 1e-9);
     j["floodTimeReferenceOverMethod"] = floodRatio;
+    for (const Lane& lane : lanes)
+        if (const std::optional<FloodSample> f = lane.times.medianFlood())
+            j["flood"][lane.label] = {{"medianPasses", f->passes},
+                                      {"medianActiveShare", f->activeShare}};
 
     // Everything is computed; now write (each file under a temporary name, then renamed).
     const std::filesystem::path dir(r.out);

@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <unistd.h>
@@ -20,11 +21,35 @@ std::optional<std::string> referenceOf(const std::string& method) {
     return std::string(m->reference);
 }
 
-void PhaseTimes::record(const gl::PassTimer& timer) {
+std::optional<FloodSample> floodSample(const Renderer& renderer) {
+    const FloodFrame* f = renderer.flood();
+    if (!f) return std::nullopt;
+    // activeShare() reads 4 bytes back: the frame is already finished and timed here.
+    return FloodSample{f->passes, f->kernel ? f->kernel->activeShare() : 1.0};
+}
+
+void PhaseTimes::record(const gl::PassTimer& timer, std::optional<FloodSample> flood) {
     Phases phases;
     for (const gl::PassTime& p : timer.passes()) phases.emplace_back(p.name, p.ms);
     phases_.push_back(std::move(phases));
     frameMs_.push_back(timer.frameMs());
+    flood_.push_back(flood);
+}
+
+bool PhaseTimes::flooded() const {
+    return std::any_of(flood_.begin(), flood_.end(), [](const auto& f) { return f.has_value(); });
+}
+
+std::optional<FloodSample> PhaseTimes::medianFlood() const {
+    std::vector<double> passes, share;
+    for (const std::optional<FloodSample>& f : flood_)
+        if (f) {
+            passes.push_back(f->passes);
+            share.push_back(f->activeShare);
+        }
+    if (passes.empty()) return std::nullopt;
+    return FloodSample{static_cast<int>(std::lround(fl::median(std::move(passes)))),
+                       fl::median(std::move(share))};
 }
 
 double PhaseTimes::phaseMs(std::size_t i, const std::string& name) const {
@@ -84,7 +109,7 @@ void FrameRunner::run(const FramePlan& plan, std::vector<Lane>& lanes, const OnF
             images[l] = readFrame(r);
             requireFinite(images[l].visibility,
                           lanes[l].label + " visibility, frame " + std::to_string(i));
-            lanes[l].times.record(r.timer());
+            lanes[l].times.record(r.timer(), floodSample(r));
         }
         onFrame(i, images);
         ++done_;

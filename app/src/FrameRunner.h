@@ -30,13 +30,33 @@ namespace fl::app {
 /// from the method table (jfa-l -> flood-l, jfa-e -> flood-e); none for every other method.
 std::optional<std::string> referenceOf(const std::string& method);
 
-/// One renderer's times over a run: per frame, the frame's total and each pass its timer reported.
+/// A flooding method's flood in one frame: the passes it ran (with `--jfa-passes auto`, the
+/// count it chose) and the share of the grid's texels its band covered (1 for a full-grid flood).
+struct FloodSample {
+    int passes = 0;
+    double activeShare = 1.0;
+};
+
+/// What the renderer's last frame flooded; nullopt for methods that do not flood.
+std::optional<FloodSample> floodSample(const Renderer& renderer);
+
+/// One renderer's times over a run: per frame, the frame's total and each pass its timer
+/// reported, and its flood (passes, active share) where the method floods.
 class PhaseTimes {
   public:
     using Phases = std::vector<std::pair<std::string, double>>; // (pass name, ms) in pass order
 
-    /// Appends the frame `timer` has just timed.
-    void record(const gl::PassTimer& timer);
+    /// Appends the frame `timer` has just timed, with its flood.
+    void record(const gl::PassTimer& timer, std::optional<FloodSample> flood = std::nullopt);
+    /// Frame i's flood; nullopt where the method did not flood.
+    [[nodiscard]] const std::optional<FloodSample>& flood(std::size_t i) const {
+        return flood_.at(i);
+    }
+    /// Whether any frame flooded.
+    [[nodiscard]] bool flooded() const;
+    /// Median over the frames that flooded of the passes and of the active share (nullopt if
+    /// none did).
+    [[nodiscard]] std::optional<FloodSample> medianFlood() const;
     [[nodiscard]] std::size_t frames() const { return frameMs_.size(); }
     [[nodiscard]] const std::vector<double>& frameMs() const { return frameMs_; }
     /// The passes of frame i, in the order they ran.
@@ -53,6 +73,7 @@ class PhaseTimes {
   private:
     std::vector<double> frameMs_;
     std::vector<Phases> phases_;
+    std::vector<std::optional<FloodSample>> flood_;
 };
 
 /// Every phase any of `times` ran, in the order first seen: the phase columns of a table.
