@@ -139,6 +139,35 @@ TEST(Cli, VoronoiWritesDiagramAndReportsErrors) {
     EXPECT_EQ(readExr(dir / "v.exr", w, h).size(), 6u);
 }
 
+// A plan of limited reach floods only the band around the sites, with the full grid's result;
+// a plan that reaches every texel runs full and says so once. Both backends, both GL kernels.
+TEST(Cli, VoronoiBandEqualsFullAndSaysWhenItRunsFull) {
+    const auto dir = outputDir("cli_voronoi_band");
+    const std::string common = "voronoi --sites 6 --width 96 --height 80 --plan flood:5 --out " +
+                               dir.string() + " ";
+    for (const char* backend : {"--backend cpu", "--backend gl --kernel fragment",
+                                "--backend gl --kernel compute"}) {
+        SCOPED_TRACE(backend);
+        const Outcome band = run(common + backend + " --name band");
+        ASSERT_EQ(band.code, 0) << band.output;
+        EXPECT_NE(band.output.find("flood region: band, "), std::string::npos) << band.output;
+        const Outcome full = run(common + backend + " --flood-region full --name full");
+        ASSERT_EQ(full.code, 0) << full.output;
+        EXPECT_EQ(full.output.find("flood region"), std::string::npos) << full.output;
+        int w = 0, h = 0;
+        const auto a = readExr(dir / "band.exr", w, h), b = readExr(dir / "full.exr", w, h);
+        ASSERT_EQ(a.size(), b.size());
+        for (std::size_t c = 0; c < a.size(); ++c) EXPECT_EQ(a[c].values, b[c].values) << c;
+    }
+    const Outcome jfa = run("voronoi --sites 6 --width 96 --height 80 --plan jfa --out " +
+                            dir.string() + " --name jfa");
+    ASSERT_EQ(jfa.code, 0) << jfa.output;
+    EXPECT_NE(jfa.output.find("flood region: full (every tile lies within the plan's reach"),
+              std::string::npos)
+        << jfa.output;
+    EXPECT_EQ(run("voronoi --flood-region half --out " + dir.string()).code, 2);
+}
+
 TEST(Cli, VoronoiBadInput) {
     const auto bad = outputDir("cli") / "bad_points.txt";
     std::ofstream(bad) << "1 2\n3 oops\n";

@@ -34,6 +34,7 @@ struct VoronoiOptions {
     std::string plan = "jfa";
     std::string backend = "gl";
     std::string kernel = "fragment";
+    std::string floodRegion = "band";
     bool compare = false;
     std::string out = "captures";
     std::string name = "voronoi";
@@ -135,12 +136,16 @@ Input makeInput(const VoronoiOptions& o) {
 struct Run {
     jfa::Grid grid;
     double ms = 0;
+    bool banded = false;      // ran over a band, not the whole grid
+    double activeShare = 1.0; // of the full-resolution texels
 };
 
+// Floods with the GL kernel (timed after a warm-up run) or the CPU one, over `region`.
 Run flood(const jfa::Plan& plan, const jfa::Grid& seeds, const jfa::NearestSite& crit,
-          jfa::GlFloodKernel<jfa::NearestSite>* gl) {
+          jfa::GlFloodKernel<jfa::NearestSite>* gl, jfa::FloodRegion region) {
     Run r;
     if (gl) {
+        gl->setRegion(region);
         const gl::Texture in = jfa::uploadGrid(seeds);
         gl->run(plan, in, crit); // warm-up: shader compilation and allocation are not the flood
         glFinish();
@@ -150,11 +155,18 @@ Run flood(const jfa::Plan& plan, const jfa::Grid& seeds, const jfa::NearestSite&
         r.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
                    .count();
         r.grid = jfa::readGrid(out);
+        r.banded = gl->lastRunBanded();
+        r.activeShare = gl->activeShare();
     } else {
+        jfa::FloodOptions options;
+        options.region = region;
         const auto t0 = std::chrono::steady_clock::now();
-        r.grid = jfa::flood(plan, seeds, crit);
+        jfa::FloodResult f = jfa::floodWithStats(plan, seeds, crit, options);
         r.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
                    .count();
+        r.grid = std::move(f.grid);
+        r.activeShare = f.activeShare;
+        r.banded = f.activeShare < 1.0;
     }
     return r;
 }
@@ -253,11 +265,20 @@ int runVoronoi(const VoronoiOptions& o) {
                 throw InputError(std::string("--plan: ") + e.what());
             }
         }();
-        const Run r = flood(plan, in.seeds, crit, kernel.get());
+        const jfa::FloodRegion region = *jfa::parseFloodRegion(o.floodRegion);
+        const Run r = flood(plan, in.seeds, crit, kernel.get(), region);
         const jfa::ErrorReport rep = jfa::analyzeErrors(r.grid, view, plan.name());
         std::cout << std::fixed << std::setprecision(2) << plan.describe() << "\n  " << r.ms
                   << " ms; " << rep.describe() << "\n"
                   << std::defaultfloat;
+        // The band (jfa/Band.h) bounds a plan by its reach: said once per plan when it could not.
+        if (region == jfa::FloodRegion::Band && r.banded)
+            std::cout << "  flood region: band, " << std::setprecision(3)
+                      << 100.0 * r.activeShare << "% of the texels\n"
+                      << std::defaultfloat;
+        else if (region == jfa::FloodRegion::Band)
+            std::cout << "  flood region: full (every tile lies within the plan's reach of "
+                      << jfa::planBandReach(plan) << " texels from a site)\n";
         if (!o.compare) writeOutputs(o, r.grid, exact, jfa::errorPixelMask(r.grid, view), crit);
     }
     if (!in.mask.empty() && !o.compare) {
@@ -298,6 +319,12 @@ Runner addVoronoiCommand(CLI::App& app) {
     cmd->add_option("--mask", o->mask,
                     "PNG whose bright pixels are generalized sites (sets the size)");
     cmd->add_option("--labels", o->labels, "PNG giving each mask pixel a region id by colour");
+    cmd->add_option("--flood-region", o->floodRegion,
+                    "band: compute only the tiles within the plan's reach of a site (the same "
+                    "result, texel for texel; a plan that reaches every texel runs full); full: "
+                    "every texel")
+        ->check(CLI::IsMember({"band", "full"}))
+        ->capture_default_str();
     cmd->add_option("--plan", o->plan,
                     "Flood plan: jfa, jfa+1, jfa+2, jfa2, 1+jfa, 1+jfa+1, doubling, "
                     "flood, flood:N, half:jfa, half:jfa+2, ...")
