@@ -48,28 +48,34 @@ uniform int uReachEnabled;
 uniform mat4 uReachMatrix; // world -> the flooded grid's clip space
 uniform ivec2 uReachSize;
 uniform float uReachFarDepth;
-// The receivers' depth pyramid (reach_depth.comp.glsl): 8x8-texel blocks at level 0; 0 levels =
-// none (the scene's deepest point bounds every cone).
-layout(binding = 4) uniform sampler2D uReachDepth;
-uniform int uReachDepthLevels;
-const int kReachRounds = 1; // 3 rounds: band 12.5% -> 10.7% of the map, flood slower (BENCHMARKS)
+// The receivers' bounds pyramid (reach_bounds.comp.glsl): per cell the min (uReachLo) and max
+// (uReachHi) of its receivers' world xyz and light depth (w), 8x8-texel cells at level 0; 0
+// levels = none (the scene's deepest point bounds every cone).
+layout(binding = 4) uniform sampler2D uReachLo;
+layout(binding = 5) uniform sampler2D uReachHi;
+uniform int uReachLevels;
 const int kJfaUnboundedReach = 0x3fffffff;
 const ivec4 kJfaUnboundedRect = ivec4(-kJfaUnboundedReach, -kJfaUnboundedReach,
                                       kJfaUnboundedReach, kJfaUnboundedReach);
 
-// The pyramid's texel bounds for a cone cut at depth `far`; .x > .z when unbounded.
-ivec4 penumbraRectAt(vec3 o, float depth, float far) {
+// The texel bounds of the cone's part between light depths d0 and d1 (d0 <= d1): the hull of
+// the squares around its two cross-sections (at d0 <= depth of o, the apex itself), projected;
+// .x > .z never (unbounded when a corner is behind the projection).
+ivec4 penumbraSegmentRect(vec3 o, float depth, float d0, float d1) {
     vec3 n = uDiskNormal;
-    float t = max((far - depth) / depth, 0.0) * 1.01 + 1e-3;
-    vec3 capCenter = o + t * (o - uDiskCenter);
-    float capRadius = t * uDiskRadius * 1.01;
+    // Margins (1%, 1e-3) widen the segment: covers float rounding in the criterion.
+    float t0 = max(max((d0 - depth) / depth, 0.0) * 0.99 - 1e-3, 0.0);
+    float t1 = max((d1 - depth) / depth, 0.0) * 1.01 + 1e-3;
     vec3 a = abs(n.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0);
-    vec3 u = normalize(cross(n, a)) * capRadius;
-    vec3 w = cross(normalize(n), normalize(u)) * capRadius;
+    vec3 u = normalize(cross(n, a));
+    vec3 w = cross(normalize(n), u);
     vec2 lo = vec2(1e30), hi = vec2(-1e30);
     bool front = true;
-    for (int i = 0; i < 5; ++i) {
-        vec3 q = i == 4 ? o : capCenter + ((i & 1) != 0 ? -u : u) + ((i & 2) != 0 ? -w : w);
+    for (int i = 0; i < 8; ++i) {
+        float t = i < 4 ? t0 : t1;
+        float radius = t * uDiskRadius * 1.01;
+        vec3 q = o + t * (o - uDiskCenter) + ((i & 1) != 0 ? -u : u) * radius +
+                 ((i & 2) != 0 ? -w : w) * radius;
         vec4 c = uReachMatrix * vec4(q, 1.0);
         front = front && c.w > 1e-6;
         vec2 texel = (c.xy / c.w * 0.5 + 0.5) * vec2(uReachSize);
@@ -80,41 +86,113 @@ ivec4 penumbraRectAt(vec3 o, float depth, float far) {
     return ivec4(ivec2(floor(lo)) - 2, ivec2(floor(hi)) + 2);
 }
 
-// Texels x0..x1 (.x, .z), y0..y1 (.y, .w) that can take occluder o. With the depth pyramid the
-// cone is cut a second time at the deepest receiver inside the first rect: every receiver that
-// can take o lies in that rect, so none is deeper (fl::penumbraReachRect).
+// Whether the box lo..hi (world) may hold a point of o's cone, the rays from the disk through o
+// beyond o. The cone lies inside the right circular cone with apex o, axis a from the disk's
+// centre through o, and half-angle asin(r / |o - c|): in the triangle o, c, q (q on the disk,
+// |q - c| <= r < |o - c|) the angle at o faces the shorter side q - c, so it is acute and its sine
+// is at most r / |o - c|. The box's bounding sphere is tested against that cone exactly (Eberly,
+// "Intersection of a sphere and a cone"); margins of 1% cover float rounding.
+bool coneMayHold(vec3 o, vec3 a, float sinHalf, float cosHalf, vec4 lo, vec4 hi) {
+    if (!(lo.x <= hi.x)) return false; // no receiver in the cell
+    vec3 centre = (lo.xyz + hi.xyz) * 0.5;
+    float radius = length(hi.xyz - lo.xyz) * 0.5 * 1.01 + 1e-4;
+    vec3 d = centre - (o - a * (radius / sinHalf)); // from the apex moved back by r / sin
+    float e = dot(a, d);
+    if (!(e > 0.0 && e * e >= dot(d, d) * cosHalf * cosHalf)) return false;
+    d = centre - o;
+    e = -dot(a, d);
+    if (e > 0.0 && e * e >= dot(d, d) * sinHalf * sinHalf) return dot(d, d) <= radius * radius;
+    return true;
+}
+
+// Pyramid cells per axis a seed's rect is first split into (at most 8 x 8 tested, then two
+// finer levels below the cells that pass).
+const int kReachCells = 8;
+
+// Texels x0..x1 (.x, .z), y0..y1 (.y, .w) that can take occluder o. The cone is first cut at the
+// deepest receiver of the grid (the pyramid's top), else the scene's deepest point. With the
+// pyramid, the cells of that rect (at most 8 x 8 of them) whose receivers' boxes the cone misses
+// are dropped, then the children of those kept, twice; the rect is the union of the cells kept
+// at the finest level, within the first rect. A receiver that takes o lies in the cone and in the
+// box of every cell above it, so its cell is kept at every level.
 ivec4 penumbraRect(vec3 o) {
     if (uReachEnabled == 0) return kJfaUnboundedRect;
     float depth = abs(dot(o - uDiskCenter, uDiskNormal));
     if (!(depth > 1e-6)) return kJfaUnboundedRect;
-    // The first cut: the deepest receiver on the whole grid (the pyramid's top), else the scene's.
-    float first = uReachDepthLevels == 0
+    float first = uReachLevels == 0
                       ? uReachFarDepth
-                      : texelFetch(uReachDepth, ivec2(0), uReachDepthLevels - 1).r * 1.001 + 1e-4;
-    ivec4 r = penumbraRectAt(o, depth, first);
-    if (uReachDepthLevels == 0 || r.x > r.z) return r;
-    // Each cut holds every receiver that can take o, so the deepest receiver inside it bounds
-    // the next: a few rounds shrink the rect towards the receivers actually below o.
-    for (int round = 0; round < kReachRounds; ++round) {
-        ivec2 lo = max(r.xy, ivec2(0)), hi = min(r.zw, uReachSize - 1);
-        if (lo.x > hi.x || lo.y > hi.y) return ivec4(1, 1, 0, 0); // off the grid: no receiver
-        // The level whose cells are wide enough that the rect spans at most 2 x 2 of them.
-        int level = 0;
-        while (level + 1 < uReachDepthLevels &&
-               any(greaterThan(hi / (8 << level) - lo / (8 << level), ivec2(1))))
-            ++level;
-        // Level sizes from the grid, not textureSize(uReachDepth, level): llvmpipe (Mesa 22.3)
-        // answers that with the next level's size, which clamped the query to half the cells
-        // and cut cones short (band != full on flood-E; tests/penumbra_gltest.cpp).
-        ivec2 size = max(((uReachSize + 7) / 8) >> level, ivec2(1));
-        ivec2 c0 = min(lo / (8 << level), size - 1), c1 = min(hi / (8 << level), size - 1);
-        float far = max(max(texelFetch(uReachDepth, c0, level).r,
-                            texelFetch(uReachDepth, ivec2(c1.x, c0.y), level).r),
-                        max(texelFetch(uReachDepth, ivec2(c0.x, c1.y), level).r,
-                            texelFetch(uReachDepth, c1, level).r));
-        ivec4 next = penumbraRectAt(o, depth, far * 1.001 + 1e-4);
-        // Intersect: both hold every receiver that can take o.
-        r = ivec4(max(r.xy, next.xy), min(r.zw, next.zw));
+                      : texelFetch(uReachHi, ivec2(0), uReachLevels - 1).w * 1.001 + 1e-4;
+    ivec4 r = penumbraSegmentRect(o, depth, depth, first);
+    vec3 oc = o - uDiskCenter;
+    float sinHalf = uDiskRadius * 1.01 / length(oc);
+    if (uReachLevels == 0 || !(sinHalf < 0.999)) return r;
+    float cosHalf = sqrt(1.0 - sinHalf * sinHalf) * 0.99;
+    vec3 a = normalize(oc);
+    ivec2 lo = max(r.xy, ivec2(0)), hi = min(r.zw, uReachSize - 1);
+    if (lo.x > hi.x || lo.y > hi.y) return ivec4(1, 1, 0, 0); // off the grid: no receiver
+    // The level whose cells are wide enough that the rect spans at most kReachCells of them.
+    int level = 0;
+    while (level + 1 < uReachLevels &&
+           any(greaterThan(hi / (8 << level) - lo / (8 << level), ivec2(kReachCells - 1))))
+        ++level;
+    // Level sizes from the grid, not textureSize(lod): llvmpipe (Mesa 22.3) answers that with the
+    // next level's size, which clamped the query to half the cells and cut cones short (band !=
+    // full on flood-E; tests/jfae_gltest.cpp).
+    ivec2 grid = (uReachSize + 7) / 8;
+    ivec2 size0 = max(grid >> level, ivec2(1));
+    ivec2 c0 = min(lo / (8 << level), size0 - 1), c1 = min(hi / (8 << level), size0 - 1);
+    int level1 = max(level - 1, 0), level2 = max(level - 2, 0);
+    ivec2 size1 = max(grid >> level1, ivec2(1)), size2 = max(grid >> level2, ivec2(1));
+    ivec4 u = ivec4(kJfaUnboundedReach, kJfaUnboundedReach, -kJfaUnboundedReach,
+                    -kJfaUnboundedReach);
+    for (int y0 = c0.y; y0 <= c1.y; ++y0) {
+        for (int x0 = c0.x; x0 <= c1.x; ++x0) {
+            ivec2 q0 = ivec2(x0, y0);
+            if (!coneMayHold(o, a, sinHalf, cosHalf, texelFetch(uReachLo, q0, level),
+                             texelFetch(uReachHi, q0, level)))
+                continue;
+            // Children one level down (the cell itself at level 0); the last cell of a level
+            // also has the odd cell left over below it.
+            ivec2 k0 = level > 0 ? q0 * 2 : q0;
+            ivec2 k1 = level > 0 ? mix(q0 * 2 + 1, size1 - 1, equal(q0, size0 - 1)) : q0;
+            for (int y1 = k0.y; y1 <= k1.y; ++y1) {
+                for (int x1 = k0.x; x1 <= k1.x; ++x1) {
+                    ivec2 q1 = ivec2(x1, y1);
+                    if (level > 0 && !coneMayHold(o, a, sinHalf, cosHalf,
+                                                  texelFetch(uReachLo, q1, level1),
+                                                  texelFetch(uReachHi, q1, level1)))
+                        continue;
+                    ivec2 m0 = level > 1 ? q1 * 2 : q1;
+                    ivec2 m1 = level > 1 ? mix(q1 * 2 + 1, size2 - 1, equal(q1, size1 - 1)) : q1;
+                    for (int y2 = m0.y; y2 <= m1.y; ++y2) {
+                        for (int x2 = m0.x; x2 <= m1.x; ++x2) {
+                            ivec2 q2 = ivec2(x2, y2);
+                            vec4 cellLo = texelFetch(uReachLo, q2, level2);
+                            vec4 cellHi = texelFetch(uReachHi, q2, level2);
+                            float deepest = cellHi.w * 1.001 + 1e-4;
+                            // Its receivers all above o (one that takes o lies deeper), or
+                            // outside the cone.
+                            if (!(deepest > depth) ||
+                                (level > 1 &&
+                                 !coneMayHold(o, a, sinHalf, cosHalf, cellLo, cellHi)))
+                                continue;
+                            // The cell's texels (the last cell also holds the rest of the grid)
+                            // that the cone's part between the cell's receiver depths covers.
+                            int side = 8 << level2;
+                            ivec2 p0 = q2 * side;
+                            ivec2 p1 = mix((q2 + 1) * side - 1, uReachSize - 1,
+                                           equal(q2, size2 - 1));
+                            ivec4 seg =
+                                penumbraSegmentRect(o, depth, cellLo.w * 0.999 - 1e-4, deepest);
+                            p0 = max(p0, seg.xy);
+                            p1 = min(p1, seg.zw);
+                            if (p0.x > p1.x || p0.y > p1.y) continue;
+                            u = ivec4(min(u.xy, p0), max(u.zw, p1));
+                        }
+                    }
+                }
+            }
+        }
     }
-    return r;
+    return ivec4(max(u.xy, r.xy), min(u.zw, r.zw));
 }

@@ -198,7 +198,7 @@ Frame renderDefault(std::string_view method, float radius = kTestRadius, bool ob
 }
 
 // Band-limited flooding equals the full grid on the default view, where the penumbra bound's
-// depth pyramid is queried near the frame's last cells. Named after the bug it reproduces:
+// receivers' pyramid is queried near the frame's last cells. Named after the bug it reproduces:
 // llvmpipe's textureSize(sampler, lod) answered the next level's size, so the pyramid query was
 // clamped to half the cells, cones were cut short and flood-E lost a seed's penumbra (6 pixels).
 TEST_F(JfaETest, BandEqualsFullWherePyramidQueryReachesTheLastCells) {

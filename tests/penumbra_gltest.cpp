@@ -112,7 +112,7 @@ FrameImages renderDefault(std::string_view method, std::optional<float> radius =
 }
 
 // Band-limited flooding equals the full grid on the default scene at 256² and 512² maps, where
-// the depth pyramid of the penumbra bound is queried up to its last cells (see
+// the receivers' pyramid of the penumbra bound is queried up to its last cells (see
 // jfae_gltest.cpp, BandEqualsFullWherePyramidQueryReachesTheLastCells, for the bug).
 TEST_F(PenumbraTest, BandEqualsFullOnTheDefaultScene) {
     Scene scene = loadGltf(defaultAsset());

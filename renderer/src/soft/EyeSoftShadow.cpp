@@ -143,7 +143,7 @@ EyeSoftShadowPass::EyeSoftShadowPass(const gl::ShaderLibrary& shaders)
       composite_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
                                               {GL_FRAGMENT_SHADER, "jfae_composite.frag.glsl"}})),
       emptyVao_(gl::VertexArray::create()), kernel_(shaders, jfa::GlKernelKind::Fragment),
-      depth_(shaders) {}
+      bounds_(shaders) {}
 
 void EyeSoftShadowPass::resize(int width, int height, int shadowSize) {
     if (!ids_ || ids_.width() != shadowSize) ids_ = gl::Texture(GL_R32F, shadowSize, shadowSize);
@@ -242,7 +242,7 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::Pass
     criterion.occludersTexture = occluders_.id();
     criterion.reachBound = in.reach;
     if (criterion.reachBound.enabled) // receivers are the surface pixels (w >= 0)
-        depth_.build(points_, -0.5f, in.light, criterion.reachBound);
+        bounds_.build(points_, -0.5f, in.light, criterion.reachBound);
     kernel_.setRegion(in.region, in.bandTile);
     if (passes == 0) // auto: one value read back, since the plan is recorded on the CPU
         passes = jfa::passesForReach(kernel_.maxSeedReach(seeds_, criterion), maxPasses);

@@ -71,7 +71,7 @@ PenumbraMapPass::PenumbraMapPass(const gl::ShaderLibrary& shaders)
     : silhouette_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
                                                {GL_FRAGMENT_SHADER, "silhouette.frag.glsl"}})),
       emptyVao_(gl::VertexArray::create()), kernel_(shaders, jfa::GlKernelKind::Fragment),
-      depth_(shaders) {}
+      bounds_(shaders) {}
 
 PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, gl::PassTimer* timer) {
     const int size = in.receivers.width();
@@ -101,7 +101,7 @@ PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, gl::PassTime
     criterion.receiverTexture = in.receivers.id();
     criterion.reachBound = in.reach;
     if (criterion.reachBound.enabled) // receivers are the texels with w = 1
-        depth_.build(in.receivers, 0.5f, in.light, criterion.reachBound);
+        bounds_.build(in.receivers, 0.5f, in.light, criterion.reachBound);
     kernel_.setRegion(in.settings.region, in.settings.bandTile);
     PenumbraSettings settings = in.settings;
     if (settings.passes == 0) // auto: one value read back, since the plan is recorded on the CPU

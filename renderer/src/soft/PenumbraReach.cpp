@@ -55,21 +55,23 @@ void setPenumbraReachUniforms(const gl::Program& program, const PenumbraReach& r
     program.set("uReachMatrix", reach.worldToClip);
     program.set("uReachSize", reach.size);
     program.set("uReachFarDepth", reach.farDepth);
-    program.set("uReachDepthLevels", reach.depthPyramid != 0 ? reach.depthLevels : 0);
-    glBindTextureUnit(4, reach.depthPyramid);
+    program.set("uReachLevels", reach.boundsLo != 0 ? reach.boundsLevels : 0);
+    glBindTextureUnit(4, reach.boundsLo);
+    glBindTextureUnit(5, reach.boundsHi);
 }
 
-ReceiverDepthPyramid::ReceiverDepthPyramid(const gl::ShaderLibrary& shaders)
-    : program_(gl::Program::build(shaders, {{GL_COMPUTE_SHADER, "reach_depth.comp.glsl"}})) {}
+ReceiverBoundsPyramid::ReceiverBoundsPyramid(const gl::ShaderLibrary& shaders)
+    : program_(gl::Program::build(shaders, {{GL_COMPUTE_SHADER, "reach_bounds.comp.glsl"}})) {}
 
-void ReceiverDepthPyramid::build(const gl::Texture& positions, float validMin,
-                                 const DiskLight& light, PenumbraReach& reach) {
+void ReceiverBoundsPyramid::build(const gl::Texture& positions, float validMin,
+                                  const DiskLight& light, PenumbraReach& reach) {
     const int w0 = (positions.width() + 7) / 8, h0 = (positions.height() + 7) / 8;
-    if (!pyramid_ || pyramid_.width() != w0 || pyramid_.height() != h0) {
+    if (!lo_ || lo_.width() != w0 || lo_.height() != h0) {
         levels_ = 1; // GL's mip chain: sizes halve rounding down, to 1 x 1
         for (int w = w0, h = h0; w > 1 || h > 1; w = std::max(1, w / 2), h = std::max(1, h / 2))
             ++levels_;
-        pyramid_ = gl::Texture(GL_R32F, w0, h0, levels_);
+        lo_ = gl::Texture(GL_RGBA32F, w0, h0, levels_);
+        hi_ = gl::Texture(GL_RGBA32F, w0, h0, levels_);
     }
     glUseProgram(program_.id());
     setDiskLightUniforms(program_, light);
@@ -80,9 +82,12 @@ void ReceiverDepthPyramid::build(const gl::Texture& positions, float validMin,
         program_.set("uMode", level == 0 ? 0 : 1);
         program_.set("uDstSize", glm::ivec2(w, h));
         program_.set("uSrcSize", glm::ivec2(sw, sh));
-        glBindImageTexture(0, pyramid_.id(), level, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-        if (level > 0)
-            glBindImageTexture(1, pyramid_.id(), level - 1, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
+        glBindImageTexture(0, lo_.id(), level, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+        glBindImageTexture(1, hi_.id(), level, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+        if (level > 0) {
+            glBindImageTexture(2, lo_.id(), level - 1, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+            glBindImageTexture(3, hi_.id(), level - 1, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+        }
         glDispatchCompute(GLuint((w + 7) / 8), GLuint((h + 7) / 8), 1);
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
         sw = w;
@@ -90,12 +95,13 @@ void ReceiverDepthPyramid::build(const gl::Texture& positions, float validMin,
         w = std::max(1, w / 2);
         h = std::max(1, h / 2);
     }
-    glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-    glBindImageTexture(1, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
+    for (GLuint unit = 0; unit < 4; ++unit)
+        glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
     glBindTextureUnit(0, 0);
     glUseProgram(0);
-    reach.depthPyramid = pyramid_.id();
-    reach.depthLevels = levels_;
+    reach.boundsLo = lo_.id();
+    reach.boundsHi = hi_.id();
+    reach.boundsLevels = levels_;
 }
 
 } // namespace fl

@@ -160,7 +160,7 @@ class EyeSoftShadowPass {
     gl::Texture ids_, points_, occluders_, seeds_, visibility_;
     gl::Framebuffer eyeFbo_, seedsFbo_, visibilityFbo_;
     jfa::GlFloodKernel<EyeSoftCriterion> kernel_;
-    ReceiverDepthPyramid depth_; // tightens the band's bound (PenumbraReach)
+    ReceiverBoundsPyramid bounds_; // tightens the band's bound (PenumbraReach)
 
   public:
     /// The flood's kernel (its region and the last run's active share).

@@ -64,7 +64,7 @@ class PenumbraMapPass {
     gl::Texture seeds_;
     gl::Framebuffer fbo_;
     jfa::GlFloodKernel<PenumbraCriterion> kernel_;
-    ReceiverDepthPyramid depth_; // tightens the band's bound (PenumbraReach)
+    ReceiverBoundsPyramid bounds_; // tightens the band's bound (PenumbraReach)
 
   public:
     /// The flood's kernel (its region and the last run's active share).

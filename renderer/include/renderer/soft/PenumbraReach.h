@@ -11,17 +11,23 @@
 // that can accept o; a corner behind the projection (w <= 0) bounds nothing. Margins (1% on t and
 // r, 2 texels) cover float rounding in the criterion.
 //
-// On the GPU, D is first the deepest receiver on the grid, and the cone is then cut again at the
-// deepest receiver inside that first rect, read from a depth pyramid of the receivers
-// (ReceiverDepthPyramid): every receiver that can take o lies in the rect, so none is deeper.
-// On JFA-L's 1024^2 map this took the band from 22% to 12.5% of the texels. The CPU bound (the
-// tests' reference) stops at the scene's D: both are conservative, so the floods agree whatever
-// rect each one draws.
+// On the GPU, D is the deepest receiver on the grid, and the first rect is then split along a
+// pyramid of the receivers' bounds (ReceiverBoundsPyramid; shaders/disk_light.glsl,
+// penumbraRect): at most 8 x 8 cells of the rect, then two finer levels under the cells kept.
+// A cell is dropped when its receivers all lie above o, or when the box of their world positions
+// misses the cone (a right circular cone around the axis c -> o of half-angle asin(r / |o - c|)
+// holds every ray from the disk through o); a kept finest cell adds its texels that the cone's
+// part between the cell's receiver depths covers. Every receiver that can take o lies in the
+// cone and in the box of each cell above it, so its cell is kept. The CPU bound (the tests'
+// reference) stops at the scene's D: both are conservative, so the floods agree whatever rect
+// each one draws. JFA-L's 1024^2 map: band 22% (scene D) -> 9.2% (deepest receiver per rect) ->
+// 6.0% of the texels (cells); JFA-E's 512^2 frame: 69% -> 55%.
 //
 // Measured and not kept (docs/BENCHMARKS.md): clipping the pyramid by the scene's box and the
 // view volume before projecting (11 planes, Sutherland-Hodgman per face) also halved the band,
 // but made the seed pass ~400 ms on llvmpipe; three rounds of the depth cut instead of one gave
-// 10.7% instead of 12.5% and a slower flood.
+// 10.7% instead of 12.5% and a slower flood; 4 x 4 first cells instead of 8 x 8 gave the same
+// JFA-L band (6.1%) and a wider JFA-E one (58%).
 
 #include <renderer/soft/DiskLight.h>
 
@@ -41,27 +47,28 @@ struct PenumbraReach {
     glm::mat4 worldToClip{1.0f}; // world -> the grid's clip space (texel = (ndc / 2 + 1/2) size)
     glm::ivec2 size{0};          // grid texels
     float farDepth = 0.0f;       // deepest receiver's distance from the light's plane
-    /// GPU only: the receivers' depth pyramid (ReceiverDepthPyramid) and its level count; 0 =
-    /// none. The shaders cut each cone again at the deepest receiver inside its first rect.
-    GLuint depthPyramid = 0;
-    int depthLevels = 0;
+    /// GPU only: the receivers' bounds pyramid (ReceiverBoundsPyramid: its two textures and
+    /// level count; 0 = none). The shaders keep only the cells whose receivers the cone can hold.
+    GLuint boundsLo = 0, boundsHi = 0;
+    int boundsLevels = 0;
 };
 
-/// The receivers' depth pyramid of the GPU bound (shaders/reach_depth.comp.glsl): per 8x8 block
-/// of the flooded grid the deepest receiver (distance from the light's plane), then 2x2 maxima
-/// up to one texel. Receivers lie in the grid itself (JFA-L: shadow-map texels; JFA-E: eye
-/// pixels), so the deepest one in a rect bounds every receiver that can take an occluder there.
-class ReceiverDepthPyramid {
+/// The receivers' bounds pyramid of the GPU bound (shaders/reach_bounds.comp.glsl): per 8x8
+/// block of the flooded grid the box of its receivers' world positions and their range of
+/// distances from the light's plane, then the bounds of 2x2 cells up to one texel. Receivers lie
+/// in the grid itself (JFA-L: shadow-map texels; JFA-E: eye pixels), so a cell whose box the cone
+/// of an occluder misses holds no texel that can take it.
+class ReceiverBoundsPyramid {
   public:
-    explicit ReceiverDepthPyramid(const gl::ShaderLibrary& shaders);
+    explicit ReceiverBoundsPyramid(const gl::ShaderLibrary& shaders);
     /// Builds it from receiver positions (texels with w >= validMin are receivers) and stores
-    /// it in `reach` (depthPyramid, depthLevels).
+    /// it in `reach` (boundsLo, boundsHi, boundsLevels).
     void build(const gl::Texture& positions, float validMin, const DiskLight& light,
                PenumbraReach& reach);
 
   private:
     gl::Program program_;
-    gl::Texture pyramid_;
+    gl::Texture lo_, hi_; // min and max: xyz world position, w distance from the light's plane
     int levels_ = 0;
 };
 

@@ -1,0 +1,54 @@
+#version 450 core
+// The receivers' bounds pyramid of the penumbra bound (renderer/soft/PenumbraReach.h): level 0
+// holds, per 8x8 block of the flooded grid, the box of its receivers' world positions (xyz) and
+// their range of distances from the light's plane (w): the smallest in uDstLo, the largest in
+// uDstHi (lo = 1e30, hi = -1e30 where there is none). Level L + 1 bounds 2x2 cells of level L
+// (the last cell of an odd level: 3 cells). uMode 0 builds level 0 from the receiver positions,
+// 1 one level from the one below.
+#include "disk_light.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(binding = 0) uniform sampler2D uPositions; // xyz world position, w the receiver flag
+layout(binding = 0, rgba32f) uniform writeonly image2D uDstLo;
+layout(binding = 1, rgba32f) uniform writeonly image2D uDstHi;
+layout(binding = 2, rgba32f) uniform readonly image2D uSrcLo;
+layout(binding = 3, rgba32f) uniform readonly image2D uSrcHi;
+uniform int uMode;
+uniform float uValidMin; // a receiver has w >= uValidMin
+uniform ivec2 uDstSize;
+uniform ivec2 uSrcSize;
+
+void main() {
+    ivec2 t = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(t, uDstSize))) return;
+    vec4 lo = vec4(1e30), hi = vec4(-1e30);
+    if (uMode == 0) {
+        for (int j = 0; j < 8; ++j)
+            for (int i = 0; i < 8; ++i) {
+                ivec2 q = t * 8 + ivec2(i, j);
+                if (any(greaterThanEqual(q, uSrcSize))) continue;
+                vec4 p = texelFetch(uPositions, q, 0);
+                if (p.w >= uValidMin) {
+                    vec4 v = vec4(p.xyz, abs(dot(p.xyz - uDiskCenter, uDiskNormal)));
+                    lo = min(lo, v);
+                    hi = max(hi, v);
+                }
+            }
+    } else {
+        // GL's mip sizes halve rounding down, so the last cell of a level also takes the odd
+        // cell left over below it (a cell is never lost; the query clamps to the last cell).
+        for (int j = 0; j < 3; ++j)
+            for (int i = 0; i < 3; ++i) {
+                ivec2 q = t * 2 + ivec2(i, j);
+                bool take = all(lessThan(q, uSrcSize)) && (i < 2 || t.x == uDstSize.x - 1) &&
+                            (j < 2 || t.y == uDstSize.y - 1);
+                if (take) {
+                    lo = min(lo, imageLoad(uSrcLo, q));
+                    hi = max(hi, imageLoad(uSrcHi, q));
+                }
+            }
+    }
+    imageStore(uDstLo, t, lo);
+    imageStore(uDstHi, t, hi);
+}
