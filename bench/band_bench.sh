@@ -7,7 +7,7 @@ rounds=${1:-2}
 shift || true
 bench=${FLOODLIGHT_BENCH:-build/release/bench/floodlight_bench}
 export MESA_SHADER_CACHE_DISABLE=true
-configs=("pcss --pcss-preset 16/16" "jfa-l" "jfa-l --flood-region full" "jfa-l --band-tile 8" "jfa-e" "jfa-e --flood-region full"
+configs=("pcss --pcss-preset 16/16" "jfa-l" "jfa-l --flood-region full" "jfa-e" "jfa-e --flood-region full"
          "jfa-e --jfa-passes 6" "jfa-e --jfa-passes 6 --flood-region full")
 for ((r = 1; r <= rounds; ++r)); do
   for c in "${configs[@]}"; do

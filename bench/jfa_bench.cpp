@@ -98,6 +98,30 @@ int main(int argc, char** argv) {
             row(name, t, flood.passCount());
             median[name] = t.median;
         }
+        // Band-limited flooding (jfa/Band.h) against the full grid on plans of limited reach
+        // (few sites: a small band), with each kernel kind (band passes are compute for both
+        // kinds: instanced tile quads through the fragment kernel measured twice as slow).
+        for (jfa::GlKernelKind kind : {jfa::GlKernelKind::Fragment, jfa::GlKernelKind::Compute}) {
+            jfa::GlFloodKernel<jfa::NearestSite> kernel(shaders, kind);
+            const jfa::Grid seeds =
+                jfa::seedPoints(jfa::randomIntegerSites(20, size, size, 1), size, size, true).grid;
+            const gl::Texture in = jfa::uploadGrid(seeds);
+            for (const char* spec : {"flood:15", "flood:63"}) {
+                const jfa::Plan plan = jfa::parsePlan(spec, size, size);
+                for (jfa::FloodRegion region : {jfa::FloodRegion::Full, jfa::FloodRegion::Band}) {
+                    kernel.setRegion(region);
+                    const Timing t = timeRuns(floodRuns, [&] { kernel.run(plan, in, crit); });
+                    const std::string name = std::string(jfa::kernelName(kind)) + " " + spec +
+                                             ", 20 sites, " +
+                                             std::string(jfa::floodRegionName(region)) + " (" +
+                                             std::to_string(int(kernel.activeShare() * 1000) / 10.0)
+                                                 .substr(0, 4) +
+                                             "%)";
+                    row(name, t, kernel.passesRun());
+                    median[name] = t.median;
+                }
+            }
+        }
         // Until unchanged: standard flooding run to completion (it stops when nothing changes).
         for (jfa::GlKernelKind kind : {jfa::GlKernelKind::Fragment}) {
             jfa::GlFloodKernel<jfa::NearestSite> kernel(shaders, kind);

@@ -2,15 +2,14 @@
 // Band-limited flooding, step C: one invocation per tile of a stage grid (at scale uScale: its
 // texel t stands for full-resolution grid point t * uScale). A stage tile is in the band when a
 // full-resolution tile holding any of its grid points is; it is appended to the tile list and
-// counted in both indirect commands (compute: groups x; draw: instances).
+// counted in the indirect dispatch (groups x).
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(std430, binding = 3) readonly buffer Flags { uint flags[]; };
 layout(std430, binding = 4) writeonly buffer TileList { uint tiles[]; };
-// [0..2] DispatchIndirectCommand (x = tiles, y = 8x8 groups per tile, z = 1), [3] band texels,
-// [4..7] DrawArraysIndirectCommand (6 vertices, instances = tiles, first 0, base instance 0).
-layout(std430, binding = 5) buffer Commands { uint commands[8]; };
+// [0..2] DispatchIndirectCommand (x = tiles, y = 8x8 groups per tile, z = 1), [3] band texels.
+layout(std430, binding = 5) buffer Commands { uint commands[4]; };
 uniform ivec2 uStageTiles; // tiles per axis of the stage grid
 uniform ivec2 uStageSize;  // the stage grid
 uniform ivec2 uTiles;      // full-resolution tiles per axis
@@ -28,7 +27,6 @@ void main() {
         for (int x = first.x; x <= last.x; ++x) inBand = inBand || flags[y * uTiles.x + x] != 0u;
     if (!inBand) return;
     uint index = atomicAdd(commands[0], 1u);
-    atomicAdd(commands[5], 1u);
     ivec2 texels = min(t * uTile + uTile, uStageSize) - t * uTile;
     atomicAdd(commands[3], uint(texels.x * texels.y));
     tiles[index] = uint(t.x) | (uint(t.y) << 16);

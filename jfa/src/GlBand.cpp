@@ -55,16 +55,9 @@ void GlFloodKernelBase::buildBandPrograms() {
         std::vector<std::string> defines{"JFA_BAND"};
         if (expand) defines.emplace_back("JFA_EXPAND");
         if (keyed_) defines.emplace_back("JFA_KEYED");
-        gl::Program p = kind_ == GlKernelKind::Compute
-                            ? gl::Program::build(shaders_,
-                                                 {{GL_COMPUTE_SHADER, "jfa_pass.comp.glsl"},
-                                                  {GL_COMPUTE_SHADER, criterionFile_}},
-                                                 defines)
-                            : gl::Program::build(shaders_,
-                                                 {{GL_VERTEX_SHADER, "jfa_band_tile.vert.glsl"},
-                                                  {GL_FRAGMENT_SHADER, "jfa_pass.frag.glsl"},
-                                                  {GL_FRAGMENT_SHADER, criterionFile_}},
-                                                 defines);
+        gl::Program p = gl::Program::build(
+            shaders_, {{GL_COMPUTE_SHADER, "jfa_pass.comp.glsl"}, {GL_COMPUTE_SHADER, criterionFile_}},
+            defines);
         (expand ? bandExpandProgram_ : bandPassProgram_) = std::move(p);
     }
 }
@@ -156,9 +149,9 @@ bool GlFloodKernelBase::buildBand(const Plan& plan, const gl::Texture& seeds) {
         const glm::ivec2 stageTiles = (size + tile_ - 1) / tile_;
         StageBand& band = stageBands_[s];
         ensureBuffer(band.tiles, std::size_t(stageTiles.x) * std::size_t(stageTiles.y));
-        if (!band.commands) band.commands = gl::Buffer(8 * sizeof(GLuint), nullptr, kStorage);
+        if (!band.commands) band.commands = gl::Buffer(4 * sizeof(GLuint), nullptr, kStorage);
         const auto blocks = static_cast<GLuint>((tile_ / 8) * (tile_ / 8));
-        const std::array<GLuint, 8> init{0, blocks, 1, 0, 6, 0, 0, 0};
+        const std::array<GLuint, 4> init{0, blocks, 1, 0};
         glNamedBufferSubData(band.commands.id(), 0, sizeof(init), init.data());
         compactProgram_.set("uStageTiles", stageTiles);
         compactProgram_.set("uStageSize", size);

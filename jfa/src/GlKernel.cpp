@@ -97,12 +97,13 @@ void GlFloodKernelBase::dispatch(const gl::Texture& src, const gl::Texture& seed
         p.set("uTile", tile_);
         const StageBand& band = stageBands_[bandStage];
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, band.tiles.id());
-        glBindBuffer(kind_ == GlKernelKind::Compute ? GL_DISPATCH_INDIRECT_BUFFER
-                                                    : GL_DRAW_INDIRECT_BUFFER,
-                     band.commands.id());
+        glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, band.commands.id());
     }
     glUseProgram(p.id());
-    if (kind_ == GlKernelKind::Compute) {
+    // Band passes are always compute (an indirect dispatch over the tile list), whatever the
+    // kernel's kind: on llvmpipe the fragment kernel's instanced tile quads cost twice as much
+    // per pass on a small band (docs/BENCHMARKS.md, jfa_bench "flood:15 ... band").
+    if (kind_ == GlKernelKind::Compute || banded) {
         glBindImageTexture(0, dst.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
         if (banded)
             glDispatchComputeIndirect(0);
@@ -120,11 +121,7 @@ void GlFloodKernelBase::dispatch(const gl::Texture& src, const gl::Texture& seed
         glDisable(GL_DEPTH_TEST);
         glDisable(GL_BLEND);
         glBindVertexArray(emptyVao_.id());
-        if (banded) // DrawArraysIndirectCommand at uint 4 of the commands
-            glDrawArraysIndirect(GL_TRIANGLES,
-                                 reinterpret_cast<const void*>(4 * sizeof(GLuint))); // NOLINT
-        else
-            glDrawArrays(GL_TRIANGLES, 0, 3);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
         glBindVertexArray(0);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glMemoryBarrier(GL_ATOMIC_COUNTER_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
@@ -135,7 +132,6 @@ void GlFloodKernelBase::dispatch(const gl::Texture& src, const gl::Texture& seed
     if (banded) {
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, 0);
         glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
-        glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
     }
 }
 

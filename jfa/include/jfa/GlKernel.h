@@ -5,8 +5,9 @@
 // candidate reads, expansion, "until unchanged" — and tests compare the two texel for texel.
 // With FloodRegion::Band (setRegion) the passes run only over the band's tiles (jfa/Band.h): the
 // tile list is built on the GPU (per-tile seed reach, dilation, compaction into indirect
-// commands) with no read-back, and each pass is an indirect dispatch (compute) or an instanced
-// draw of tile quads (fragment) over it.
+// commands) with no read-back, and each pass is an indirect compute dispatch over it, for either
+// kind: instanced tile quads through the fragment kernel measured twice as slow per pass on
+// llvmpipe (docs/BENCHMARKS.md), while the fragment kernel stays the faster one on the full grid.
 
 #include <jfa/Band.h>
 #include <jfa/Grid.h>
