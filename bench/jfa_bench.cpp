@@ -111,12 +111,10 @@ int main(int argc, char** argv) {
                 for (jfa::FloodRegion region : {jfa::FloodRegion::Full, jfa::FloodRegion::Band}) {
                     kernel.setRegion(region);
                     const Timing t = timeRuns(floodRuns, [&] { kernel.run(plan, in, crit); });
-                    const std::string name = std::string(jfa::kernelName(kind)) + " " + spec +
-                                             ", 20 sites, " +
-                                             std::string(jfa::floodRegionName(region)) + " (" +
-                                             std::to_string(int(kernel.activeShare() * 1000) / 10.0)
-                                                 .substr(0, 4) +
-                                             "%)";
+                    const std::string name =
+                        std::string(jfa::kernelName(kind)) + " " + spec + ", 20 sites, " +
+                        std::string(jfa::floodRegionName(region)) + " (" +
+                        std::to_string(int(kernel.activeShare() * 1000) / 10.0).substr(0, 4) + "%)";
                     row(name, t, kernel.passesRun());
                     median[name] = t.median;
                 }

@@ -109,6 +109,39 @@ bool coneMayHold(vec3 o, vec3 a, float sinHalf, float cosHalf, vec4 lo, vec4 hi)
 // finer levels below the cells that pass).
 const int kReachCells = 8;
 
+// Whether cell q of `level` may hold a receiver that takes o (coneMayHold on its bounds).
+bool cellMayHold(vec3 o, vec3 a, float sinHalf, float cosHalf, ivec2 q, int level) {
+    return coneMayHold(o, a, sinHalf, cosHalf, texelFetch(uReachLo, q, level),
+                       texelFetch(uReachHi, q, level));
+}
+
+// The cells one level below cell q (.xy first, .zw last) of a level `size` cells wide, the
+// level below `childSize`; the last cell also has the odd cell left over below it. At level 0
+// (no level below), q itself.
+ivec4 childCells(ivec2 q, int level, ivec2 size, ivec2 childSize) {
+    if (level == 0) return ivec4(q, q);
+    return ivec4(q * 2, mix(q * 2 + 1, childSize - 1, equal(q, size - 1)));
+}
+
+// `u` grown by the texels of finest cell q (of a level `size` cells wide) that can take o: none
+// when its receivers all lie above o or (with `test`) its box misses the cone, else those the
+// cone's part between the cell's receiver depths covers. The last cell also holds the rest of
+// the grid.
+ivec4 keepCell(vec3 o, float depth, vec3 a, float sinHalf, float cosHalf, ivec2 q, int level,
+               ivec2 size, bool test, ivec4 u) {
+    vec4 cellLo = texelFetch(uReachLo, q, level);
+    vec4 cellHi = texelFetch(uReachHi, q, level);
+    float deepest = cellHi.w * 1.001 + 1e-4;
+    if (!(deepest > depth) || (test && !coneMayHold(o, a, sinHalf, cosHalf, cellLo, cellHi)))
+        return u;
+    int side = 8 << level;
+    ivec4 seg = penumbraSegmentRect(o, depth, cellLo.w * 0.999 - 1e-4, deepest);
+    ivec2 p0 = max(q * side, seg.xy);
+    ivec2 p1 = min(mix((q + 1) * side - 1, uReachSize - 1, equal(q, size - 1)), seg.zw);
+    if (p0.x > p1.x || p0.y > p1.y) return u;
+    return ivec4(min(u.xy, p0), max(u.zw, p1));
+}
+
 // Texels x0..x1 (.x, .z), y0..y1 (.y, .w) that can take occluder o. The cone is first cut at the
 // deepest receiver of the grid (the pyramid's top), else the scene's deepest point. With the
 // pyramid, the cells of that rect (at most 8 x 8 of them) whose receivers' boxes the cone misses
@@ -148,48 +181,17 @@ ivec4 penumbraRect(vec3 o) {
     for (int y0 = c0.y; y0 <= c1.y; ++y0) {
         for (int x0 = c0.x; x0 <= c1.x; ++x0) {
             ivec2 q0 = ivec2(x0, y0);
-            if (!coneMayHold(o, a, sinHalf, cosHalf, texelFetch(uReachLo, q0, level),
-                             texelFetch(uReachHi, q0, level)))
-                continue;
-            // Children one level down (the cell itself at level 0); the last cell of a level
-            // also has the odd cell left over below it.
-            ivec2 k0 = level > 0 ? q0 * 2 : q0;
-            ivec2 k1 = level > 0 ? mix(q0 * 2 + 1, size1 - 1, equal(q0, size0 - 1)) : q0;
-            for (int y1 = k0.y; y1 <= k1.y; ++y1) {
-                for (int x1 = k0.x; x1 <= k1.x; ++x1) {
+            if (!cellMayHold(o, a, sinHalf, cosHalf, q0, level)) continue;
+            ivec4 k = childCells(q0, level, size0, size1);
+            for (int y1 = k.y; y1 <= k.w; ++y1) {
+                for (int x1 = k.x; x1 <= k.z; ++x1) {
                     ivec2 q1 = ivec2(x1, y1);
-                    if (level > 0 && !coneMayHold(o, a, sinHalf, cosHalf,
-                                                  texelFetch(uReachLo, q1, level1),
-                                                  texelFetch(uReachHi, q1, level1)))
-                        continue;
-                    ivec2 m0 = level > 1 ? q1 * 2 : q1;
-                    ivec2 m1 = level > 1 ? mix(q1 * 2 + 1, size2 - 1, equal(q1, size1 - 1)) : q1;
-                    for (int y2 = m0.y; y2 <= m1.y; ++y2) {
-                        for (int x2 = m0.x; x2 <= m1.x; ++x2) {
-                            ivec2 q2 = ivec2(x2, y2);
-                            vec4 cellLo = texelFetch(uReachLo, q2, level2);
-                            vec4 cellHi = texelFetch(uReachHi, q2, level2);
-                            float deepest = cellHi.w * 1.001 + 1e-4;
-                            // Its receivers all above o (one that takes o lies deeper), or
-                            // outside the cone.
-                            if (!(deepest > depth) ||
-                                (level > 1 &&
-                                 !coneMayHold(o, a, sinHalf, cosHalf, cellLo, cellHi)))
-                                continue;
-                            // The cell's texels (the last cell also holds the rest of the grid)
-                            // that the cone's part between the cell's receiver depths covers.
-                            int side = 8 << level2;
-                            ivec2 p0 = q2 * side;
-                            ivec2 p1 = mix((q2 + 1) * side - 1, uReachSize - 1,
-                                           equal(q2, size2 - 1));
-                            ivec4 seg =
-                                penumbraSegmentRect(o, depth, cellLo.w * 0.999 - 1e-4, deepest);
-                            p0 = max(p0, seg.xy);
-                            p1 = min(p1, seg.zw);
-                            if (p0.x > p1.x || p0.y > p1.y) continue;
-                            u = ivec4(min(u.xy, p0), max(u.zw, p1));
-                        }
-                    }
+                    if (level > 0 && !cellMayHold(o, a, sinHalf, cosHalf, q1, level1)) continue;
+                    ivec4 m = childCells(q1, level1, size1, size2);
+                    for (int y2 = m.y; y2 <= m.w; ++y2)
+                        for (int x2 = m.x; x2 <= m.z; ++x2)
+                            u = keepCell(o, depth, a, sinHalf, cosHalf, ivec2(x2, y2), level2,
+                                         size2, level > 1, u);
                 }
             }
         }

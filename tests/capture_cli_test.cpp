@@ -79,7 +79,7 @@ void checkCsv(const fs::path& dir) {
     const std::vector<std::string> columns = split(header);
     const auto column = [&](const char* name) {
         return static_cast<std::size_t>(std::find(columns.begin(), columns.end(), name) -
-                                         columns.begin());
+                                        columns.begin());
     };
     const std::size_t method = column("method"), passes = column("jfa_passes"),
                       share = column("active_share");

@@ -143,10 +143,10 @@ TEST(Cli, VoronoiWritesDiagramAndReportsErrors) {
 // a plan that reaches every texel runs full and says so once. Both backends, both GL kernels.
 TEST(Cli, VoronoiBandEqualsFullAndSaysWhenItRunsFull) {
     const auto dir = outputDir("cli_voronoi_band");
-    const std::string common = "voronoi --sites 6 --width 96 --height 80 --plan flood:5 --out " +
-                               dir.string() + " ";
-    for (const char* backend : {"--backend cpu", "--backend gl --kernel fragment",
-                                "--backend gl --kernel compute"}) {
+    const std::string common =
+        "voronoi --sites 6 --width 96 --height 80 --plan flood:5 --out " + dir.string() + " ";
+    for (const char* backend :
+         {"--backend cpu", "--backend gl --kernel fragment", "--backend gl --kernel compute"}) {
         SCOPED_TRACE(backend);
         const Outcome band = run(common + backend + " --name band");
         ASSERT_EQ(band.code, 0) << band.output;

@@ -209,31 +209,18 @@ TEST_F(JfaETest, BandEqualsFullWherePyramidQueryReachesTheLastCells) {
     for (const char* method : {"flood-e", "jfa-e"})
         for (const char* passes : {"3", "auto"}) {
             SCOPED_TRACE(std::string(method) + ", passes " + passes);
-            jfa::Grid grids[2];
-            double share = 1.0;
-            for (int i = 0; i < 2; ++i) {
-                RenderSettings settings;
-                settings.shadow.size = 256;
-                settings.method = method;
-                settings.options.set(floodPassesOption().flag, std::string(passes));
-                settings.options.set(floodRegionOption().flag, i == 0 ? "band" : "full");
-                Renderer r(shaders, scene, settings);
-                r.resize(256, 256);
-                r.render(camera);
-                ASSERT_NE(r.flood(), nullptr);
-                grids[i] = jfa::readGrid(*r.flood()->flooded);
-                if (i == 0) {
-                    ASSERT_NE(r.flood()->kernel, nullptr);
-                    EXPECT_TRUE(r.flood()->kernel->lastRunBanded());
-                    share = r.flood()->kernel->activeShare();
-                }
-            }
+            RenderSettings settings;
+            settings.shadow.size = 256;
+            settings.method = method;
+            settings.options.set(floodPassesOption().flag, std::string(passes));
+            const auto runs = renderBandAndFull(shaders, scene, camera, settings, 256, 256);
             std::size_t differ = 0;
-            for (std::size_t k = 0; k < grids[0].cells.size(); ++k)
-                differ += !(grids[0].cells[k] == grids[1].cells[k]);
+            for (std::size_t k = 0; k < runs[0].grid.cells.size(); ++k)
+                differ += !(runs[0].grid.cells[k] == runs[1].grid.cells[k]);
             EXPECT_EQ(differ, 0u);
-            EXPECT_GT(nonEmpty(grids[1]), 1000u) << "the view must have penumbrae";
-            EXPECT_LT(share, 1.0);
+            EXPECT_GT(nonEmpty(runs[1].grid), 1000u) << "the view must have penumbrae";
+            EXPECT_TRUE(runs[0].banded);
+            EXPECT_LT(runs[0].activeShare, 1.0);
         }
 }
 

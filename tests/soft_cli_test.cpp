@@ -92,8 +92,8 @@ TEST(SoftCli, CompareWritesCsvSummaryAndTheWorstFrame) {
     std::string header, line;
     ASSERT_TRUE(std::getline(csv, header));
     // Each lane's flood: passes chosen (auto by default) and the band's share of the texels.
-    for (const char* column : {"method_jfa_passes", "method_active_share",
-                               "reference_jfa_passes", "reference_active_share"})
+    for (const char* column : {"method_jfa_passes", "method_active_share", "reference_jfa_passes",
+                               "reference_active_share"})
         EXPECT_NE(header.find(column), std::string::npos) << column << " in " << header;
     int rows = 0;
     while (std::getline(csv, line)) ++rows;

@@ -160,9 +160,10 @@ std::string reportHtml(const CaptureResults& r, const nlohmann::json& summary,
     for (const auto& [w, h2] : s.resolutions) h << " " << w << "x" << h2;
     h << "</dd><dt>shadow map</dt><dd>" << xmlEscape(s.shadowMapProvider) << " " << s.shadowMapSize
       << "&sup2;, flooding passes " << xmlEscape(s.jfaPasses)
-      << (s.jfaPasses == "auto" ? " (chosen per frame: frames.csv, jfa_passes)" : "") << "</dd><dt>reference</dt><dd>"
-      << s.reference.samples << " point-light samples over the disk, " << s.reference.mapSize
-      << "&sup2; maps, " << fmt(summary["reference"]["medianFrameMs"].get<double>(), 1)
+      << (s.jfaPasses == "auto" ? " (chosen per frame: frames.csv, jfa_passes)" : "")
+      << "</dd><dt>reference</dt><dd>" << s.reference.samples
+      << " point-light samples over the disk, " << s.reference.mapSize << "&sup2; maps, "
+      << fmt(summary["reference"]["medianFrameMs"].get<double>(), 1)
       << " ms per frame (median)</dd><dt>GL</dt><dd>" << xmlEscape(r.context) << "</dd></dl>\n"
       << "<p>Metrics against the reference count the receivers only: visible surfaces that "
          "face the light (N&middot;L &gt; 0), where the visibility changes the image. Penumbra "

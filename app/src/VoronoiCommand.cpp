@@ -273,8 +273,8 @@ int runVoronoi(const VoronoiOptions& o) {
                   << std::defaultfloat;
         // The band (jfa/Band.h) bounds a plan by its reach: said once per plan when it could not.
         if (region == jfa::FloodRegion::Band && r.banded)
-            std::cout << "  flood region: band, " << std::setprecision(3)
-                      << 100.0 * r.activeShare << "% of the texels\n"
+            std::cout << "  flood region: band, " << std::setprecision(3) << 100.0 * r.activeShare
+                      << "% of the texels\n"
                       << std::defaultfloat;
         else if (region == jfa::FloodRegion::Band)
             std::cout << "  flood region: full (every tile lies within the plan's reach of "

@@ -56,7 +56,8 @@ void GlFloodKernelBase::buildBandPrograms() {
         if (expand) defines.emplace_back("JFA_EXPAND");
         if (keyed_) defines.emplace_back("JFA_KEYED");
         gl::Program p = gl::Program::build(
-            shaders_, {{GL_COMPUTE_SHADER, "jfa_pass.comp.glsl"}, {GL_COMPUTE_SHADER, criterionFile_}},
+            shaders_,
+            {{GL_COMPUTE_SHADER, "jfa_pass.comp.glsl"}, {GL_COMPUTE_SHADER, criterionFile_}},
             defines);
         (expand ? bandExpandProgram_ : bandPassProgram_) = std::move(p);
     }

@@ -3,7 +3,10 @@
 #include <renderer/Renderer.h>
 #include <renderer/io/Capture.h>
 
+#include <jfa/GlKernel.h>
+
 #include <cstdlib>
+#include <stdexcept>
 
 namespace fl::test {
 
@@ -47,6 +50,30 @@ FrameImages renderFrame(const Scene& scene, const CameraView& camera, std::strin
     r.resize(size, size);
     r.render(camera);
     return readFrame(r);
+}
+
+FloodRun renderFlood(const gl::ShaderLibrary& shaders, const Scene& scene, const CameraView& camera,
+                     const RenderSettings& settings, int width, int height) {
+    Renderer r(shaders, scene, settings);
+    r.resize(width, height);
+    r.render(camera);
+    const FloodFrame* flood = r.flood();
+    if (!flood || !flood->flooded || !flood->kernel)
+        throw std::invalid_argument("renderFlood: " + settings.method + " does not flood");
+    return {jfa::readGrid(*flood->flooded), flood->kernel->lastRunBanded(),
+            flood->kernel->activeShare()};
+}
+
+std::array<FloodRun, 2> renderBandAndFull(const gl::ShaderLibrary& shaders, const Scene& scene,
+                                          const CameraView& camera, RenderSettings settings,
+                                          int width, int height) {
+    std::array<FloodRun, 2> out;
+    for (int i = 0; i < 2; ++i) {
+        settings.options.set(floodRegionOption().flag, i == 0 ? "band" : "full");
+        out[static_cast<std::size_t>(i)] =
+            renderFlood(shaders, scene, camera, settings, width, height);
+    }
+    return out;
 }
 
 } // namespace fl::test

@@ -3,17 +3,23 @@
 // the debug callback during a test fails that test.
 
 #include <gpu/Gl.h>
+#include <jfa/Grid.h>
 #include <renderer/context/EglContext.h>
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <memory>
 #include <string_view>
 
 namespace fl {
 struct CameraView;
 struct FrameImages;
+struct RenderSettings;
 struct Scene;
+namespace gl {
+class ShaderLibrary;
+}
 } // namespace fl
 
 namespace fl::test {
@@ -34,5 +40,22 @@ class GlTest : public ::testing::Test {
 /// map (the method's other settings at their defaults), read back.
 FrameImages renderFrame(const Scene& scene, const CameraView& camera, std::string_view method,
                         int mapSize, int size);
+
+/// A flooding method's frame: its flooded grid, read back, and its band.
+struct FloodRun {
+    jfa::Grid grid;
+    bool banded = false;      // the kernel ran over a band
+    double activeShare = 1.0; // of the grid's texels
+};
+
+/// One frame of `scene` from `camera` with `settings` (a flooding method) at width x height.
+FloodRun renderFlood(const gl::ShaderLibrary& shaders, const Scene& scene, const CameraView& camera,
+                     const RenderSettings& settings, int width, int height);
+
+/// renderFlood with `--flood-region band`, then with `full`: the pair band-limited flooding
+/// must make equal.
+std::array<FloodRun, 2> renderBandAndFull(const gl::ShaderLibrary& shaders, const Scene& scene,
+                                          const CameraView& camera, RenderSettings settings,
+                                          int width, int height);
 
 } // namespace fl::test
