@@ -60,6 +60,8 @@ class GlFloodKernelBase {
     /// grid. Throws std::invalid_argument for a bad tile. Full by default.
     void setRegion(FloodRegion region, int tile = kDefaultBandTile);
     [[nodiscard]] FloodRegion region() const { return region_; }
+    /// The band's tile side (setRegion).
+    [[nodiscard]] int bandTile() const { return tile_; }
     /// False when the last run flooded the full grid: the region is Full, or the plan alone
     /// reaches every texel and the criterion bounds nothing (nothing to save; callers say so).
     [[nodiscard]] bool lastRunBanded() const { return lastRunBanded_; }

@@ -60,26 +60,32 @@ jfa::Plan framePlan(const Soft& soft, bool standardFlooding) {
     return penumbraPlan(ps, soft.seeds->width());
 }
 
-// Runs `plan` on the frame's seeds with the frame's criterion; the texture is the kernel's.
+// Runs `plan` on the frame's seeds with the frame's criterion, over the frame's flood region
+// and penumbra bound (the same band the method used; identical to the full grid either way);
+// the texture is the kernel's.
 const gl::Texture& floodFrame(State& s, const Renderer& r, const Soft& soft,
                               const jfa::Plan& plan) {
+    const int tile = soft.kernel ? soft.kernel->bandTile() : jfa::kDefaultBandTile;
     if (soft.eye) {
         EyeSoftCriterion c;
+        c.reachBound = soft.reach;
+        s.eyeKernel.setRegion(soft.region, tile);
         c.light = r.disk();
         c.objectIdFix = soft.objectIdFix;
         c.midpointFix = soft.midpointFix;
         c.pointsTexture = soft.receivers->id();
         c.occludersTexture = soft.occluders->id();
         const gl::Texture& out = s.eyeKernel.run(plan, *soft.seeds, c);
-        glBindTextureUnit(2, 0);
-        glBindTextureUnit(3, 0);
+        for (GLuint unit : {2u, 3u, 4u, 5u}) glBindTextureUnit(unit, 0);
         return out;
     }
     PenumbraCriterion c;
+    c.reachBound = soft.reach;
+    s.penumbraKernel.setRegion(soft.region, tile);
     c.light = r.disk();
     c.receiverTexture = soft.receivers->id();
     const gl::Texture& out = s.penumbraKernel.run(plan, *soft.seeds, c);
-    glBindTextureUnit(2, 0);
+    for (GLuint unit : {2u, 4u, 5u}) glBindTextureUnit(unit, 0);
     return out;
 }
 

@@ -254,6 +254,7 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::Pass
     glBindTextureUnit(2, 0);
     glBindTextureUnit(3, 0);
     glBindTextureUnit(4, 0);
+    glBindTextureUnit(5, 0);
     if (timer) timer->end();
 
     // Phase 5: visibility per pixel.
