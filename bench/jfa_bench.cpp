@@ -3,6 +3,7 @@
 // with ratios taken between medians measured side by side in this same run.
 
 #include <base/Stats.h>
+#include <base/Text.h>
 #include <renderer/context/EglContext.h>
 
 #include <jfa/CpuKernel.h>
@@ -111,10 +112,9 @@ int main(int argc, char** argv) {
                 for (jfa::FloodRegion region : {jfa::FloodRegion::Full, jfa::FloodRegion::Band}) {
                     kernel.setRegion(region);
                     const Timing t = timeRuns(floodRuns, [&] { kernel.run(plan, in, crit); });
-                    const std::string name =
-                        std::string(jfa::kernelName(kind)) + " " + spec + ", 20 sites, " +
-                        std::string(jfa::floodRegionName(region)) + " (" +
-                        std::to_string(int(kernel.activeShare() * 1000) / 10.0).substr(0, 4) + "%)";
+                    const std::string name = cat(jfa::kernelName(kind), " ", spec, ", 20 sites, ",
+                                                 jfa::floodRegionName(region), " (",
+                                                 fixed(100.0 * kernel.activeShare(), 1), "%)");
                     row(name, t, kernel.passesRun());
                     median[name] = t.median;
                 }

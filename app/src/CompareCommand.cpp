@@ -93,6 +93,7 @@ int runCompare(const CompareRequest& r) {
     checkMethodOptions(settings, r.width, r.height);
     const int passes = requestedPasses(methodOrThrow(method), settings.options,
                                        settings.shadow.size, r.width, r.height);
+    const std::string passesText = passes == kAutoPasses ? "auto" : std::to_string(passes);
     Renderer methodRenderer(shaders, scene, settings);
     settings.method = *reference;
     Renderer referenceRenderer(shaders, scene, settings);
@@ -102,9 +103,7 @@ int runCompare(const CompareRequest& r) {
               << "scene: " << scene.source << " (" << scene.triangleCount() << " triangles)\n"
               << method << " vs " << *reference << ", " << r.frames << " frames at " << r.width
               << "x" << r.height << ", shadow map " << providerName(settings.shadow.provider) << " "
-              << settings.shadow.size << "^2, "
-              << (passes == kAutoPasses ? std::string("auto") : std::to_string(passes))
-              << " passes\n";
+              << settings.shadow.size << "^2, " << passesText << " passes\n";
 
     // Lane labels are also the CSV column and JSON key prefixes ("method_flood_ms").
     std::vector<Lane> lanes = {{"method", &methodRenderer, {}},

@@ -36,10 +36,6 @@ void PhaseTimes::record(const gl::PassTimer& timer, std::optional<FloodSample> f
     flood_.push_back(flood);
 }
 
-bool PhaseTimes::flooded() const {
-    return std::any_of(flood_.begin(), flood_.end(), [](const auto& f) { return f.has_value(); });
-}
-
 std::optional<FloodSample> PhaseTimes::medianFlood() const {
     std::vector<double> passes, share;
     for (const std::optional<FloodSample>& f : flood_)

@@ -52,8 +52,6 @@ class PhaseTimes {
     [[nodiscard]] const std::optional<FloodSample>& flood(std::size_t i) const {
         return flood_.at(i);
     }
-    /// Whether any frame flooded.
-    [[nodiscard]] bool flooded() const;
     /// Median over the frames that flooded of the passes and of the active share (nullopt if
     /// none did).
     [[nodiscard]] std::optional<FloodSample> medianFlood() const;

@@ -76,7 +76,9 @@ const gl::Texture& floodFrame(State& s, const Renderer& r, const Soft& soft,
         c.pointsTexture = soft.receivers->id();
         c.occludersTexture = soft.occluders->id();
         const gl::Texture& out = s.eyeKernel.run(plan, *soft.seeds, c);
-        for (GLuint unit : {2u, 3u, 4u, 5u}) glBindTextureUnit(unit, 0);
+        glBindTextureUnit(2, 0);
+        glBindTextureUnit(3, 0);
+        unbindPenumbraReach();
         return out;
     }
     PenumbraCriterion c;
@@ -85,7 +87,8 @@ const gl::Texture& floodFrame(State& s, const Renderer& r, const Soft& soft,
     c.light = r.disk();
     c.receiverTexture = soft.receivers->id();
     const gl::Texture& out = s.penumbraKernel.run(plan, *soft.seeds, c);
-    for (GLuint unit : {2u, 4u, 5u}) glBindTextureUnit(unit, 0);
+    glBindTextureUnit(2, 0);
+    unbindPenumbraReach();
     return out;
 }
 

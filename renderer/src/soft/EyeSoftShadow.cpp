@@ -253,8 +253,7 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::Pass
     const gl::Texture& flooded = kernel_.run(plan, seeds_, criterion);
     glBindTextureUnit(2, 0);
     glBindTextureUnit(3, 0);
-    glBindTextureUnit(4, 0);
-    glBindTextureUnit(5, 0);
+    unbindPenumbraReach();
     if (timer) timer->end();
 
     // Phase 5: visibility per pixel.

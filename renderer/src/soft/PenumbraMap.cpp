@@ -113,8 +113,7 @@ PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, gl::PassTime
     if (timer) timer->begin("flood");
     const gl::Texture& map = kernel_.run(plan, seeds_, criterion);
     glBindTextureUnit(2, 0);
-    glBindTextureUnit(4, 0);
-    glBindTextureUnit(5, 0);
+    unbindPenumbraReach();
     if (timer) timer->end();
     return {seeds_, map, kernel_.passesRun(), settings.passes};
 }

@@ -60,6 +60,11 @@ void setPenumbraReachUniforms(const gl::Program& program, const PenumbraReach& r
     glBindTextureUnit(5, reach.boundsHi);
 }
 
+void unbindPenumbraReach() {
+    glBindTextureUnit(4, 0);
+    glBindTextureUnit(5, 0);
+}
+
 ReceiverBoundsPyramid::ReceiverBoundsPyramid(const gl::ShaderLibrary& shaders)
     : program_(gl::Program::build(shaders, {{GL_COMPUTE_SHADER, "reach_bounds.comp.glsl"}})) {}
 

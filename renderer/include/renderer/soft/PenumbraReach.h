@@ -58,6 +58,9 @@ struct PenumbraReach {
 /// distances from the light's plane, then the bounds of 2x2 cells up to one texel. Receivers lie
 /// in the grid itself (JFA-L: shadow-map texels; JFA-E: eye pixels), so a cell whose box the cone
 /// of an occluder misses holds no texel that can take it.
+/// Unbinds what setPenumbraReachUniforms bound (the bounds pyramid's texture units 4 and 5).
+void unbindPenumbraReach();
+
 class ReceiverBoundsPyramid {
   public:
     explicit ReceiverBoundsPyramid(const gl::ShaderLibrary& shaders);
