@@ -10,11 +10,13 @@
 #include <renderer/gltf/GltfLoader.h>
 #include <renderer/io/Capture.h>
 #include <renderer/soft/PenumbraMap.h>
+#include <renderer/soft/PenumbraReach.h>
 
 #include <jfa/CpuKernel.h>
 #include <jfa/GlKernel.h>
 
 #include <cmath>
+#include <cstdint>
 
 namespace fl::test {
 namespace {
@@ -109,6 +111,76 @@ FrameImages renderDefault(std::string_view method, std::optional<float> radius =
     Scene scene = loadGltf(defaultAsset());
     if (radius) scene.light->radius = *radius;
     return renderFrame(scene, makeCameraView(scene, {}, 1.0f), method, 512, 256);
+}
+
+// The receivers' bounds pyramid (shaders/reach_bounds.comp.glsl) against its CPU reference: per
+// cell of every level, the min and max of its receivers' positions and light depths. The grid's
+// sides are not multiples of 8 and its levels are odd (10 x 6 -> 5 x 3 -> 2 x 1 -> 1 x 1), so the
+// last cells of a level take the leftover; texels that are not receivers and a whole empty block
+// must not count. Positions are exact (min / max of the inputs); the depth is a dot product, which
+// the GPU may round differently (fused multiply-add), so it agrees to 1e-6 relative.
+TEST_F(PenumbraTest, BoundsPyramidMatchesTheCpu) {
+    const int w = 75, h = 41;
+    jfa::Grid positions(w, h);
+    std::uint32_t state = 12345u;
+    const auto next = [&state] {
+        state = state * 1664525u + 1013904223u;
+        return float(state >> 8) / float(1u << 24); // [0, 1)
+    };
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            jfa::Cell& c = positions.cells[std::size_t(y) * w + std::size_t(x)];
+            c = {next() * 10.0f - 5.0f, next() * 10.0f - 5.0f, next() * 10.0f - 5.0f,
+                 next() < 0.7f ? 1.0f : 0.0f};
+            if (x >= 16 && x < 24 && y >= 8 && y < 16) c.w = 0.0f; // block (2, 1): no receiver
+        }
+    DiskLight light;
+    light.center = {0.3f, 12.0f, -0.7f};
+    light.normal = glm::normalize(glm::vec3(0.1f, -1.0f, 0.2f));
+    light.radius = 1.0f;
+    const gl::ShaderLibrary shaders;
+    const gl::Texture texture = jfa::uploadGrid(positions);
+    ReceiverBoundsPyramid pyramid(shaders);
+    PenumbraReach reach;
+    pyramid.build(texture, 0.5f, light, reach);
+    ASSERT_EQ(reach.boundsLevels, 4);
+    glm::ivec2 size((w + 7) / 8, (h + 7) / 8);
+    int compared = 0, empty = 0;
+    for (int level = 0; level < reach.boundsLevels; ++level) {
+        std::vector<glm::vec4> lo(std::size_t(size.x) * size.y), hi(lo.size());
+        const auto bytes = static_cast<GLsizei>(lo.size() * sizeof(glm::vec4));
+        glGetTextureImage(reach.boundsLo, level, GL_RGBA, GL_FLOAT, bytes, lo.data());
+        glGetTextureImage(reach.boundsHi, level, GL_RGBA, GL_FLOAT, bytes, hi.data());
+        const int side = 8 << level;
+        for (int cy = 0; cy < size.y; ++cy)
+            for (int cx = 0; cx < size.x; ++cx) {
+                // The cell's texels; the last cell of a level runs to the grid's edge.
+                const int x1 = cx == size.x - 1 ? w : (cx + 1) * side;
+                const int y1 = cy == size.y - 1 ? h : (cy + 1) * side;
+                glm::vec4 cpuLo(1e30f), cpuHi(-1e30f);
+                for (int y = cy * side; y < y1; ++y)
+                    for (int x = cx * side; x < x1; ++x) {
+                        const jfa::Cell& c = positions.cells[std::size_t(y) * w + std::size_t(x)];
+                        if (c.w < 0.5f) continue;
+                        const glm::vec3 p(c.x, c.y, c.z);
+                        const glm::vec4 v(p, std::abs(glm::dot(p - light.center, light.normal)));
+                        cpuLo = glm::min(cpuLo, v);
+                        cpuHi = glm::max(cpuHi, v);
+                    }
+                const std::size_t i = std::size_t(cy) * size.x + std::size_t(cx);
+                SCOPED_TRACE("level " + std::to_string(level) + " cell " + std::to_string(cx) +
+                             "," + std::to_string(cy));
+                EXPECT_EQ(glm::vec3(lo[i]), glm::vec3(cpuLo));
+                EXPECT_EQ(glm::vec3(hi[i]), glm::vec3(cpuHi));
+                EXPECT_NEAR(lo[i].w, cpuLo.w, 1e-6f * std::abs(cpuLo.w));
+                EXPECT_NEAR(hi[i].w, cpuHi.w, 1e-6f * std::abs(cpuHi.w));
+                ++compared;
+                empty += cpuLo.x > cpuHi.x;
+            }
+        size = glm::max(size / 2, glm::ivec2(1));
+    }
+    EXPECT_EQ(compared, 60 + 15 + 2 + 1);
+    EXPECT_EQ(empty, 1) << "block (2, 1) holds no receiver";
 }
 
 // Band-limited flooding equals the full grid on the default scene at 256² and 512² maps, where
