@@ -9,9 +9,9 @@
 #include <renderer/context/EglContext.h>
 #include <renderer/gltf/GltfLoader.h>
 #include <renderer/io/Capture.h>
+#include <renderer/run/FrameRunner.h>
 #include <renderer/soft/ReferenceShadow.h>
 
-#include <base/Stats.h>
 #include <base/Text.h>
 
 #include <CLI/CLI.hpp>
@@ -26,7 +26,6 @@ struct Entry {
     std::string label;
     fl::RenderSettings settings;
     std::unique_ptr<fl::Renderer> renderer;
-    std::vector<double> ms;
     fl::FloatImage visibility;
 };
 
@@ -72,7 +71,7 @@ int main(int argc, char** argv) {
             s.options.set("--reference-samples", samples);
             s.options.set("--reference-map-size", referenceMap);
             if (!flag.empty()) s.options.set(flag, value);
-            Entry e{std::move(label), s, std::make_unique<fl::Renderer>(shaders, scene, s), {}, {}};
+            Entry e{std::move(label), s, std::make_unique<fl::Renderer>(shaders, scene, s), {}};
             e.renderer->resize(size, size);
             entries.push_back(std::move(e));
         };
@@ -105,30 +104,45 @@ int main(int argc, char** argv) {
         add(std::string(groundTruth.name), groundTruth);
         Entry& reference = entries.back();
 
-        // Two warm-up frames each, then interleaved timed frames (the ground truth fewer).
-        for (int i = 0; i < frames + 2; ++i)
-            for (Entry& e : entries) {
-                if (&e == &reference && i >= referenceFrames + 2) continue;
-                e.renderer->render(cam);
-                if (i >= 2) e.ms.push_back(e.renderer->timer().frameMs());
-            }
+        // The frame loop of capture/compare (renderer/run/FrameRunner.h): two warm-up frames
+        // each, then timed frames with the methods interleaved frame by frame; the ground truth,
+        // the slow one, in a second loop with fewer frames.
+        std::vector<fl::Lane> lanes, referenceLane;
+        for (Entry& e : entries)
+            (&e == &reference ? referenceLane : lanes).push_back({e.label, e.renderer.get(), {}});
+        fl::FrameRunner runner(frames + referenceFrames);
+        const auto plan = [&](int n) {
+            return fl::FramePlan{.scene = &scene,
+                                 .camera = cam,
+                                 .frames = n,
+                                 .width = size,
+                                 .height = size,
+                                 .warmup = 2,
+                                 .readBack = false};
+        };
+        runner.run(plan(frames), lanes);
+        runner.run(plan(referenceFrames), referenceLane);
+        runner.finish();
+        lanes.push_back(std::move(referenceLane.front()));
         for (Entry& e : entries) e.visibility = fl::readTexture(e.renderer->visibility(), 1);
         // Receivers: visible surfaces facing the light (renderer/metrics/Metrics.h), the same in
         // every method's frame.
         const fl::FloatImage mask = fl::readTexture(entries.front().renderer->receivers(), 1);
 
-        const double hardMedian = fl::median(entries.front().ms);
+        const double hardMedian = lanes.front().times.medianFrameMs();
         std::printf("default scene %dx%d, map %dx%d, light radius %.2f, reference N=%d at %dx%d\n",
                     size, size, shadowMap, shadowMap, static_cast<double>(radius), samples,
                     referenceMap, referenceMap);
         std::printf("%-12s %10s %10s %8s %8s %10s %8s\n", "method", "min ms", "median ms", "xhard",
                     "frames", "RMSE ref", "max|d|");
-        for (const Entry& e : entries) {
+        for (std::size_t i = 0; i < entries.size(); ++i) {
+            const Entry& e = entries[i];
+            const fl::PhaseTimes& t = lanes[i].times;
             const fl::VisibilityDifference d =
                 fl::visibilityDifference(e.visibility, reference.visibility, mask);
             std::printf("%-12s %10.2f %10.2f %8.2f %8zu %10.4f %8.3f\n", e.label.c_str(),
-                        fl::minimum(e.ms), fl::median(e.ms), fl::median(e.ms) / hardMedian,
-                        e.ms.size(), d.rmse, d.maxAbs);
+                        fl::minimum(t.frameMs()), t.medianFrameMs(), t.medianFrameMs() / hardMedian,
+                        t.frames(), d.rmse, d.maxAbs);
         }
         if (samplingError) {
             fl::RenderSettings s = reference.settings;

@@ -7,9 +7,8 @@
 #include <renderer/Renderer.h>
 #include <renderer/context/EglContext.h>
 #include <renderer/gltf/GltfLoader.h>
+#include <renderer/run/FrameRunner.h>
 #include <renderer/scene/SceneGenerator.h>
-
-#include <base/Stats.h>
 
 #include <CLI/CLI.hpp>
 
@@ -97,22 +96,28 @@ int main(int argc, char** argv) {
             if (settings.options.has(o->flag)) (void)settings.options.text(*o); // validates
         fl::Renderer renderer(shaders, scene, settings);
         renderer.resize(width, height);
-        const fl::CameraView cam =
-            fl::makeCameraView(scene, {}, static_cast<float>(width) / static_cast<float>(height));
-        std::map<std::string, std::vector<double>> passMs;
-        std::vector<double> frameMs, activeShare;
+        // The frame loop of capture/compare (renderer/run/FrameRunner.h): one camera held,
+        // timed only (no read-back between frames).
+        std::vector<fl::Lane> lanes{{method, &renderer, {}}};
+        fl::FrameRunner runner(frames);
+        runner.run({.scene = &scene,
+                    .camera = fl::makeCameraView(
+                        scene, {}, static_cast<float>(width) / static_cast<float>(height)),
+                    .frames = frames,
+                    .width = width,
+                    .height = height,
+                    .warmup = warmup,
+                    .readBack = false},
+                   lanes);
+        runner.finish();
+        const fl::PhaseTimes& times = lanes.front().times;
         std::set<int> passCounts;
-        for (int i = 0; i < warmup + frames; ++i) {
-            renderer.render(cam);
-            if (i < warmup) continue;
-            frameMs.push_back(renderer.timer().frameMs());
-            if (const fl::FloodFrame* f = renderer.flood()) {
+        std::vector<double> activeShare;
+        for (std::size_t i = 0; i < times.frames(); ++i)
+            if (const auto& f = times.flood(i)) {
                 passCounts.insert(f->passes);
-                if (f->kernel) activeShare.push_back(f->kernel->activeShare());
+                activeShare.push_back(f->activeShare);
             }
-            for (const fl::gl::PassTime& p : renderer.timer().passes())
-                passMs[p.name].push_back(p.ms);
-        }
         std::cout << "context: " << ctx->description() << "\n"
                   << "scene: " << scene.source << ", " << scene.triangleCount() << " triangles\n"
                   << "method: " << method << ", light radius "
@@ -131,14 +136,17 @@ int main(int argc, char** argv) {
                   << frames << " frames after " << warmup
                   << " warm-up, timing: " << renderer.timer().modeName() << "\n"
                   << std::fixed << std::setprecision(2);
-        for (const auto& [name, v] : passMs)
+        const auto row = [](const std::string& name, const std::vector<double>& v) {
             std::cout << "  " << std::left << std::setw(12) << name << " min " << std::right
                       << std::setw(8) << fl::minimum(v) << " ms   median " << std::setw(8)
                       << fl::median(v) << " ms\n";
-        std::cout << "  " << std::left << std::setw(12) << "frame"
-                  << " min " << std::right << std::setw(8) << fl::minimum(frameMs)
-                  << " ms   median " << std::setw(8) << fl::median(frameMs) << " ms\n"
-                  << "peak RSS: " << peakRssKiB() / 1024
+        };
+        // Phases by name (as before this bench used the runner), then the frame.
+        std::vector<std::string> names = fl::phaseNames({&times});
+        std::sort(names.begin(), names.end());
+        for (const std::string& name : names) row(name, times.phaseSeries(name));
+        row("frame", times.frameMs());
+        std::cout << "peak RSS: " << peakRssKiB() / 1024
                   << " MiB (after loading the scene: " << rssScene / 1024 << " MiB)\n";
     } catch (const std::exception& e) {
         std::cerr << "error: " << e.what() << "\n";

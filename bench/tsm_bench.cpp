@@ -5,13 +5,15 @@
 //  - flicker: share of receivers whose hard visibility changed since the previous frame's map
 //    (same world point), mean and max over the frames, and as a share of shadow-edge pixels;
 //  - frame time (the hard method's frame, no diagnostics) with each provider, interleaved frame by
-//    frame, min and median, and TSM / uniform.
+//    frame along the same path, min and median, and TSM / uniform.
+// Both loops are the frame loop of capture/compare (renderer/run/FrameRunner.h).
 
 #include <renderer/Renderer.h>
 #include <renderer/context/EglContext.h>
 #include <renderer/gltf/GltfLoader.h>
 #include <renderer/io/Capture.h>
 #include <renderer/metrics/ShadowStats.h>
+#include <renderer/run/FrameRunner.h>
 #include <renderer/scene/CameraPath.h>
 #include <renderer/scene/SceneGenerator.h>
 
@@ -54,7 +56,7 @@ double edgeShare(const fl::FloatImage& d) {
 }
 
 struct Series {
-    std::vector<double> fpMed, fpP95, nearMed, nearP95, flicker, flickerPerEdge, frameMs;
+    std::vector<double> fpMed, fpP95, nearMed, nearP95, flicker, flickerPerEdge;
     int degenerateFrames = 0;
 };
 
@@ -99,12 +101,21 @@ int main(int argc, char** argv) {
             renderers.back()->resize(size, size);
         }
         Series series[2];
-        for (int i = 0; i < frames; ++i) {
-            const fl::CameraView cam = path.frame(i, frames, scene.bounds, 1.0f);
+        std::vector<fl::Lane> lanes;
+        for (int k = 0; k < 2; ++k)
+            lanes.push_back({k ? "tsm" : "uniform", renderers[k].get(), {}});
+        fl::FrameRunner runner(frames + timedFrames);
+        fl::FramePlan plan{.scene = &scene,
+                           .camera = path,
+                           .frames = frames,
+                           .width = size,
+                           .height = size,
+                           .readBack = false};
+        runner.run(plan, lanes, [&](int i, std::vector<fl::FrameImages>&) {
             std::vector<fl::ByteImage> pictures;
+            const bool save = !saveDir.empty() && (saveEvery > 0 ? i % saveEvery == 0 : i == 0);
             for (int k = 0; k < 2; ++k) {
-                renderers[k]->render(cam);
-                if (!saveDir.empty() && (saveEvery > 0 ? i % saveEvery == 0 : i == 0))
+                if (save)
                     pictures.push_back(fl::toSrgb8(fl::readTexture(renderers[k]->color(), 4)));
                 const fl::FloatImage d = fl::readTexture(*renderers[k]->diagnostics(), 4);
                 const fl::ShadowMapStats st = fl::summarizeShadowDiagnostics(d);
@@ -127,21 +138,20 @@ int main(int argc, char** argv) {
                 std::snprintf(name, sizeof name, "walk_%04d.uniform-vs-tsm.png", i);
                 fl::writePng(std::filesystem::path(saveDir) / name, fl::sideBySide(pictures));
             }
-        }
-        // Timing without diagnostics, providers interleaved frame by frame over the same path.
+        });
+        // Timing without diagnostics, providers interleaved frame by frame over the same path,
+        // after two warm-up frames.
         for (auto& r : renderers) {
             fl::RenderSettings s = r->settings();
             s.diagnostics = false;
             r->setSettings(s);
         }
-        for (int i = 0; i < timedFrames + 2; ++i) {
-            const fl::CameraView cam =
-                path.frame(i * frames / (timedFrames + 2), frames, scene.bounds, 1.0f);
-            for (int k = 0; k < 2; ++k) {
-                renderers[k]->render(cam);
-                if (i >= 2) series[k].frameMs.push_back(renderers[k]->timer().frameMs());
-            }
-        }
+        std::vector<fl::Lane> timed;
+        for (const fl::Lane& l : lanes) timed.push_back({l.label, l.renderer, {}});
+        plan.frames = timedFrames;
+        plan.warmup = 2;
+        runner.run(plan, timed);
+        runner.finish();
         std::cout << "context: " << ctx->description() << "\n"
                   << "scene: " << scene.source << ", " << scene.triangleCount() << " triangles\n"
                   << "walkthrough: " << frames << " frames at " << size << "x" << size
@@ -158,8 +168,9 @@ int main(int argc, char** argv) {
                       << 100 * mean(s.flicker) << "% max " << 100 * maxOf(s.flicker)
                       << "%; per shadow-edge pixel: mean " << 100 * mean(s.flickerPerEdge)
                       << "% max " << 100 * maxOf(s.flickerPerEdge) << "%\n"
-                      << "  frame (hard shadows, no diagnostics): min " << fl::minimum(s.frameMs)
-                      << " ms, median " << fl::median(s.frameMs) << " ms ("
+                      << "  frame (hard shadows, no diagnostics): min "
+                      << fl::minimum(timed[k].times.frameMs()) << " ms, median "
+                      << timed[k].times.medianFrameMs() << " ms ("
                       << renderers[k]->timer().modeName() << ")\n";
             if (k == 1)
                 std::cout << "  frames with the uniform fallback blended in: " << s.degenerateFrames
@@ -169,8 +180,9 @@ int main(int argc, char** argv) {
                   << fl::median(series[0].nearMed) / fl::median(series[1].nearMed) << ", p95 "
                   << fl::median(series[0].nearP95) / fl::median(series[1].nearP95) << "\n"
                   << "tsm / uniform frame time: min "
-                  << fl::minimum(series[1].frameMs) / fl::minimum(series[0].frameMs) << ", median "
-                  << fl::median(series[1].frameMs) / fl::median(series[0].frameMs) << "\n";
+                  << fl::minimum(timed[1].times.frameMs()) / fl::minimum(timed[0].times.frameMs())
+                  << ", median " << timed[1].times.medianFrameMs() / timed[0].times.medianFrameMs()
+                  << "\n";
     } catch (const std::exception& e) {
         std::cerr << "error: " << e.what() << "\n";
         return 1;

@@ -5,7 +5,7 @@
 
 #include "CaptureResults.h"
 #include "Commands.h"
-#include "FrameRunner.h"
+#include <renderer/run/FrameRunner.h>
 
 #include <renderer/context/EglContext.h>
 #include <renderer/io/Capture.h>
@@ -170,13 +170,14 @@ void captureSize(const CaptureSetup& c, int w, int h, FrameRunner& runner,
     defaults.set(floodPassesOption().flag, script.jfaPasses);
     FrameScorer scorer(results.runs, first, defaults.integer(floodPassesOption()));
     const FramePlan plan{
-        &c.scene,
-        script.camera ? *script.camera
+        .scene = &c.scene,
+        .camera = script.camera
+                      ? *script.camera
                       : defaultWalkthrough(initialCamera(c.scene, c.options, w, h), c.scene.bounds),
-        script.frames,
-        w,
-        h,
-        script.lightKeys};
+        .frames = script.frames,
+        .width = w,
+        .height = h,
+        .lightKeys = script.lightKeys};
     const fs::path framesDir = c.dir / "frames" / size;
     runner.run(plan, lanes, [&](int i, std::vector<FrameImages>& laneImages) {
         const FrameImages& ref = laneImages[0];

@@ -3,7 +3,7 @@
 // (CaptureOutput.cpp: CSV, JSON summary) and the HTML report (Report*.cpp).
 
 #include "CaptureScript.h"
-#include "FrameRunner.h"
+#include <renderer/run/FrameRunner.h>
 
 #include <renderer/io/ImageIO.h>
 #include <renderer/metrics/Metrics.h>

@@ -66,9 +66,6 @@ CaptureScript parseCaptureScript(const std::string& text, const std::filesystem:
 /// Reads and parses a script file; throws CaptureScriptError.
 CaptureScript readCaptureScript(const std::filesystem::path& file);
 
-/// The light position at frame i of n along the script's light keys (piecewise linear).
-glm::vec3 lightPositionAt(const std::vector<glm::vec3>& keys, int i, int n);
-
 /// `base` with the method and its options applied.
 RenderSettings settingsFor(const RenderSettings& base, const MethodSpec& m);
 

@@ -3,7 +3,7 @@
 // the largest difference side by side (method | reference | difference) as PNG and EXR.
 
 #include "Commands.h"
-#include "FrameRunner.h"
+#include <renderer/run/FrameRunner.h>
 
 #include <renderer/context/EglContext.h>
 #include <renderer/io/Capture.h>
@@ -113,8 +113,12 @@ int runCompare(const CompareRequest& r) {
     double worstScore = -1.0;
     FrameImages worstMethod, worstReference;
     FrameRunner runner(r.frames);
-    runner.run({&scene, std::move(path), r.frames, r.width, r.height, {}}, lanes,
-               [&](int i, std::vector<FrameImages>& images) {
+    runner.run({.scene = &scene,
+                .camera = std::move(path),
+                .frames = r.frames,
+                .width = r.width,
+                .height = r.height},
+               lanes, [&](int i, std::vector<FrameImages>& images) {
                    const SoftStats s =
                        compareSoftShadows(images[0].visibility, images[1].visibility);
                    all.push_back(s);

@@ -5,7 +5,7 @@
 
 #include "CameraController.h"
 #include "Common.h"
-#include "FrameRunner.h"
+#include <renderer/run/FrameRunner.h>
 #include "InputScript.h"
 #include "ViewerInput.h"
 

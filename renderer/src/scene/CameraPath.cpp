@@ -197,4 +197,13 @@ void writeCameraPath(const std::filesystem::path& file, const CameraPath& path) 
     writeTextFile(file, j.dump(2) + "\n");
 }
 
+glm::vec3 lightPositionAt(const std::vector<glm::vec3>& keys, int i, int n) {
+    if (keys.empty()) return glm::vec3(0.0f);
+    if (keys.size() == 1 || n <= 1) return keys.front();
+    const float u =
+        static_cast<float>(i) / static_cast<float>(n - 1) * static_cast<float>(keys.size() - 1);
+    const auto k = std::min(static_cast<std::size_t>(u), keys.size() - 2);
+    return glm::mix(keys[k], keys[k + 1], u - static_cast<float>(k));
+}
+
 } // namespace fl

@@ -63,4 +63,7 @@ void writeCameraPath(const std::filesystem::path& file, const CameraPath& path);
 /// the bounds alone, which is why a path is built from a camera rather than from the bounds.
 CameraPath defaultWalkthrough(const CameraView& start, const geom::Aabb& bounds);
 
+/// The light position at frame i of n along `keys` (piecewise linear; the origin without keys).
+glm::vec3 lightPositionAt(const std::vector<glm::vec3>& keys, int i, int n);
+
 } // namespace fl

@@ -1,13 +1,12 @@
 #pragma once
-// The frame loop that `capture` and `compare` share: walk a camera path (and the light along its
-// keys), render every lane each frame, read the frames back, keep each lane's frame and phase
-// times from its renderer's PassTimer, show a progress bar on a terminal. Also what such runs
-// write: CSV tables and JSON summaries, each under a temporary name first, then renamed, so a
-// failed run never leaves a half-written file under the final name.
-
-#include "Common.h"
+// The frame loop that `capture`, `compare` and the benchmarks share: walk a camera path (and the
+// light along its keys) or hold one camera, render every lane each frame, read the frames back,
+// keep each lane's frame and phase times from its renderer's PassTimer, show a progress bar on a
+// terminal. Also what such runs write: CSV tables and JSON summaries, each under a temporary name
+// first, then renamed, so a failed run never leaves a half-written file under the final name.
 
 #include <gpu/PassTimer.h>
+#include <renderer/Renderer.h>
 #include <renderer/io/Capture.h>
 #include <renderer/scene/CameraPath.h>
 
@@ -22,9 +21,10 @@
 #include <sstream>
 #include <string>
 #include <utility>
+#include <variant>
 #include <vector>
 
-namespace fl::app {
+namespace fl {
 
 /// The standard-flooding method a jump-flooding method is measured against (same pass count),
 /// from the method table (jfa-l -> flood-l, jfa-e -> flood-e); none for every other method.
@@ -61,6 +61,8 @@ class PhaseTimes {
     [[nodiscard]] const Phases& phases(std::size_t i) const { return phases_.at(i); }
     /// The phase's ms in frame i: summed if it ran more than once, 0 if it did not run.
     [[nodiscard]] double phaseMs(std::size_t i, const std::string& name) const;
+    /// The phase's ms in every frame, counting frames without it as 0.
+    [[nodiscard]] std::vector<double> phaseSeries(const std::string& name) const;
     /// Whether any frame ran the phase.
     [[nodiscard]] bool ran(const std::string& name) const;
     /// Median frame time (fl::median; 0 without frames).
@@ -84,14 +86,20 @@ struct Lane {
     PhaseTimes times; // filled by FrameRunner::run, one entry per frame
 };
 
-/// What one loop renders: frames [0, frames) of `path` at width x height. The light moves along
-/// `lightKeys` (lightPositionAt); with none, each renderer's light stays where it is.
+/// What one loop renders: frames [0, frames) at width x height, along a camera path or all from
+/// one camera (a benchmark's repeated frame). The light moves along `lightKeys`
+/// (lightPositionAt); with none, each renderer's light stays where it is.
 struct FramePlan {
     const Scene* scene = nullptr;
-    CameraPath path;
+    std::variant<CameraView, CameraPath> camera;
     int frames = 0;
     int width = 0, height = 0;
     std::vector<glm::vec3> lightKeys;
+    /// Frames rendered before frame 0 at frame 0's camera and light, neither recorded nor passed
+    /// on: a benchmark's warm-up (shader compilation, first-use allocations).
+    int warmup = 0;
+    /// false: frames are timed only, nothing is read back (onFrame gets empty images).
+    bool readBack = true;
 };
 
 /// Drives lanes through one or more plans, with one progress bar over all of them.
@@ -102,9 +110,10 @@ class FrameRunner {
 
     /// `totalFrames`: the frames of every plan this runner will run (the progress bar's end).
     explicit FrameRunner(int totalFrames);
-    /// Renders every frame of `plan` with every lane (in lane order), reads each back, checks
-    /// its visibility is finite, appends the lane's times, then calls `onFrame`.
-    void run(const FramePlan& plan, std::vector<Lane>& lanes, const OnFrame& onFrame);
+    /// Renders every frame of `plan` with every lane (in lane order, frame by frame, so lanes
+    /// share the machine's state alike), reads each back and checks its visibility is finite
+    /// (unless !plan.readBack), appends the lane's times, then calls `onFrame` (if set).
+    void run(const FramePlan& plan, std::vector<Lane>& lanes, const OnFrame& onFrame = {});
     /// Ends the progress line (call once, after the last plan).
     void finish();
 
@@ -151,4 +160,4 @@ void writeCsv(const std::filesystem::path& path, const CsvTable& table);
 /// Writes `j` indented by 2, with a final newline, to `path` (temporary name, then rename).
 void writeJson(const std::filesystem::path& path, const nlohmann::json& j);
 
-} // namespace fl::app
+} // namespace fl

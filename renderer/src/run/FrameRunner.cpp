@@ -1,6 +1,4 @@
-#include "FrameRunner.h"
-
-#include "CaptureScript.h"
+#include <renderer/run/FrameRunner.h>
 
 #include <base/Stats.h>
 #include <renderer/io/ImageIO.h>
@@ -13,7 +11,7 @@
 #include <iostream>
 #include <unistd.h>
 
-namespace fl::app {
+namespace fl {
 
 std::optional<std::string> referenceOf(const std::string& method) {
     const MethodDescriptor* m = findMethod(method);
@@ -66,10 +64,14 @@ double PhaseTimes::medianFrameMs() const {
     return fl::median(frameMs_);
 }
 
-double PhaseTimes::medianPhaseMs(const std::string& name) const {
+std::vector<double> PhaseTimes::phaseSeries(const std::string& name) const {
     std::vector<double> v;
     for (std::size_t i = 0; i < frames(); ++i) v.push_back(phaseMs(i, name));
-    return fl::median(std::move(v));
+    return v;
+}
+
+double PhaseTimes::medianPhaseMs(const std::string& name) const {
+    return fl::median(phaseSeries(name));
 }
 
 std::vector<std::string> phaseNames(const std::vector<const PhaseTimes*>& times) {
@@ -89,7 +91,8 @@ void FrameRunner::run(const FramePlan& plan, std::vector<Lane>& lanes, const OnF
     const Scene& scene = *plan.scene;
     const float aspect = static_cast<float>(plan.width) / static_cast<float>(plan.height);
     std::vector<FrameImages> images(lanes.size());
-    for (int i = 0; i < plan.frames; ++i) {
+    for (int k = -plan.warmup; k < plan.frames; ++k) {
+        const int i = std::max(k, 0);
         if (!plan.lightKeys.empty()) {
             Light light = sceneLight(scene);
             light.position = lightPositionAt(plan.lightKeys, i, plan.frames);
@@ -98,16 +101,22 @@ void FrameRunner::run(const FramePlan& plan, std::vector<Lane>& lanes, const OnF
                 light.direction = glm::normalize(scene.bounds.center() - light.position);
             for (Lane& lane : lanes) lane.renderer->setLight(light);
         }
-        const CameraView cam = plan.path.frame(i, plan.frames, scene.bounds, aspect);
+        const auto* path = std::get_if<CameraPath>(&plan.camera);
+        const CameraView cam = path ? path->frame(i, plan.frames, scene.bounds, aspect)
+                                    : std::get<CameraView>(plan.camera);
         for (std::size_t l = 0; l < lanes.size(); ++l) {
             Renderer& r = *lanes[l].renderer;
             r.render(cam);
-            images[l] = readFrame(r);
-            requireFinite(images[l].visibility,
-                          lanes[l].label + " visibility, frame " + std::to_string(i));
+            if (k < 0) continue;
+            if (plan.readBack) {
+                images[l] = readFrame(r);
+                requireFinite(images[l].visibility,
+                              lanes[l].label + " visibility, frame " + std::to_string(i));
+            }
             lanes[l].times.record(r.timer(), floodSample(r));
         }
-        onFrame(i, images);
+        if (k < 0) continue;
+        if (onFrame) onFrame(i, images);
         ++done_;
         showProgress();
     }
@@ -162,4 +171,4 @@ void writeJson(const std::filesystem::path& path, const nlohmann::json& j) {
     writeTextFile(path, j.dump(2) + "\n");
 }
 
-} // namespace fl::app
+} // namespace fl
