@@ -2,6 +2,7 @@
 
 #include <renderer/metrics/Metrics.h>
 
+#include <geometry/DiskSampling.h>
 #include <geometry/Framing.h>
 
 #include <cmath>
@@ -14,36 +15,17 @@ std::vector<glm::vec3> referenceDiskSamples(const DiskLight& disk, int samples) 
     if (samples < 1)
         throw std::invalid_argument("reference samples must be >= 1, got " +
                                     std::to_string(samples));
-    int rows = 1;
-    for (int d = 1; d * d <= samples; ++d)
-        if (samples % d == 0) rows = d;
-    const int cols = samples / rows;
-    // An orthonormal basis of the disk's plane.
-    const glm::vec3 n = glm::normalize(disk.normal);
-    const glm::vec3 helper = std::abs(n.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
-    const glm::vec3 t = glm::normalize(glm::cross(n, helper));
-    const glm::vec3 b = glm::cross(n, t);
-    constexpr double kQuarterPi = 0.78539816339744830962;
+    const glm::ivec2 grid = geom::stratifiedGrid(samples);
+    const int cols = grid.x, rows = grid.y;
+    const geom::DiskFrame frame = geom::diskFrame(disk.normal);
+    const glm::vec3 t = frame.tangent, b = frame.bitangent;
     std::vector<glm::vec3> out;
     for (int j = 0; j < rows; ++j)
         for (int i = 0; i < cols; ++i) {
-            // Cell centre in [-1, 1]^2, then Shirley-Chiu's concentric map (area preserving,
-            // so the strata stay equal-area on the disk).
-            const double u = 2.0 * (i + 0.5) / cols - 1.0;
-            const double v = 2.0 * (j + 0.5) / rows - 1.0;
-            double x = 0.0, y = 0.0;
-            if (u != 0.0 || v != 0.0) {
-                double r = 0.0, phi = 0.0;
-                if (std::abs(u) > std::abs(v)) {
-                    r = u;
-                    phi = kQuarterPi * (v / u);
-                } else {
-                    r = v;
-                    phi = 2.0 * kQuarterPi - kQuarterPi * (u / v);
-                }
-                x = r * std::cos(phi);
-                y = r * std::sin(phi);
-            }
+            // Cell centres in [-1, 1]^2 on the disk (equal-area strata).
+            const glm::dvec2 d = geom::concentricDisk(2.0 * (i + 0.5) / cols - 1.0,
+                                                      2.0 * (j + 0.5) / rows - 1.0);
+            const double x = d.x, y = d.y;
             if (x == 0.0 && y == 0.0) {
                 out.push_back(disk.center); // exactly the centre (N = 1 is the hard shadow)
                 continue;

@@ -1,0 +1,106 @@
+#pragma once
+// Visibility of a disk light by casting shadow rays (Intel Embree 3): the ground truth that uses
+// no shadow map, so it shares none of the errors of the techniques it judges (depth bias, texel
+// aliasing, the map's resolution). Per receiver point, N rays go to stratified points of the
+// disk; its visibility is the share of them that nothing blocks. Pure CPU, all cores.
+//
+// Ray offsets: a ray leaves the receiver `epsilon()` along the receiver's geometric normal
+// (turned towards the light) and stops `epsilon()` short of the disk, with epsilon() = 1e-5 of
+// the scene's bounding-box diagonal. That is far above float rounding at the scene's scale and
+// far below any feature a shadow map resolves (a 4096^2 map's texel is 1/4096 of the scene).
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+namespace fl::rt {
+
+/// A disk light: centre, normal (the side it lights; any length > 0), radius (>= 0).
+struct Disk {
+    glm::vec3 center{0.0f};
+    glm::vec3 normal{0.0f, -1.0f, 0.0f};
+    float radius = 0.0f;
+};
+
+/// World-space triangles: three indices per triangle into `vertices`.
+struct Triangles {
+    std::vector<glm::vec3> vertices;
+    std::vector<std::uint32_t> indices;
+};
+
+/// Largest |coordinate| a vertex may have: Embree works in float, and the BVH's bounds and the
+/// ray offsets lose all precision far beyond the scene's own scale.
+inline constexpr float kMaxCoordinate = 1e15f;
+
+/// The scene's triangles in an Embree BVH. Move-only.
+class RayScene {
+  public:
+    /// Builds the BVH. Throws std::invalid_argument naming the vertex or triangle for a
+    /// non-finite or too large coordinate or an index out of range, and std::runtime_error for an
+    /// Embree failure. Degenerate triangles (zero area) block nothing and are kept.
+    explicit RayScene(const Triangles& triangles);
+    ~RayScene();
+    RayScene(RayScene&&) noexcept;
+    RayScene& operator=(RayScene&&) noexcept;
+    RayScene(const RayScene&) = delete;
+    RayScene& operator=(const RayScene&) = delete;
+
+    /// Moves the vertices (an animated frame: same triangles, new positions) and refits the BVH;
+    /// the same checks as the constructor.
+    void refit(std::span<const glm::vec3> vertices);
+    /// True when a triangle crosses the segment from `from` to `to` (both ends excluded).
+    [[nodiscard]] bool occluded(glm::vec3 from, glm::vec3 to) const;
+    /// The ray offset (see the header comment).
+    [[nodiscard]] float epsilon() const { return epsilon_; }
+    [[nodiscard]] std::size_t triangleCount() const { return triangleCount_; }
+    /// Wall time of the last build or refit, ms.
+    [[nodiscard]] double lastBuildMs() const { return buildMs_; }
+
+  private:
+    struct Embree;
+    std::unique_ptr<Embree> e_;
+    float epsilon_ = 0.0f;
+    std::size_t triangleCount_ = 0;
+    double buildMs_ = 0.0;
+};
+
+/// A point whose visibility is wanted: on a surface with geometric normal `normal` (either
+/// orientation; zero when unknown). `valid` false: not a surface (background), visibility 1.
+struct Receiver {
+    glm::vec3 position{0.0f};
+    glm::vec3 normal{0.0f};
+    bool valid = true;
+};
+
+/// Limits of N, the rays per receiver.
+inline constexpr int kMinSamples = 1;
+inline constexpr int kMaxSamples = 16384;
+
+struct VisibilitySettings {
+    int samples = 256; // N rays per receiver, in [kMinSamples, kMaxSamples]
+    /// true: one random point in each stratum, drawn per receiver (noise, unbiased; what the
+    /// ground truth uses). false: the strata's centres for every receiver, as the shadow-map
+    /// reference places its point lights (its bands along straight edges are this pattern's).
+    bool jitter = true;
+    int threads = 0; // 0: every core
+};
+
+/// The N points of the disk a receiver's rays go to: a stratified grid over the disk
+/// (geom::stratifiedGrid, geom::concentricDisk), jittered per `receiver` index when asked. The
+/// same for any thread count. Throws std::invalid_argument for N out of range.
+std::vector<glm::vec3> diskSamples(const Disk& disk, const VisibilitySettings& settings,
+                                   std::uint64_t receiver);
+
+/// The visible share of the disk from each receiver: receivers[i] -> result[i] in [0, 1]. A
+/// sample counts as blocked when a triangle crosses its ray, when the receiver's surface faces
+/// away from it, or when it lies behind the disk (a disk lights one side). `raysCast`, if set,
+/// receives the number of rays cast. Throws std::invalid_argument for settings out of range.
+std::vector<float> diskVisibility(const RayScene& scene, const Disk& disk,
+                                  std::span<const Receiver> receivers,
+                                  const VisibilitySettings& settings,
+                                  std::uint64_t* raysCast = nullptr);
+
+} // namespace fl::rt

@@ -1,0 +1,238 @@
+#include <raytrace/ShadowRays.h>
+
+#include <base/Parallel.h>
+#include <base/Text.h>
+#include <geometry/DiskSampling.h>
+
+#include <embree3/rtcore.h>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace fl::rt {
+
+namespace {
+
+// Embree reports errors through a callback; the first one is kept and thrown after the call.
+void onError(void* user, RTCError code, const char* text) {
+    auto* message = static_cast<std::string*>(user);
+    if (message->empty()) message->assign(cat("Embree error ", static_cast<int>(code), ": ", text));
+}
+
+void checkVertices(std::span<const glm::vec3> vertices) {
+    for (std::size_t i = 0; i < vertices.size(); ++i)
+        for (int a = 0; a < 3; ++a) {
+            const float c = vertices[i][a];
+            if (!std::isfinite(c))
+                throw std::invalid_argument(cat("raytrace: vertex ", i, " is not finite"));
+            if (std::abs(c) > kMaxCoordinate)
+                throw std::invalid_argument(cat("raytrace: vertex ", i, " lies beyond +-",
+                                                kMaxCoordinate, " (Embree works in float)"));
+        }
+}
+
+// A deterministic hash of (receiver, sample) -> 32 bits (PCG's output permutation over a
+// mixed seed): the jitter is the same for any thread count and any run.
+std::uint32_t hash(std::uint64_t receiver, std::uint32_t sample) {
+    std::uint64_t x = receiver * 0x9E3779B97F4A7C15ull + sample * 0xBF58476D1CE4E5B9ull + 1;
+    x ^= x >> 31;
+    x *= 0x94D049BB133111EBull;
+    x ^= x >> 29;
+    const auto state = static_cast<std::uint32_t>(x);
+    const std::uint32_t word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+    return (word >> 22u) ^ word ^ static_cast<std::uint32_t>(x >> 32);
+}
+
+// [0, 1) from 24 bits (exact in float and double).
+double unit(std::uint32_t bits) {
+    return static_cast<double>(bits >> 8) * (1.0 / 16777216.0);
+}
+
+} // namespace
+
+struct RayScene::Embree {
+    std::string error;
+    RTCDevice device = nullptr;
+    RTCScene scene = nullptr;
+    RTCGeometry geometry = nullptr;
+    glm::vec3* vertices = nullptr; // Embree's vertex buffer (padded by one float)
+    std::size_t vertexCount = 0;
+
+    ~Embree() {
+        if (scene) rtcReleaseScene(scene);
+        if (geometry) rtcReleaseGeometry(geometry);
+        if (device) rtcReleaseDevice(device);
+    }
+    void check() {
+        if (!error.empty()) throw std::runtime_error("raytrace: " + error);
+    }
+};
+
+RayScene::RayScene(const Triangles& t) : e_(std::make_unique<Embree>()) {
+    const auto start = std::chrono::steady_clock::now();
+    if (t.indices.size() % 3 != 0)
+        throw std::invalid_argument(cat("raytrace: ", t.indices.size(),
+                                        " indices is not a whole number of triangles"));
+    checkVertices(t.vertices);
+    for (std::size_t i = 0; i < t.indices.size(); ++i)
+        if (t.indices[i] >= t.vertices.size())
+            throw std::invalid_argument(cat("raytrace: triangle ", i / 3, " uses vertex ",
+                                            t.indices[i], " of ", t.vertices.size()));
+    e_->device = rtcNewDevice(nullptr);
+    if (!e_->device)
+        throw std::runtime_error(cat("raytrace: Embree device: error ",
+                                     static_cast<int>(rtcGetDeviceError(nullptr))));
+    rtcSetDeviceErrorFunction(e_->device, onError, &e_->error);
+    e_->scene = rtcNewScene(e_->device);
+    // Robust traversal: rays that graze a shared edge or vertex do not slip between triangles.
+    rtcSetSceneFlags(e_->scene, RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneBuildQuality(e_->scene, RTC_BUILD_QUALITY_HIGH);
+    e_->geometry = rtcNewGeometry(e_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    e_->check();
+    const std::size_t triangles = t.indices.size() / 3;
+    // Embree reads vertices 16 bytes at a time: its buffers are padded.
+    e_->vertexCount = t.vertices.size();
+    e_->vertices = static_cast<glm::vec3*>(
+        rtcSetNewGeometryBuffer(e_->geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                sizeof(glm::vec3), std::max<std::size_t>(t.vertices.size(), 1)));
+    auto* indices = static_cast<std::uint32_t*>(
+        rtcSetNewGeometryBuffer(e_->geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                3 * sizeof(std::uint32_t), triangles));
+    e_->check();
+    std::copy(t.vertices.begin(), t.vertices.end(), e_->vertices);
+    std::copy(t.indices.begin(), t.indices.end(), indices);
+    rtcCommitGeometry(e_->geometry);
+    rtcAttachGeometry(e_->scene, e_->geometry);
+    rtcCommitScene(e_->scene);
+    e_->check();
+    triangleCount_ = triangles;
+    glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+    for (const glm::vec3& v : t.vertices) {
+        lo = glm::min(lo, v);
+        hi = glm::max(hi, v);
+    }
+    epsilon_ = t.vertices.empty() ? 1e-5f : std::max(1e-5f * glm::length(hi - lo), 1e-30f);
+    buildMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                   .count();
+}
+
+RayScene::~RayScene() = default;
+RayScene::RayScene(RayScene&&) noexcept = default;
+RayScene& RayScene::operator=(RayScene&&) noexcept = default;
+
+void RayScene::refit(std::span<const glm::vec3> vertices) {
+    const auto start = std::chrono::steady_clock::now();
+    if (vertices.size() != e_->vertexCount)
+        throw std::invalid_argument(cat("raytrace: refit with ", vertices.size(),
+                                        " vertices, the scene has ", e_->vertexCount));
+    checkVertices(vertices);
+    std::copy(vertices.begin(), vertices.end(), e_->vertices);
+    rtcUpdateGeometryBuffer(e_->geometry, RTC_BUFFER_TYPE_VERTEX, 0);
+    // A refit keeps the tree's topology and recomputes its bounds (cheap; the tree's quality
+    // drops only when the motion is large).
+    rtcSetGeometryBuildQuality(e_->geometry, RTC_BUILD_QUALITY_REFIT);
+    rtcCommitGeometry(e_->geometry);
+    rtcCommitScene(e_->scene);
+    e_->check();
+    buildMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                   .count();
+}
+
+bool RayScene::occluded(glm::vec3 from, glm::vec3 to) const {
+    const glm::vec3 d = to - from;
+    const float length = glm::length(d);
+    if (!(length > 0.0f)) return false;
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRay ray{};
+    ray.org_x = from.x;
+    ray.org_y = from.y;
+    ray.org_z = from.z;
+    ray.dir_x = d.x / length;
+    ray.dir_y = d.y / length;
+    ray.dir_z = d.z / length;
+    ray.tnear = 0.0f;
+    ray.tfar = length;
+    ray.mask = 0xFFFFFFFFu;
+    rtcOccluded1(e_->scene, &context, &ray);
+    return ray.tfar < 0.0f; // Embree sets tfar to -inf on a hit
+}
+
+std::vector<glm::vec3> diskSamples(const Disk& disk, const VisibilitySettings& s,
+                                   std::uint64_t receiver) {
+    if (s.samples < kMinSamples || s.samples > kMaxSamples)
+        throw std::invalid_argument(cat("raytrace: samples must be in [", kMinSamples, ", ",
+                                        kMaxSamples, "], got ", s.samples));
+    const glm::ivec2 grid = geom::stratifiedGrid(s.samples);
+    const geom::DiskFrame frame = geom::diskFrame(disk.normal);
+    std::vector<glm::vec3> out;
+    out.reserve(static_cast<std::size_t>(s.samples));
+    std::uint32_t k = 0;
+    for (int j = 0; j < grid.y; ++j)
+        for (int i = 0; i < grid.x; ++i, ++k) {
+            double a = 0.5, b = 0.5;
+            if (s.jitter) {
+                a = unit(hash(receiver, 2 * k));
+                b = unit(hash(receiver, 2 * k + 1));
+            }
+            const glm::dvec2 p =
+                geom::concentricDisk(2.0 * (i + a) / grid.x - 1.0, 2.0 * (j + b) / grid.y - 1.0);
+            out.push_back(disk.center + disk.radius * (static_cast<float>(p.x) * frame.tangent +
+                                                       static_cast<float>(p.y) * frame.bitangent));
+        }
+    return out;
+}
+
+std::vector<float> diskVisibility(const RayScene& scene, const Disk& disk,
+                                  std::span<const Receiver> receivers, const VisibilitySettings& s,
+                                  std::uint64_t* raysCast) {
+    (void)diskSamples(disk, s, 0); // checks N
+    if (!(disk.radius >= 0.0f) || !(glm::length(disk.normal) > 0.0f))
+        throw std::invalid_argument("raytrace: the disk needs a radius >= 0 and a normal");
+    const glm::vec3 facing = glm::normalize(disk.normal);
+    const float eps = scene.epsilon();
+    std::vector<float> out(receivers.size(), 1.0f);
+    std::atomic<std::uint64_t> rays{0};
+    // Receivers in blocks of 256 (rows of the fan-out): small enough to balance the cores.
+    constexpr int kBlock = 256;
+    const int blocks = static_cast<int>((receivers.size() + kBlock - 1) / kBlock);
+    parallelRows(blocks, s.threads, [&](int begin, int end, int) {
+        std::uint64_t cast = 0;
+        const std::size_t last = std::min(receivers.size(), std::size_t(end) * kBlock);
+        for (std::size_t r = std::size_t(begin) * kBlock; r < last; ++r) {
+            const Receiver& rc = receivers[r];
+            if (!rc.valid) continue;
+            // The normal turned towards the light's centre: the side the receiver is lit from.
+            glm::vec3 n(0.0f);
+            if (glm::length(rc.normal) > 0.0f) {
+                n = glm::normalize(rc.normal);
+                if (glm::dot(n, disk.center - rc.position) < 0.0f) n = -n;
+            }
+            const glm::vec3 origin = rc.position + eps * n;
+            int visible = 0;
+            for (const glm::vec3& q : diskSamples(disk, s, r)) {
+                const glm::vec3 toLight = q - rc.position;
+                if (glm::dot(n, toLight) <= 0.0f && n != glm::vec3(0.0f)) continue; // faces away
+                if (glm::dot(facing, -toLight) <= 0.0f) continue; // behind the disk
+                const float length = glm::length(q - origin);
+                if (length <= eps) {
+                    ++visible; // on the light itself
+                    continue;
+                }
+                ++cast;
+                if (!scene.occluded(origin, q - (eps / length) * (q - origin))) ++visible;
+            }
+            out[r] = static_cast<float>(visible) / static_cast<float>(s.samples);
+        }
+        rays += cast;
+    });
+    if (raysCast) *raysCast = rays;
+    return out;
+}
+
+} // namespace fl::rt
