@@ -3,7 +3,8 @@
 // same result for any thread count.
 
 #include <raytrace/ShadowRays.h>
-#include <renderer/soft/DiskLight.h>
+
+#include "TestScenes.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
@@ -31,19 +32,6 @@ Triangles halfPlane(float h, float angle) {
     return {{at(0, -100), at(0, 100), at(-200, 100), at(-200, -100)}, {0, 1, 2, 0, 2, 3}};
 }
 
-// The exact visible share of a disk of radius r at height H (facing down, centred over the
-// origin) from the ground point at signed distance x from the edge's line, with the occluder
-// edge at height h: the ray to a disk point at signed distance s crosses the occluder's plane at
-// x + (s - x) h / H, so it is blocked for s < -x (H - h) / h, and the visible part of the disk is
-// the segment beyond that chord (fl::segmentFraction, as JFA-L/E use it).
-double exactEdge(double x, double h, double H, double r) {
-    const double t = (-x * (H - h) / h) / r;
-    if (t >= 1.0) return 0.0;
-    if (t <= -1.0) return 1.0;
-    return t >= 0.0 ? fl::segmentFraction(static_cast<float>(t))
-                    : 1.0 - fl::segmentFraction(static_cast<float>(-t));
-}
-
 struct EdgeCase {
     float h, H, r, angle;
 };
@@ -64,7 +52,7 @@ LineError edgeError(const EdgeCase& c, const VisibilitySettings& s) {
         const double x = -half + 2.0 * half * i / 200.0;
         const glm::vec2 p = static_cast<float>(x) * out;
         receivers.push_back({{p.x, 0.0f, p.y}, {0, 1, 0}, true});
-        exact.push_back(exactEdge(x, c.h, c.H, c.r));
+        exact.push_back(fl::test::straightEdgeVisibility(x, c.h, c.H, c.r));
     }
     const std::vector<float> v = fl::rt::diskVisibility(scene, disk, receivers, s);
     LineError e;
@@ -85,14 +73,14 @@ double stratifiedSigma(int n) {
 }
 
 TEST(RayTraceTest, StraightEdgeMatchesTheClosedFormAtEveryAngleAndHeight) {
-    for (const EdgeCase c : {EdgeCase{1.0f, 5.0f, 0.5f, 0.0f}, EdgeCase{2.0f, 5.0f, 1.0f, 0.5f},
-                             EdgeCase{0.5f, 8.0f, 1.5f, 0.785398f},
-                             EdgeCase{3.0f, 4.0f, 0.25f, 2.0f}}) {
+    for (const EdgeCase c :
+         {EdgeCase{1.0f, 5.0f, 0.5f, 0.0f}, EdgeCase{2.0f, 5.0f, 1.0f, 0.5f},
+          EdgeCase{0.5f, 8.0f, 1.5f, 0.785398f}, EdgeCase{3.0f, 4.0f, 0.25f, 2.0f}}) {
         VisibilitySettings s;
         s.samples = 256;
         const LineError e = edgeError(c, s);
-        SCOPED_TRACE(::testing::Message() << "h " << c.h << " H " << c.H << " r " << c.r
-                                          << " angle " << c.angle);
+        SCOPED_TRACE(::testing::Message()
+                     << "h " << c.h << " H " << c.H << " r " << c.r << " angle " << c.angle);
         // RMSE within one sigma-bound, each point within 4.5 (201 points: 4.5 sigma is
         // exceeded by chance about once in 10^3 runs of 201, and the hash is fixed).
         EXPECT_LT(e.rmse, stratifiedSigma(s.samples));
@@ -159,9 +147,8 @@ TEST(RayTraceTest, TheSameForAnyThreadCount) {
     const Disk disk{{0, 5, 0}, {0, -1, 0}, 1.0f};
     std::vector<Receiver> r;
     for (int i = 0; i < 3000; ++i)
-        r.push_back({{-2.0f + 4.0f * static_cast<float>(i) / 3000.0f, 0, 0.1f * (i % 7)},
-                     {0, 1, 0},
-                     true});
+        r.push_back(
+            {{-2.0f + 4.0f * static_cast<float>(i) / 3000.0f, 0, 0.1f * (i % 7)}, {0, 1, 0}, true});
     VisibilitySettings s;
     s.samples = 64;
     s.threads = 1;

@@ -76,8 +76,8 @@ struct RayScene::Embree {
 RayScene::RayScene(const Triangles& t) : e_(std::make_unique<Embree>()) {
     const auto start = std::chrono::steady_clock::now();
     if (t.indices.size() % 3 != 0)
-        throw std::invalid_argument(cat("raytrace: ", t.indices.size(),
-                                        " indices is not a whole number of triangles"));
+        throw std::invalid_argument(
+            cat("raytrace: ", t.indices.size(), " indices is not a whole number of triangles"));
     checkVertices(t.vertices);
     for (std::size_t i = 0; i < t.indices.size(); ++i)
         if (t.indices[i] >= t.vertices.size())
@@ -85,8 +85,8 @@ RayScene::RayScene(const Triangles& t) : e_(std::make_unique<Embree>()) {
                                             t.indices[i], " of ", t.vertices.size()));
     e_->device = rtcNewDevice(nullptr);
     if (!e_->device)
-        throw std::runtime_error(cat("raytrace: Embree device: error ",
-                                     static_cast<int>(rtcGetDeviceError(nullptr))));
+        throw std::runtime_error(
+            cat("raytrace: Embree device: error ", static_cast<int>(rtcGetDeviceError(nullptr))));
     rtcSetDeviceErrorFunction(e_->device, onError, &e_->error);
     e_->scene = rtcNewScene(e_->device);
     // Robust traversal: rays that graze a shared edge or vertex do not slip between triangles.
@@ -117,8 +117,8 @@ RayScene::RayScene(const Triangles& t) : e_(std::make_unique<Embree>()) {
         hi = glm::max(hi, v);
     }
     epsilon_ = t.vertices.empty() ? 1e-5f : std::max(1e-5f * glm::length(hi - lo), 1e-30f);
-    buildMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-                   .count();
+    buildMs_ =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 RayScene::~RayScene() = default;
@@ -139,8 +139,8 @@ void RayScene::refit(std::span<const glm::vec3> vertices) {
     rtcCommitGeometry(e_->geometry);
     rtcCommitScene(e_->scene);
     e_->check();
-    buildMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-                   .count();
+    buildMs_ =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 bool RayScene::occluded(glm::vec3 from, glm::vec3 to) const {
@@ -207,12 +207,10 @@ std::vector<float> diskVisibility(const RayScene& scene, const Disk& disk,
         for (std::size_t r = std::size_t(begin) * kBlock; r < last; ++r) {
             const Receiver& rc = receivers[r];
             if (!rc.valid) continue;
-            // The normal turned towards the light's centre: the side the receiver is lit from.
-            glm::vec3 n(0.0f);
-            if (glm::length(rc.normal) > 0.0f) {
-                n = glm::normalize(rc.normal);
-                if (glm::dot(n, disk.center - rc.position) < 0.0f) n = -n;
-            }
+            // The seen side's normal: rays leave on that side, and the plane blocks what is
+            // behind it.
+            const glm::vec3 n =
+                glm::length(rc.normal) > 0.0f ? glm::normalize(rc.normal) : glm::vec3(0.0f);
             const glm::vec3 origin = rc.position + eps * n;
             int visible = 0;
             for (const glm::vec3& q : diskSamples(disk, s, r)) {

@@ -92,6 +92,17 @@ CompareResult compareWithGolden(const ByteImage& actual, const std::string& name
     return r;
 }
 
+std::string writeVisibilityDiff(const FloatImage& a, const FloatImage& b, const std::string& name) {
+    const std::filesystem::path dir = outputDir("diff");
+    writePng(dir / (name + ".a.png"), visibilityToGrey(a));
+    writePng(dir / (name + ".b.png"), visibilityToGrey(b));
+    FloatImage d = a;
+    for (std::size_t i = 0; i < d.data.size() && i < b.data.size(); ++i)
+        d.data[i] = std::min(1.0f, 4.0f * std::abs(a.data[i] - b.data[i]));
+    writePng(dir / (name + ".diff.png"), visibilityToGrey(d));
+    return "wrote " + (dir / (name + ".{a,b,diff}.png")).string();
+}
+
 Tolerance frameTolerance() {
     return {.maxAbs = 255, .meanAbs = 1.5, .pixelThreshold = 16, .maxPercentOver = 1.0};
 }

@@ -38,6 +38,11 @@ CompareResult compareImages(const ByteImage& actual, const ByteImage& golden, co
 CompareResult compareWithGolden(const ByteImage& actual, const std::string& name,
                                 const Tolerance& tol);
 
+/// For a failed comparison of two visibility images of one frame (e.g. a method against an
+/// exact answer): writes NAME.a.png, NAME.b.png (grey) and NAME.diff.png (|a - b| x4, grey) to
+/// the test output folder and returns a line naming them.
+std::string writeVisibilityDiff(const FloatImage& a, const FloatImage& b, const std::string& name);
+
 /// The tolerance of the goldens of rendered frames (colour, and soft visibility as grey levels).
 /// They are bit-exact on the machine that made them; another driver may round shading by a few
 /// steps and flip shadow tests within float precision at single pixels, so any pixel may differ

@@ -5,7 +5,7 @@
 // disk; its visibility is the share of them that nothing blocks. Pure CPU, all cores.
 //
 // Ray offsets: a ray leaves the receiver `epsilon()` along the receiver's geometric normal
-// (turned towards the light) and stops `epsilon()` short of the disk, with epsilon() = 1e-5 of
+// (on the side it is seen from) and stops `epsilon()` short of the disk, with epsilon() = 1e-5 of
 // the scene's bounding-box diagonal. That is far above float rounding at the scene's scale and
 // far below any feature a shadow map resolves (a 4096^2 map's texel is 1/4096 of the scene).
 
@@ -67,8 +67,9 @@ class RayScene {
     double buildMs_ = 0.0;
 };
 
-/// A point whose visibility is wanted: on a surface with geometric normal `normal` (either
-/// orientation; zero when unknown). `valid` false: not a surface (background), visibility 1.
+/// A point whose visibility is wanted, on a surface whose geometric normal is `normal`, pointing
+/// to the side the point is seen from (the eye's side; zero when unknown). Light from behind that
+/// plane cannot reach the seen side. `valid` false: not a surface (background), visibility 1.
 struct Receiver {
     glm::vec3 position{0.0f};
     glm::vec3 normal{0.0f};

@@ -6,6 +6,8 @@
 #include <renderer/soft/FilteredShadow.h>
 #include <renderer/soft/PenumbraMap.h>
 
+#include <raytrace/ShadowRays.h>
+
 #include <base/Text.h>
 
 #include <stdexcept>
@@ -24,6 +26,7 @@ std::unique_ptr<ShadowMethod> makePcf(const ShaderLibrary&);
 std::unique_ptr<ShadowMethod> makePcss(const ShaderLibrary&);
 std::unique_ptr<ShadowMethod> makeGroundTruth(const ShaderLibrary&);
 std::unique_ptr<ShadowMethod> makeVsm(const ShaderLibrary&);
+std::unique_ptr<ShadowMethod> makeRayTrace(const ShaderLibrary&);
 
 namespace {
 
@@ -115,6 +118,17 @@ constexpr MethodOption kReferenceMapSize{"--reference-map-size",
                                          16,
                                          8192};
 
+constexpr MethodOption kRaySamples{"--raytrace-samples",
+                                   "samples",
+                                   OptionKind::Int,
+                                   "256",
+                                   "Shadow rays per pixel to stratified points of the disk light",
+                                   rt::kMinSamples,
+                                   rt::kMaxSamples};
+constexpr MethodOption kRayGrid{
+    "--raytrace-grid", "grid", OptionKind::Flag, "false",
+    "Rays to the strata's centres, the same points for every pixel (as the shadow-map reference "
+    "places its lights; bands along straight edges), instead of one random point per stratum"};
 constexpr MethodOption kVsmBlur{"--vsm-blur",
                                 "blur",
                                 OptionKind::Float,
@@ -141,6 +155,7 @@ constexpr const MethodOption* kPcfOptions[] = {&kPcfKernel};
 constexpr const MethodOption* kPcssOptions[] = {&kPcssPreset};
 constexpr const MethodOption* kGroundTruthOptions[] = {&kReferenceSamples, &kReferenceMapSize};
 constexpr const MethodOption* kVsmOptions[] = {&kVsmBlur, &kVsmBleed};
+constexpr const MethodOption* kRayTraceOptions[] = {&kRaySamples, &kRayGrid};
 
 // --- Timed phases (step 3's parts, as PassTimer names them) ------------------------------------
 
@@ -153,6 +168,7 @@ constexpr std::string_view kPcfPhases[] = {"pcf filter"};
 constexpr std::string_view kPcssPhases[] = {"blocker search+filter"};
 constexpr std::string_view kGroundTruthPhases[] = {"reference maps", "reference resolve"};
 constexpr std::string_view kVsmPhases[] = {"vsm moments", "vsm blur", "vsm lookup"};
+constexpr std::string_view kRayTracePhases[] = {"raytrace bvh", "raytrace rays"};
 
 // --- Checks before rendering --------------------------------------------------------------------
 
@@ -208,6 +224,9 @@ const MethodDescriptor kTable[] = {
     {"reference", "ground truth: N point-light shadow maps over the disk, averaged", "",
      MethodSpace::Light, kGroundTruthOptions, kGroundTruthPhases, true, false, false,
      makeGroundTruth, nullptr},
+    {"raytrace", "exact ground truth: N shadow rays per pixel to the disk light (Embree, CPU)", "",
+     MethodSpace::Eye, kRayTraceOptions, kRayTracePhases, false, false, false, makeRayTrace,
+     nullptr},
 };
 
 } // namespace

@@ -34,7 +34,7 @@ gl::Texture uploadImage(const Image& image) {
 
 } // namespace
 
-GpuScene::GpuScene(const Scene& scene) {
+GpuScene::GpuScene(const Scene& scene) : source_(&scene) {
     std::vector<Vertex> vertices;
     std::vector<std::uint32_t> indices;
     std::vector<MeshRange> ranges;

@@ -23,8 +23,8 @@ std::vector<glm::vec3> referenceDiskSamples(const DiskLight& disk, int samples) 
     for (int j = 0; j < rows; ++j)
         for (int i = 0; i < cols; ++i) {
             // Cell centres in [-1, 1]^2 on the disk (equal-area strata).
-            const glm::dvec2 d = geom::concentricDisk(2.0 * (i + 0.5) / cols - 1.0,
-                                                      2.0 * (j + 0.5) / rows - 1.0);
+            const glm::dvec2 d =
+                geom::concentricDisk(2.0 * (i + 0.5) / cols - 1.0, 2.0 * (j + 0.5) / rows - 1.0);
             const double x = d.x, y = d.y;
             if (x == 0.0 && y == 0.0) {
                 out.push_back(disk.center); // exactly the centre (N = 1 is the hard shadow)

@@ -12,7 +12,8 @@ namespace fl {
 
 class GpuScene {
   public:
-    /// Uploads every mesh, material texture and instance; needs a current GL context.
+    /// Uploads every mesh, material texture and instance; needs a current GL context. `scene`
+    /// must outlive this object: CPU methods (the ray tracer) read its triangles.
     explicit GpuScene(const Scene& scene);
 
     /// What a draw sets per instance.
@@ -22,6 +23,8 @@ class GpuScene {
     void draw(const gl::Program& program, Uniforms what) const;
 
     [[nodiscard]] std::size_t triangleCount() const { return triangles_; }
+    /// The scene this was uploaded from.
+    [[nodiscard]] const Scene& source() const { return *source_; }
     /// How many draw() calls so far were from the eye: with a program whose vertex stage takes
     /// the camera's uViewProj (forward.vert.glsl), as opposed to the light's uLightViewProj.
     [[nodiscard]] std::size_t eyeDrawCalls() const { return eyeDrawCalls_; }
@@ -37,6 +40,7 @@ class GpuScene {
         int texture; // index into textures_, -1 none
         std::uint32_t objectId;
     };
+    const Scene* source_;
     gl::Buffer vertices_;
     gl::Buffer indices_;
     gl::VertexArray vao_;
