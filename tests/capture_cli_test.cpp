@@ -179,6 +179,35 @@ fs::path scriptFile(const std::string& name, const std::string& text) {
     return p;
 }
 
+TEST(CaptureRun, TheRayTracedReferenceIsUsedAndNamed) {
+    // Two tiny frames against the ray-traced ground truth: the metrics come from its lane, and
+    // the summary and report say which reference it was.
+    const fs::path dir = outputDir("capture_raytrace");
+    fs::remove_all(dir);
+    const Outcome r = capture(
+        scriptFile("raytrace.json",
+                   R"({"camera": {"frames": 2, "path": "default"}, "resolutions": [[32, 32]],
+                       "reference": {"kind": "raytrace", "samples": 16},
+                       "methods": ["hard", "raytrace"]})"),
+        dir);
+    ASSERT_EQ(r.code, 0) << r.output;
+    EXPECT_NE(r.output.find("reference: raytrace: 16 shadow rays per pixel"), std::string::npos)
+        << r.output;
+    const nlohmann::json summary = nlohmann::json::parse(readText(dir / "summary.json"));
+    EXPECT_EQ(summary["reference"]["kind"], "raytrace");
+    EXPECT_EQ(summary["reference"]["method"], "raytrace");
+    EXPECT_FALSE(summary["reference"].contains("mapSize"));
+    for (const auto& m : summary["methods"]) {
+        // The raytrace entry is the reference against itself; hard is not.
+        if (m["method"] == "raytrace")
+            EXPECT_EQ(m["rmse"].get<double>(), 0.0);
+        else
+            EXPECT_GT(m["rmse"].get<double>(), 0.0);
+    }
+    const std::string report = readText(dir / "report.html");
+    EXPECT_NE(report.find("raytrace: 16 shadow rays per pixel (Embree)"), std::string::npos);
+}
+
 void expectCleanFailure(const Outcome& r, const std::string& named, const fs::path& out) {
     EXPECT_EQ(r.code, 1) << r.output;
     EXPECT_NE(r.output.find(named), std::string::npos) << "expected '" << named << "' in\n"

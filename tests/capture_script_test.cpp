@@ -70,6 +70,8 @@ TEST(CaptureScript, EveryField) {
     EXPECT_EQ(s.shadowMapProvider, "tsm");
     EXPECT_EQ(s.shadowMapSize, 512);
     EXPECT_EQ(s.jfaPasses, "5");
+    EXPECT_EQ(s.reference.kind, "maps");
+    EXPECT_EQ(s.reference.method().name, "reference");
     EXPECT_EQ(s.reference.samples, 16);
     EXPECT_EQ(s.reference.mapSize, 256);
     EXPECT_FALSE(s.saveFrames);
@@ -97,6 +99,20 @@ TEST(CaptureScript, EveryField) {
     EXPECT_EQ(parsePcssPreset(pcss.options.text(preset))->filterSamples, 64);
     EXPECT_EQ(settingsFor(RenderSettings{}, s.methods[2]).options.integer(kernel), 5);
     EXPECT_EQ(settingsFor(RenderSettings{}, s.methods[3]).options.integer(passes), 4);
+}
+
+TEST(CaptureScript, TheReferenceIsChosenByKind) {
+    const CaptureScript rays =
+        parse(script(R"(, "reference": {"kind": "raytrace", "samples": 64})"));
+    EXPECT_EQ(rays.reference.kind, "raytrace");
+    EXPECT_EQ(rays.reference.method().name, "raytrace");
+    EXPECT_EQ(rays.reference.samples, 64);
+    EXPECT_EQ(referenceText(rays.reference), "raytrace: 64 shadow rays per pixel (Embree)");
+    const CaptureScript maps = parse(script(R"(, "reference": {"kind": "maps", "mapSize": 512})"));
+    EXPECT_EQ(maps.reference.method().name, "reference");
+    EXPECT_EQ(referenceText(maps.reference), "maps: 256 point-light shadow maps of 512^2");
+    // The default is the shadow-map ground truth (the faster one on this machine).
+    EXPECT_EQ(parse(script()).reference.kind, "maps");
 }
 
 TEST(CaptureScript, CameraFromAFile) {
@@ -155,6 +171,11 @@ TEST(CaptureScript, EveryMalformedFieldIsNamed) {
         {script(R"(, "jfaPasses": 10, "shadowMap": {"size": 256})"), "jfaPasses"},
         {script(R"(, "reference": {"samples": 0})"), "reference.samples"},
         {script(R"(, "reference": {"mapSize": "big"})"), "reference.mapSize"},
+        {script(R"(, "reference": {"kind": "photons"})"), "reference.kind"},
+        {script(R"(, "reference": {"kind": 2})"), "reference.kind"},
+        {script(R"(, "reference": {"kind": "raytrace", "mapSize": 512})"), "reference.mapSize"},
+        {script(R"(, "reference": {"kind": "raytrace", "samples": 100000})"),
+         "reference.samples"},
         {script(R"(, "saveFrames": "yes")"), "saveFrames"},
         {script(R"(, "frames": 3)"), "script.frames"},
         {script("", R"([])"), "methods"},

@@ -268,11 +268,12 @@ int runCapture(const CaptureRequest& req) {
     const gl::ShaderLibrary shaders = makeShaderLibrary(so);
     CaptureSetup setup{script, so, scene, shaders, makeRenderSettings(so), {}, dir};
     setup.reference = setup.base;
-    setup.reference.method = "reference";
     {
-        const MethodDescriptor& truth = methodOrThrow(setup.reference.method);
+        const MethodDescriptor& truth = script.reference.method();
+        setup.reference.method = std::string(truth.name);
         setup.reference.options.set(truth.option("samples")->flag, script.reference.samples);
-        setup.reference.options.set(truth.option("mapSize")->flag, script.reference.mapSize);
+        if (const MethodOption* mapSize = truth.option("mapSize"))
+            setup.reference.options.set(mapSize->flag, script.reference.mapSize);
     }
 
     CaptureResults results;
@@ -282,8 +283,7 @@ int runCapture(const CaptureRequest& req) {
     std::cout << "context: " << results.context << "\nscene: " << scene.source << " ("
               << scene.triangleCount() << " triangles), " << script.frames << " frames x "
               << script.methods.size() << " methods x " << script.resolutions.size()
-              << " resolution(s); reference " << script.reference.samples << " samples, "
-              << script.reference.mapSize << "^2 maps\n";
+              << " resolution(s); reference: " << referenceText(script.reference) << "\n";
     FrameRunner runner(script.frames * static_cast<int>(script.resolutions.size()));
     for (const auto& [w, h] : script.resolutions) captureSize(setup, w, h, runner, results);
     runner.finish();

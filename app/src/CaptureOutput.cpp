@@ -95,9 +95,11 @@ nlohmann::json resultsSummary(const CaptureResults& r) {
     for (const auto& [w, h] : s.resolutions) j["resolutions"].push_back({w, h});
     j["shadowMap"] = {{"provider", s.shadowMapProvider}, {"size", s.shadowMapSize}};
     j["jfaPasses"] = s.jfaPasses;
-    j["reference"] = {{"samples", s.reference.samples},
-                      {"mapSize", s.reference.mapSize},
+    j["reference"] = {{"kind", s.reference.kind},
+                      {"method", std::string(s.reference.method().name)},
+                      {"samples", s.reference.samples},
                       {"medianFrameMs", fl::median(r.referenceFrameMs)}};
+    if (s.reference.method().option("mapSize")) j["reference"]["mapSize"] = s.reference.mapSize;
     j["definitions"] = {
         {"receivers", "the pixels counted: visible surfaces facing the light (N.L > 0), where the "
                       "visibility changes the image"},

@@ -1,5 +1,7 @@
 #include "CaptureScript.h"
 
+#include <base/Text.h>
+
 #include <renderer/soft/PenumbraMap.h>
 
 #include <nlohmann/json.hpp>
@@ -230,11 +232,30 @@ CaptureScript parseCaptureScript(const std::string& text, const std::filesystem:
         }
         if (j.contains("reference")) {
             const Json& r = j["reference"];
-            checkKeys(r, "reference", {"samples", "mapSize"});
-            if (r.contains("samples"))
-                s.reference.samples = readInt(r["samples"], "reference.samples", 1, 4096);
-            if (r.contains("mapSize"))
-                s.reference.mapSize = readInt(r["mapSize"], "reference.mapSize", 16, 8192);
+            checkKeys(r, "reference", {"kind", "samples", "mapSize"});
+            if (r.contains("kind")) {
+                if (!r["kind"].is_string())
+                    fail("reference.kind", "expected \"" + groundTruthKinds() + "\"");
+                s.reference.kind = r["kind"].get<std::string>();
+                try {
+                    (void)s.reference.method();
+                } catch (const std::invalid_argument&) {
+                    fail("reference.kind", "\"" + s.reference.kind + "\" is not one of " +
+                                               groundTruthKinds());
+                }
+            }
+            // Each option within the chosen ground truth's own range (the method table's).
+            const MethodDescriptor& truth = s.reference.method();
+            for (const auto& [key, value] : {std::pair{"samples", &s.reference.samples},
+                                             std::pair{"mapSize", &s.reference.mapSize}}) {
+                if (!r.contains(key)) continue;
+                const MethodOption* o = truth.option(key);
+                if (!o)
+                    fail(std::string("reference.") + key,
+                         "the " + s.reference.kind + " reference does not take it");
+                *value = readInt(r[key], std::string("reference.") + key,
+                                 static_cast<int>(o->min), static_cast<int>(o->max));
+            }
         }
         if (!j.contains("methods")) fail("methods", "missing (a list of method names)");
         if (!j["methods"].is_array() || j["methods"].empty())
@@ -280,6 +301,12 @@ CaptureScript readCaptureScript(const std::filesystem::path& file) {
     std::ostringstream text;
     text << in.rdbuf();
     return parseCaptureScript(text.str(), file);
+}
+
+std::string referenceText(const CaptureScript::Reference& r) {
+    if (r.method().option("mapSize"))
+        return cat(r.kind, ": ", r.samples, " point-light shadow maps of ", r.mapSize, "^2");
+    return cat(r.kind, ": ", r.samples, " shadow rays per pixel (Embree)");
 }
 
 RenderSettings settingsFor(const RenderSettings& base, const MethodSpec& m) {

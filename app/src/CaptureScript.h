@@ -12,7 +12,10 @@
 //    "resolutions": [[W, H], ...],                         // default [[512, 512]]
 //    "shadowMap": {"provider": "uniform" | "tsm", "size": S},
 //    "jfaPasses": P | "auto",                              // default "auto" (as --jfa-passes)
-//    "reference": {"samples": N, "mapSize": S},
+//    "reference": {"kind": "maps" | "raytrace", "samples": N, "mapSize": S},
+//                                                          // the ground truth every metric is
+//                                                          // measured against (default maps);
+//                                                          // mapSize for maps only
 //    "methods": ["hard", "pcss:16/24", "pcf:5", {"method": "jfa-l", "passes": 7, "label": ".."}],
 //                                                          // keys: the method's options in the
 //                                                          // method table ("name:V" sets its
@@ -56,7 +59,15 @@ struct CaptureScript {
     std::string shadowMapProvider = "uniform";
     int shadowMapSize = 1024;
     std::string jfaPasses{floodPassesOption().defaultValue}; // --jfa-passes of every flood method
-    ReferenceSettings reference;
+    /// The ground truth the metrics use: a method of the table with a `truth` kind, with its
+    /// options (samples; mapSize for maps).
+    struct Reference {
+        std::string kind = "maps";
+        int samples = 256;
+        int mapSize = 2048; // maps only
+        /// Its row of the method table.
+        [[nodiscard]] const MethodDescriptor& method() const { return groundTruth(kind); }
+    } reference;
     std::vector<MethodSpec> methods;
     bool saveFrames = true;
 };
@@ -65,6 +76,10 @@ struct CaptureScript {
 CaptureScript parseCaptureScript(const std::string& text, const std::filesystem::path& file);
 /// Reads and parses a script file; throws CaptureScriptError.
 CaptureScript readCaptureScript(const std::filesystem::path& file);
+
+/// The reference in words: "maps: 256 point-light shadow maps of 2048^2" or "raytrace: 256
+/// shadow rays per pixel (Embree)".
+std::string referenceText(const CaptureScript::Reference& r);
 
 /// `base` with the method and its options applied.
 RenderSettings settingsFor(const RenderSettings& base, const MethodSpec& m);

@@ -76,7 +76,7 @@ std::string summaryTable(const nlohmann::json& summary) {
 std::string errorCharts(const CaptureResults& r) {
     std::vector<svg::Series> all, pen, flicker;
     for (const MethodRun& m : r.runs) {
-        if (m.spec.method == "reference") continue; // zero against itself
+        if (m.spec.method == r.script->reference.method().name) continue; // zero against itself
         svg::Series a{m.label, {}}, p{m.label, {}}, f{m.label, {}};
         for (const FrameRow& row : m.rows) {
             a.values.push_back(row.metrics.rmse);
@@ -122,7 +122,7 @@ std::string timeAndCostCharts(const nlohmann::json& summary) {
         for (const auto& [name, ms] : m["medianPhaseMs"].items())
             phases.emplace_back(name, ms.get<double>());
         rows.emplace_back(m["label"].get<std::string>(), std::move(phases));
-        if (m["method"] != "reference")
+        if (m["method"] != summary["reference"]["method"])
             points.push_back({m["label"].get<std::string>(), m["medianFrameMs"].get<double>(),
                               m["rmsePenumbra"].get<double>()});
     }
@@ -136,7 +136,7 @@ std::string timeAndCostCharts(const nlohmann::json& summary) {
 std::string worstFrames(const CaptureResults& r, const std::string& imageDir) {
     std::ostringstream s;
     for (const MethodRun& m : r.runs) {
-        if (m.spec.method == "reference") continue;
+        if (m.spec.method == r.script->reference.method().name) continue;
         s << "<figure><img src=\"" << xmlEscape(imageDir + "/worst_" + safeName(m.label) + ".png")
           << "\" alt=\"" << xmlEscape(m.label) << " worst frame\"><figcaption>"
           << xmlEscape(m.label) << ": frame " << m.worstFrame << ", RMSE " << fmt(m.worstRmse, 4)
@@ -161,8 +161,8 @@ std::string reportHtml(const CaptureResults& r, const nlohmann::json& summary,
     h << "</dd><dt>shadow map</dt><dd>" << xmlEscape(s.shadowMapProvider) << " " << s.shadowMapSize
       << "&sup2;, flooding passes " << xmlEscape(s.jfaPasses)
       << (s.jfaPasses == "auto" ? " (chosen per frame: frames.csv, jfa_passes)" : "")
-      << "</dd><dt>reference</dt><dd>" << s.reference.samples
-      << " point-light samples over the disk, " << s.reference.mapSize << "&sup2; maps, "
+      << "</dd><dt>reference</dt><dd>" << xmlEscape(referenceText(s.reference)) << " ("
+      << xmlEscape(std::string(s.reference.method().help)) << "), "
       << fmt(summary["reference"]["medianFrameMs"].get<double>(), 1)
       << " ms per frame (median)</dd><dt>GL</dt><dd>" << xmlEscape(r.context) << "</dd></dl>\n"
       << "<p>Metrics against the reference count the receivers only: visible surfaces that "

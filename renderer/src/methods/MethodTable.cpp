@@ -223,10 +223,10 @@ const MethodDescriptor kTable[] = {
      MethodSpace::Light, kVsmOptions, kVsmPhases, true, false, false, makeVsm, nullptr},
     {"reference", "ground truth: N point-light shadow maps over the disk, averaged", "",
      MethodSpace::Light, kGroundTruthOptions, kGroundTruthPhases, true, false, false,
-     makeGroundTruth, nullptr},
+     makeGroundTruth, nullptr, "maps"},
     {"raytrace", "exact ground truth: N shadow rays per pixel to the disk light (Embree, CPU)", "",
      MethodSpace::Eye, kRayTraceOptions, kRayTracePhases, false, false, false, makeRayTrace,
-     nullptr},
+     nullptr, "raytrace"},
 };
 
 } // namespace
@@ -261,6 +261,23 @@ const MethodDescriptor& methodOrThrow(std::string_view name) {
     if (const MethodDescriptor* m = findMethod(name)) return *m;
     throw std::invalid_argument(
         cat("unknown shadow method '", name, "' (valid: ", methodNames(), ")"));
+}
+
+const MethodDescriptor& groundTruth(std::string_view kind) {
+    for (const MethodDescriptor& m : kTable)
+        if (!m.truth.empty() && m.truth == kind) return m;
+    throw std::invalid_argument(
+        cat("unknown ground truth '", kind, "' (valid: ", groundTruthKinds(), ")"));
+}
+
+std::string groundTruthKinds() {
+    std::string out;
+    for (const MethodDescriptor& m : kTable)
+        if (!m.truth.empty()) {
+            if (!out.empty()) out += '|';
+            out += m.truth;
+        }
+    return out;
 }
 
 std::vector<const MethodOption*> allMethodOptions() {

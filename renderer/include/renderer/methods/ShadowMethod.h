@@ -112,12 +112,23 @@ struct MethodDescriptor {
     /// option's flag and the valid range. Null: nothing to check beyond each option's range.
     void (*check)(const MethodOptions&, const MethodDescriptor&, int mapSize, int width,
                   int height) = nullptr;
+    /// A ground truth (what the others are measured against): the kind capture scripts name it
+    /// by ("maps", "raytrace"); "" for the methods being measured.
+    std::string_view truth = {};
 
     /// The row's option with capture-script key `key`, or nullptr.
     [[nodiscard]] const MethodOption* option(std::string_view key) const;
     /// True when the row declares an option with CLI flag `flag`.
     [[nodiscard]] bool takesFlag(std::string_view flag) const;
 };
+
+/// The ground truth of kind `kind` ("maps": N point-light shadow maps; "raytrace": shadow rays);
+/// throws std::invalid_argument listing the kinds.
+const MethodDescriptor& groundTruth(std::string_view kind);
+/// The ground truths' kinds, "|"-separated, in table order.
+std::string groundTruthKinds();
+/// The ground truth every figure is measured against unless asked otherwise: the exact one.
+inline constexpr std::string_view kExactTruth = "raytrace";
 
 /// The table: every method, in the order the window cycles through them.
 std::span<const MethodDescriptor> methodTable();
