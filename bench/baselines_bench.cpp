@@ -1,7 +1,8 @@
 // The baselines beside the JFA methods on the default scene, side by side in one process: per
 // method the frame time (min/median over timed frames, methods interleaved frame by frame) and
-// its ratio to hard shadows, and the visibility error against the ground truth (RMSE and max
-// |d| over receivers). With --sampling-error the ground truth's own sampling error: N
+// its ratio to hard shadows, and the visibility error against both ground truths (RMSE over
+// receivers and over penumbra pixels, max |d|): the shadow-map one ("maps") and the ray-traced
+// one ("raytrace", exact). With --sampling-error the maps ground truth's own sampling error: N
 // against 2N samples.
 
 #include <base/Stats.h>
@@ -9,6 +10,7 @@
 #include <renderer/context/EglContext.h>
 #include <renderer/gltf/GltfLoader.h>
 #include <renderer/io/Capture.h>
+#include <renderer/passes/SurfacesPass.h>
 #include <renderer/run/FrameRunner.h>
 #include <renderer/soft/ReferenceShadow.h>
 
@@ -35,7 +37,7 @@ int main(int argc, char** argv) {
     CLI::App app{"baselines_bench: hard, PCF, PCSS, JFA-L, JFA-E and the ground truth, side by "
                  "side"};
     int size = 512, shadowMap = 1024, frames = 10, referenceFrames = 2, samples = 256,
-        referenceMap = 2048;
+        referenceMap = 2048, raySamples = 256;
     float radius = 1.5f;
     bool samplingError = false;
     app.add_option("--size", size, "Frame width and height")->capture_default_str();
@@ -44,13 +46,16 @@ int main(int argc, char** argv) {
     app.add_option("--frames", frames, "Timed frames per method")
         ->check(CLI::Range(1, 10000))
         ->capture_default_str();
-    app.add_option("--reference-frames", referenceFrames, "Timed frames of the ground truth")
+    app.add_option("--reference-frames", referenceFrames, "Timed frames of each ground truth")
         ->check(CLI::Range(1, 10000))
         ->capture_default_str();
     app.add_option("--reference-samples", samples)
         ->check(CLI::Range(1, 65536))
         ->capture_default_str();
     app.add_option("--reference-map-size", referenceMap)->capture_default_str();
+    app.add_option("--raytrace-samples", raySamples, "Shadow rays per pixel of the exact truth")
+        ->check(CLI::Range(1, 16384))
+        ->capture_default_str();
     app.add_flag("--sampling-error", samplingError,
                  "Also render the ground truth with 2N samples and report N vs 2N");
     CLI11_PARSE(app, argc, argv);
@@ -61,8 +66,6 @@ int main(int argc, char** argv) {
         const fl::gl::ShaderLibrary shaders;
         const fl::CameraView cam = fl::makeCameraView(scene, {}, 1.0f);
         std::vector<Entry> entries;
-        // The ground truth (timed and compared like the others, but last).
-        const fl::MethodDescriptor& groundTruth = fl::methodOrThrow("reference");
         auto add = [&](std::string label, const fl::MethodDescriptor& m, std::string_view flag = {},
                        const std::string& value = {}) {
             fl::RenderSettings s;
@@ -70,16 +73,17 @@ int main(int argc, char** argv) {
             s.method = std::string(m.name);
             s.options.set("--reference-samples", samples);
             s.options.set("--reference-map-size", referenceMap);
+            s.options.set("--raytrace-samples", raySamples);
             if (!flag.empty()) s.options.set(flag, value);
             Entry e{std::move(label), s, std::make_unique<fl::Renderer>(shaders, scene, s), {}};
             e.renderer->resize(size, size);
             entries.push_back(std::move(e));
         };
         // Every method of the table at its defaults, but the standard-flooding references
-        // (flood-l, flood-e: the JFA methods' own yardsticks) and the ground truth; PCF at two
+        // (flood-l, flood-e: the JFA methods' own yardsticks) and the ground truths; PCF at two
         // kernels, PCSS at every preset.
         for (const fl::MethodDescriptor& m : fl::methodTable()) {
-            bool isReference = &m == &groundTruth;
+            bool isReference = !m.truth.empty();
             for (const fl::MethodDescriptor& other : fl::methodTable())
                 isReference = isReference || other.reference == m.name;
             if (isReference) continue;
@@ -101,48 +105,104 @@ int main(int argc, char** argv) {
                 add(name, m);
             }
         }
-        add(std::string(groundTruth.name), groundTruth);
-        Entry& reference = entries.back();
+        // The ground truths last, timed on fewer frames.
+        const std::size_t methods = entries.size();
+        for (const fl::MethodDescriptor& m : fl::methodTable())
+            if (!m.truth.empty()) add(std::string(m.truth), m);
+        const auto truth = [&](std::string_view kind) -> Entry& {
+            for (std::size_t i = methods; i < entries.size(); ++i)
+                if (entries[i].label == kind) return entries[i];
+            throw std::logic_error("no ground truth " + std::string(kind));
+        };
+        Entry& reference = truth("maps");
+        Entry& exact = truth(fl::kExactTruth);
 
         // The frame loop of capture/compare (renderer/run/FrameRunner.h): two warm-up frames
-        // each, then timed frames with the methods interleaved frame by frame; the ground truth,
-        // the slow one, in a second loop with fewer frames.
-        std::vector<fl::Lane> lanes, referenceLane;
-        for (Entry& e : entries)
-            (&e == &reference ? referenceLane : lanes).push_back({e.label, e.renderer.get(), {}});
+        // each, then timed frames with the methods interleaved frame by frame; the ground truths,
+        // the slow ones, in a second loop with fewer frames.
+        std::vector<fl::Lane> lanes, truthLanes;
+        for (std::size_t i = 0; i < entries.size(); ++i)
+            (i < methods ? lanes : truthLanes)
+                .push_back({entries[i].label, entries[i].renderer.get(), {}});
         fl::FrameRunner runner(frames + referenceFrames);
-        const auto plan = [&](int n) {
+        const auto plan = [&](int n, int warmup) {
             return fl::FramePlan{.scene = &scene,
                                  .camera = cam,
                                  .frames = n,
                                  .width = size,
                                  .height = size,
-                                 .warmup = 2,
+                                 .warmup = warmup,
                                  .readBack = false};
         };
-        runner.run(plan(frames), lanes);
-        runner.run(plan(referenceFrames), referenceLane);
+        runner.run(plan(frames, 2), lanes);
+        runner.run(plan(referenceFrames, 1), truthLanes);
         runner.finish();
-        lanes.push_back(std::move(referenceLane.front()));
+        for (fl::Lane& l : truthLanes) lanes.push_back(std::move(l));
         for (Entry& e : entries) e.visibility = fl::readTexture(e.renderer->visibility(), 1);
         // Receivers: visible surfaces facing the light (renderer/metrics/Metrics.h), the same in
         // every method's frame.
         const fl::FloatImage mask = fl::readTexture(entries.front().renderer->receivers(), 1);
 
         const double hardMedian = lanes.front().times.medianFrameMs();
-        std::printf("default scene %dx%d, map %dx%d, light radius %.2f, reference N=%d at %dx%d\n",
+        std::printf("default scene %dx%d, map %dx%d, light radius %.2f; ground truths: maps N=%d "
+                    "at %dx%d, raytrace N=%d\n",
                     size, size, shadowMap, shadowMap, static_cast<double>(radius), samples,
-                    referenceMap, referenceMap);
-        std::printf("%-12s %10s %10s %8s %8s %10s %8s\n", "method", "min ms", "median ms", "xhard",
-                    "frames", "RMSE ref", "max|d|");
+                    referenceMap, referenceMap, raySamples);
+        // Penumbra pixels: receivers whose exact visibility is in (0.02, 0.98) (the capture
+        // report's definition, from the ray-traced frame).
+        fl::FloatImage penumbra = mask;
+        for (std::size_t i = 0; i < penumbra.data.size(); ++i) {
+            const float v = exact.visibility.data[i];
+            penumbra.data[i] = mask.data[i] > 0.5f && v > 0.02f && v < 0.98f ? 1.0f : 0.0f;
+        }
+        std::printf("%-12s %9s %9s %7s %6s | %9s %9s %7s | %9s %9s %7s\n", "method", "min ms",
+                    "median ms", "xhard", "frames", "RMSE maps", "penumbra", "max|d|", "RMSE rays",
+                    "penumbra", "max|d|");
         for (std::size_t i = 0; i < entries.size(); ++i) {
             const Entry& e = entries[i];
             const fl::PhaseTimes& t = lanes[i].times;
-            const fl::VisibilityDifference d =
-                fl::visibilityDifference(e.visibility, reference.visibility, mask);
-            std::printf("%-12s %10.2f %10.2f %8.2f %8zu %10.4f %8.3f\n", e.label.c_str(),
-                        fl::minimum(t.frameMs()), t.medianFrameMs(), t.medianFrameMs() / hardMedian,
-                        t.frames(), d.rmse, d.maxAbs);
+            const auto diff = [&](const Entry& truthEntry, const fl::FloatImage& where) {
+                return fl::visibilityDifference(e.visibility, truthEntry.visibility, where);
+            };
+            const fl::VisibilityDifference m = diff(reference, mask),
+                                           mp = diff(reference, penumbra), x = diff(exact, mask),
+                                           xp = diff(exact, penumbra);
+            std::printf("%-12s %9.2f %9.2f %7.2f %6zu | %9.4f %9.4f %7.3f | %9.4f %9.4f %7.3f\n",
+                        e.label.c_str(), fl::minimum(t.frameMs()), t.medianFrameMs(),
+                        t.medianFrameMs() / hardMedian, t.frames(), m.rmse, mp.rmse, m.maxAbs,
+                        x.rmse, xp.rmse, x.maxAbs);
+        }
+        std::printf("receivers %zu, penumbra pixels %zu\n",
+                    fl::visibilityDifference(mask, mask, mask).pixels,
+                    fl::visibilityDifference(mask, mask, penumbra).pixels);
+        // Where the two ground truths differ: receivers (the smooth shading normal faces the
+        // light) whose triangle faces away from the light's centre ("terminator": the ray
+        // tracer's rays leave the flat triangle, which blocks them; shadow maps light it through
+        // their depth bias), and the rest.
+        {
+            const fl::SurfacesPass::Outputs sf = exact.renderer->surfaces();
+            const fl::FloatImage pos = fl::readTexture(sf.position, 4),
+                                 plane = fl::readTexture(sf.plane, 4),
+                                 normal = fl::readTexture(sf.normal, 4);
+            fl::FloatImage terminator = mask, facing = mask;
+            const glm::vec3 c = exact.renderer->disk().center;
+            for (std::size_t i = 0; i < mask.data.size(); ++i) {
+                const auto at = [i](const fl::FloatImage& im) {
+                    return glm::vec3(im.data[4 * i], im.data[4 * i + 1], im.data[4 * i + 2]);
+                };
+                glm::vec3 g = at(plane);
+                if (glm::dot(g, at(normal)) < 0.0f) g = -g;
+                const bool away = glm::dot(g, c - at(pos)) <= 0.0f;
+                terminator.data[i] = mask.data[i] > 0.5f && away ? 1.0f : 0.0f;
+                facing.data[i] = mask.data[i] > 0.5f && !away ? 1.0f : 0.0f;
+            }
+            const fl::VisibilityDifference t =
+                fl::visibilityDifference(reference.visibility, exact.visibility, terminator);
+            const fl::VisibilityDifference f =
+                fl::visibilityDifference(reference.visibility, exact.visibility, facing);
+            std::printf("maps vs raytrace: triangle facing the light: %zu receivers, RMSE %.4f; "
+                        "facing away (terminator): %zu receivers, RMSE %.4f\n",
+                        f.pixels, f.rmse, t.pixels, t.rmse);
         }
         if (samplingError) {
             fl::RenderSettings s = reference.settings;

@@ -1,0 +1,125 @@
+// The ray-traced ground truth's own costs (raytrace/ShadowRays.h): Embree BVH build and refit
+// times for a scene, and shadow rays per second over the receivers of the default view (the
+// surfaces of a real frame), at each N asked. Min and median over --repeats runs in one process.
+
+#include <raytrace/ShadowRays.h>
+#include <renderer/Renderer.h>
+#include <renderer/context/EglContext.h>
+#include <renderer/gltf/GltfLoader.h>
+#include <renderer/io/ImageIO.h>
+#include <renderer/scene/SceneGenerator.h>
+
+#include <base/Parallel.h>
+#include <base/Stats.h>
+
+#include <CLI/CLI.hpp>
+
+#include <glm/geometric.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double msSince(Clock::time_point t) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"raytrace_bench: Embree build/refit times and shadow rays per second"};
+    std::string scenePath;
+    std::size_t triangles = 0;
+    int size = 512, repeats = 3;
+    float radius = 1.5f;
+    std::vector<int> samples{64, 256};
+    app.add_option("--scene", scenePath, "glTF scene (default: assets/default.glb)");
+    app.add_option("--triangles", triangles,
+                   "Generate the default-style scene with this many triangles instead");
+    app.add_option("--size", size, "Frame width and height")->capture_default_str();
+    app.add_option("--light-radius", radius)->capture_default_str();
+    app.add_option("--samples", samples, "Rays per pixel to time (each)")->capture_default_str();
+    app.add_option("--repeats", repeats)->check(CLI::Range(1, 1000))->capture_default_str();
+    CLI11_PARSE(app, argc, argv);
+    try {
+        fl::Scene scene =
+            triangles
+                ? fl::generateScene({triangles, 1})
+                : fl::loadGltf(scenePath.empty()
+                                   ? std::string(FLOODLIGHT_SOURCE_DIR) + "/assets/default.glb"
+                                   : scenePath);
+        if (scene.light) scene.light->radius = radius;
+        // The world triangles, as the raytrace method gathers them.
+        fl::rt::Triangles world;
+        for (const fl::Instance& inst : scene.instances) {
+            const fl::Mesh& m = scene.meshes.at(static_cast<std::size_t>(inst.mesh));
+            const auto base = static_cast<std::uint32_t>(world.vertices.size());
+            for (const glm::vec3& p : m.positions)
+                world.vertices.push_back(glm::vec3(inst.world * glm::vec4(p, 1.0f)));
+            for (std::uint32_t i : m.indices) world.indices.push_back(base + i);
+        }
+        std::vector<double> buildMs, refitMs;
+        for (int r = 0; r < repeats; ++r) {
+            const auto t = Clock::now();
+            fl::rt::RayScene s(world);
+            buildMs.push_back(msSince(t));
+            const auto t2 = Clock::now();
+            s.refit(world.vertices);
+            refitMs.push_back(msSince(t2));
+        }
+        const fl::rt::RayScene rays(world);
+
+        // Receivers: the surfaces of the default view (one hard-shadow frame).
+        auto ctx = fl::EglContext::create(false);
+        const fl::gl::ShaderLibrary shaders;
+        fl::RenderSettings settings;
+        fl::Renderer renderer(shaders, scene, settings);
+        renderer.resize(size, size);
+        renderer.render(fl::makeCameraView(scene, {}, 1.0f));
+        const fl::SurfacesPass::Outputs sf = renderer.surfaces();
+        const fl::FloatImage pos = fl::readTexture(sf.position, 4),
+                             plane = fl::readTexture(sf.plane, 4),
+                             normal = fl::readTexture(sf.normal, 4);
+        std::vector<fl::rt::Receiver> receivers;
+        for (std::size_t i = 0; i < pos.data.size() / 4; ++i) {
+            const auto at = [i](const fl::FloatImage& im) {
+                return glm::vec3(im.data[4 * i], im.data[4 * i + 1], im.data[4 * i + 2]);
+            };
+            glm::vec3 g = at(plane);
+            if (glm::dot(g, at(normal)) < 0.0f) g = -g;
+            receivers.push_back({at(pos), g, pos.data[4 * i + 3] != 0.0f});
+        }
+        const fl::DiskLight& d = renderer.disk();
+        const fl::rt::Disk disk{d.center, d.normal, d.radius};
+
+        std::printf("scene: %s, %zu triangles; %d cores\n", scene.source.c_str(),
+                    rays.triangleCount(), fl::resolveThreads(0));
+        std::printf("BVH build: min %.1f ms, median %.1f ms; refit: min %.1f ms, median %.1f ms\n",
+                    fl::minimum(buildMs), fl::median(buildMs), fl::minimum(refitMs),
+                    fl::median(refitMs));
+        for (int n : samples) {
+            fl::rt::VisibilitySettings vs;
+            vs.samples = n;
+            std::vector<double> ms, rate;
+            std::uint64_t cast = 0;
+            for (int r = 0; r < repeats; ++r) {
+                const auto t = Clock::now();
+                (void)fl::rt::diskVisibility(rays, disk, receivers, vs, &cast);
+                ms.push_back(msSince(t));
+                rate.push_back(static_cast<double>(cast) / (ms.back() / 1000.0) / 1e6);
+            }
+            std::printf("N = %d at %dx%d: %llu rays; frame min %.0f ms, median %.0f ms; "
+                        "%.2f / %.2f Mrays/s (max / median)\n",
+                        n, size, size, static_cast<unsigned long long>(cast), fl::minimum(ms),
+                        fl::median(ms), *std::max_element(rate.begin(), rate.end()),
+                        fl::median(rate));
+        }
+    } catch (const std::exception& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return 1;
+    }
+    return 0;
+}
