@@ -6,9 +6,13 @@
 #include "TestScenes.h"
 
 #include <renderer/Renderer.h>
+#include <renderer/io/Capture.h>
 #include <renderer/io/ImageIO.h>
 
 #include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <stdexcept>
 
 #include <cmath>
 
@@ -86,6 +90,20 @@ TEST_F(RayTraceMethodTest, EdgePenumbraMatchesTheClosedFormThroughTheRenderer) {
     EXPECT_LT(e.worst, 4.5 * sigma);
     if (!(e.rmse < sigma && e.worst < 4.5 * sigma))
         ADD_FAILURE() << writeVisibilityDiff(e.visibility, e.exact, "raytrace_edge");
+}
+
+TEST_F(RayTraceMethodTest, AVertexBeyondEmbreesRangeIsRefusedNamingTheNode) {
+    SceneView v = edgeScene();
+    // The box's node scaled so far that its vertices leave float's useful range for a BVH (the
+    // GPU draws it; Embree would build a tree of infinities).
+    v.scene.instances[1].world = glm::scale(glm::mat4(1.0f), glm::vec3(1e20f));
+    v.scene.instances[1].nodeName = "giant";
+    try {
+        (void)renderFrame(v.scene, v.camera, "raytrace", 64, 16);
+        ADD_FAILURE() << "accepted";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("node 'giant'"), std::string::npos) << e.what();
+    }
 }
 
 } // namespace

@@ -91,6 +91,9 @@ RayScene::RayScene(const Triangles& t) : e_(std::make_unique<Embree>()) {
     e_->scene = rtcNewScene(e_->device);
     // Robust traversal: rays that graze a shared edge or vertex do not slip between triangles.
     rtcSetSceneFlags(e_->scene, RTC_SCENE_FLAG_ROBUST);
+    // High quality: the tree is built once per static scene and traced by millions of rays.
+    // (A two-level scene with a refittable geometry tree was measured no faster to refit than
+    // this is to rebuild on Embree 3.13, and traced 8% slower: docs/BENCHMARKS.md.)
     rtcSetSceneBuildQuality(e_->scene, RTC_BUILD_QUALITY_HIGH);
     e_->geometry = rtcNewGeometry(e_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
     e_->check();
@@ -133,9 +136,6 @@ void RayScene::refit(std::span<const glm::vec3> vertices) {
     checkVertices(vertices);
     std::copy(vertices.begin(), vertices.end(), e_->vertices);
     rtcUpdateGeometryBuffer(e_->geometry, RTC_BUFFER_TYPE_VERTEX, 0);
-    // A refit keeps the tree's topology and recomputes its bounds (cheap; the tree's quality
-    // drops only when the motion is large).
-    rtcSetGeometryBuildQuality(e_->geometry, RTC_BUILD_QUALITY_REFIT);
     rtcCommitGeometry(e_->geometry);
     rtcCommitScene(e_->scene);
     e_->check();

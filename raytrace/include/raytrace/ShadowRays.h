@@ -48,8 +48,9 @@ class RayScene {
     RayScene(const RayScene&) = delete;
     RayScene& operator=(const RayScene&) = delete;
 
-    /// Moves the vertices (an animated frame: same triangles, new positions) and refits the BVH;
-    /// the same checks as the constructor.
+    /// Moves the vertices (an animated frame: same triangles, new positions) and updates the
+    /// BVH (Embree rebuilds it; a refit was measured no faster); the same checks as the
+    /// constructor.
     void refit(std::span<const glm::vec3> vertices);
     /// True when a triangle crosses the segment from `from` to `to` (both ends excluded).
     [[nodiscard]] bool occluded(glm::vec3 from, glm::vec3 to) const;

@@ -7,20 +7,34 @@
 
 #include <raytrace/ShadowRays.h>
 
+#include <base/Text.h>
+
+#include <cmath>
 #include <optional>
+#include <stdexcept>
 
 namespace fl {
 
 namespace {
 
-// Every instance's triangles in world space (as the vertex stage places them).
+// Every instance's triangles in world space (as the vertex stage places them). A vertex that a
+// node's transform takes beyond what Embree's floats hold is refused here, naming the node and
+// the mesh (the loader has already refused non-finite input).
 rt::Triangles worldTriangles(const Scene& scene) {
     rt::Triangles t;
     for (const Instance& inst : scene.instances) {
         const Mesh& m = scene.meshes.at(static_cast<std::size_t>(inst.mesh));
         const auto base = static_cast<std::uint32_t>(t.vertices.size());
-        for (const glm::vec3& p : m.positions)
-            t.vertices.push_back(glm::vec3(inst.world * glm::vec4(p, 1.0f)));
+        for (std::size_t v = 0; v < m.positions.size(); ++v) {
+            const glm::vec3 p(inst.world * glm::vec4(m.positions[v], 1.0f));
+            for (int a = 0; a < 3; ++a)
+                if (!(std::abs(p[a]) <= rt::kMaxCoordinate))
+                    throw std::invalid_argument(cat("raytrace: node '", inst.nodeName, "' (mesh '",
+                                                    m.name, "'): vertex ", v, " lands at ", p[a],
+                                                    " in the world, beyond Embree's range (+-",
+                                                    rt::kMaxCoordinate, ")"));
+            t.vertices.push_back(p);
+        }
         for (std::uint32_t i : m.indices) t.indices.push_back(base + i);
     }
     return t;
