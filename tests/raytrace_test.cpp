@@ -3,8 +3,7 @@
 // same result for any thread count.
 
 #include <raytrace/ShadowRays.h>
-
-#include "TestScenes.h"
+#include <renderer/scene/ClosedForm.h>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
@@ -52,7 +51,7 @@ LineError edgeError(const EdgeCase& c, const VisibilitySettings& s) {
         const double x = -half + 2.0 * half * i / 200.0;
         const glm::vec2 p = static_cast<float>(x) * out;
         receivers.push_back({{p.x, 0.0f, p.y}, {0, 1, 0}, true});
-        exact.push_back(fl::test::straightEdgeVisibility(x, c.h, c.H, c.r));
+        exact.push_back(fl::straightEdgeVisibility(x, c.h, c.H, c.r));
     }
     const std::vector<float> v = fl::rt::diskVisibility(scene, disk, receivers, s);
     LineError e;
@@ -86,6 +85,29 @@ TEST(RayTraceTest, StraightEdgeMatchesTheClosedFormAtEveryAngleAndHeight) {
         EXPECT_LT(e.rmse, stratifiedSigma(s.samples));
         EXPECT_LT(e.maxAbs, 4.5 * stratifiedSigma(s.samples));
     }
+}
+
+TEST(RayTraceTest, DiskOccluderMatchesTheClosedForm) {
+    // The closed-form case's own occluder (a 128-gon of the disk's area) cast on the CPU, points
+    // along a radius from under the centre to past the penumbra.
+    const fl::ClosedFormCase c = fl::diskOccluderCase(0.6f, 1.5f, 5.0f, 1.0f);
+    Triangles t;
+    const fl::Mesh& m = c.scene.meshes[1];
+    t.vertices = m.positions;
+    t.indices = m.indices;
+    const RayScene scene(t);
+    std::vector<Receiver> r;
+    for (int i = 0; i <= 150; ++i) r.push_back({{0.01f * i, 0, 0.004f * i}, {0, 1, 0}, true});
+    VisibilitySettings s;
+    s.samples = 1024;
+    const std::vector<float> v = fl::rt::diskVisibility(scene, {{0, 5, 0}, {0, -1, 0}, 1.0f}, r, s);
+    double worst = 0.0;
+    for (std::size_t i = 0; i < r.size(); ++i)
+        worst = std::max(worst, std::abs(v[i] - c.exact(r[i].position)));
+    EXPECT_LT(worst, 4.5 * stratifiedSigma(s.samples));
+    // Under the centre the occluder hides the whole light (it covers a disk of radius 2 there).
+    EXPECT_EQ(fl::diskOccluderVisibility(0.0, 0.6, 1.5, 5.0, 1.0), 0.0);
+    EXPECT_EQ(fl::diskOccluderVisibility(10.0, 0.6, 1.5, 5.0, 1.0), 1.0);
 }
 
 TEST(RayTraceTest, GridSamplesBandAlongStraightEdgesJitteredOnesDoNot) {

@@ -1,7 +1,5 @@
 #include "TestScenes.h"
 
-#include <renderer/soft/DiskLight.h>
-
 #include <cmath>
 
 namespace fl::test {
@@ -103,14 +101,6 @@ SceneView spotLitBox() {
     spec.eye = {2.5f, 4.0f, 4.0f};
     spec.target = {0.3f, 0.0f, 0.3f};
     return {scene, makeCameraView(scene, spec, 1.0f)};
-}
-
-double straightEdgeVisibility(double x, double h, double H, double r) {
-    const double t = (-x * (H - h) / h) / r;
-    if (t >= 1.0) return 0.0;
-    if (t <= -1.0) return 1.0;
-    return t >= 0.0 ? segmentFraction(static_cast<float>(t))
-                    : 1.0 - segmentFraction(static_cast<float>(-t));
 }
 
 } // namespace fl::test

@@ -25,12 +25,4 @@ SceneView spotLitBox();
 /// does. `epsilon` skips hits right at p (the receiver itself).
 float rayCastVisibility(const Scene& scene, const Light& light, glm::vec3 p, float epsilon = 1e-3f);
 
-/// The exact visible share of a disk light of radius r at height H (facing down) from a ground
-/// point (y = 0) at signed distance x from the line under the straight edge of a half-plane
-/// occluder at height h (x < 0: the occluded side). The ray to a disk point at signed distance s
-/// crosses the occluder's plane at x + (s - x) h / H, so it is blocked for s < -x (H - h) / h;
-/// the visible part of the disk is the segment beyond that chord (fl::segmentFraction, as JFA-L
-/// and JFA-E use it).
-double straightEdgeVisibility(double x, double h, double H, double r);
-
 } // namespace fl::test

@@ -1,0 +1,55 @@
+// Every method of the table on the closed-form cases (renderer/scene/ClosedForm.h): straight
+// occluder edges at several angles and heights and a disk occluder, each under a disk light
+// straight above. Per case and method: RMSE against the exact visibility over the ground pixels
+// in view, RMSE and mean signed error (bias) over the exact penumbra. No estimate stands between
+// a method and the answer here, not even a ground truth.
+
+#include <renderer/Renderer.h>
+#include <renderer/context/EglContext.h>
+#include <renderer/io/ImageIO.h>
+#include <renderer/scene/ClosedForm.h>
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <iostream>
+
+int main(int argc, char** argv) {
+    CLI::App app{"closed_form_bench: every method against closed-form soft shadows"};
+    int size = 256, shadowMap = 1024;
+    std::string only;
+    app.add_option("--size", size, "Frame width and height")->capture_default_str();
+    app.add_option("--shadow-map-size", shadowMap)->capture_default_str();
+    app.add_option("--method", only, "Only this method (default: every method of the table)");
+    CLI11_PARSE(app, argc, argv);
+    try {
+        auto ctx = fl::EglContext::create(false);
+        const fl::gl::ShaderLibrary shaders;
+        const std::vector<fl::ClosedFormCase> cases = fl::closedFormCases();
+        std::printf("%dx%d frames, %d^2 uniform map, every method at its defaults\n", size, size,
+                    shadowMap);
+        for (const fl::ClosedFormCase& c : cases) {
+            std::printf("\n%s\n%-10s %8s %8s %10s %10s %8s\n", c.name.c_str(), "method", "ground",
+                        "RMSE", "penumbra", "bias pen.", "max|d|");
+            for (const fl::MethodDescriptor& m : fl::methodTable()) {
+                if (!only.empty() && m.name != only) continue;
+                fl::RenderSettings s;
+                s.shadow.size = shadowMap;
+                s.method = std::string(m.name);
+                fl::Renderer r(shaders, c.scene, s);
+                r.resize(size, size);
+                r.render(fl::makeCameraView(c.scene, c.camera, 1.0f));
+                const fl::ClosedFormError e =
+                    fl::closedFormError(c, fl::readTexture(r.surfaces().position, 4),
+                                        fl::readTexture(r.visibility(), 1));
+                std::printf("%-10s %8zu %8.4f %10.4f %+10.4f %8.3f\n", std::string(m.name).c_str(),
+                            e.ground, e.rmse, e.rmsePenumbra, e.biasPenumbra, e.maxAbs);
+                std::fflush(stdout);
+            }
+        }
+    } catch (const std::exception& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return 1;
+    }
+    return 0;
+}
