@@ -6,12 +6,14 @@
 
 #include <renderer/Renderer.h>
 #include <renderer/context/EglContext.h>
+#include <renderer/io/Capture.h>
 #include <renderer/io/ImageIO.h>
 #include <renderer/scene/ClosedForm.h>
 
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 int main(int argc, char** argv) {
@@ -21,6 +23,10 @@ int main(int argc, char** argv) {
     app.add_option("--size", size, "Frame width and height")->capture_default_str();
     app.add_option("--shadow-map-size", shadowMap)->capture_default_str();
     app.add_option("--method", only, "Only this method (default: every method of the table)");
+    std::string saveDir;
+    app.add_option("--save", saveDir,
+                   "Write each frame's visibility and the closed form here (caseK.METHOD.png, "
+                   "caseK.exact.png; grey)");
     CLI11_PARSE(app, argc, argv);
     try {
         auto ctx = fl::EglContext::create(false);
@@ -28,7 +34,9 @@ int main(int argc, char** argv) {
         const std::vector<fl::ClosedFormCase> cases = fl::closedFormCases();
         std::printf("%dx%d frames, %d^2 uniform map, every method at its defaults\n", size, size,
                     shadowMap);
+        int k = 0;
         for (const fl::ClosedFormCase& c : cases) {
+            const std::string stem = saveDir + "/case" + std::to_string(k++);
             std::printf("\n%s\n%-10s %8s %8s %10s %10s %8s\n", c.name.c_str(), "method", "ground",
                         "RMSE", "penumbra", "bias pen.", "max|d|");
             for (const fl::MethodDescriptor& m : fl::methodTable()) {
@@ -39,9 +47,15 @@ int main(int argc, char** argv) {
                 fl::Renderer r(shaders, c.scene, s);
                 r.resize(size, size);
                 r.render(fl::makeCameraView(c.scene, c.camera, 1.0f));
+                const fl::FloatImage visibility = fl::readTexture(r.visibility(), 1);
                 const fl::ClosedFormError e =
-                    fl::closedFormError(c, fl::readTexture(r.surfaces().position, 4),
-                                        fl::readTexture(r.visibility(), 1));
+                    fl::closedFormError(c, fl::readTexture(r.surfaces().position, 4), visibility);
+                if (!saveDir.empty()) {
+                    std::filesystem::create_directories(saveDir);
+                    fl::writePng(stem + "." + std::string(m.name) + ".png",
+                                 fl::visibilityToGrey(visibility));
+                    fl::writePng(stem + ".exact.png", fl::visibilityToGrey(e.exact));
+                }
                 std::printf("%-10s %8zu %8.4f %10.4f %+10.4f %8.3f\n", std::string(m.name).c_str(),
                             e.ground, e.rmse, e.rmsePenumbra, e.biasPenumbra, e.maxAbs);
                 std::fflush(stdout);

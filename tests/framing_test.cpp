@@ -67,6 +67,25 @@ TEST(Framing, PerspectiveLightInsideBoundsIsCappedAndFinite) {
     EXPECT_NEAR(v.proj[1][1], 1.0f / std::tan(glm::radians(75.0f)), 1e-4f);
 }
 
+// The bug: a spot light above a scene that extends far to one side (the closed-form half-plane
+// at 30 degrees) was aimed at the bounds' centre, which left corners behind the light; the map
+// then got the capped fov and a near plane at 1/1000 of the diagonal, and PCSS's blocker search,
+// looking through that plane, left the map and found nothing (the umbra came out lit).
+TEST(Framing, SpotLightWithCornersBehindTheCentreAxisLooksAlongItsOwnAxis) {
+    const Aabb b = box({-10.93f, 0, -10.93f}, {4, 1, 6.93f});
+    const glm::vec3 spot(0, 5, 0), down(0, -1, 0);
+    const ViewVolume centre = fitPerspectiveLight(b, spot);
+    EXPECT_LT(centre.znear, 0.01f * 2.0f * b.radius()) << "the bug's condition";
+    const ViewVolume fixedVolume = fitPerspectiveLight(b, spot, glm::radians(150.0f), down);
+    expectCornersInside(fixedVolume, b);
+    EXPECT_NEAR(fixedVolume.znear, 0.99f * 4.0f, 1e-3f); // the nearest corner, 4 below the light
+    // Where aiming at the centre leaves nothing behind, the axis changes nothing.
+    const Aabb inFront = box({-4, 0, -4}, {4, 1, 4});
+    const ViewVolume a = fitPerspectiveLight(inFront, spot);
+    const ViewVolume s = fitPerspectiveLight(inFront, spot, glm::radians(150.0f), {0.3f, -1, 0});
+    EXPECT_EQ(a.viewProj(), s.viewProj());
+}
+
 TEST(Framing, FramingShowsWholeBounds) {
     const Aabb b = box({-3, 0, -2}, {5, 4, 6});
     for (float aspect : {0.5f, 1.0f, 2.0f})

@@ -29,12 +29,13 @@ ViewVolume fitDirectionalLight(const Aabb& bounds, glm::vec3 dir) {
     return v;
 }
 
-ViewVolume fitPerspectiveLight(const Aabb& bounds, glm::vec3 position, float maxFov) {
-    const glm::vec3 c = bounds.center();
+namespace {
+
+// The perspective volume from `position` along unit `dir` containing every corner of `bounds`
+// in front of it; `behind` says whether a corner lay behind the light.
+ViewVolume fitAlong(const Aabb& bounds, glm::vec3 position, glm::vec3 dir, float maxFov,
+                    bool& behind) {
     const float r = std::max(bounds.radius(), 1e-4f);
-    glm::vec3 dir = c - position;
-    if (glm::length(dir) < 1e-6f * r) dir = glm::vec3(0.0f, -1.0f, 0.0f);
-    dir = glm::normalize(dir);
     ViewVolume v;
     v.view = glm::lookAt(position, position + dir, stableUp(dir));
     // Largest tangent over the corners in front of the light; corners behind it cannot be
@@ -42,7 +43,7 @@ ViewVolume fitPerspectiveLight(const Aabb& bounds, glm::vec3 position, float max
     float maxTan = 0.0f;
     float zmin = std::numeric_limits<float>::max();
     float zmax = 0.0f;
-    bool behind = false;
+    behind = false;
     for (int i = 0; i < 8; ++i) {
         const glm::vec3 corner{(i & 1) ? bounds.max.x : bounds.min.x,
                                (i & 2) ? bounds.max.y : bounds.min.y,
@@ -63,6 +64,21 @@ ViewVolume fitPerspectiveLight(const Aabb& bounds, glm::vec3 position, float max
     v.zfar = std::max(zmax * 1.01f, v.znear * 2.0f);
     v.proj = glm::perspective(2.0f * std::atan(tanHalf), 1.0f, v.znear, v.zfar);
     return v;
+}
+
+} // namespace
+
+ViewVolume fitPerspectiveLight(const Aabb& bounds, glm::vec3 position, float maxFov,
+                               glm::vec3 axis) {
+    const float r = std::max(bounds.radius(), 1e-4f);
+    glm::vec3 dir = bounds.center() - position;
+    if (glm::length(dir) < 1e-6f * r) dir = glm::vec3(0.0f, -1.0f, 0.0f);
+    bool behind = false;
+    const ViewVolume toCentre = fitAlong(bounds, position, glm::normalize(dir), maxFov, behind);
+    if (!behind || !(glm::length(axis) > 0.0f)) return toCentre;
+    bool axisBehind = false;
+    const ViewVolume along = fitAlong(bounds, position, glm::normalize(axis), maxFov, axisBehind);
+    return axisBehind ? toCentre : along;
 }
 
 ViewVolume frameBounds(const Aabb& bounds, glm::vec3 fromDir, float yfov, float aspect) {

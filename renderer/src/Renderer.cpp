@@ -63,9 +63,17 @@ Light sceneLight(const Scene& scene) {
 }
 
 geom::ViewVolume lightVolume(const Scene& scene, const Light& light) {
+    return lightVolume(scene.bounds, light);
+}
+
+geom::ViewVolume lightVolume(const geom::Aabb& bounds, const Light& light) {
     if (light.type == Light::Type::Directional)
-        return geom::fitDirectionalLight(scene.bounds, light.direction);
-    return geom::fitPerspectiveLight(scene.bounds, light.position);
+        return geom::fitDirectionalLight(bounds, light.direction);
+    // A spot light's own axis is the fallback when aiming at the bounds' centre would leave
+    // scene corners behind the light (geom::fitPerspectiveLight).
+    return geom::fitPerspectiveLight(bounds, light.position, glm::radians(150.0f),
+                                     light.type == Light::Type::Spot ? light.direction
+                                                                     : glm::vec3(0.0f));
 }
 
 std::vector<std::string_view> framePhases(const MethodDescriptor& m) {
@@ -110,9 +118,7 @@ const FloodFrame* Renderer::flood() const {
 void Renderer::setLight(const Light& light) {
     light_ = light;
     disk_ = makeDiskLight(light_, sceneBounds_);
-    lightVolume_ = light_.type == Light::Type::Directional
-                       ? geom::fitDirectionalLight(sceneBounds_, light_.direction)
-                       : geom::fitPerspectiveLight(sceneBounds_, light_.position);
+    lightVolume_ = lightVolume(sceneBounds_, light_);
     diagnosticsPass_.reset(); // a moved light changes the map: nothing to compare with
 }
 

@@ -22,11 +22,15 @@ struct ViewVolume {
 ViewVolume fitDirectionalLight(const Aabb& bounds, glm::vec3 dir);
 
 /// Perspective light volume from `position` aimed at the bounds' centre whose square frustum
-/// contains every corner of `bounds` in front of the light. When the light sits inside the
-/// bounds (no finite frustum contains them) the field of view is capped at `maxFov` radians and
-/// the near plane at 1/1000 of the bounds' diagonal.
+/// contains every corner of `bounds` in front of the light. When a corner lies behind the light
+/// (no finite frustum contains them all) and looking along `axis` (a spot light's direction; zero
+/// for none) leaves none behind, the volume looks along `axis` instead: a scene that extends far
+/// to one side of a spot light would otherwise get the capped fov and a near plane at 1/1000 of
+/// the bounds' diagonal, which PCSS's blocker search looks through. Otherwise the field of view
+/// is capped at `maxFov` radians and the near plane at 1/1000 of the bounds' diagonal.
 ViewVolume fitPerspectiveLight(const Aabb& bounds, glm::vec3 position,
-                               float maxFov = glm::radians(150.0f));
+                               float maxFov = glm::radians(150.0f),
+                               glm::vec3 axis = glm::vec3(0.0f));
 
 /// A look-at view from direction `fromDir` (pointing from the target to the eye) that shows the
 /// whole bounding sphere of `bounds` for the given vertical fov and aspect, plus near/far planes.

@@ -59,6 +59,8 @@ Light sceneLight(const Scene& scene);
 
 /// The light's view volume fitted to the scene bounds.
 geom::ViewVolume lightVolume(const Scene& scene, const Light& light);
+/// The same for scene bounds `bounds`.
+geom::ViewVolume lightVolume(const geom::Aabb& bounds, const Light& light);
 
 /// The timed passes of a frame with method `m`, in frame order, as PassTimer names them:
 /// "shadow map", "surfaces", the method's phases (its table row), "shading".
