@@ -16,6 +16,7 @@
 #include <array>
 #include <cstdio>
 #include <fstream>
+#include <map>
 #include <regex>
 #include <sstream>
 #include <sys/wait.h>
@@ -177,6 +178,28 @@ fs::path scriptFile(const std::string& name, const std::string& text) {
     const fs::path p = outputDir("capture_bad") / name;
     std::ofstream(p) << text;
     return p;
+}
+
+// The bug: an entry of the reference's method with other options ({"method": "reference",
+// "mapSize": 512} beside a 256² reference) was taken for the reference itself and scored 0.
+TEST(CaptureRun, AnEntryOfTheReferencesMethodWithOtherOptionsIsAMethodOfItsOwn) {
+    const fs::path dir = outputDir("capture_reference_entries");
+    fs::remove_all(dir);
+    const Outcome r = capture(
+        scriptFile("reference_entries.json",
+                   R"({"camera": {"frames": 2, "path": "default"}, "resolutions": [[32, 32]],
+                       "reference": {"samples": 16, "mapSize": 256},
+                       "methods": [{"method": "reference", "mapSize": 512, "label": "maps 512"},
+                                   "reference", {"method": "reference", "mapSize": 256,
+                                                 "label": "same"}]})"),
+        dir);
+    ASSERT_EQ(r.code, 0) << r.output;
+    const nlohmann::json summary = nlohmann::json::parse(readText(dir / "summary.json"));
+    std::map<std::string, double> rmse;
+    for (const auto& m : summary["methods"]) rmse[m["label"]] = m["rmse"].get<double>();
+    EXPECT_GT(rmse.at("maps 512"), 0.0);
+    EXPECT_EQ(rmse.at("reference"), 0.0);
+    EXPECT_EQ(rmse.at("same"), 0.0); // the reference's own options: the reference itself
 }
 
 TEST(CaptureRun, TheRayTracedReferenceIsUsedAndNamed) {

@@ -51,6 +51,19 @@ void prepareOutput(const fs::path& dir) {
 }
 
 // The standard-flooding run a JFA run's |dI| buckets are measured against: the script's run of
+// Whether a script's entry is the ground truth itself (its row is then the reference against
+// itself, from lane 0): the same method, and every option the entry gives has the reference's
+// value. {"method": "reference", "mapSize": 1024} beside a 2048² reference is a method of its
+// own, rendered in its own lane.
+bool isTheReference(const MethodSpec& m, const RenderSettings& reference) {
+    if (m.method != reference.method) return false;
+    for (const auto& [flag, value] : m.options.values()) {
+        const auto it = reference.options.values().find(flag);
+        if (it == reference.options.values().end() || it->second != value) return false;
+    }
+    return true;
+}
+
 // referenceOf(its method) at the same size and pass count; -1 if the script has none.
 int counterpartOf(const std::vector<MethodRun>& runs, std::size_t k, int defaultPasses) {
     const MethodSpec& m = runs[k].spec;
@@ -157,7 +170,7 @@ void captureSize(const CaptureSetup& c, int w, int h, FrameRunner& runner,
         run.width = w;
         run.height = h;
         laneOf.push_back(0);
-        if (m.method != c.reference.method) {
+        if (!isTheReference(m, c.reference)) {
             renderers.push_back(
                 std::make_unique<Renderer>(c.shaders, c.scene, settingsFor(c.base, m)));
             renderers.back()->resize(w, h);
