@@ -180,21 +180,27 @@ fs::path scriptFile(const std::string& name, const std::string& text) {
     return p;
 }
 
+// Runs a 2-frame, 32² capture of the default walkthrough with `fields` (the script's
+// "reference" and "methods") into the test output folder `name`; returns the run.
+Outcome tinyCapture(const std::string& name, const std::string& fields) {
+    const fs::path dir = outputDir(name);
+    fs::remove_all(dir);
+    return capture(scriptFile(name + ".json", R"({"camera": {"frames": 2, "path": "default"}, )"
+                                              R"("resolutions": [[32, 32]], )" +
+                                                  fields + "}"),
+                   dir);
+}
+
 // The bug: an entry of the reference's method with other options ({"method": "reference",
 // "mapSize": 512} beside a 256² reference) was taken for the reference itself and scored 0.
 TEST(CaptureRun, AnEntryOfTheReferencesMethodWithOtherOptionsIsAMethodOfItsOwn) {
-    const fs::path dir = outputDir("capture_reference_entries");
-    fs::remove_all(dir);
-    const Outcome r = capture(
-        scriptFile("reference_entries.json",
-                   R"({"camera": {"frames": 2, "path": "default"}, "resolutions": [[32, 32]],
-                       "reference": {"samples": 16, "mapSize": 256},
-                       "methods": [{"method": "reference", "mapSize": 512, "label": "maps 512"},
-                                   "reference", {"method": "reference", "mapSize": 256,
-                                                 "label": "same"}]})"),
-        dir);
+    const Outcome r = tinyCapture("capture_reference_entries",
+                                  R"("reference": {"samples": 16, "mapSize": 256},
+           "methods": [{"method": "reference", "mapSize": 512, "label": "maps 512"}, "reference",
+                       {"method": "reference", "mapSize": 256, "label": "same"}])");
     ASSERT_EQ(r.code, 0) << r.output;
-    const nlohmann::json summary = nlohmann::json::parse(readText(dir / "summary.json"));
+    const nlohmann::json summary =
+        nlohmann::json::parse(readText(outputDir("capture_reference_entries") / "summary.json"));
     std::map<std::string, double> rmse;
     for (const auto& m : summary["methods"]) rmse[m["label"]] = m["rmse"].get<double>();
     EXPECT_GT(rmse.at("maps 512"), 0.0);
@@ -205,14 +211,10 @@ TEST(CaptureRun, AnEntryOfTheReferencesMethodWithOtherOptionsIsAMethodOfItsOwn) 
 TEST(CaptureRun, TheRayTracedReferenceIsUsedAndNamed) {
     // Two tiny frames against the ray-traced ground truth: the metrics come from its lane, and
     // the summary and report say which reference it was.
+    const Outcome r = tinyCapture("capture_raytrace",
+                                  R"("reference": {"kind": "raytrace", "samples": 16},
+                                     "methods": ["hard", "raytrace"])");
     const fs::path dir = outputDir("capture_raytrace");
-    fs::remove_all(dir);
-    const Outcome r = capture(
-        scriptFile("raytrace.json",
-                   R"({"camera": {"frames": 2, "path": "default"}, "resolutions": [[32, 32]],
-                       "reference": {"kind": "raytrace", "samples": 16},
-                       "methods": ["hard", "raytrace"]})"),
-        dir);
     ASSERT_EQ(r.code, 0) << r.output;
     EXPECT_NE(r.output.find("reference: raytrace: 16 shadow rays per pixel"), std::string::npos)
         << r.output;
