@@ -9,8 +9,10 @@
 #include <glm/gtc/constants.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <thread>
 
 namespace {
 
@@ -179,6 +181,25 @@ TEST(RayTraceTest, TheSameForAnyThreadCount) {
         s.threads = threads;
         EXPECT_EQ(fl::rt::diskVisibility(scene, disk, r, s), one) << threads << " threads";
     }
+}
+
+TEST(RayTraceTest, ProgressRisesToOneOnTheCallersThread) {
+    const RayScene scene(halfPlane(1.0f, 0.4f));
+    std::vector<Receiver> r(5000, Receiver{{0.1f, 0, 0}, {0, 1, 0}, true});
+    VisibilitySettings s;
+    s.samples = 16;
+    s.threads = 2;
+    std::vector<double> seen;
+    const std::thread::id caller = std::this_thread::get_id();
+    s.progress = [&](double done) {
+        EXPECT_EQ(std::this_thread::get_id(), caller);
+        seen.push_back(done);
+    };
+    (void)fl::rt::diskVisibility(scene, {{0, 5, 0}, {0, -1, 0}, 1.0f}, r, s);
+    ASSERT_FALSE(seen.empty());
+    EXPECT_EQ(seen.back(), 1.0);
+    EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+    EXPECT_LE(seen.size(), 102u);
 }
 
 TEST(RayTraceTest, RefitEqualsAFreshBuild) {

@@ -7,6 +7,7 @@
 
 #include <iomanip>
 #include <iostream>
+#include <unistd.h>
 
 namespace fl::app {
 
@@ -49,6 +50,14 @@ ProviderResult renderWith(const gl::ShaderLibrary& shaders, const Scene& scene,
                           const CameraView& camera, RenderSettings settings, int width, int height,
                           const RenderRequest& request) {
     settings.diagnostics = true;
+    // A slow frame (the ray tracer: seconds to minutes) shows how far it is, on a terminal.
+    if (::isatty(STDOUT_FILENO)) {
+        const std::string name = settings.method;
+        settings.progress = [name](double done) {
+            std::cout << "\r" << name << ": " << static_cast<int>(100.0 * done) << "%"
+                      << (done >= 1.0 ? "\n" : "") << std::flush;
+        };
+    }
     Renderer renderer(shaders, scene, settings);
     renderer.resize(width, height);
     renderer.render(camera);

@@ -198,37 +198,53 @@ std::vector<float> diskVisibility(const RayScene& scene, const Disk& disk,
     const float eps = scene.epsilon();
     std::vector<float> out(receivers.size(), 1.0f);
     std::atomic<std::uint64_t> rays{0};
-    // Receivers in blocks of 256 (rows of the fan-out): small enough to balance the cores.
-    constexpr int kBlock = 256;
-    const int blocks = static_cast<int>((receivers.size() + kBlock - 1) / kBlock);
-    parallelRows(blocks, s.threads, [&](int begin, int end, int) {
+    // Receivers in blocks of 256, taken in turn by whichever thread is free (the cores stay
+    // busy whatever the image holds; each receiver's answer depends on its index only). The
+    // caller's thread reports progress as it takes blocks.
+    constexpr std::size_t kBlock = 256;
+    const std::size_t blocks = (receivers.size() + kBlock - 1) / kBlock;
+    std::atomic<std::size_t> next{0}, done{0};
+    const int threads =
+        std::max(1, std::min<int>(resolveThreads(s.threads),
+                                  static_cast<int>(std::max<std::size_t>(blocks, 1))));
+    std::size_t reported = 0;
+    parallelRows(threads, threads, [&](int, int, int band) {
         std::uint64_t cast = 0;
-        const std::size_t last = std::min(receivers.size(), std::size_t(end) * kBlock);
-        for (std::size_t r = std::size_t(begin) * kBlock; r < last; ++r) {
-            const Receiver& rc = receivers[r];
-            if (!rc.valid) continue;
-            // The seen side's normal: rays leave on that side, and the plane blocks what is
-            // behind it.
-            const glm::vec3 n =
-                glm::length(rc.normal) > 0.0f ? glm::normalize(rc.normal) : glm::vec3(0.0f);
-            const glm::vec3 origin = rc.position + eps * n;
-            int visible = 0;
-            for (const glm::vec3& q : diskSamples(disk, s, r)) {
-                const glm::vec3 toLight = q - rc.position;
-                if (glm::dot(n, toLight) <= 0.0f && n != glm::vec3(0.0f)) continue; // faces away
-                if (glm::dot(facing, -toLight) <= 0.0f) continue; // behind the disk
-                const float length = glm::length(q - origin);
-                if (length <= eps) {
-                    ++visible; // on the light itself
-                    continue;
+        for (std::size_t b = next++; b < blocks; b = next++) {
+            const std::size_t last = std::min(receivers.size(), (b + 1) * kBlock);
+            for (std::size_t r = b * kBlock; r < last; ++r) {
+                const Receiver& rc = receivers[r];
+                if (!rc.valid) continue;
+                // The seen side's normal: rays leave on that side, and the plane blocks what is
+                // behind it.
+                const glm::vec3 n =
+                    glm::length(rc.normal) > 0.0f ? glm::normalize(rc.normal) : glm::vec3(0.0f);
+                const glm::vec3 origin = rc.position + eps * n;
+                int visible = 0;
+                for (const glm::vec3& q : diskSamples(disk, s, r)) {
+                    const glm::vec3 toLight = q - rc.position;
+                    if (glm::dot(n, toLight) <= 0.0f && n != glm::vec3(0.0f))
+                        continue;                                     // faces away
+                    if (glm::dot(facing, -toLight) <= 0.0f) continue; // behind the disk
+                    const float length = glm::length(q - origin);
+                    if (length <= eps) {
+                        ++visible; // on the light itself
+                        continue;
+                    }
+                    ++cast;
+                    if (!scene.occluded(origin, q - (eps / length) * (q - origin))) ++visible;
                 }
-                ++cast;
-                if (!scene.occluded(origin, q - (eps / length) * (q - origin))) ++visible;
+                out[r] = static_cast<float>(visible) / static_cast<float>(s.samples);
             }
-            out[r] = static_cast<float>(visible) / static_cast<float>(s.samples);
+            const std::size_t finished = ++done;
+            if (band == 0 && s.progress && finished * 100 >= (reported + 1) * blocks) {
+                reported = finished * 100 / blocks;
+                s.progress(static_cast<double>(finished) / static_cast<double>(blocks));
+            }
         }
         rays += cast;
     });
+    if (s.progress) s.progress(1.0);
     if (raysCast) *raysCast = rays;
     return out;
 }

@@ -154,9 +154,19 @@ void Renderer::render(const CameraView& camera) {
     const SurfacesPass::Outputs surfaces = surfacesPass_.execute({scene_, camera, light_});
     timer_.end();
     // 3. The shadow method: visibility per pixel (it times its own phases).
-    const FrameInputs in{
-        scene_,           camera, light_,   disk_,  sceneBounds_,      lightVolume_,
-        settings_.shadow, shadow, surfaces, method, settings_.options, &timer_};
+    const FrameInputs in{scene_,
+                         camera,
+                         light_,
+                         disk_,
+                         sceneBounds_,
+                         lightVolume_,
+                         settings_.shadow,
+                         shadow,
+                         surfaces,
+                         method,
+                         settings_.options,
+                         &timer_,
+                         settings_.progress ? &settings_.progress : nullptr};
     const gl::Texture& methodVisibility = impl.execute(in);
     // 4. Shading with the method's visibility; then the optional shadow-map diagnostics
     //    (texel footprint, the previous frame's visibility: measurement only).

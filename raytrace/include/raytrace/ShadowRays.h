@@ -12,6 +12,7 @@
 #include <glm/vec3.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 #include <vector>
@@ -88,6 +89,9 @@ struct VisibilitySettings {
     /// reference places its point lights (its bands along straight edges are this pattern's).
     bool jitter = true;
     int threads = 0; // 0: every core
+    /// Called on the caller's thread with the share of receivers done (up to about 100 times,
+    /// rising, the last call 1); empty: not called.
+    std::function<void(double)> progress;
 };
 
 /// The N points of the disk a receiver's rays go to: a stratified grid over the disk

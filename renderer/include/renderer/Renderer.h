@@ -25,6 +25,7 @@
 
 #include <geometry/Framing.h>
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
@@ -39,6 +40,9 @@ struct RenderSettings {
     MethodOptions options;       // the methods' options by flag; unset ones take their defaults
     gl::TimingMode timing = gl::TimingMode::Auto;
     bool diagnostics = false; // measure the shadow map after shading (ShadowDiagnosticsPass)
+    /// Set by a command that shows progress: slow methods (the ray tracer) call it during a
+    /// frame with the share done, in [0, 1], on the rendering thread.
+    std::function<void(double)> progress;
 };
 
 /// How to pick the camera: a glTF camera, automatic framing, or an explicit eye/target.

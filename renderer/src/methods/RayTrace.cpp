@@ -80,6 +80,7 @@ class RayTrace final : public ShadowMethod {
         rt::VisibilitySettings s;
         s.samples = in.integer("samples");
         s.jitter = !in.flag("grid");
+        if (in.progress) s.progress = *in.progress;
         const rt::Disk disk{in.disk.center, in.disk.normal, in.disk.radius};
         const std::vector<float> v = rt::diskVisibility(*bvh_, disk, receivers, s, &rays_);
         glTextureSubImage2D(visibility_.id(), 0, 0, 0, w, h, GL_RED, GL_FLOAT, v.data());

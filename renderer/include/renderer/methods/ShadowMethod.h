@@ -48,6 +48,7 @@ struct FrameInputs {
     const MethodDescriptor& method;        // this method's table row
     const MethodOptions& options;          // values by flag; a row's defaults fill the rest
     gl::PassTimer* timer = nullptr;        // times the method's phases (the row's names)
+    const std::function<void(double)>* progress = nullptr; // RenderSettings::progress, if set
 
     /// This method's option `key` (its capture-script key), as the row declares it.
     [[nodiscard]] int integer(std::string_view key) const;
