@@ -240,8 +240,8 @@ CaptureScript parseCaptureScript(const std::string& text, const std::filesystem:
                 try {
                     (void)s.reference.method();
                 } catch (const std::invalid_argument&) {
-                    fail("reference.kind", "\"" + s.reference.kind + "\" is not one of " +
-                                               groundTruthKinds());
+                    fail("reference.kind",
+                         "\"" + s.reference.kind + "\" is not one of " + groundTruthKinds());
                 }
             }
             // Each option within the chosen ground truth's own range (the method table's).
@@ -253,8 +253,8 @@ CaptureScript parseCaptureScript(const std::string& text, const std::filesystem:
                 if (!o)
                     fail(std::string("reference.") + key,
                          "the " + s.reference.kind + " reference does not take it");
-                *value = readInt(r[key], std::string("reference.") + key,
-                                 static_cast<int>(o->min), static_cast<int>(o->max));
+                *value = readInt(r[key], std::string("reference.") + key, static_cast<int>(o->min),
+                                 static_cast<int>(o->max));
             }
         }
         if (!j.contains("methods")) fail("methods", "missing (a list of method names)");

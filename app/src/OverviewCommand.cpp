@@ -110,10 +110,9 @@ int renderOverview(SceneOptions o, int width, int height, const std::filesystem:
                   << fixed(r.rmse, 4) << std::setw(12) << fixed(r.medianMs, 1) << std::setw(10)
                   << fixed(ratio, 2) << "\n";
         ByteImage tile = toSrgb8(r.frame.color);
-        const std::vector<std::string> label = {r.name,
-                                                &r == &truth ? std::string("ground truth")
-                                                             : "RMSE " + fixed(r.rmse, 4),
-                                                "time " + fixed(ratio, 2) + "x hard"};
+        const std::vector<std::string> label = {
+            r.name, &r == &truth ? std::string("ground truth") : "RMSE " + fixed(r.rmse, 4),
+            "time " + fixed(ratio, 2) + "x hard"};
         HudStyle style;
         style.margin = 3;
         rasterizeHud(layoutHud(label, style), tile);

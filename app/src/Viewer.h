@@ -5,9 +5,9 @@
 
 #include "CameraController.h"
 #include "Common.h"
-#include <renderer/run/FrameRunner.h>
 #include "InputScript.h"
 #include "ViewerInput.h"
+#include <renderer/run/FrameRunner.h>
 
 #include <renderer/Renderer.h>
 #include <renderer/context/GlfwWindow.h>

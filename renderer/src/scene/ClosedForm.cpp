@@ -58,8 +58,8 @@ Mesh fan(const std::string& name, glm::vec3 centre, const std::vector<glm::vec3>
             const std::uint32_t a = first + i, b = first + (i + 1) % count;
             // Counter-clockwise seen from the side the normal points to, whichever way the
             // ring runs.
-            const glm::vec3 e = glm::cross(m.positions[a] - m.positions[c],
-                                           m.positions[b] - m.positions[c]);
+            const glm::vec3 e =
+                glm::cross(m.positions[a] - m.positions[c], m.positions[b] - m.positions[c]);
             if ((e.y > 0) == (n.y > 0))
                 m.indices.insert(m.indices.end(), {c, a, b});
             else
