@@ -10,9 +10,9 @@
 #include <renderer/context/EglContext.h>
 #include <renderer/gltf/GltfLoader.h>
 #include <renderer/io/Capture.h>
-#include <renderer/passes/SurfacesPass.h>
 #include <renderer/run/FrameRunner.h>
 #include <renderer/soft/ReferenceShadow.h>
+#include <renderer/soft/ShadowRayInputs.h>
 
 #include <base/Text.h>
 
@@ -154,18 +154,18 @@ int main(int argc, char** argv) {
         // their depth bias), and the rest.
         fl::FloatImage terminator = mask, facing = mask;
         {
-            const fl::SurfacesPass::Outputs sf = exact.renderer->surfaces();
-            const fl::FloatImage pos = fl::readTexture(sf.position, 4),
-                                 plane = fl::readTexture(sf.plane, 4),
-                                 normal = fl::readTexture(sf.normal, 4);
+            // The ray tracer's own receivers (GL row order; the images here are top row first).
+            const std::vector<fl::rt::Receiver> receivers =
+                fl::surfaceReceivers(exact.renderer->surfaces());
             const glm::vec3 c = exact.renderer->disk().center;
+            const int w = mask.width, h = mask.height;
             for (std::size_t i = 0; i < mask.data.size(); ++i) {
-                const auto at = [i](const fl::FloatImage& im) {
-                    return glm::vec3(im.data[4 * i], im.data[4 * i + 1], im.data[4 * i + 2]);
-                };
-                glm::vec3 g = at(plane);
-                if (glm::dot(g, at(normal)) < 0.0f) g = -g;
-                const bool away = glm::dot(g, c - at(pos)) <= 0.0f;
+                const std::size_t x = i % static_cast<std::size_t>(w),
+                                  y = i / static_cast<std::size_t>(w);
+                const fl::rt::Receiver& r =
+                    receivers[(static_cast<std::size_t>(h) - 1 - y) * static_cast<std::size_t>(w) +
+                              x];
+                const bool away = glm::dot(r.normal, c - r.position) <= 0.0f;
                 terminator.data[i] = mask.data[i] > 0.5f && away ? 1.0f : 0.0f;
                 facing.data[i] = mask.data[i] > 0.5f && !away ? 1.0f : 0.0f;
             }

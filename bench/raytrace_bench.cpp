@@ -6,15 +6,13 @@
 #include <renderer/Renderer.h>
 #include <renderer/context/EglContext.h>
 #include <renderer/gltf/GltfLoader.h>
-#include <renderer/io/ImageIO.h>
 #include <renderer/scene/SceneGenerator.h>
+#include <renderer/soft/ShadowRayInputs.h>
 
 #include <base/Parallel.h>
 #include <base/Stats.h>
 
 #include <CLI/CLI.hpp>
-
-#include <glm/geometric.hpp>
 
 #include <chrono>
 #include <cstdio>
@@ -52,15 +50,7 @@ int main(int argc, char** argv) {
                                    ? std::string(FLOODLIGHT_SOURCE_DIR) + "/assets/default.glb"
                                    : scenePath);
         if (scene.light) scene.light->radius = radius;
-        // The world triangles, as the raytrace method gathers them.
-        fl::rt::Triangles world;
-        for (const fl::Instance& inst : scene.instances) {
-            const fl::Mesh& m = scene.meshes.at(static_cast<std::size_t>(inst.mesh));
-            const auto base = static_cast<std::uint32_t>(world.vertices.size());
-            for (const glm::vec3& p : m.positions)
-                world.vertices.push_back(glm::vec3(inst.world * glm::vec4(p, 1.0f)));
-            for (std::uint32_t i : m.indices) world.indices.push_back(base + i);
-        }
+        const fl::rt::Triangles world = fl::worldTriangles(scene); // as the method gathers them
         std::vector<double> buildMs, refitMs;
         for (int r = 0; r < repeats; ++r) {
             const auto t = Clock::now();
@@ -79,19 +69,7 @@ int main(int argc, char** argv) {
         fl::Renderer renderer(shaders, scene, settings);
         renderer.resize(size, size);
         renderer.render(fl::makeCameraView(scene, {}, 1.0f));
-        const fl::SurfacesPass::Outputs sf = renderer.surfaces();
-        const fl::FloatImage pos = fl::readTexture(sf.position, 4),
-                             plane = fl::readTexture(sf.plane, 4),
-                             normal = fl::readTexture(sf.normal, 4);
-        std::vector<fl::rt::Receiver> receivers;
-        for (std::size_t i = 0; i < pos.data.size() / 4; ++i) {
-            const auto at = [i](const fl::FloatImage& im) {
-                return glm::vec3(im.data[4 * i], im.data[4 * i + 1], im.data[4 * i + 2]);
-            };
-            glm::vec3 g = at(plane);
-            if (glm::dot(g, at(normal)) < 0.0f) g = -g;
-            receivers.push_back({at(pos), g, pos.data[4 * i + 3] != 0.0f});
-        }
+        const std::vector<fl::rt::Receiver> receivers = fl::surfaceReceivers(renderer.surfaces());
         const fl::DiskLight& d = renderer.disk();
         const fl::rt::Disk disk{d.center, d.normal, d.radius};
 

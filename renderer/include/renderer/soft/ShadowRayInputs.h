@@ -1,0 +1,24 @@
+#pragma once
+// What the ray-traced ground truth (raytrace/ShadowRays.h) takes from a frame: the scene's
+// triangles in world space, and one receiver per pixel of the frame's surfaces (step 2). Shared by
+// the `raytrace` method and the benchmarks that measure it.
+
+#include <raytrace/ShadowRays.h>
+#include <renderer/passes/SurfacesPass.h>
+#include <renderer/scene/Scene.h>
+
+#include <vector>
+
+namespace fl {
+
+/// Every instance's triangles in world space, as the vertex stage places them. Throws
+/// std::invalid_argument naming the node and mesh when a node's transform takes a vertex beyond
+/// rt::kMaxCoordinate (the loader has already refused non-finite input).
+rt::Triangles worldTriangles(const Scene& scene);
+
+/// One receiver per pixel of `surfaces`, in GL's row order (row 0 at the bottom): the world
+/// position, the triangle's plane turned to the side the eye sees (by the shading normal), and
+/// valid where a surface was drawn. Reads the targets back (the context must be current).
+std::vector<rt::Receiver> surfaceReceivers(const SurfacesPass::Outputs& surfaces);
+
+} // namespace fl
