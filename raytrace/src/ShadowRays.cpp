@@ -163,15 +163,20 @@ bool RayScene::occluded(glm::vec3 from, glm::vec3 to) const {
     return ray.tfar < 0.0f; // Embree sets tfar to -inf on a hit
 }
 
-std::vector<glm::vec3> diskSamples(const Disk& disk, const VisibilitySettings& s,
-                                   std::uint64_t receiver) {
+namespace {
+
+void checkSamples(const VisibilitySettings& s) {
     if (s.samples < kMinSamples || s.samples > kMaxSamples)
         throw std::invalid_argument(cat("raytrace: samples must be in [", kMinSamples, ", ",
                                         kMaxSamples, "], got ", s.samples));
+}
+
+// diskSamples() into `out` (cleared first): the hot loop keeps one buffer per thread.
+void fillDiskSamples(const Disk& disk, const VisibilitySettings& s, std::uint64_t receiver,
+                     std::vector<glm::vec3>& out) {
     const glm::ivec2 grid = geom::stratifiedGrid(s.samples);
     const geom::DiskFrame frame = geom::diskFrame(disk.normal);
-    std::vector<glm::vec3> out;
-    out.reserve(static_cast<std::size_t>(s.samples));
+    out.clear();
     std::uint32_t k = 0;
     for (int j = 0; j < grid.y; ++j)
         for (int i = 0; i < grid.x; ++i, ++k) {
@@ -185,13 +190,22 @@ std::vector<glm::vec3> diskSamples(const Disk& disk, const VisibilitySettings& s
             out.push_back(disk.center + disk.radius * (static_cast<float>(p.x) * frame.tangent +
                                                        static_cast<float>(p.y) * frame.bitangent));
         }
+}
+
+} // namespace
+
+std::vector<glm::vec3> diskSamples(const Disk& disk, const VisibilitySettings& s,
+                                   std::uint64_t receiver) {
+    checkSamples(s);
+    std::vector<glm::vec3> out;
+    fillDiskSamples(disk, s, receiver, out);
     return out;
 }
 
 std::vector<float> diskVisibility(const RayScene& scene, const Disk& disk,
                                   std::span<const Receiver> receivers, const VisibilitySettings& s,
                                   std::uint64_t* raysCast) {
-    (void)diskSamples(disk, s, 0); // checks N
+    checkSamples(s);
     if (!(disk.radius >= 0.0f) || !(glm::length(disk.normal) > 0.0f))
         throw std::invalid_argument("raytrace: the disk needs a radius >= 0 and a normal");
     const glm::vec3 facing = glm::normalize(disk.normal);
@@ -210,6 +224,8 @@ std::vector<float> diskVisibility(const RayScene& scene, const Disk& disk,
     std::size_t reported = 0;
     parallelRows(threads, threads, [&](int, int, int band) {
         std::uint64_t cast = 0;
+        std::vector<glm::vec3> samples; // this thread's, refilled per receiver
+        samples.reserve(static_cast<std::size_t>(s.samples));
         for (std::size_t b = next++; b < blocks; b = next++) {
             const std::size_t last = std::min(receivers.size(), (b + 1) * kBlock);
             for (std::size_t r = b * kBlock; r < last; ++r) {
@@ -221,7 +237,8 @@ std::vector<float> diskVisibility(const RayScene& scene, const Disk& disk,
                     glm::length(rc.normal) > 0.0f ? glm::normalize(rc.normal) : glm::vec3(0.0f);
                 const glm::vec3 origin = rc.position + eps * n;
                 int visible = 0;
-                for (const glm::vec3& q : diskSamples(disk, s, r)) {
+                fillDiskSamples(disk, s, r, samples);
+                for (const glm::vec3& q : samples) {
                     const glm::vec3 toLight = q - rc.position;
                     if (glm::dot(n, toLight) <= 0.0f && n != glm::vec3(0.0f))
                         continue;                                     // faces away
