@@ -68,8 +68,8 @@ ViewVolume fitAlong(const Aabb& bounds, glm::vec3 position, glm::vec3 dir, float
 
 } // namespace
 
-ViewVolume fitPerspectiveLight(const Aabb& bounds, glm::vec3 position, float maxFov,
-                               glm::vec3 axis) {
+ViewVolume fitPerspectiveLight(const Aabb& bounds, glm::vec3 position, glm::vec3 axis,
+                               float maxFov) {
     const float r = std::max(bounds.radius(), 1e-4f);
     glm::vec3 dir = bounds.center() - position;
     if (glm::length(dir) < 1e-6f * r) dir = glm::vec3(0.0f, -1.0f, 0.0f);

@@ -71,7 +71,7 @@ geom::ViewVolume lightVolume(const geom::Aabb& bounds, const Light& light) {
         return geom::fitDirectionalLight(bounds, light.direction);
     // A spot light's own axis is the fallback when aiming at the bounds' centre would leave
     // scene corners behind the light (geom::fitPerspectiveLight).
-    return geom::fitPerspectiveLight(bounds, light.position, glm::radians(150.0f),
+    return geom::fitPerspectiveLight(bounds, light.position,
                                      light.type == Light::Type::Spot ? light.direction
                                                                      : glm::vec3(0.0f));
 }

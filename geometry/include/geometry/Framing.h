@@ -29,8 +29,8 @@ ViewVolume fitDirectionalLight(const Aabb& bounds, glm::vec3 dir);
 /// the bounds' diagonal, which PCSS's blocker search looks through. Otherwise the field of view
 /// is capped at `maxFov` radians and the near plane at 1/1000 of the bounds' diagonal.
 ViewVolume fitPerspectiveLight(const Aabb& bounds, glm::vec3 position,
-                               float maxFov = glm::radians(150.0f),
-                               glm::vec3 axis = glm::vec3(0.0f));
+                               glm::vec3 axis = glm::vec3(0.0f),
+                               float maxFov = glm::radians(150.0f));
 
 /// A look-at view from direction `fromDir` (pointing from the target to the eye) that shows the
 /// whole bounding sphere of `bounds` for the given vertical fov and aspect, plus near/far planes.

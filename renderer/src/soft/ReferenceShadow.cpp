@@ -102,8 +102,7 @@ ReferenceShadowPass::Outputs ReferenceShadowPass::execute(const Inputs& in, gl::
     for (const glm::vec3& q : samples) {
         // The volume the scene's own point light at q would get (Renderer's lightVolume()).
         const glm::mat4 viewProj =
-            geom::fitPerspectiveLight(in.sceneBounds, q, glm::radians(150.0f), in.light.normal)
-                .viewProj();
+            geom::fitPerspectiveLight(in.sceneBounds, q, in.light.normal).viewProj();
         glBindFramebuffer(GL_FRAMEBUFFER, mapFbo_.id());
         glViewport(0, 0, map_.width(), map_.height());
         glEnable(GL_DEPTH_TEST);
