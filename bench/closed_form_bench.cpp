@@ -44,12 +44,9 @@ int main(int argc, char** argv) {
                 fl::RenderSettings s;
                 s.shadow.size = shadowMap;
                 s.method = std::string(m.name);
-                fl::Renderer r(shaders, c.scene, s);
-                r.resize(size, size);
-                r.render(fl::makeCameraView(c.scene, c.camera, 1.0f));
-                const fl::FloatImage visibility = fl::readTexture(r.visibility(), 1);
-                const fl::ClosedFormError e =
-                    fl::closedFormError(c, fl::readTexture(r.surfaces().position, 4), visibility);
+                const fl::ClosedFormFrame f = fl::renderClosedForm(shaders, c, s, size);
+                const fl::FloatImage& visibility = f.visibility;
+                const fl::ClosedFormError& e = f.error;
                 if (!saveDir.empty()) {
                     std::filesystem::create_directories(saveDir);
                     fl::writePng(stem + "." + std::string(m.name) + ".png",

@@ -21,23 +21,12 @@ namespace {
 
 class RayTraceMethodTest : public GlTest {};
 
-// One frame of a closed-form case with `method` (128², the map at mapSize²): its visibility,
-// scored.
-struct CaseFrame {
-    FloatImage visibility;
-    ClosedFormError error;
-};
-CaseFrame renderCase(const ClosedFormCase& c, const std::string& method, int mapSize) {
-    const gl::ShaderLibrary shaders;
+// One frame of a closed-form case with `method` at 128², the shadow map at mapSize².
+ClosedFormFrame renderCase(const ClosedFormCase& c, const std::string& method, int mapSize) {
     RenderSettings settings;
     settings.shadow.size = mapSize;
     settings.method = method;
-    Renderer r(shaders, c.scene, settings);
-    r.resize(128, 128);
-    r.render(makeCameraView(c.scene, c.camera, 1.0f));
-    CaseFrame f{readTexture(r.visibility(), 1), {}};
-    f.error = closedFormError(c, readTexture(r.surfaces().position, 4), f.visibility);
-    return f;
+    return renderClosedForm(gl::ShaderLibrary{}, c, settings, 128);
 }
 
 TEST_F(RayTraceMethodTest, EveryClosedFormCaseMatchesThroughTheRenderer) {
@@ -47,7 +36,7 @@ TEST_F(RayTraceMethodTest, EveryClosedFormCaseMatchesThroughTheRenderer) {
     int i = 0;
     for (const ClosedFormCase& c : closedFormCases()) {
         SCOPED_TRACE(c.name);
-        const CaseFrame f = renderCase(c, "raytrace", 256);
+        const ClosedFormFrame f = renderCase(c, "raytrace", 256);
         const ClosedFormError& e = f.error;
         ASSERT_GT(e.penumbra, 200u) << "the view must hold the penumbra";
         ASSERT_GT(e.ground - e.penumbra, 200u) << "and lit and shadowed ground";

@@ -175,6 +175,16 @@ ClosedFormError closedFormError(const ClosedFormCase& c, const FloatImage& posit
     return e;
 }
 
+ClosedFormFrame renderClosedForm(const gl::ShaderLibrary& shaders, const ClosedFormCase& c,
+                                 const RenderSettings& settings, int size) {
+    Renderer r(shaders, c.scene, settings);
+    r.resize(size, size);
+    r.render(makeCameraView(c.scene, c.camera, 1.0f));
+    ClosedFormFrame f{readTexture(r.visibility(), 1), {}};
+    f.error = closedFormError(c, readTexture(r.surfaces().position, 4), f.visibility);
+    return f;
+}
+
 std::vector<ClosedFormCase> closedFormCases() {
     std::vector<ClosedFormCase> cases;
     for (float angle : {0.0f, 30.0f, 60.0f})

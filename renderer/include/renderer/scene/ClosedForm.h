@@ -63,6 +63,16 @@ struct ClosedFormError {
 ClosedFormError closedFormError(const ClosedFormCase& c, const FloatImage& position,
                                 const FloatImage& visibility);
 
+/// One frame of a case, read back and scored.
+struct ClosedFormFrame {
+    FloatImage visibility;
+    ClosedFormError error;
+};
+/// Renders `c` from its camera with `settings` (a method and its options) at size x size, reads
+/// the visibility back and scores it (needs a current context).
+ClosedFormFrame renderClosedForm(const gl::ShaderLibrary& shaders, const ClosedFormCase& c,
+                                 const RenderSettings& settings, int size);
+
 /// The cases bench/closed_form_bench.cpp measures: straight edges at several angles and heights,
 /// and a disk occluder.
 std::vector<ClosedFormCase> closedFormCases();
