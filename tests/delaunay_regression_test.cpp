@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <vector>
 
@@ -98,6 +99,25 @@ TEST(DelaunayRegression, OvercrowdedPixelsOfAGaussianCloudInsertInLinearWork) {
     const DelaunayResult r = run(pts, 16);
     expectLinearWork(r, pts.size());
     EXPECT_EQ(triangleSet(r.mesh.triangles), triangleSet(delaunayReference(pts).triangles));
+}
+
+// Bug (issue 16): `delaunay` crashed in snapSites when the points' extent was tiny (1e-307 ..
+// 1e-309): (N-1) / extent overflowed and a NaN pixel index wrote outside the texture. Every
+// finite extent must now triangulate, subnormal and huge ones included, and exactly (check).
+TEST(DelaunayRegression, SnapOfSubnormalExtentDoesNotCrash) {
+    for (const double unit : {1e-305, 1e-307, 1e-308, 1e-309, 1e-320, 5e-324, 1.0, 1e300}) {
+        jfa::SplitMix64 rng(16);
+        std::vector<dvec2> pts(400);
+        for (dvec2& p : pts) p = dvec2(rng.unit(), rng.unit()) * (1000.0 * unit);
+        // Subnormal coordinates have few bits: duplicates and cocircular points are common, so
+        // the exact checker (run's options.check) is the judge, not a triangle set.
+        const DelaunayResult r = run(pts, 64);
+        EXPECT_EQ(r.mesh.points.size(), pts.size()) << "unit " << unit;
+    }
+    // Three points around the smallest normal double, in a box of a few subnormal ulps.
+    const double m = std::numeric_limits<double>::min();
+    const std::vector<dvec2> tiny{{m, m}, {std::nextafter(m, 1.0), m}, {m, std::nextafter(m, 0.0)}};
+    EXPECT_EQ(run(tiny, 16).mesh.triangles.size(), 3u);
 }
 
 } // namespace

@@ -237,7 +237,10 @@ void expectConnectedRegions(const DiscreteDelaunay& r) {
 TEST(DiscreteDelaunay, MappingKeepsAspectCentresAndInverts) {
     const std::vector<glm::dvec2> sites{{-2.0, 1.0}, {6.0, 3.0}, {1.0, 2.0}};
     const TextureMapping m = fitTextureMapping(sites, 65);
-    EXPECT_DOUBLE_EQ(m.scale, 64.0 / 8.0);
+    // The extent 8 is brought to 1 by 2^-3 (exact), then scaled by 64: 8 texels per unit.
+    EXPECT_EQ(m.exponent, -3);
+    EXPECT_EQ(m.scale, 64.0);
+    EXPECT_EQ(m.texelSize(), 1.0 / 8.0);
     EXPECT_EQ(m.toTexture({-2.0, 1.0}), glm::dvec2(0.0, 24.0)); // y range 2 * 8 = 16, centred
     EXPECT_EQ(m.toTexture({6.0, 3.0}), glm::dvec2(64.0, 40.0));
     for (const glm::dvec2& s : sites) {
@@ -261,6 +264,57 @@ TEST(DiscreteDelaunay, BadInputIsRejected) {
     bad.size = 16;
     bad.plan = "nonsense";
     EXPECT_THROW(discreteDelaunay({{0.0, 0.0}}, bad), std::invalid_argument);
+}
+
+// Regression (issue 16): with a bounding box below ~1e-305, (N-1) / extent overflowed to
+// infinity, the first site mapped to 0 * inf = NaN and its pixel index, cast from NaN, wrote
+// far outside the owner array in snapSites. The mapping now normalizes the extent by an exact
+// power of two, so any finite extent maps as an ordinary one does.
+TEST(DiscreteDelaunay, SnapOfSubnormalExtentDoesNotCrash) {
+    // Integer points times 2^k are exact for every k below (subnormals included), so their pixels
+    // must be those of the integer points themselves.
+    std::vector<glm::dvec2> base;
+    jfa::SplitMix64 rng(16);
+    for (int i = 0; i < 300; ++i)
+        base.emplace_back(double(rng.below(1000)), double(rng.below(700)));
+    const SnappedSites expected = snapSites(base, 128);
+    for (const int k : {-1000, -1019, -1030, -1040, -1060, -1064, 900, 1010}) {
+        std::vector<glm::dvec2> scaled = base;
+        for (glm::dvec2& p : scaled) p = glm::dvec2(std::ldexp(p.x, k), std::ldexp(p.y, k));
+        const SnappedSites r = snapSites(scaled, 128);
+        EXPECT_TRUE(std::isfinite(r.mapping.scale) && std::isfinite(r.mapping.texelSize()))
+            << "2^" << k;
+        EXPECT_EQ(r.pixels, expected.pixels) << "2^" << k;
+        EXPECT_EQ(r.kept, expected.kept) << "2^" << k;
+    }
+    // The coordinates of the report: around 1e-307 .. 1e-309, and down to the smallest subnormal.
+    for (const double unit : {1e-305, 1e-307, 1e-308, 1e-309, 1e-320, 5e-324}) {
+        std::vector<glm::dvec2> pts;
+        for (int i = 0; i < 50; ++i)
+            pts.emplace_back(unit * double(rng.below(8)), unit * double(rng.below(8)));
+        const SnappedSites r = snapSites(pts, 64);
+        for (const glm::ivec2 p : r.pixels) {
+            EXPECT_TRUE(p.x >= 0 && p.x < 64 && p.y >= 0 && p.y < 64) << unit;
+        }
+        const glm::dvec2 corner = r.mapping.toWorld(glm::dvec2(0.0));
+        EXPECT_TRUE(std::isfinite(corner.x) && std::isfinite(corner.y)) << unit;
+    }
+}
+
+// Degenerate extents: all sites equal (extent 0) and boxes near the largest double.
+TEST(DiscreteDelaunay, SnapOfZeroAndHugeExtents) {
+    const SnappedSites same = snapSites({{1e-310, 3.0}, {1e-310, 3.0}, {1e-310, 3.0}}, 33);
+    EXPECT_EQ(same.pixels, std::vector<glm::ivec2>(3, glm::ivec2(16, 16)));
+    EXPECT_EQ(same.kept, std::vector<std::uint32_t>{0});
+    const SnappedSites huge = snapSites({{-8e307, 0.0}, {8e307, 1e300}, {0.0, -1e300}}, 33);
+    EXPECT_EQ(huge.pixels[0], glm::ivec2(0, 16));
+    EXPECT_EQ(huge.pixels[1], glm::ivec2(32, 16));
+    EXPECT_EQ(huge.pixels[2], glm::ivec2(16, 16));
+    // A point far outside the box, or not finite, goes to the nearest border.
+    const double inf = std::numeric_limits<double>::infinity();
+    EXPECT_EQ(huge.mapping.pixelOf({inf, -inf}), glm::ivec2(32, 0));
+    EXPECT_EQ(same.mapping.pixelOf({std::numeric_limits<double>::quiet_NaN(), 1e308}),
+              glm::ivec2(0, 32));
 }
 
 TEST(DiscreteDelaunay, CollisionsKeepTheLowestIndex) {

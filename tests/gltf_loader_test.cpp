@@ -17,6 +17,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <sys/stat.h>
+
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -32,7 +34,7 @@ namespace fs = std::filesystem;
 
 TEST(GltfLoaderFile, MissingFileIsRejected) {
     const std::string message = errorOf(fl::test::outputDir("gltf_loader") / "nope.gltf");
-    EXPECT_NE(message.find("nope.gltf: file not found"), std::string::npos) << message;
+    EXPECT_NE(message.find("nope.gltf: does not exist"), std::string::npos) << message;
 }
 
 TEST(GltfLoaderFile, UnsupportedExtensionIsRejected) {
@@ -68,6 +70,31 @@ TEST(GltfLoaderFile, MissingBinIsRejected) {
     const std::string message = errorOf(path);
     EXPECT_EQ(message.rfind("missing_bin.gltf: ", 0), 0u) << message;
     EXPECT_NE(message.find("missing_bin.bin"), std::string::npos) << message;
+}
+
+// Issue 16: files that exist but are not regular were "File not found" (tinygltf's fopen-based
+// callbacks), and an external buffer that is a FIFO blocked the loader forever. The scene file
+// and its external files now go through base/InputFile.h.
+TEST(GltfLoaderFile, NonRegularSceneAndBufferFilesAreNamedAsSuch) {
+    const fs::path dir = fl::test::outputDir("gltf_loader") / "folder.gltf";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    std::string message = errorOf(dir);
+    EXPECT_NE(message.find("folder.gltf: not a regular file (a directory)"), std::string::npos)
+        << message;
+    const fs::path path = triangle().write("fifo_bin.gltf", Container::BinFile);
+    const fs::path bin = fs::path(path).replace_extension(".bin");
+    fs::remove(bin);
+    ASSERT_EQ(::mkfifo(bin.c_str(), 0600), 0);
+    message = errorOf(path);
+    EXPECT_EQ(message.rfind("fifo_bin.gltf: ", 0), 0u) << message;
+    EXPECT_NE(message.find("not a regular file (a FIFO)"), std::string::npos) << message;
+    EXPECT_EQ(message.find("not found"), std::string::npos) << message;
+    fs::remove(bin);
+    fs::create_directories(bin);
+    message = errorOf(path);
+    EXPECT_NE(message.find("not a regular file (a directory)"), std::string::npos) << message;
+    fs::remove_all(bin);
 }
 
 TEST(GltfLoaderFile, UnsupportedRequiredExtensionIsRejected) {

@@ -181,7 +181,7 @@ TEST(GltfLoaderValidation, AbsurdAccessorCount) {
 TEST(GltfLoaderValidation, MissingImageFile) {
     Gltf g = triangle();
     g.texturedMaterial(g.texture({{"uri", "no_such_texture.png"}}));
-    expectRejected(g, "missing_image.gltf", {"images[0]", "'no_such_texture.png' not found"});
+    expectRejected(g, "missing_image.gltf", {"images[0]", "'no_such_texture.png': does not exist"});
 }
 
 TEST(GltfLoaderValidation, ImageBufferViewPastBuffer) {

@@ -10,13 +10,13 @@
 #include <iostream>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace fl::jfa {
 namespace {
 
 using Mask = std::vector<std::uint8_t>;
-constexpr float kInf = std::numeric_limits<float>::infinity();
 
 // Up to `count` random discs.
 Mask blobs(int w, int h, int count, std::uint64_t seed) {
@@ -51,7 +51,7 @@ float bruteDistance(const Mask& mask, int w, int h, int x, int y, bool want) {
             if (best < 0 || d < best) best = d;
         }
     }
-    return best < 0 ? kInf : distanceFromSquared(best);
+    return best < 0 ? float(std::hypot(double(w), double(h))) : distanceFromSquared(best);
 }
 
 TEST(DistanceTransform, OneFeaturePixel) {
@@ -69,14 +69,36 @@ TEST(DistanceTransform, OneFeaturePixel) {
     }
 }
 
+// No pixel of the other kind: the nearest one lies beyond the grid, hypot(W, H) (5 for 4 x 3),
+// with the sign of the side; never infinite (issue 16: an all-site mask wrote -inf into the
+// .sdf.exr).
 TEST(DistanceTransform, EmptyAndFullMasks) {
     const Mask none(12, 0), all(12, 1);
-    for (float v : distanceTransform(none, 4, 3, "jfa").values) EXPECT_EQ(v, kInf);
-    for (float v : exactDistanceTransform(none, 4, 3).values) EXPECT_EQ(v, kInf);
+    EXPECT_EQ(noFeatureDistance(4, 3), 5.0f);
+    for (float v : distanceTransform(none, 4, 3, "jfa").values) EXPECT_EQ(v, 5.0f);
+    for (float v : exactDistanceTransform(none, 4, 3).values) EXPECT_EQ(v, 5.0f);
     for (float v : distanceTransform(all, 4, 3, "jfa").values) EXPECT_EQ(v, 0.0f);
-    for (float v : signedDistanceTransform(none, 4, 3, "jfa").values) EXPECT_EQ(v, kInf);
-    for (float v : signedDistanceTransform(all, 4, 3, "jfa").values) EXPECT_EQ(v, -kInf);
-    for (float v : exactSignedDistanceTransform(all, 4, 3).values) EXPECT_EQ(v, -kInf);
+    for (float v : signedDistanceTransform(none, 4, 3, "jfa").values) EXPECT_EQ(v, 5.0f);
+    for (float v : signedDistanceTransform(all, 4, 3, "jfa").values) EXPECT_EQ(v, -5.0f);
+    for (float v : exactSignedDistanceTransform(all, 4, 3).values) EXPECT_EQ(v, -5.0f);
+}
+
+// Every plan and the exact transform agree on all-site and no-site masks of any shape, every value
+// is finite, and |value| is beyond every real distance of the grid.
+TEST(DistanceTransform, AllSiteMaskGivesFiniteSignedDistance) {
+    for (const auto& [w, h] : {std::pair{1, 1}, {1, 9}, {16, 16}, {37, 5}, {128, 3}}) {
+        const Mask all(std::size_t(w * h), 1), none(std::size_t(w * h), 0);
+        const float d = noFeatureDistance(w, h);
+        EXPECT_GT(d, std::hypot(float(w - 1), float(h - 1)));
+        for (const char* plan : {"jfa", "1+jfa", "jfa+2", "flood", "half:jfa"}) {
+            const DistanceField in = signedDistanceTransform(all, w, h, plan);
+            const DistanceField out = signedDistanceTransform(none, w, h, plan);
+            for (float v : in.values) ASSERT_EQ(v, -d) << plan << " " << w << "x" << h;
+            for (float v : out.values) ASSERT_EQ(v, d) << plan << " " << w << "x" << h;
+            EXPECT_EQ(countDifferences(in, exactSignedDistanceTransform(all, w, h)), 0);
+            EXPECT_EQ(countDifferences(out, exactSignedDistanceTransform(none, w, h)), 0);
+        }
+    }
 }
 
 TEST(DistanceTransform, ExactTransformsMatchBruteForce) {

@@ -5,6 +5,8 @@
 
 #include "CaptureResults.h"
 #include "Commands.h"
+
+#include <base/InputFile.h>
 #include <renderer/run/FrameRunner.h>
 
 #include <renderer/context/EglContext.h>
@@ -317,9 +319,11 @@ Runner addCaptureCommand(CLI::App& app) {
         "capture", "Render a capture script (camera path x methods) headless, with the ground "
                    "truth, and write PNG/EXR frames, frames.csv, summary.json and report.html");
     auto r = std::make_shared<CaptureRequest>();
-    cmd->add_option("script", r->script, "Capture script (JSON; see examples/capture/)")
+    cmd->add_option("script", r->script,
+                    "Capture script (JSON, at most " + std::to_string(kTextInputLimitMiB) +
+                        " MiB, as its camera-path file; see examples/capture/)")
         ->required();
-    cmd->add_option("--out", r->out, "Output folder")->capture_default_str();
+    addOutOption(*cmd, r->out, "Output folder");
     cmd->add_option("--shader-dir", r->shaderDir,
                     "Load shaders from this folder instead of the binary");
     cmd->add_option("--timing", r->timing, "Pass timing: auto, query (GL timers), finish")

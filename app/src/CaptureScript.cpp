@@ -1,5 +1,6 @@
 #include "CaptureScript.h"
 
+#include <base/InputFile.h>
 #include <base/Text.h>
 
 #include <renderer/soft/PenumbraMap.h>
@@ -7,7 +8,6 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
-#include <fstream>
 #include <iomanip>
 #include <set>
 #include <sstream>
@@ -296,11 +296,12 @@ CaptureScript parseCaptureScript(const std::string& text, const std::filesystem:
 }
 
 CaptureScript readCaptureScript(const std::filesystem::path& file) {
-    std::ifstream in(file);
-    if (!in) throw CaptureScriptError(file.string() + ": cannot open");
-    std::ostringstream text;
-    text << in.rdbuf();
-    return parseCaptureScript(text.str(), file);
+    // Regular files within the text limit only: a FIFO would be read forever.
+    try {
+        return parseCaptureScript(readInputFile(file, "capture script", kTextInputLimitMiB), file);
+    } catch (const InputFileError& e) {
+        throw CaptureScriptError(e.what());
+    }
 }
 
 std::string referenceText(const CaptureScript::Reference& r) {

@@ -74,7 +74,8 @@ struct CaptureScript {
 
 /// Parses a script's JSON text; `file` names it in messages and anchors relative paths.
 CaptureScript parseCaptureScript(const std::string& text, const std::filesystem::path& file);
-/// Reads and parses a script file; throws CaptureScriptError.
+/// Reads and parses a script file (a regular file of at most kTextInputLimitMiB); throws
+/// CaptureScriptError.
 CaptureScript readCaptureScript(const std::filesystem::path& file);
 
 /// The reference in words: "maps: 256 point-light shadow maps of 2048^2" or "raytrace: 256

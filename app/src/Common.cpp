@@ -2,6 +2,8 @@
 
 #include <renderer/scene/SceneGenerator.h>
 
+#include <base/InputFile.h>
+
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -14,10 +16,10 @@ constexpr int kMaxShadowMapSize = 8192;
 } // namespace
 
 void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool sceneAsOption) {
-    if (sceneAsOption)
-        cmd.add_option("--scene", o.scene, "glTF 2.0 scene (.gltf/.glb); default: built-in scene");
-    else
-        cmd.add_option("scene", o.scene, "glTF 2.0 scene (.gltf/.glb); default: built-in scene");
+    const std::string sceneHelp = "glTF 2.0 scene (.gltf/.glb, at most " +
+                                  std::to_string(kSceneInputLimitMiB) +
+                                  " MiB); default: built-in scene";
+    cmd.add_option(sceneAsOption ? "--scene" : "scene", o.scene, sceneHelp);
     // 0 is allowed: a point light, for which every soft method gives exactly the hard shadows.
     cmd.add_option("--light-radius", o.lightRadius,
                    "Disk light radius in scene units (0 = a point light: hard shadows)")
@@ -30,7 +32,8 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool sceneAsOption) {
             },
             "RADIUS>=0"));
     cmd.add_option("--shader-dir", o.shaderDir,
-                   "Load shaders from this folder instead of the binary");
+                   "Load shaders from this folder instead of the binary (files of at most " +
+                       std::to_string(kTextInputLimitMiB) + " MiB)");
     cmd.add_option("--shadow-map-size", o.shadowMapSize, "Shadow map texels per side")
         ->check(CLI::Range(16, kMaxShadowMapSize))
         ->capture_default_str();
@@ -103,6 +106,49 @@ void addSizeOptions(CLI::App& cmd, int& width, int& height) {
     cmd.add_option("--height", height, "Image height in pixels")
         ->check(CLI::Range(1, kMaxImageSize))
         ->capture_default_str();
+}
+
+CLI::Validator outputFolder() {
+    return CLI::Validator(
+        [](const std::string& text) -> std::string {
+            if (text.empty()) return "empty folder name (use . for the current folder)";
+            return {};
+        },
+        "FOLDER");
+}
+
+CLI::Validator outputStem() {
+    return CLI::Validator(
+        [](const std::string& text) -> std::string {
+            if (text.empty()) return "empty file name (the files would be hidden: .png, .exr)";
+            if (text.find('/') != std::string::npos)
+                return "'" + text +
+                       "' contains '/'; a name stays inside --out (give folders there)";
+            if (text.front() == '.')
+                return "'" + text + "' starts with '.' (hidden files, or a path outside --out)";
+            return {};
+        },
+        "NAME");
+}
+
+CLI::Validator outputFile() {
+    return CLI::Validator(
+        [](const std::string& text) -> std::string {
+            if (text.empty()) return "empty file name";
+            const std::string last = std::filesystem::path(text).filename().string();
+            if (last.empty() || last == "." || last == "..")
+                return "'" + text + "' names a folder, not a file";
+            return {};
+        },
+        "FILE");
+}
+
+CLI::Option* addOutOption(CLI::App& cmd, std::string& out, const std::string& help) {
+    return cmd.add_option("--out", out, help)->check(outputFolder())->capture_default_str();
+}
+
+CLI::Option* addNameOption(CLI::App& cmd, std::string& name, const std::string& help) {
+    return cmd.add_option("--name", name, help)->check(outputStem())->capture_default_str();
 }
 
 Scene loadDefaultScene(const LoadOptions& options) {

@@ -57,6 +57,21 @@ void addMethodOptions(CLI::App& cmd, SceneOptions& o);
 /// Registers --width/--height with the accepted range.
 void addSizeOptions(CLI::App& cmd, int& width, int& height);
 
+// Output locations, checked once here for every command (usage errors, exit 2): an empty folder
+// silently meant the current one, and a --name with '/' or ".." wrote outside --out.
+/// A validator for an output folder (--out, --steps, --screenshot-dir): not empty.
+CLI::Validator outputFolder();
+/// A validator for a file-name stem inside an output folder (--name): not empty, no '/', not
+/// starting with '.' (no hidden files, no "." or ".."), so NAME.* stays directly in the folder.
+CLI::Validator outputStem();
+/// A validator for an output file or file prefix (make-scene --out, delaunay --out, --record):
+/// not empty and ending in a file name (not '/', "." or "..").
+CLI::Validator outputFile();
+/// Registers --out as an output folder (outputFolder) with its default shown.
+CLI::Option* addOutOption(CLI::App& cmd, std::string& out, const std::string& help);
+/// Registers --name as a file-name stem inside --out (outputStem) with its default shown.
+CLI::Option* addNameOption(CLI::App& cmd, std::string& name, const std::string& help);
+
 /// The committed default scene (assets/default.glb) or, if that file is absent, the same scene
 /// generated in memory.
 Scene loadDefaultScene(const LoadOptions& options);

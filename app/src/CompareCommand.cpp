@@ -3,6 +3,8 @@
 // the largest difference side by side (method | reference | difference) as PNG and EXR.
 
 #include "Commands.h"
+
+#include <base/InputFile.h>
 #include <renderer/run/FrameRunner.h>
 
 #include <renderer/context/EglContext.h>
@@ -79,7 +81,7 @@ int runCompare(const CompareRequest& r) {
     CameraPath path = [&] {
         if (r.path != "default") {
             try {
-                return readCameraPath(r.path);
+                return readCameraPath(r.path, "--path");
             } catch (const std::runtime_error& e) {
                 throw InputError(e.what());
             }
@@ -226,12 +228,14 @@ Runner addCompareCommand(CLI::App& app) {
     addSizeOptions(*cmd, s->width, s->height);
     cmd->add_option("--path", s->path,
                     "Camera path: default (a swing around the scene's camera) or a JSON file "
-                    "{\"fov\": deg, \"keys\": [{\"eye\": [x,y,z], \"target\": [x,y,z]}, ...]}")
+                    "{\"fov\": deg, \"keys\": [{\"eye\": [x,y,z], \"target\": [x,y,z]}, ...]} "
+                    "(at most " +
+                        std::to_string(kTextInputLimitMiB) + " MiB)")
         ->capture_default_str();
     cmd->add_option("--frames", s->frames, "Frames along the path")
         ->check(CLI::Range(1, 100000))
         ->capture_default_str();
-    cmd->add_option("--out", s->out, "Output folder")->capture_default_str();
+    addOutOption(*cmd, s->out, "Output folder");
     return [s] {
         CompareRequest r = *s;
         r.method = r.scene.method;

@@ -6,6 +6,7 @@
 #include "Commands.h"
 #include "DelaunaySteps.h"
 
+#include <base/InputFile.h>
 #include <geometry/Delaunay.h>
 #include <geometry/MeshIO.h>
 #include <geometry/MeshSvg.h>
@@ -252,7 +253,10 @@ Runner addDelaunayCommand(CLI::App& app) {
         "delaunay",
         "Delaunay triangulation of a point file by 1+JFA + exact repair (thesis ch. 6)");
     auto o = std::make_shared<DelaunayCliOptions>();
-    cmd->add_option("IN", o->input, "Points: .node (Triangle), .txt/.xy ('x y'), .bin/.f64")
+    cmd->add_option("IN", o->input,
+                    "Points: .node (Triangle), .txt/.xy ('x y') (at most " +
+                        std::to_string(kTextInputLimitMiB) + " MiB), .bin/.f64 (at most " +
+                        std::to_string(kBinaryInputLimitMiB) + " MiB)")
         ->required();
     cmd->add_option("--texture", o->texture,
                     "Texture side N for G1-G6 (default: the smallest power of two with N^2 >= "
@@ -270,11 +274,13 @@ Runner addDelaunayCommand(CLI::App& app) {
     cmd->add_flag("--check", o->check,
                   "Verify the result exactly (structure, convex hull, empty circles); exit 1 if "
                   "it fails");
-    cmd->add_option("--out", o->out, "Output prefix: PREFIX.node + PREFIX.ele, .obj, .svg");
+    cmd->add_option("--out", o->out, "Output prefix: PREFIX.node + PREFIX.ele, .obj, .svg")
+        ->check(outputFile());
     cmd->add_option("--format", o->format, "Which outputs --out writes")
         ->check(CLI::IsMember({"node", "obj", "svg", "all"}))
         ->capture_default_str();
-    cmd->add_option("--steps", o->steps, "Folder for one SVG per step (01_sites ... 09_flipped)");
+    cmd->add_option("--steps", o->steps, "Folder for one SVG per step (01_sites ... 09_flipped)")
+        ->check(outputFolder());
     cmd->add_option("--threads", o->threads, "Worker threads for G1-G6 (0: all)")
         ->check(CLI::Range(0, 1024))
         ->capture_default_str();

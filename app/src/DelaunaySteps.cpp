@@ -47,7 +47,7 @@ geom::SvgLabelGrid labelGrid(const geom::IdTexture& ids, const geom::TextureMapp
     g.width = (ids.width + stride - 1) / stride;
     g.height = (ids.height + stride - 1) / stride;
     g.origin = world(m, glm::dvec2(-0.5));
-    g.pixelSize = glm::dvec2(double(stride) / m.scale);
+    g.pixelSize = glm::dvec2(double(stride) * m.texelSize());
     g.labels.reserve(std::size_t(g.width) * std::size_t(g.height));
     for (int y = 0; y < g.height; ++y)
         for (int x = 0; x < g.width; ++x) {

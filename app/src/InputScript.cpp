@@ -2,11 +2,12 @@
 
 #include "ViewerInput.h"
 
+#include <base/InputFile.h>
+
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
 #include <cmath>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
@@ -145,11 +146,8 @@ std::vector<ScriptEvent> parseInputScript(std::string_view text, const std::stri
 }
 
 std::vector<ScriptEvent> readInputScript(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) throw std::runtime_error(file.string() + ": cannot read the script");
-    std::ostringstream text;
-    text << in.rdbuf();
-    return parseInputScript(text.str(), file.string());
+    // Regular files within the text limit only (InputFileError is a runtime_error).
+    return parseInputScript(readInputFile(file, "--script", kTextInputLimitMiB), file.string());
 }
 
 std::vector<ScriptEvent> ScriptPlayer::due(int frame) {

@@ -42,7 +42,8 @@ struct ScriptEvent {
 
 /// Parses a script; throws std::runtime_error "SOURCE:LINE: problem" for the first bad line.
 std::vector<ScriptEvent> parseInputScript(std::string_view text, const std::string& source);
-/// Reads and parses FILE; throws std::runtime_error naming the file if it cannot be read.
+/// Reads and parses FILE; throws std::runtime_error naming the file if it cannot be read (not a
+/// regular file, over kTextInputLimitMiB: base/InputFile.h).
 std::vector<ScriptEvent> readInputScript(const std::filesystem::path& file);
 
 /// Hands out a script's events frame by frame.

@@ -26,7 +26,7 @@ Runner addMakeSceneCommand(CLI::App& app) {
         ->capture_default_str();
     cmd->add_option("--size", s->size, "A thesis scene size by name: " + sizes);
     cmd->add_option("--seed", s->seed, "Random seed")->capture_default_str();
-    cmd->add_option("--out", s->out, "Output .glb file")->required();
+    cmd->add_option("--out", s->out, "Output .glb file")->required()->check(outputFile());
     return [s] {
         std::size_t triangles = s->triangles;
         if (!s->size.empty()) {

@@ -159,12 +159,12 @@ Runner addRenderCommand(CLI::App& app) {
     auto s = std::make_shared<RenderRequest>();
     addSceneOptions(*cmd, s->scene, true);
     addSizeOptions(*cmd, s->width, s->height);
-    cmd->add_option("--out", s->out, "Output folder")->capture_default_str();
-    cmd->add_option("--name", s->name, "File name stem: NAME.png and NAME.exr")
-        ->capture_default_str();
+    addOutOption(*cmd, s->out, "Output folder");
+    addNameOption(*cmd, s->name, "File name stem: NAME.png and NAME.exr");
     cmd->add_option("--aliasing-map", s->aliasingMap,
                     "Also write the shadow-map texel footprint (screen pixels per texel), view "
-                    "depth and visibility per pixel to this EXR file");
+                    "depth and visibility per pixel to this EXR file")
+        ->check(outputFile());
     cmd->add_flag("--side-by-side", s->sideBySide,
                   "Render with the uniform and the TSM provider and write NAME.uniform-vs-tsm.png "
                   "(colour), .visibility.png and .footprint.png (heat map) side by side");

@@ -1,6 +1,8 @@
 #include "Commands.h"
 #include "Viewer.h"
 
+#include <base/InputFile.h>
+
 namespace fl::app {
 
 int runViewer(const SceneOptions& o, int width, int height, int frames,
@@ -27,17 +29,22 @@ Runner addViewCommand(CLI::App& app) {
     addSizeOptions(*cmd, s->width, s->height);
     cmd->add_option("--frames", s->frames, "Close after this many frames (0 = run until closed)")
         ->check(CLI::NonNegativeNumber);
-    cmd->add_option("--screenshot", s->screenshot, "With --frames: save the last frame as PNG");
+    cmd->add_option("--screenshot", s->screenshot, "With --frames: save the last frame as PNG")
+        ->check(outputFile());
     cmd->add_option("--script", s->script,
-                    "Replay input events from FILE (see app/src/InputScript.h), then close")
+                    "Replay input events from FILE (see app/src/InputScript.h; at most " +
+                        std::to_string(kTextInputLimitMiB) + " MiB), then close")
         ->check(CLI::ExistingFile);
     cmd->add_option("--screenshot-dir", *captureDir,
-                    "Folder for screenshots (P / F12 / script), default captures/");
+                    "Folder for screenshots (P / F12 / script), default captures/")
+        ->check(outputFolder());
     cmd->add_option("--record", s->record,
-                    "On exit, write the camera path walked as JSON (replay: floodlight capture)");
+                    "On exit, write the camera path walked as JSON (replay: floodlight capture)")
+        ->check(outputFile());
     cmd->add_option("--record-every", s->recordEvery, "Frames between recorded camera keys")
         ->check(CLI::PositiveNumber);
-    cmd->add_option("--fps-log", s->fpsLog, "On exit, write one CSV row of timings per frame");
+    cmd->add_option("--fps-log", s->fpsLog, "On exit, write one CSV row of timings per frame")
+        ->check(outputFile());
     cmd->add_option("--stats-every", s->statsEvery,
                     "Least frames between live comparisons with standard flooding, spaced further "
                     "to add at most ~10% frame time (0 = only on G)")

@@ -6,6 +6,8 @@
 #include <renderer/context/EglContext.h>
 #include <renderer/io/ImageIO.h>
 
+#include <base/InputFile.h>
+
 #include <jfa/CpuKernel.h>
 #include <jfa/DistanceTransform.h>
 #include <jfa/ErrorAnalysis.h>
@@ -13,9 +15,9 @@
 #include <jfa/Reference.h>
 #include <jfa/Sites.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -42,9 +44,9 @@ struct VoronoiOptions {
 };
 
 // Reads "x y" per line (blank lines and # comments skipped); names file and line on errors.
+// Regular files within kTextInputLimitMiB only (base/InputFile.h): a FIFO would be read forever.
 std::vector<jfa::Site> readPoints(const std::string& file) {
-    std::ifstream in(file);
-    if (!in) throw InputError(file + ": cannot read point file");
+    std::istringstream in(readInputFile(file, "--points", kTextInputLimitMiB));
     std::vector<jfa::Site> out;
     std::map<std::pair<float, float>, int> seen; // position -> line, to name duplicates
     std::string line;
@@ -53,15 +55,15 @@ std::vector<jfa::Site> readPoints(const std::string& file) {
         std::istringstream s(line);
         double x = 0, y = 0;
         if (!(s >> x >> y) || !std::isfinite(x) || !std::isfinite(y))
-            throw InputError(file + ":" + std::to_string(n) +
+            throw InputError("--points " + file + ":" + std::to_string(n) +
                              ": expected two finite numbers 'x y'");
         const auto [it, added] = seen.try_emplace({float(x), float(y)}, n);
         if (!added)
-            throw InputError(file + ":" + std::to_string(n) + ": duplicate of the site on line " +
-                             std::to_string(it->second));
+            throw InputError("--points " + file + ":" + std::to_string(n) +
+                             ": duplicate of the site on line " + std::to_string(it->second));
         out.push_back({float(x), float(y)});
     }
-    if (out.empty()) throw InputError(file + ": no sites");
+    if (out.empty()) throw InputError("--points " + file + ": no sites");
     return out;
 }
 
@@ -77,7 +79,7 @@ Input makeInput(const VoronoiOptions& o) {
     if (!o.mask.empty()) {
         const ByteImage img = [&] {
             try {
-                return readPng(o.mask);
+                return readPng(o.mask, "--mask");
             } catch (const std::exception& e) {
                 throw InputError(e.what());
             }
@@ -90,7 +92,7 @@ Input makeInput(const VoronoiOptions& o) {
                     img.data[(size_t(y) * size_t(img.width) + size_t(x)) * 4] > 127;
         std::vector<std::int32_t> labels;
         if (!o.labels.empty()) {
-            const ByteImage lab = readPng(o.labels);
+            const ByteImage lab = readPng(o.labels, "--labels");
             if (lab.width != img.width || lab.height != img.height)
                 throw InputError(o.labels + ": label image size differs from the mask's");
             std::map<std::uint32_t, std::int32_t> ids; // colour -> id, in order of appearance
@@ -293,6 +295,14 @@ int runVoronoi(const VoronoiOptions& o) {
         for (int y = 0; y < h; ++y)
             for (int x = 0; x < w; ++x)
                 flipped[size_t(h - 1 - y) * size_t(w) + size_t(x)] = sd.at(x, y);
+        // Every value is finite: where the mask has no outside (every pixel a site) or no inside
+        // pixel, the nearest pixel of the other kind lies beyond the grid and the field holds
+        // -/+ hypot(W, H) (jfa/DistanceTransform.h); an inf here became NaN in renderers.
+        const auto all = std::count(in.mask.begin(), in.mask.end(), std::uint8_t{1});
+        if (all == 0 || std::size_t(all) == in.mask.size())
+            std::cout << "note: the mask has no " << (all == 0 ? "inside" : "outside")
+                      << " pixel: signed_distance is " << (all == 0 ? "+" : "-")
+                      << jfa::noFeatureDistance(w, h) << " (hypot(width, height)) everywhere\n";
         const auto path = std::filesystem::path(o.out) / (o.name + ".sdf.exr");
         writeExr(path, w, h, {{"signed_distance", flipped}});
         std::cout << "wrote " << path.string() << " (negative inside the mask)\n";
@@ -315,10 +325,15 @@ Runner addVoronoiCommand(CLI::App& app) {
         ->capture_default_str();
     cmd->add_option("--seed", o->seed, "Random seed")->capture_default_str();
     cmd->add_flag("--float-sites", o->floatSites, "Sub-pixel random sites (float distances)");
-    cmd->add_option("--points", o->points, "Text file of sites, 'x y' per line (grid coordinates)");
+    const std::string pngLimit = " (at most " + std::to_string(kImageInputLimitMiB) + " MiB and " +
+                                 std::to_string(kMaxPngSide) + " pixels per side)";
+    cmd->add_option("--points", o->points,
+                    "Text file of sites, 'x y' per line (grid coordinates; at most " +
+                        std::to_string(kTextInputLimitMiB) + " MiB)");
     cmd->add_option("--mask", o->mask,
-                    "PNG whose bright pixels are generalized sites (sets the size)");
-    cmd->add_option("--labels", o->labels, "PNG giving each mask pixel a region id by colour");
+                    "PNG whose bright pixels are generalized sites (sets the size)" + pngLimit);
+    cmd->add_option("--labels", o->labels,
+                    "PNG giving each mask pixel a region id by colour" + pngLimit);
     cmd->add_option("--flood-region", o->floodRegion,
                     "band: compute only the tiles within the plan's reach of a site (the same "
                     "result, texel for texel; a plan that reaches every texel runs full); full: "
@@ -336,8 +351,8 @@ Runner addVoronoiCommand(CLI::App& app) {
         ->check(CLI::IsMember({"fragment", "compute"}))
         ->capture_default_str();
     cmd->add_flag("--compare", o->compare, "Run every variant and print times and errors");
-    cmd->add_option("--out", o->out, "Output folder")->capture_default_str();
-    cmd->add_option("--name", o->name, "Output name stem")->capture_default_str();
+    addOutOption(*cmd, o->out, "Output folder");
+    addNameOption(*cmd, o->name, "Output name stem: NAME.png, NAME.exr (and NAME.sdf.exr)");
     cmd->add_option("--shader-dir", o->shaderDir, "Load shaders from this folder");
     return [o] { return runVoronoi(*o); };
 }

@@ -171,8 +171,9 @@ class PixelGrid {
                                        std::fabs(hi.y), std::numeric_limits<double>::min()});
         u_ = std::max(std::ldexp(1.0, std::ilogb(reach) - 49),
                       std::numeric_limits<double>::denorm_min());
-        h_ = std::max(std::round(1.0 / m.scale / u_), 1.0) * u_;
-        base_ = {snap(m.origin.x - m.offset.x / m.scale), snap(m.origin.y - m.offset.y / m.scale)};
+        h_ = std::max(std::round(m.texelSize() / u_), 1.0) * u_;
+        const dvec2 corner = m.toWorld(dvec2(0.0)); // pixel (0, 0) in world coordinates
+        base_ = {snap(corner.x), snap(corner.y)};
     }
     [[nodiscard]] dvec2 at(glm::ivec2 pixel) const { return base_ + dvec2(pixel) * h_; }
 

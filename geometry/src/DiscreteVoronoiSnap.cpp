@@ -12,9 +12,12 @@ namespace fl::geom {
 glm::ivec2 TextureMapping::pixelOf(glm::dvec2 world) const {
     const glm::dvec2 t = toTexture(world);
     // floor(v + 0.5) as jfa::pixelOf; the clamp only absorbs rounding at the box's far side.
+    // Written so that NaN lands on 0 too (std::clamp passes NaN through, and casting NaN or a
+    // value past INT_MAX to int is undefined: that was an out-of-bounds write in snapSites).
     auto snap = [&](double v) {
         const double p = std::floor(v + 0.5);
-        return static_cast<int>(std::clamp(p, 0.0, double(size - 1)));
+        if (!(p > 0.0)) return 0;
+        return p < double(size - 1) ? static_cast<int>(p) : size - 1;
     };
     return {snap(t.x), snap(t.y)};
 }
@@ -50,10 +53,15 @@ TextureMapping fitTextureMapping(const std::vector<glm::dvec2>& sites, int size)
     }
     m.origin = lo;
     // One site (or all equal): any scale maps them to the centre; 1 keeps toWorld finite.
-    m.scale = longer > 0.0 ? span / longer : 1.0;
+    // Otherwise the longer side is first brought to [1, 2) by an exact power of two, so the
+    // scale is in (span / 2, span] whatever the extent: subnormal boxes (1e-309) included,
+    // where span / longer overflowed and every site became NaN in texture space.
+    m.exponent = longer > 0.0 ? -std::ilogb(longer) : 0;
+    const glm::dvec2 unit(std::ldexp(extent.x, m.exponent), std::ldexp(extent.y, m.exponent));
+    m.scale = longer > 0.0 ? span / std::max(unit.x, unit.y) : 1.0;
     // The longer side spans [0, N-1] exactly; the shorter one is centred so that the sites keep
     // the same margin to the texture border on both of its sides.
-    m.offset = (glm::dvec2(span) - extent * m.scale) * 0.5;
+    m.offset = (glm::dvec2(span) - unit * m.scale) * 0.5;
     return m;
 }
 

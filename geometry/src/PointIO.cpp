@@ -2,6 +2,8 @@
 
 #include "PointIODetail.h"
 
+#include <base/InputFile.h>
+
 #include <algorithm>
 #include <bit>
 #include <cctype>
@@ -188,21 +190,15 @@ std::string plural(std::size_t n, const char* one, const char* many) {
 
 // --- Files --------------------------------------------------------------------------------------
 
-std::string systemMessage(int err) {
-    return std::error_code(err, std::generic_category()).message();
-}
-
-std::string readWholeFile(const std::filesystem::path& path) {
-    std::FILE* f = std::fopen(path.c_str(), "rb");
-    if (f == nullptr) throw PointFileError(path.string(), "cannot open: " + systemMessage(errno));
-    std::string data;
-    char buffer[1 << 16];
-    std::size_t n = 0;
-    while ((n = std::fread(buffer, 1, sizeof buffer, f)) > 0) data.append(buffer, n);
-    const int err = std::ferror(f) ? errno : 0;
-    std::fclose(f);
-    if (err != 0) throw PointFileError(path.string(), "cannot read: " + systemMessage(err));
-    return data;
+// Regular files within the limit only (base/InputFile.h): a FIFO or device would be read forever.
+std::string readWholeFile(const std::filesystem::path& path, PointFormat format) {
+    const std::uintmax_t limit =
+        format == PointFormat::Binary ? kBinaryInputLimitMiB : kTextInputLimitMiB;
+    try {
+        return readInputFile(path, "", limit);
+    } catch (const InputFileError& e) {
+        throw PointFileError(path.string(), e.problem());
+    }
 }
 
 } // namespace
@@ -356,12 +352,12 @@ PointFormat pointFormatFromExtension(const std::filesystem::path& path) {
 }
 
 NodeFile readNodeFile(const std::filesystem::path& path) {
-    return parseNode(readWholeFile(path), path.string());
+    return parseNode(readWholeFile(path, PointFormat::Node), path.string());
 }
 
 std::vector<glm::dvec2> readPoints(const std::filesystem::path& path, PointFormat format) {
     if (format == PointFormat::Auto) format = pointFormatFromExtension(path);
-    const std::string data = readWholeFile(path);
+    const std::string data = readWholeFile(path, format);
     switch (format) {
     case PointFormat::Node:
         return parseNode(data, path.string()).points;

@@ -1,6 +1,7 @@
 #include <gpu/ShaderLibrary.h>
 
-#include <fstream>
+#include <base/InputFile.h>
+
 #include <sstream>
 #include <stdexcept>
 
@@ -13,12 +14,8 @@ ShaderLibrary::ShaderLibrary(std::optional<std::filesystem::path> dir) : dir_(st
 
 std::string ShaderLibrary::read(const std::string& name) const {
     if (dir_) {
-        const std::filesystem::path p = *dir_ / name;
-        std::ifstream in(p, std::ios::binary);
-        if (!in) throw std::runtime_error(p.string() + ": cannot read shader file");
-        std::ostringstream s;
-        s << in.rdbuf();
-        return s.str();
+        // Regular files within the text limit only (base/InputFile.h), as every user file.
+        return readInputFile(*dir_ / name, "--shader-dir", kTextInputLimitMiB);
     }
     const auto& shaders = embeddedShaders();
     const auto it = shaders.find(name);

@@ -12,8 +12,6 @@ namespace fl::jfa {
 
 namespace {
 
-constexpr float kInfinity = std::numeric_limits<float>::infinity();
-
 void checkPlan(const Plan& plan, int width, int height, const char* what) {
     if (plan.width() != width || plan.height() != height) {
         throw std::invalid_argument(std::string(what) + ": plan \"" + plan.name() +
@@ -34,12 +32,12 @@ DistanceField distancesOf(const Grid& nearest) {
     DistanceField field{nearest.width, nearest.height, {}};
     field.values.resize(nearest.cells.size());
     const NearestSite criterion{true};
+    const float none = noFeatureDistance(nearest.width, nearest.height);
     for (int y = 0; y < nearest.height; ++y) {
         for (int x = 0; x < nearest.width; ++x) {
             const Cell& c = nearest.at(x, y);
             field.values[std::size_t(y) * std::size_t(nearest.width) + std::size_t(x)] =
-                criterion.empty(c) ? kInfinity
-                                   : distanceFromSquared(NearestSite::squaredInt(x, y, c));
+                criterion.empty(c) ? none : distanceFromSquared(NearestSite::squaredInt(x, y, c));
         }
     }
     return field;
@@ -54,9 +52,10 @@ DistanceField floodDistances(const std::vector<std::uint8_t>& mask, int width, i
 DistanceField exactDistances(const std::vector<std::uint8_t>& mask, int width, int height) {
     const ExactField exact = exactIntegerEdt(seedMask(mask, width, height));
     DistanceField field{width, height, std::vector<float>(exact.distSq.size())};
+    const float none = noFeatureDistance(width, height);
     for (std::size_t i = 0; i < exact.distSq.size(); ++i) {
         const double d2 = exact.distSq[i];
-        field.values[i] = std::isinf(d2) ? kInfinity : distanceFromSquared(std::int64_t(d2));
+        field.values[i] = std::isinf(d2) ? none : distanceFromSquared(std::int64_t(d2));
     }
     return field;
 }
@@ -74,6 +73,10 @@ DistanceField combineSigned(const std::vector<std::uint8_t>& mask, const Distanc
 
 float distanceFromSquared(std::int64_t d2) {
     return static_cast<float>(std::sqrt(static_cast<double>(d2)));
+}
+
+float noFeatureDistance(int width, int height) {
+    return static_cast<float>(std::hypot(double(width), double(height)));
 }
 
 DistanceField distanceTransform(const std::vector<std::uint8_t>& mask, int width, int height,

@@ -14,6 +14,7 @@
 
 #include <glm/glm.hpp>
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
@@ -31,23 +32,34 @@ inline constexpr std::size_t kMaxDiscreteSites = std::size_t(1) << 24;
 
 /// G1's map from the sites' plane ("world") to texture space: a uniform scale (aspect kept) that
 /// fits the sites' bounding box into [0, N-1]^2, the shorter side centred.
-///   texture = (world - origin) * scale + offset,   world = (texture - offset) / scale + origin.
+///   texture = (world - origin) * 2^exponent * scale + offset,
+///   world = (texture - offset) / scale * 2^-exponent + origin.
+/// The factor 2^exponent (exact) brings the longer side of the box to [1, 2) first, so that scale
+/// stays finite and precise for any finite extent: (N-1) / 1e-309 alone overflows to infinity.
+/// For ordinary extents the result is bit for bit (world - origin) * (N-1) / extent.
 /// A site's pixel is floor(texture + 0.5) per axis, as jfa::pixelOf rounds.
 struct TextureMapping {
     glm::dvec2 origin{0.0}; // bounding-box minimum of the sites
-    double scale = 1.0;     // texels per world unit: (N-1) / longer bounding-box side (1 if 0)
+    double scale = 1.0;     // texels per 2^-exponent world units (1 for a box of extent 0)
+    int exponent = 0;       // -ilogb(longer bounding-box side); 0 for a box of extent 0
     glm::dvec2 offset{0.0}; // texture point of `origin` (centres the shorter side)
     int size = 0;           // N
 
     /// World point to texture point (continuous).
     [[nodiscard]] glm::dvec2 toTexture(glm::dvec2 world) const {
-        return (world - origin) * scale + offset;
+        const glm::dvec2 d = world - origin;
+        return glm::dvec2(std::ldexp(d.x, exponent), std::ldexp(d.y, exponent)) * scale + offset;
     }
     /// Texture point (continuous) back to world; the inverse of toTexture.
     [[nodiscard]] glm::dvec2 toWorld(glm::dvec2 texture) const {
-        return (texture - offset) / scale + origin;
+        const glm::dvec2 d = (texture - offset) / scale;
+        return glm::dvec2(std::ldexp(d.x, -exponent), std::ldexp(d.y, -exponent)) + origin;
     }
-    /// The pixel a world point snaps to, clamped into [0, N-1]^2 (only rounding can leave it).
+    /// World units per texel (rounds to 0 only for boxes within a few ulps of the smallest
+    /// subnormal).
+    [[nodiscard]] double texelSize() const { return std::ldexp(1.0 / scale, -exponent); }
+    /// The pixel a world point snaps to, clamped into [0, N-1]^2 (only rounding can leave it; a
+    /// point far outside the box, or not finite, goes to the nearest border, never past it).
     [[nodiscard]] glm::ivec2 pixelOf(glm::dvec2 world) const;
 };
 

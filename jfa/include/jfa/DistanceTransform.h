@@ -7,14 +7,20 @@
 // Distances are Euclidean, between pixel centres (integer grid points), in pixels, as floats:
 // float(sqrt(double(d2))) of the exact integer squared distance d2 the flood or reference found,
 // so a JFA value and an exact value are equal exactly when the squared distances are.
-//  * Unsigned: 0 on feature pixels, else the distance to the nearest feature pixel; +infinity
-//    everywhere if the mask has no feature pixel.
+//  * Unsigned: 0 on feature pixels, else the distance to the nearest feature pixel;
+//    noFeatureDistance(W, H) everywhere if the mask has no feature pixel.
 //  * Signed: negative inside, positive outside, never 0. An inside pixel holds minus the distance
 //    to the nearest outside pixel; an outside pixel holds plus the distance to the nearest inside
 //    pixel. The boundary runs between pixel centres, so the pixels next to it hold -1 (inside)
 //    and +1 (outside) (or -sqrt(2) / +sqrt(2) across a corner): the zero level set lies between a
 //    negative and a positive pixel, where a renderer interpolates. A mask with no outside pixel
-//    gives -infinity everywhere, one with no inside pixel +infinity everywhere.
+//    (every pixel a site) gives -noFeatureDistance(W, H) everywhere, one with no inside pixel
+//    +noFeatureDistance(W, H) everywhere.
+//  * noFeatureDistance(W, H) = hypot(W, H): the nearest pixel of the other kind lies beyond the
+//    grid, so farther than any two of its pixels are apart (at most hypot(W-1, H-1)). Its sign
+//    still says inside or outside, every value stays finite (an EXR of the field has no inf,
+//    which a renderer would turn into NaN), and no real distance in any field of that size
+//    reaches it. Pixels a plan leaves without a site hold it too.
 
 #include <jfa/CpuKernel.h>
 #include <jfa/Plan.h>
@@ -40,6 +46,8 @@ struct DistanceField {
 
 /// A distance in pixels from an exact squared integer distance: float(sqrt(double(d2))).
 float distanceFromSquared(std::int64_t d2);
+/// The value for "no feature pixel in a W x H grid" (convention above): float(hypot(W, H)).
+float noFeatureDistance(int width, int height);
 
 /// Unsigned distance transform by flooding the feature pixels with `plan` (which must be built
 /// for W x H; std::invalid_argument otherwise, or for a mask of the wrong size).

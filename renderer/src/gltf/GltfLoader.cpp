@@ -17,13 +17,14 @@
 
 #include "GltfInternal.h"
 
+#include <base/InputFile.h>
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <array>
 #include <cctype>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <new>
 
@@ -52,8 +53,9 @@ namespace {
 using gltf::cat;
 using gltf::elem;
 
-// tinygltf takes sizes as unsigned int; 1 GiB is far beyond any scene we can render.
-constexpr std::uintmax_t kMaxFileSize = std::uintmax_t{1} << 30;
+// tinygltf takes sizes as unsigned int; kSceneInputLimitMiB (1 GiB) is far beyond any scene we
+// can render.
+static_assert(kSceneInputLimitMiB <= 1024);
 // tinygltf 2.7.0 lets a GLB's BIN chunk end up to 8 bytes past the data it was given; zero
 // padding keeps such reads inside our allocation.
 constexpr std::size_t kPadding = 16;
@@ -72,29 +74,52 @@ std::string lowercase(std::string s) {
     return s;
 }
 
-/// The whole file plus kPadding zero bytes; throws SceneError when it cannot be used.
+/// "NAME: PROBLEM (PATH)", the loader's form of a file problem.
+SceneError fileError(const std::string& name, const std::filesystem::path& file,
+                     const std::string& problem) {
+    return SceneError(cat(name, ": ", problem, " (", file.string(), ")"));
+}
+
+/// The whole file plus kPadding zero bytes; throws SceneError when it cannot be used. The file
+/// checks (regular file, size limit) are base/InputFile.h's, shared by every reader.
 std::vector<unsigned char> readFile(const std::filesystem::path& file, const std::string& name,
                                     std::size_t& size) {
-    std::error_code ec;
-    const auto status = std::filesystem::status(file, ec);
-    if (!std::filesystem::exists(status))
-        throw SceneError(cat(name, ": file not found (", file.string(), ")"));
-    if (!std::filesystem::is_regular_file(status))
-        throw SceneError(cat(name, ": not a regular file (", file.string(), ")"));
+    // Checked before the extension so that a FIFO or a missing file is named as such.
+    if (const std::string problem = inputFileProblem(file, kSceneInputLimitMiB); !problem.empty())
+        throw fileError(name, file, problem);
     const std::string ext = lowercase(file.extension().string());
     if (ext != ".gltf" && ext != ".glb")
         throw SceneError(cat(name, ": unsupported file type '", ext, "' (expected .gltf or .glb)"));
-    const std::uintmax_t fileSize = std::filesystem::file_size(file, ec);
-    if (ec || fileSize > kMaxFileSize)
-        throw SceneError(cat(name, ": cannot use a file of ", ec ? 0 : fileSize, " bytes (limit ",
-                             kMaxFileSize, ")"));
+    try {
+        std::vector<unsigned char> bytes = readInputBytes(file, "", kSceneInputLimitMiB, kPadding);
+        size = bytes.size() - kPadding;
+        return bytes;
+    } catch (const InputFileError& e) {
+        throw fileError(name, file, e.problem());
+    }
+}
 
-    size = static_cast<std::size_t>(fileSize);
-    std::vector<unsigned char> bytes(size + kPadding, 0);
-    std::ifstream in(file, std::ios::binary);
-    if (!in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(size)))
-        throw SceneError(cat(name, ": cannot read (", file.string(), ")"));
-    return bytes;
+// tinygltf's file callbacks for external buffers and images: the same checks as the scene file
+// (its defaults fopen() the path, which blocks on a FIFO and reads a directory as "not found").
+// "Exists" is true for anything there, so that reading reports what is wrong with it.
+bool externalFileExists(const std::string& path, void*) {
+    std::error_code ec;
+    return std::filesystem::exists(path, ec);
+}
+
+bool readExternalFile(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                      void*) {
+    try {
+        *out = readInputBytes(path, "", kSceneInputLimitMiB);
+        return true;
+    } catch (const InputFileError& e) {
+        if (err) *err += e.problem();
+        return false;
+    }
+}
+
+std::string keepPath(const std::string& path, void*) {
+    return path;
 }
 
 /// Non-empty lines of a tinygltf message, which joins its reports with newlines.
@@ -173,6 +198,8 @@ tinygltf::Model parse(const std::filesystem::path& file, const std::string& name
     const std::vector<unsigned char> bytes = readFile(file, name, size);
     tinygltf::TinyGLTF parser;
     parser.SetImageLoader(&gltf::keepEncodedImage, nullptr);
+    parser.SetFsCallbacks(
+        {&externalFileExists, &keepPath, &readExternalFile, &tinygltf::WriteWholeFile, nullptr});
     tinygltf::Model model;
     std::string err, warn;
     const std::string baseDir = file.parent_path().string();

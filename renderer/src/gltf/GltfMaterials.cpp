@@ -13,6 +13,8 @@
 
 #include "GltfInternal.h"
 
+#include <base/InputFile.h>
+
 #include <stb_image.h>
 
 #include <algorithm>
@@ -66,10 +68,10 @@ ByteSpan encodedBytes(const Context& ctx, std::size_t index) {
     if (image.bufferView >= 0) return bufferViewBytes(ctx, image.bufferView, element);
     if (!image.image.empty()) return {image.image.data(), image.image.size()};
     if (image.uri.empty() || isDataUri(image.uri)) ctx.fail(element, "no image data");
-    std::error_code ec;
-    const bool exists = std::filesystem::exists(ctx.baseDir() / image.uri, ec);
-    ctx.fail(element,
-             cat("image file '", image.uri, "' ", exists ? "is empty or unreadable" : "not found"));
+    // The same checks tinygltf's read went through (GltfLoader.cpp): say which one failed.
+    const std::string problem = inputFileProblem(ctx.baseDir() / image.uri, kSceneInputLimitMiB);
+    ctx.fail(element, cat("image file '", image.uri,
+                          "': ", problem.empty() ? "empty or unreadable" : problem));
 }
 
 /// Decodes used images once and maps glTF image indices to Scene::images indices.

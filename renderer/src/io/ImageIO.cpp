@@ -1,5 +1,8 @@
 #include <renderer/io/ImageIO.h>
 
+#include <base/InputFile.h>
+#include <base/Text.h>
+
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
@@ -19,6 +22,7 @@
 #endif
 #include <stb_image_write.h>
 
+#include <climits>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -145,11 +149,22 @@ void writePng(const std::filesystem::path& path, const ByteImage& image) {
     commit(tmp, path);
 }
 
-ByteImage readPng(const std::filesystem::path& path) {
+ByteImage readPng(const std::filesystem::path& path, std::string_view role) {
+    // The bytes through base/InputFile.h (regular files within kImageInputLimitMiB), then the
+    // size from the header before decoding: a small PNG can claim a huge image.
+    const std::vector<unsigned char> bytes = readInputBytes(path, role, kImageInputLimitMiB);
+    const std::string name = role.empty() ? path.string() : cat(role, " ", path.string());
+    if (bytes.size() > static_cast<std::size_t>(INT_MAX))
+        throw std::runtime_error(name + ": cannot read PNG: file too large");
+    const int length = static_cast<int>(bytes.size());
     int w = 0, h = 0, n = 0;
-    stbi_uc* pixels = stbi_load(path.c_str(), &w, &h, &n, 4);
-    if (!pixels)
-        throw std::runtime_error(path.string() + ": cannot read PNG: " + stbi_failure_reason());
+    if (stbi_info_from_memory(bytes.data(), length, &w, &h, &n) &&
+        (w > kMaxPngSide || h > kMaxPngSide))
+        throw std::runtime_error(cat(name, ": image of ", w, "x", h,
+                                     " is larger than the limit of ", kMaxPngSide,
+                                     " pixels per side"));
+    stbi_uc* pixels = stbi_load_from_memory(bytes.data(), length, &w, &h, &n, 4);
+    if (!pixels) throw std::runtime_error(name + ": cannot read PNG: " + stbi_failure_reason());
     ByteImage out{w, h, 4,
                   std::vector<std::uint8_t>(pixels, pixels + static_cast<size_t>(w) * h * 4)};
     stbi_image_free(pixels);

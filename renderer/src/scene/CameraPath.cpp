@@ -2,12 +2,11 @@
 
 #include <renderer/io/ImageIO.h>
 
+#include <base/InputFile.h>
+
 #include <geometry/Framing.h>
 
 #include <nlohmann/json.hpp>
-
-#include <fstream>
-#include <sstream>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -169,13 +168,13 @@ CameraPath parseCameraPath(const std::string& jsonText) {
     }
 }
 
-CameraPath readCameraPath(const std::filesystem::path& file) {
+CameraPath readCameraPath(const std::filesystem::path& file, std::string_view role) {
     const std::string name = file.string();
-    std::ifstream in(file);
-    if (!in) throw std::runtime_error(name + ": cannot open");
+    // Regular files within the text limit only (base/InputFile.h); InputFileError names them.
+    const std::string text = readInputFile(file, role, kTextInputLimitMiB);
     nlohmann::json j;
     try {
-        j = nlohmann::json::parse(in);
+        j = nlohmann::json::parse(text);
     } catch (const nlohmann::json::parse_error& e) {
         throw std::runtime_error(name + ": not valid JSON: " + e.what());
     }

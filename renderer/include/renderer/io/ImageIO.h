@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace fl {
@@ -45,8 +46,11 @@ ByteImage toSrgb8(const FloatImage& linear);
 
 /// Writes an 8-bit PNG; throws std::runtime_error naming the path on failure.
 void writePng(const std::filesystem::path& path, const ByteImage& image);
-/// Reads a PNG as 8-bit RGBA; throws std::runtime_error naming the path on failure.
-ByteImage readPng(const std::filesystem::path& path);
+/// The largest PNG readPng decodes, per side (the flood grids' limit; 1 GiB of RGBA).
+inline constexpr int kMaxPngSide = 16384;
+/// Reads a PNG as 8-bit RGBA; throws std::runtime_error "ROLE PATH: problem" on failure
+/// (fl::InputFileError for a file that is missing, not regular or over kImageInputLimitMiB).
+ByteImage readPng(const std::filesystem::path& path, std::string_view role = {});
 
 /// One named float channel of an EXR file, width*height values, row 0 at the top.
 struct ExrChannel {

@@ -8,6 +8,7 @@
 #include <renderer/scene/Scene.h>
 
 #include <filesystem>
+#include <string_view>
 #include <vector>
 
 namespace fl {
@@ -47,8 +48,9 @@ class CameraPath {
 /// Reads a camera path from JSON: {"fov": degrees (optional, default 50), "interpolation":
 /// "catmull-rom" | "linear" (optional), "keys": [{"eye": [x, y, z], "target": [x, y, z]}, ...]}
 /// with at least two keys. Throws std::runtime_error "FILE: FIELD: problem" for a missing or
-/// malformed field.
-CameraPath readCameraPath(const std::filesystem::path& file);
+/// malformed field; fl::InputFileError (a runtime_error, "ROLE FILE: problem") for a file that is
+/// missing, not a regular file or over kTextInputLimitMiB. `role` names the option or field.
+CameraPath readCameraPath(const std::filesystem::path& file, std::string_view role = {});
 /// The same from JSON text (e.g. an object inside a capture script); other members of the object
 /// are ignored. Throws std::runtime_error "FIELD: problem".
 CameraPath parseCameraPath(const std::string& jsonText);

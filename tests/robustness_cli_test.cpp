@@ -1,0 +1,195 @@
+// Issue 16, "fix every class at its root", through the real binary: every reader of a user file
+// refuses a FIFO, a directory and a missing file with one line naming the option or role, the
+// path and the problem (exit 1); an all-site mask writes a finite signed distance; points of a
+// subnormal extent triangulate; --out and --name are checked once for every command (exit 2).
+// Every command runs under `timeout`, so a reader that blocks again fails here instead of hanging.
+
+#include "CliRun.h"
+#include "TestPaths.h"
+
+#include <renderer/io/ImageIO.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <sys/stat.h>
+
+namespace fl::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+Outcome run(const std::string& args) {
+    return runCommand("timeout 120 " + std::string(FLOODLIGHT_BINARY) + " " + args);
+}
+
+fs::path dir() {
+    return outputDir("robustness_cli");
+}
+
+// A FIFO at dir()/name (replacing whatever was there): reading it would block forever.
+fs::path fifo(const std::string& name) {
+    const fs::path p = dir() / name;
+    std::error_code ec;
+    fs::remove_all(p, ec);
+    EXPECT_EQ(::mkfifo(p.c_str(), 0600), 0) << p;
+    return p;
+}
+
+// A directory at dir()/name.
+fs::path folder(const std::string& name) {
+    const fs::path p = dir() / name;
+    std::error_code ec;
+    fs::remove_all(p, ec);
+    fs::create_directories(p);
+    return p;
+}
+
+void expectRefused(const Outcome& r, const std::string& message, int code = 1) {
+    EXPECT_EQ(r.code, code) << r.output;
+    EXPECT_NE(r.output.find(message), std::string::npos) << "expected: " << message << "\n"
+                                                         << r.output;
+}
+
+TEST(RobustnessCli, EveryReaderRefusesAFifo) {
+    const std::string out = " --out " + dir().string();
+    const fs::path script = fifo("script.json");
+    expectRefused(run("capture " + script.string() + out),
+                  "capture script " + script.string() + ": not a regular file (a FIFO)");
+    const fs::path points = fifo("points.txt");
+    expectRefused(run("voronoi --backend cpu --points " + points.string() + out),
+                  "--points " + points.string() + ": not a regular file (a FIFO)");
+    const fs::path mask = fifo("mask.png");
+    expectRefused(run("voronoi --backend cpu --mask " + mask.string() + out),
+                  "--mask " + mask.string() + ": not a regular file (a FIFO)");
+    for (const char* name : {"points.node", "points.xy", "points.f64"}) {
+        const fs::path p = fifo(name);
+        expectRefused(run("delaunay " + p.string()), p.string() + ": not a regular file (a FIFO)");
+    }
+    const fs::path scene = fifo("scene.glb");
+    expectRefused(run("render --scene " + scene.string() + out),
+                  "scene.glb: not a regular file (a FIFO)");
+    const fs::path path = fifo("path.json");
+    expectRefused(
+        run("compare --method jfa-l --width 32 --height 32 --path " + path.string() + out),
+        "--path " + path.string() + ": not a regular file (a FIFO)");
+}
+
+TEST(RobustnessCli, DirectoriesAndMissingFilesAreNamedAsSuch) {
+    const std::string out = " --out " + dir().string();
+    // A directory given as a camera file gave "basic_filebuf::underflow".
+    const fs::path cameras = folder("cameras.json");
+    const fs::path script = dir() / "dir_camera.json";
+    std::ofstream(script) << R"({"camera": {"frames": 2, "file": ")" << cameras.string()
+                          << R"("}, "methods": ["hard"]})";
+    expectRefused(run("capture " + script.string() + out),
+                  "camera.file: " + cameras.string() + ": not a regular file (a directory)");
+    expectRefused(
+        run("compare --method jfa-l --width 32 --height 32 --path " + cameras.string() + out),
+        "--path " + cameras.string() + ": not a regular file (a directory)");
+    const fs::path labels = folder("labels.png");
+    const fs::path mask = dir() / "mask.png";
+    writePng(mask, ByteImage{4, 4, 4, std::vector<std::uint8_t>(4 * 4 * 4, 255)});
+    expectRefused(
+        run("voronoi --backend cpu --mask " + mask.string() + " --labels " + labels.string() + out),
+        "--labels " + labels.string() + ": not a regular file (a directory)");
+    // The loader said "file not found" for files that exist but are not regular.
+    const fs::path scene = folder("folder.gltf");
+    const Outcome r = run("render --scene " + scene.string() + out);
+    expectRefused(r, "folder.gltf: not a regular file (a directory)");
+    EXPECT_EQ(r.output.find("not found"), std::string::npos) << r.output;
+    const fs::path missing = dir() / "missing.xy";
+    fs::remove(missing);
+    expectRefused(run("delaunay " + missing.string()), missing.string() + ": does not exist");
+}
+
+TEST(RobustnessCli, OversizedInputsAreRefusedAndTheLimitsAreInTheHelp) {
+    const fs::path big = dir() / "big.xy";
+    { std::ofstream(big) << "0 0\n"; }
+    fs::resize_file(big, (std::uintmax_t{64} << 20) + 1); // sparse
+    expectRefused(run("delaunay " + big.string()),
+                  big.string() + ": larger than the limit of 64 MiB");
+    expectRefused(
+        run("voronoi --backend cpu --points " + big.string() + " --out " + dir().string()),
+        "--points " + big.string() + ": larger than the limit of 64 MiB");
+    fs::remove(big);
+    const std::pair<const char*, const char*> helps[] = {
+        {"capture --help", "64 MiB"},  {"view --help", "64 MiB"},
+        {"compare --help", "64 MiB"},  {"delaunay --help", "256 MiB"},
+        {"voronoi --help", "256 MiB"}, {"render --help", "1024 MiB"}};
+    for (const auto& [cmd, limit] : helps) {
+        const Outcome r = run(cmd);
+        EXPECT_EQ(r.code, 0) << cmd;
+        EXPECT_NE(r.output.find(limit), std::string::npos) << cmd << "\n" << r.output;
+    }
+}
+
+// Bug: an all-site mask (every pixel inside) wrote -inf into NAME.sdf.exr and exited 0. The
+// field now holds -hypot(W, H) there (jfa/DistanceTransform.h), on both flood backends.
+TEST(RobustnessCli, AllSiteMaskWritesAFiniteSignedDistance) {
+    const fs::path mask = dir() / "all_sites.png";
+    writePng(mask, ByteImage{12, 5, 4, std::vector<std::uint8_t>(12 * 5 * 4, 255)});
+    for (const char* backend : {"cpu", "gl"}) {
+        const std::string name = std::string("all_") + backend;
+        const Outcome r = run("voronoi --backend " + std::string(backend) + " --mask " +
+                              mask.string() + " --out " + dir().string() + " --name " + name);
+        ASSERT_EQ(r.code, 0) << r.output;
+        EXPECT_NE(r.output.find("the mask has no outside pixel"), std::string::npos) << r.output;
+        int w = 0, h = 0;
+        const auto channels = readExr(dir() / (name + ".sdf.exr"), w, h);
+        ASSERT_EQ(channels.size(), 1u);
+        ASSERT_EQ(w * h, 60);
+        for (const float v : channels[0].values) ASSERT_EQ(v, -13.0f) << backend; // hypot(12, 5)
+    }
+}
+
+// Bug: `delaunay` crashed (SIGSEGV in snapSites) on coordinates around 1e-307 .. 1e-309.
+TEST(RobustnessCli, DelaunayOfSubnormalExtentDoesNotCrash) {
+    for (const char* unit : {"1e-305", "1e-307", "1e-308", "1e-309", "1e-320"}) {
+        const fs::path p = dir() / (std::string("tiny_") + unit + ".xy");
+        {
+            std::ofstream f(p);
+            for (const char* xy : {"0 0", "3 1", "1 4", "5 5", "2 2", "7 3"}) {
+                const std::string s(xy);
+                const auto space = s.find(' ');
+                f << s.substr(0, space) << unit << " " << s.substr(space + 1) << unit << "\n";
+            }
+        }
+        for (const char* backend : {"cpu", "gl"}) {
+            const Outcome r = run("delaunay " + p.string() + " --check --backend " + backend);
+            EXPECT_EQ(r.code, 0) << unit << " " << backend << "\n" << r.output;
+            EXPECT_NE(r.output.find("check: ok"), std::string::npos) << r.output;
+        }
+    }
+}
+
+TEST(RobustnessCli, OutputNamesStayInsideOut) {
+    const std::string out = dir().string();
+    const std::pair<std::string, std::string> cases[] = {
+        {"render --out " + out + " --name ../../x", "--name"},
+        {"render --out " + out + " --name sub/x", "--name"},
+        {"render --out " + out + " --name ''", "--name"},
+        {"render --out '' --name x", "--out"},
+        {"render --out " + out + " --name .hidden", "--name"},
+        {"voronoi --out " + out + " --name ../x", "--name"},
+        {"voronoi --out '' --name x", "--out"},
+        {"capture examples/capture/short.json --out ''", "--out"},
+        {"compare --method jfa-l --out ''", "--out"},
+        {"make-scene --out ''", "--out"},
+        {"delaunay x.xy --out " + out + "/", "--out"},
+        {"delaunay x.xy --steps ''", "--steps"},
+    };
+    for (const auto& [args, option] : cases) {
+        const Outcome r = run(args);
+        EXPECT_EQ(r.code, 2) << args << "\n" << r.output;
+        EXPECT_NE(r.output.find(option), std::string::npos) << args << "\n" << r.output;
+    }
+    EXPECT_FALSE(fs::exists(fs::path(out).parent_path().parent_path() / "x.png"));
+}
+
+} // namespace
+} // namespace fl::test
