@@ -27,7 +27,20 @@ int main(int argc, char** argv) {
     app.add_option("--save", saveDir,
                    "Write each frame's visibility and the closed form here (caseK.METHOD.png, "
                    "caseK.exact.png; grey)");
+    std::vector<std::string> sets;
+    app.add_option("--set", sets,
+                   "A method option for every method that takes it, as FLAG=VALUE (repeatable; "
+                   "e.g. --set --occluder-points=centre)");
     CLI11_PARSE(app, argc, argv);
+    fl::MethodOptions options;
+    for (const std::string& kv : sets) {
+        const std::size_t eq = kv.find('=');
+        if (eq == std::string::npos || kv.rfind("--", 0) != 0) {
+            std::cerr << "error: --set " << kv << ": expected --FLAG=VALUE\n";
+            return 2;
+        }
+        options.set(kv.substr(0, eq), kv.substr(eq + 1));
+    }
     try {
         auto ctx = fl::EglContext::create(false);
         const fl::gl::ShaderLibrary shaders;
@@ -44,6 +57,9 @@ int main(int argc, char** argv) {
                 fl::RenderSettings s;
                 s.shadow.size = shadowMap;
                 s.method = std::string(m.name);
+                for (const fl::MethodOption* o : m.options)
+                    if (options.has(o->flag))
+                        s.options.set(o->flag, options.values().find(o->flag)->second);
                 const fl::ClosedFormFrame f = fl::renderClosedForm(shaders, c, s, size);
                 const fl::FloatImage& visibility = f.visibility;
                 const fl::ClosedFormError& e = f.error;

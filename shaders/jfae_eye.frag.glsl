@@ -5,13 +5,19 @@
 // at the pixel's shadow-map texel (the receiver position the shadow pass stored there) with that
 // surface's object id. Phase 3 records the occluder of boundary pixels from here, so a boundary
 // pixel's occluder is by construction the surface that puts it in hard shadow, not a guess from
-// the shadow map's silhouettes (Arvo et al.'s condition (2), which the thesis drops).
+// the shadow map's silhouettes (Arvo et al.'s condition (2), which the thesis drops). With
+// uOccluderEdges, an occluder texel at a silhouette gives its edge point instead of its centre
+// (occluder_edge.glsl says why); off, the thesis' texel centre.
 #include "shadow_lookup.glsl"
+#include "disk_light.glsl"
+#include "occluder_edge.glsl"
 
 layout(binding = 0) uniform sampler2D uPosition; // SurfacesPass: world xyz, w = 0 background
 layout(binding = 2) uniform sampler2D uReceivers;
 layout(binding = 3) uniform sampler2D uLightObjectIds;
 uniform int uHaveObjectIds;
+uniform int uOccluderEdges;
+uniform float uSilhouetteThreshold;
 
 layout(location = 0) out vec4 oPoint;
 layout(location = 1) out vec4 oOccluder;
@@ -37,6 +43,10 @@ void main() {
         ivec2 size = textureSize(uReceivers, 0);
         ivec2 t = clamp(ivec2(uvz.xy * vec2(size)), ivec2(0), size - 1);
         float id = uHaveObjectIds != 0 ? texelFetch(uLightObjectIds, t, 0).r : -1.0;
-        oOccluder = vec4(texelFetch(uReceivers, t, 0).xyz, id);
+        // Only hard-shadowed pixels' occluders are read (phase 3, the object-ID fix).
+        vec3 o = uOccluderEdges != 0 && lit < 0.5
+                     ? occluderEdgePoint(uReceivers, t, uSilhouetteThreshold)
+                     : texelFetch(uReceivers, t, 0).xyz;
+        oOccluder = vec4(o, id);
     }
 }

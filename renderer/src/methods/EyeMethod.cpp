@@ -21,6 +21,9 @@ class EyeMethod final : public ShadowMethod {
         es.objectIdFix = !in.flag("noObjectIdFix");
         es.midpointFix = !in.flag("noMidpointFix");
         es.boundaryThreshold = in.real("boundaryThreshold");
+        es.occluderPoints = in.text("occluderPoints") == "centre" ? OccluderPoints::TexelCentre
+                                                                  : OccluderPoints::Edge;
+        es.silhouetteThreshold = silhouetteThreshold(in.sceneBounds.radius());
         const int passes = requestedPasses(in.method, in.options, in.shadow.depth.width(),
                                            in.width(), in.height());
         const jfa::FloodRegion region = floodRegion(in.options);

@@ -86,6 +86,17 @@ constexpr MethodOption kBoundaryThreshold{
     "0 = 6 pixel footprints",
     0.0,
     1e6};
+constexpr MethodOption kOccluderPoints{
+    "--occluder-points",
+    "occluderPoints",
+    OptionKind::Choice,
+    "edge",
+    "Where a shadowed pixel's occluder point lies: edge = moved half a shadow-map texel toward "
+    "the silhouette's edge (halves the lit-side bias on straight edges); centre = the occluder "
+    "texel's centre (the thesis; penumbrae come out about 0.04 too bright)",
+    0,
+    0,
+    "edge|centre"};
 constexpr MethodOption kPcfKernel{
     "--pcf-kernel",
     "kernel",
@@ -149,8 +160,8 @@ constexpr MethodOption kVsmBleed{"--vsm-bleed",
 constexpr const MethodOption* kLightFloodOptions[] = {&kPasses, &kFullJfa, &kFloodRegion,
                                                       &kBandTile};
 constexpr const MethodOption* kEyeFloodOptions[] = {
-    &kPasses,        &kFullJfa,       &kFloodRegion,      &kBandTile,
-    &kNoObjectIdFix, &kNoMidpointFix, &kBoundaryThreshold};
+    &kPasses,        &kFullJfa,       &kFloodRegion,       &kBandTile,
+    &kNoObjectIdFix, &kNoMidpointFix, &kBoundaryThreshold, &kOccluderPoints};
 constexpr const MethodOption* kPcfOptions[] = {&kPcfKernel};
 constexpr const MethodOption* kPcssOptions[] = {&kPcssPreset};
 constexpr const MethodOption* kGroundTruthOptions[] = {&kReferenceSamples, &kReferenceMapSize};

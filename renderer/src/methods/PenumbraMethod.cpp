@@ -3,6 +3,7 @@
 
 #include "LightLookup.h"
 
+#include <renderer/soft/OccluderEdge.h>
 #include <renderer/soft/PenumbraMap.h>
 
 #include <algorithm>
@@ -31,7 +32,7 @@ class PenumbraMethod final : public ShadowMethod {
             penumbraReach(in.disk, in.shadow.mapViewProj(), {size, size}, in.sceneBounds);
         // A silhouette needs a depth step of a thousandth of the scene: smaller steps are the
         // receiver's own slope, not an occluder's edge.
-        const float threshold = 0.001f * std::max(in.sceneBounds.radius(), 1e-3f);
+        const float threshold = silhouetteThreshold(in.sceneBounds.radius());
         const PenumbraMapPass::Outputs pm =
             pass_.execute({*in.shadow.receivers, in.disk, ps, threshold, reach}, in.timer);
         flood_ = {&pm.seeds,

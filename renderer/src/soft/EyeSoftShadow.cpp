@@ -202,6 +202,9 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::Pass
         glViewport(0, 0, in.width, in.height);
         glDisable(GL_DEPTH_TEST);
         eyePass_.set("uHaveObjectIds", in.settings.objectIdFix ? 1 : 0);
+        eyePass_.set("uOccluderEdges", in.settings.occluderPoints == OccluderPoints::Edge ? 1 : 0);
+        eyePass_.set("uSilhouetteThreshold", in.settings.silhouetteThreshold);
+        setDiskLightUniforms(eyePass_, in.light);
         bindShadowMap(eyePass_, in.shadow);
         glBindTextureUnit(0, in.positions.id());
         glBindTextureUnit(2, in.shadow.receivers->id());

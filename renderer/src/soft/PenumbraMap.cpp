@@ -1,3 +1,4 @@
+#include <renderer/soft/OccluderEdge.h>
 #include <renderer/soft/PenumbraMap.h>
 
 #include <jfa/CpuKernel.h>
@@ -31,36 +32,20 @@ jfa::Plan penumbraPlan(const PenumbraSettings& settings, int size) {
     return jfa::Plan("JFA " + std::to_string(settings.passes) + " passes", {stage});
 }
 
-namespace {
-constexpr float kSilhouetteSlope = 3.0f; // shaders/silhouette.frag.glsl
-float lightDepth(const DiskLight& l, glm::vec3 p) {
-    return (p.x - l.center.x) * l.normal.x + (p.y - l.center.y) * l.normal.y +
-           (p.z - l.center.z) * l.normal.z;
-}
-} // namespace
-
 jfa::Grid silhouetteSeeds(const ReceiverGrid& r, const DiskLight& light, float threshold) {
     jfa::Grid out(r.width, r.height, jfa::kEmptyCell);
     for (int y = 0; y < r.height; ++y)
         for (int x = 0; x < r.width; ++x) {
             const glm::vec4& self = r.at(x, y);
             if (self.w == 0.0f) continue;
-            const float d = lightDepth(light, glm::vec3(self));
             bool silhouette = false;
             for (int j = -1; j <= 1; ++j)
                 for (int i = -1; i <= 1; ++i) {
                     const int qx = x + i, qy = y + j;
                     if ((i == 0 && j == 0) || qx < 0 || qy < 0 || qx >= r.width || qy >= r.height)
                         continue;
-                    const glm::vec4& n = r.at(qx, qy);
-                    const float deeper = lightDepth(light, glm::vec3(n)) - d;
-                    // Same operations as shaders/silhouette.frag.glsl (see there for why).
-                    const float ax = (n.x - self.x) - deeper * light.normal.x;
-                    const float ay = (n.y - self.y) - deeper * light.normal.y;
-                    const float az = (n.z - self.z) - deeper * light.normal.z;
-                    const float lateral2 = ax * ax + ay * ay + az * az;
-                    const float allowed = threshold + kSilhouetteSlope * std::sqrt(lateral2);
-                    silhouette = silhouette || n.w == 0.0f || deeper > allowed;
+                    silhouette =
+                        silhouette || acrossSilhouette(light, self, r.at(qx, qy), threshold);
                 }
             if (silhouette) out.at(x, y) = {self.x, self.y, self.z, 1.0f};
         }

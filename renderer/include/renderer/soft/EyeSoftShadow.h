@@ -16,6 +16,7 @@
 #include <renderer/passes/ShadowMapPass.h>
 #include <renderer/scene/GpuScene.h>
 #include <renderer/soft/DiskLight.h>
+#include <renderer/soft/OccluderEdge.h>
 #include <renderer/soft/PenumbraReach.h>
 
 #include <jfa/Grid.h>
@@ -42,6 +43,11 @@ struct EyeSoftSettings {
     /// Boundary test (phase 3): a lit neighbour counts if nearer in 3D than this many world
     /// units; 0 = kBoundaryFootprints pixel footprints at the pixel's distance from the eye.
     float boundaryThreshold = 0.0f;
+    /// Where a boundary pixel's occluder point lies (OccluderEdge.h): at the shadow map's
+    /// silhouette edge, or the thesis' texel centre.
+    OccluderPoints occluderPoints = OccluderPoints::Edge;
+    /// Depth jump that makes a silhouette edge (silhouetteThreshold(scene radius)).
+    float silhouetteThreshold = 1e-3f;
 };
 
 /// Footprints of the automatic boundary threshold: wide enough for a floor seen at ~80 degrees
