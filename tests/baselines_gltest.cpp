@@ -200,7 +200,7 @@ TEST_F(BaselinesTest, ReferenceMatchesCpuRayCastToTheSameSamples) {
     const ReferenceShadowPass::Outputs out = setup.pass.execute(setup.inputs(rs));
     const FloatImage vis = readTexture(out.visibility, 1);
     const FloatImage points = readTexture(surfaces.positions(), 4);
-    const std::vector<glm::vec3> samples = referenceDiskSamples(b.disk, rs.samples);
+    const std::vector<glm::vec3> samples = referenceDiskSamples(b.disk, rs.samples, rs.pattern);
     std::size_t surface = 0, partial = 0, exact = 0, within = 0;
     double sumAbs = 0.0;
     for (int y = 0; y < size; ++y)

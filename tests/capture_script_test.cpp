@@ -110,7 +110,10 @@ TEST(CaptureScript, TheReferenceIsChosenByKind) {
     EXPECT_EQ(referenceText(rays.reference), "raytrace: 64 shadow rays per pixel (Embree)");
     const CaptureScript maps = parse(script(R"(, "reference": {"kind": "maps", "mapSize": 512})"));
     EXPECT_EQ(maps.reference.method().name, "reference");
-    EXPECT_EQ(referenceText(maps.reference), "maps: 256 point-light shadow maps of 512^2");
+    EXPECT_EQ(referenceText(maps.reference), "maps: 256 point-light shadow maps of 512^2 (spiral)");
+    const CaptureScript grid = parse(script(R"(, "reference": {"pattern": "grid"})"));
+    EXPECT_EQ(grid.reference.pattern, "grid");
+    EXPECT_EQ(referenceText(grid.reference), "maps: 256 point-light shadow maps of 2048^2 (grid)");
     // The default is the shadow-map ground truth (the faster one on this machine).
     EXPECT_EQ(parse(script()).reference.kind, "maps");
 }
@@ -174,6 +177,9 @@ TEST(CaptureScript, EveryMalformedFieldIsNamed) {
         {script(R"(, "reference": {"kind": "photons"})"), "reference.kind"},
         {script(R"(, "reference": {"kind": 2})"), "reference.kind"},
         {script(R"(, "reference": {"kind": "raytrace", "mapSize": 512})"), "reference.mapSize"},
+        {script(R"(, "reference": {"pattern": "halton"})"), "reference.pattern"},
+        {script(R"(, "reference": {"pattern": 3})"), "reference.pattern"},
+        {script(R"(, "reference": {"kind": "raytrace", "pattern": "grid"})"), "reference.pattern"},
         {script(R"(, "reference": {"kind": "raytrace", "samples": 100000})"), "reference.samples"},
         {script(R"(, "saveFrames": "yes")"), "saveFrames"},
         {script(R"(, "frames": 3)"), "script.frames"},

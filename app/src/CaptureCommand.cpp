@@ -289,6 +289,8 @@ int runCapture(const CaptureRequest& req) {
         setup.reference.options.set(truth.option("samples")->flag, script.reference.samples);
         if (const MethodOption* mapSize = truth.option("mapSize"))
             setup.reference.options.set(mapSize->flag, script.reference.mapSize);
+        if (const MethodOption* pattern = truth.option("pattern"))
+            setup.reference.options.set(pattern->flag, script.reference.pattern);
     }
 
     CaptureResults results;

@@ -100,6 +100,7 @@ nlohmann::json resultsSummary(const CaptureResults& r) {
                       {"samples", s.reference.samples},
                       {"medianFrameMs", fl::median(r.referenceFrameMs)}};
     if (s.reference.method().option("mapSize")) j["reference"]["mapSize"] = s.reference.mapSize;
+    if (s.reference.method().option("pattern")) j["reference"]["pattern"] = s.reference.pattern;
     j["definitions"] = {
         {"receivers", "the pixels counted: visible surfaces facing the light (N.L > 0), where the "
                       "visibility changes the image"},

@@ -232,7 +232,7 @@ CaptureScript parseCaptureScript(const std::string& text, const std::filesystem:
         }
         if (j.contains("reference")) {
             const Json& r = j["reference"];
-            checkKeys(r, "reference", {"kind", "samples", "mapSize"});
+            checkKeys(r, "reference", {"kind", "samples", "mapSize", "pattern"});
             if (r.contains("kind")) {
                 if (!r["kind"].is_string())
                     fail("reference.kind", "expected \"" + groundTruthKinds() + "\"");
@@ -255,6 +255,17 @@ CaptureScript parseCaptureScript(const std::string& text, const std::filesystem:
                          "the " + s.reference.kind + " reference does not take it");
                 *value = readInt(r[key], std::string("reference.") + key, static_cast<int>(o->min),
                                  static_cast<int>(o->max));
+            }
+            if (r.contains("pattern")) {
+                const MethodOption* o = truth.option("pattern");
+                if (!o)
+                    fail("reference.pattern",
+                         "the " + s.reference.kind + " reference does not take it");
+                if (!r["pattern"].is_string())
+                    fail("reference.pattern", "expected \"" + std::string(o->choices) + "\"");
+                s.reference.pattern = r["pattern"].get<std::string>();
+                if (const std::string bad = checkOptionValue(*o, s.reference.pattern); !bad.empty())
+                    fail("reference.pattern", bad);
             }
         }
         if (!j.contains("methods")) fail("methods", "missing (a list of method names)");
@@ -306,7 +317,8 @@ CaptureScript readCaptureScript(const std::filesystem::path& file) {
 
 std::string referenceText(const CaptureScript::Reference& r) {
     if (r.method().option("mapSize"))
-        return cat(r.kind, ": ", r.samples, " point-light shadow maps of ", r.mapSize, "^2");
+        return cat(r.kind, ": ", r.samples, " point-light shadow maps of ", r.mapSize, "^2 (",
+                   r.pattern, ")");
     return cat(r.kind, ": ", r.samples, " shadow rays per pixel (Embree)");
 }
 

@@ -12,10 +12,11 @@
 //    "resolutions": [[W, H], ...],                         // default [[512, 512]]
 //    "shadowMap": {"provider": "uniform" | "tsm", "size": S},
 //    "jfaPasses": P | "auto",                              // default "auto" (as --jfa-passes)
-//    "reference": {"kind": "maps" | "raytrace", "samples": N, "mapSize": S},
+//    "reference": {"kind": "maps" | "raytrace", "samples": N, "mapSize": S,
+//                  "pattern": "spiral" | "grid" | "jittered"},
 //                                                          // the ground truth every metric is
 //                                                          // measured against (default maps);
-//                                                          // mapSize for maps only
+//                                                          // mapSize, pattern: maps only
 //    "methods": ["hard", "pcss:16/24", "pcf:5", {"method": "jfa-l", "passes": 7, "label": ".."}],
 //                                                          // keys: the method's options in the
 //                                                          // method table ("name:V" sets its
@@ -64,7 +65,8 @@ struct CaptureScript {
     struct Reference {
         std::string kind = "maps";
         int samples = 256;
-        int mapSize = 2048; // maps only
+        int mapSize = 2048;             // maps only
+        std::string pattern = "spiral"; // maps only: --reference-pattern
         /// Its row of the method table.
         [[nodiscard]] const MethodDescriptor& method() const { return groundTruth(kind); }
     } reference;

@@ -17,6 +17,7 @@ class GroundTruth final : public ShadowMethod {
         ReferenceSettings rs;
         rs.samples = in.integer("samples");
         rs.mapSize = in.integer("mapSize");
+        rs.pattern = geom::diskPatternNamed(in.text("pattern"));
         return pass_
             .execute(
                 {in.scene, in.surfaces.position, in.sceneBounds, in.disk, in.shadowSettings, rs},

@@ -128,6 +128,17 @@ constexpr MethodOption kReferenceMapSize{"--reference-map-size",
                                          "Texels per side of each point light's shadow map",
                                          16,
                                          8192};
+constexpr MethodOption kReferencePattern{
+    "--reference-pattern",
+    "pattern",
+    OptionKind::Choice,
+    "spiral",
+    "Where the point lights sit on the disk: spiral = Vogel's golden-angle spiral (every straight "
+    "edge splits it evenly); grid = the stratified grid's cell centres (bands along edges parallel "
+    "to its rows); jittered = one fixed random point per cell",
+    0,
+    0,
+    "spiral|grid|jittered"};
 
 constexpr MethodOption kRaySamples{"--raytrace-samples",
                                    "samples",
@@ -139,7 +150,8 @@ constexpr MethodOption kRaySamples{"--raytrace-samples",
 constexpr MethodOption kRayGrid{
     "--raytrace-grid", "grid", OptionKind::Flag, "false",
     "Rays to the strata's centres, the same points for every pixel (as the shadow-map reference "
-    "places its lights; bands along straight edges), instead of one random point per stratum"};
+    "places its lights with --reference-pattern grid; bands along straight edges), instead of one "
+    "random point per stratum"};
 constexpr MethodOption kVsmBlur{"--vsm-blur",
                                 "blur",
                                 OptionKind::Float,
@@ -164,7 +176,8 @@ constexpr const MethodOption* kEyeFloodOptions[] = {
     &kNoObjectIdFix, &kNoMidpointFix, &kBoundaryThreshold, &kOccluderPoints};
 constexpr const MethodOption* kPcfOptions[] = {&kPcfKernel};
 constexpr const MethodOption* kPcssOptions[] = {&kPcssPreset};
-constexpr const MethodOption* kGroundTruthOptions[] = {&kReferenceSamples, &kReferenceMapSize};
+constexpr const MethodOption* kGroundTruthOptions[] = {&kReferenceSamples, &kReferenceMapSize,
+                                                       &kReferencePattern};
 constexpr const MethodOption* kVsmOptions[] = {&kVsmBlur, &kVsmBleed};
 constexpr const MethodOption* kRayTraceOptions[] = {&kRaySamples, &kRayGrid};
 

@@ -11,28 +11,22 @@
 
 namespace fl {
 
-std::vector<glm::vec3> referenceDiskSamples(const DiskLight& disk, int samples) {
+std::vector<glm::vec3> referenceDiskSamples(const DiskLight& disk, int samples,
+                                            geom::DiskPattern pattern) {
     if (samples < 1)
         throw std::invalid_argument("reference samples must be >= 1, got " +
                                     std::to_string(samples));
-    const glm::ivec2 grid = geom::stratifiedGrid(samples);
-    const int cols = grid.x, rows = grid.y;
     const geom::DiskFrame frame = geom::diskFrame(disk.normal);
     const glm::vec3 t = frame.tangent, b = frame.bitangent;
     std::vector<glm::vec3> out;
-    for (int j = 0; j < rows; ++j)
-        for (int i = 0; i < cols; ++i) {
-            // Cell centres in [-1, 1]^2 on the disk (equal-area strata).
-            const glm::dvec2 d =
-                geom::concentricDisk(2.0 * (i + 0.5) / cols - 1.0, 2.0 * (j + 0.5) / rows - 1.0);
-            const double x = d.x, y = d.y;
-            if (x == 0.0 && y == 0.0) {
-                out.push_back(disk.center); // exactly the centre (N = 1 is the hard shadow)
-                continue;
-            }
-            out.push_back(disk.center +
-                          disk.radius * (static_cast<float>(x) * t + static_cast<float>(y) * b));
+    for (const glm::dvec2 d : geom::diskPattern(pattern, samples)) {
+        if (d.x == 0.0 && d.y == 0.0) {
+            out.push_back(disk.center); // exactly the centre (N = 1 is the hard shadow)
+            continue;
         }
+        out.push_back(disk.center +
+                      disk.radius * (static_cast<float>(d.x) * t + static_cast<float>(d.y) * b));
+    }
     return out;
 }
 
@@ -77,7 +71,8 @@ void ReferenceShadowPass::resize(int width, int height, int mapSize) {
 }
 
 ReferenceShadowPass::Outputs ReferenceShadowPass::execute(const Inputs& in, gl::PassTimer* timer) {
-    const std::vector<glm::vec3> samples = referenceDiskSamples(in.light, in.settings.samples);
+    const std::vector<glm::vec3> samples =
+        referenceDiskSamples(in.light, in.settings.samples, in.settings.pattern);
     GLint maxSize = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
     if (in.settings.mapSize < 16 || in.settings.mapSize > maxSize)

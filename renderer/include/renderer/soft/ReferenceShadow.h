@@ -3,9 +3,12 @@
 // lights on the disk. For each of N stratified disk samples a depth map is rendered from that
 // point (a perspective volume fitted to the scene, as for the scene's own point light, with the
 // same depth bias) and every eye pixel adds its hard visibility from that map; the sum / N is the
-// visible fraction of the disk. The samples are the centres of an a x b grid (a the largest
-// divisor of N not above sqrt(N)) mapped onto the disk by Shirley-Chiu's concentric map, so
-// N = 1 is the disk centre and the result equals the hard method there (point and spot lights;
+// visible fraction of the disk. The samples follow a geom::DiskPattern: by default Vogel's
+// golden-angle spiral, which a straight edge splits evenly at every angle; `grid` is the centres
+// of an a x b grid (a the largest divisor of N not above sqrt(N)) mapped onto the disk by
+// Shirley-Chiu's concentric map, which bands along edges parallel to its rows (docs/BENCHMARKS.md,
+// "The maps reference's sample pattern"). N = 1 is the disk centre for every pattern and the
+// result equals the hard method there (point and spot lights;
 // a directional light's disk is sampled with perspective maps from the disk, so N = 1 is not its
 // hard shadow). The estimate's error: shadow-map discretisation per sample (texel size at the
 // map resolution) plus sampling error, measured by comparing N with 2N (referenceSamplingError).
@@ -20,6 +23,7 @@
 #include <renderer/soft/DiskLight.h>
 
 #include <geometry/Aabb.h>
+#include <geometry/DiskSampling.h>
 
 #include <vector>
 
@@ -28,10 +32,12 @@ namespace fl {
 struct ReferenceSettings {
     int samples = 256;  // N point lights on the disk (>= 1)
     int mapSize = 2048; // texels per side of each point light's depth map
+    geom::DiskPattern pattern = geom::DiskPattern::Spiral; // where the N point lights sit
 };
 
 /// The N sample points on the disk (world space), in the order they are rendered.
-std::vector<glm::vec3> referenceDiskSamples(const DiskLight& disk, int samples);
+std::vector<glm::vec3> referenceDiskSamples(const DiskLight& disk, int samples,
+                                            geom::DiskPattern pattern = geom::DiskPattern::Spiral);
 
 /// Difference between two visibility images of one frame (e.g. N and 2N samples), over the
 /// pixels where `mask` (same size) is > 0.5, or all pixels with an empty mask.
