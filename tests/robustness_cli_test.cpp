@@ -191,5 +191,58 @@ TEST(RobustnessCli, OutputNamesStayInsideOut) {
     EXPECT_FALSE(fs::exists(fs::path(out).parent_path().parent_path() / "x.png"));
 }
 
+// One numeric rule for every option (base/Numbers.h): NaN and inf were accepted and rendered a
+// background-only frame, "abc" was called "not in range", and voronoi --width 0 exited 1 where
+// render --width 0 exited 2.
+TEST(RobustnessCli, NumbersAreFiniteAndInRangeEverywhere) {
+    const std::string out = " --out " + dir().string();
+    const std::pair<std::string, std::string> cases[] = {
+        {"render --eye nan,1,1 --target 0,0,0" + out, "--eye: must be a finite number, got 'nan'"},
+        {"render --eye 1,inf,1 --target 0,0,0" + out, "--eye: must be a finite number, got 'inf'"},
+        {"render --target 0,0,1e400 --eye 1,1,1" + out, "--target: must be a finite number"},
+        {"render --bias-slope nan" + out, "--bias-slope: must be a finite number in [0, 64]"},
+        {"render --fov inf" + out, "--fov: must be a finite number in [1, 170]"},
+        {"render --light-radius -1" + out, "--light-radius: must be a finite number >= 0"},
+        {"render --width abc" + out, "--width: must be an integer in [1, 8192], got 'abc'"},
+        {"render --width 2.5" + out, "--width: must be an integer in [1, 8192], got '2.5'"},
+        {"render --pcss-preset 16/24 --vsm-blur nan" + out, "--vsm-blur: must be a finite number"},
+        {"voronoi --width 0" + out, "--width: must be an integer in [1, 16384], got '0'"},
+        {"view --frames -1", "--frames: must be an integer in [0, 10000000]"},
+    };
+    for (const auto& [args, message] : cases) {
+        SCOPED_TRACE(args);
+        expectRefused(run(args), message, 2);
+    }
+}
+
+// Named after the bug: flood:1048576 on a 64 x 64 grid ran for minutes. A step-1 flood crosses
+// the largest grid (16384 per side) in fewer passes, so more are refused at once, and the limit
+// is in --help.
+TEST(RobustnessCli, FloodPassesBeyondAnyGridAreRefused) {
+    const std::string out = " --out " + dir().string();
+    expectRefused(run("voronoi --width 64 --height 64 --plan flood:1048576" + out),
+                  "N in flood:N must be 1..16384");
+    expectRefused(run("voronoi --width 64 --height 64 --plan flood:16385" + out),
+                  "N in flood:N must be 1..16384");
+    const Outcome ok = run("voronoi --width 64 --height 64 --sites 3 --plan flood:64" + out);
+    EXPECT_EQ(ok.code, 0) << ok.output;
+    EXPECT_NE(run("voronoi --help").output.find("flood:N (N <= 16384)"), std::string::npos);
+    EXPECT_NE(run("capture --help").output.find("at most 100000 frames"), std::string::npos);
+}
+
+// A number beyond a double in a capture script printed nlohmann's raw out_of_range exception.
+TEST(RobustnessCli, ScriptNumbersGetTheFileAndTheField) {
+    const fs::path script = dir() / "huge.json";
+    std::ofstream(script)
+        << R"({"camera": {"frames": 1e400, "path": "default"}, "methods": ["hard"]})";
+    const Outcome r = run("capture " + script.string() + " --out " + dir().string());
+    expectRefused(r, script.string() + ": not valid JSON: number overflow parsing '1e400'");
+    EXPECT_EQ(r.output.find("json.exception"), std::string::npos) << r.output;
+    const fs::path nan = dir() / "fractional.json";
+    std::ofstream(nan) << R"({"camera": {"frames": 2.5, "path": "default"}, "methods": ["hard"]})";
+    expectRefused(run("capture " + nan.string() + " --out " + dir().string()),
+                  "camera.frames: must be an integer in [1, 100000], got 2.5");
+}
+
 } // namespace
 } // namespace fl::test

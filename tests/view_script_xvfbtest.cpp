@@ -163,6 +163,21 @@ TEST(ViewScript, SurvivesMinimiseResizeAndABadDrop) {
     EXPECT_NE(r.output.find("scene: " + asset), std::string::npos) << r.output;
 }
 
+// Named after the bug: a script ending "screenshot NAME" then "quit" wrote nothing and exited 0,
+// because the quit came before the frame the screenshot is taken from.
+TEST(ViewScript, ScreenshotThenQuitWritesTheScreenshot) {
+    const fs::path dir = outputDir("view_script") / "screenshot-quit";
+    const ViewRun r = runView(dir, "wait 1\nscreenshot last\nquit\n");
+    ASSERT_EQ(r.code, 0) << r.output;
+    EXPECT_TRUE(fs::exists(dir / "last.png")) << r.output;
+    EXPECT_TRUE(fs::exists(dir / "last.window.png")) << r.output;
+    // Minimised when it quits: no frame to take it from, so it says so and fails.
+    const ViewRun m = runView(dir, "wait 1\nresize 0 0\nwait 1\nscreenshot lost\nquit\n");
+    EXPECT_EQ(m.code, 1) << m.output;
+    EXPECT_NE(m.output.find("screenshot lost not written"), std::string::npos) << m.output;
+    EXPECT_FALSE(fs::exists(dir / "lost.png"));
+}
+
 TEST(ViewScript, RecordWritesTheWalkedPath) {
     const fs::path dir = outputDir("view_script") / "record";
     const fs::path path = dir / "walk.json";

@@ -129,11 +129,13 @@ TEST(InputScript, RejectsBadLinesWithFileAndLine) {
     expectError("wait 1\njump 3\n", "my.script:2: unknown event 'jump'");
     expectError("key\n", "my.script:1: expected 'key NAME'");
     expectError("key banana\n", "unknown key 'banana'");
-    expectError("wait 0\n", "'0' must be a whole number >= 1");
-    expectError("wait 2.5\n", "whole number");
-    expectError("scroll x\n", "'x' is not a number");
-    expectError("scroll nan\n", "'nan' is not a number");
-    expectError("resize -1 5\n", ">= 0");
+    expectError("wait 0\n", "my.script:1: must be an integer in [1, 1000000], got '0'");
+    expectError("wait 2.5\n", "must be an integer");
+    expectError("wait 1e7\n", "must be an integer in [1, 1000000]");
+    expectError("scroll x\n", "must be a finite number, got 'x'");
+    expectError("scroll nan\n", "must be a finite number, got 'nan'");
+    expectError("scroll 1e400\n", "must be a finite number, got '1e400'");
+    expectError("resize -1 5\n", "must be an integer in [0, 1000000], got '-1'");
     expectError("drag middle 0 0 1 1\n", "left or right");
     expectError("screenshot ../x\n", "without folders");
     expectError("quit now\n", "expected 'quit'");

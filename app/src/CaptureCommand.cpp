@@ -323,7 +323,8 @@ Runner addCaptureCommand(CLI::App& app) {
     auto r = std::make_shared<CaptureRequest>();
     cmd->add_option("script", r->script,
                     "Capture script (JSON, at most " + std::to_string(kTextInputLimitMiB) +
-                        " MiB, as its camera-path file; see examples/capture/)")
+                        " MiB, as its camera-path file; at most " +
+                        std::to_string(kMaxCaptureFrames) + " frames; see examples/capture/)")
         ->required();
     addOutOption(*cmd, r->out, "Output folder");
     cmd->add_option("--shader-dir", r->shaderDir,

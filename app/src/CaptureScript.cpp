@@ -3,12 +3,14 @@
 #include <base/InputFile.h>
 #include <base/Text.h>
 
+#include <renderer/io/JsonText.h>
 #include <renderer/soft/PenumbraMap.h>
 
 #include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <set>
 #include <sstream>
 
@@ -23,13 +25,17 @@ using Json = nlohmann::json;
     throw CaptureScriptError(field + ": " + problem);
 }
 
+// A number of the script, by the rule of the command line (base/Numbers.h).
+double readNumber(const Json& j, const std::string& field, double lo, double hi, bool integer) {
+    try {
+        return jsonNumber(j, lo, hi, integer);
+    } catch (const std::runtime_error& e) {
+        fail(field, e.what());
+    }
+}
+
 int readInt(const Json& j, const std::string& field, int lo, int hi) {
-    if (!j.is_number_integer()) fail(field, "expected an integer");
-    const auto v = j.get<long long>();
-    if (v < lo || v > hi)
-        fail(field, "must be between " + std::to_string(lo) + " and " + std::to_string(hi) +
-                        ", got " + std::to_string(v));
-    return static_cast<int>(v);
+    return static_cast<int>(readNumber(j, field, lo, hi, true));
 }
 
 glm::vec3 readVec3(const Json& j, const std::string& field) {
@@ -37,9 +43,9 @@ glm::vec3 readVec3(const Json& j, const std::string& field) {
     glm::vec3 v{0.0f};
     for (int k = 0; k < 3; ++k) {
         const Json& c = j[static_cast<std::size_t>(k)];
-        if (!c.is_number()) fail(field, "expected [x, y, z] numbers");
-        v[k] = c.get<float>();
-        if (!std::isfinite(v[k])) fail(field, "not finite");
+        constexpr double kFloatMax = std::numeric_limits<float>::max();
+        v[k] = static_cast<float>(
+            readNumber(c, field + "[" + std::to_string(k) + "]", -kFloatMax, kFloatMax, false));
     }
     return v;
 }
@@ -53,7 +59,7 @@ void checkKeys(const Json& obj, const std::string& field, const std::set<std::st
 void parseCamera(const Json& j, const std::filesystem::path& dir, CaptureScript& s) {
     checkKeys(j, "camera", {"frames", "path", "file", "fov", "interpolation", "keys"});
     if (!j.contains("frames")) fail("camera.frames", "missing (the number of frames)");
-    s.frames = readInt(j["frames"], "camera.frames", 1, 100000);
+    s.frames = readInt(j["frames"], "camera.frames", 1, kMaxCaptureFrames);
     const bool hasKeys = j.contains("keys"), hasFile = j.contains("file");
     if (j.contains("path")) {
         if (j["path"] != "default") fail("camera.path", "expected \"default\"");
@@ -81,10 +87,8 @@ void parseCamera(const Json& j, const std::filesystem::path& dir, CaptureScript&
 void parseLight(const Json& j, CaptureScript& s) {
     checkKeys(j, "light", {"radius", "keys"});
     if (j.contains("radius")) {
-        if (!j["radius"].is_number()) fail("light.radius", "expected a number");
-        const float r = j["radius"].get<float>();
-        if (!std::isfinite(r) || r < 0.0f) fail("light.radius", "must be a finite number >= 0");
-        s.lightRadius = r;
+        s.lightRadius = static_cast<float>(
+            readNumber(j["radius"], "light.radius", 0.0, std::numeric_limits<float>::max(), false));
     }
     if (j.contains("keys")) {
         if (!j["keys"].is_array() || j["keys"].empty())
@@ -176,9 +180,9 @@ CaptureScript parseCaptureScript(const std::string& text, const std::filesystem:
     const std::string name = file.string();
     Json j;
     try {
-        j = Json::parse(text);
-    } catch (const Json::parse_error& e) {
-        throw CaptureScriptError(name + ": not valid JSON: " + e.what());
+        j = parseJsonText(text);
+    } catch (const std::runtime_error& e) {
+        throw CaptureScriptError(name + ": " + e.what());
     }
     CaptureScript s;
     s.file = file;

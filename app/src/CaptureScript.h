@@ -42,6 +42,9 @@ class CaptureScriptError : public std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+/// The most frames a script's camera may ask for (camera.frames; shown in capture --help).
+inline constexpr int kMaxCaptureFrames = 100'000;
+
 /// One row of the results: a method with its options.
 struct MethodSpec {
     std::string label;           // unique: "jfa-l", "pcss:16/24", or the script's "label"

@@ -23,19 +23,12 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool sceneAsOption) {
     // 0 is allowed: a point light, for which every soft method gives exactly the hard shadows.
     cmd.add_option("--light-radius", o.lightRadius,
                    "Disk light radius in scene units (0 = a point light: hard shadows)")
-        ->check(CLI::Validator(
-            [](const std::string& text) -> std::string {
-                double v = 0.0;
-                if (!CLI::detail::lexical_cast(text, v) || !std::isfinite(v) || v < 0.0)
-                    return "must be a finite number >= 0, got '" + text + "'";
-                return {};
-            },
-            "RADIUS>=0"));
+        ->check(number(0.0));
     cmd.add_option("--shader-dir", o.shaderDir,
                    "Load shaders from this folder instead of the binary (files of at most " +
                        std::to_string(kTextInputLimitMiB) + " MiB)");
     cmd.add_option("--shadow-map-size", o.shadowMapSize, "Shadow map texels per side")
-        ->check(CLI::Range(16, kMaxShadowMapSize))
+        ->check(integer(16, kMaxShadowMapSize))
         ->capture_default_str();
     cmd.add_option("--shadow-map", o.shadowMap,
                    "Shadow-map provider: uniform (fitted to the scene) or tsm (trapezoidal)")
@@ -53,11 +46,11 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool sceneAsOption) {
     addMethodOptions(cmd, o);
     cmd.add_option("--bias-slope", o.slopeBias,
                    "Slope-scaled depth bias (polygon offset factor, in light depth)")
-        ->check(CLI::Range(0.0f, 64.0f))
+        ->check(number(0.0, 64.0))
         ->capture_default_str();
     cmd.add_option("--bias-constant", o.constantBias,
                    "Constant depth bias (polygon offset units, in light depth)")
-        ->check(CLI::Range(0.0f, 4096.0f))
+        ->check(number(0.0, 4096.0))
         ->capture_default_str();
     cmd.add_option("--timing", o.timing, "Pass timing: auto, query (GL timers), finish (glFinish)")
         ->check(CLI::IsMember({"auto", "query", "finish"}))
@@ -67,13 +60,14 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool sceneAsOption) {
            "default (scene camera, else auto), auto (frame the bounds), or a glTF camera index")
         ->capture_default_str();
     cmd.add_option("--eye", o.eye, "Camera position x,y,z (with --target)")
+        ->check(number())
         ->delimiter(',')
         ->expected(3);
     cmd.add_option("--target", o.target, "Camera target x,y,z (with --eye)")
+        ->check(number())
         ->delimiter(',')
         ->expected(3);
-    cmd.add_option("--fov", o.fov, "Vertical field of view, degrees")
-        ->check(CLI::Range(1.0f, 170.0f));
+    cmd.add_option("--fov", o.fov, "Vertical field of view, degrees")->check(number(1.0, 170.0));
 }
 
 void addMethodOptions(CLI::App& cmd, SceneOptions& o) {
@@ -101,11 +95,21 @@ void addMethodOptions(CLI::App& cmd, SceneOptions& o) {
 
 void addSizeOptions(CLI::App& cmd, int& width, int& height) {
     cmd.add_option("--width", width, "Image width in pixels")
-        ->check(CLI::Range(1, kMaxImageSize))
+        ->check(integer(1, kMaxImageSize))
         ->capture_default_str();
     cmd.add_option("--height", height, "Image height in pixels")
-        ->check(CLI::Range(1, kMaxImageSize))
+        ->check(integer(1, kMaxImageSize))
         ->capture_default_str();
+}
+
+CLI::Validator number(double lo, double hi) {
+    return CLI::Validator(
+        [lo, hi](const std::string& text) { return numberProblem(text, lo, hi, false); }, "NUMBER");
+}
+
+CLI::Validator integer(double lo, double hi) {
+    return CLI::Validator(
+        [lo, hi](const std::string& text) { return numberProblem(text, lo, hi, true); }, "INT");
 }
 
 CLI::Validator outputFolder() {

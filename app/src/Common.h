@@ -8,6 +8,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include <base/Numbers.h>
+
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -56,6 +58,15 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool sceneAsOption);
 void addMethodOptions(CLI::App& cmd, SceneOptions& o);
 /// Registers --width/--height with the accepted range.
 void addSizeOptions(CLI::App& cmd, int& width, int& height);
+
+// Numbers, checked once here for every command with fl::numberProblem (base/Numbers.h), the
+// same rule the method options and the scripts use: finite, in range, whole for integers (NaN
+// and inf passed CLI11's Range, and "abc" was called "not in range"). Usage errors, exit 2.
+/// A validator for a finite number in [lo, hi] (either may be kUnbounded); vector options check
+/// each element.
+CLI::Validator number(double lo = -kUnbounded, double hi = kUnbounded);
+/// A validator for an integer in [lo, hi].
+CLI::Validator integer(double lo, double hi);
 
 // Output locations, checked once here for every command (usage errors, exit 2): an empty folder
 // silently meant the current one, and a --name with '/' or ".." wrote outside --out.

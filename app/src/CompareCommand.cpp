@@ -233,7 +233,7 @@ Runner addCompareCommand(CLI::App& app) {
                         std::to_string(kTextInputLimitMiB) + " MiB)")
         ->capture_default_str();
     cmd->add_option("--frames", s->frames, "Frames along the path")
-        ->check(CLI::Range(1, 100000))
+        ->check(integer(1, 100000))
         ->capture_default_str();
     addOutOption(*cmd, s->out, "Output folder");
     return [s] {

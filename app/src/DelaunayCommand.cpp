@@ -265,7 +265,7 @@ Runner addDelaunayCommand(CLI::App& app) {
                         "; K = " + std::to_string(int(kTexelsPerSiteCpu)) +
                         " for cpu (measured), " + std::to_string(int(kTexelsPerSiteGl)) +
                         " for gl (thesis 6.5))")
-        ->check(CLI::Range(2, geom::kMaxDiscreteSize));
+        ->check(integer(2, geom::kMaxDiscreteSize));
     cmd->add_option("--backend", o->backend, "G1-G6 on cpu or gl (needs a GL 4.5 context)")
         ->check(CLI::IsMember({"cpu", "gl"}))
         ->capture_default_str();
@@ -282,7 +282,7 @@ Runner addDelaunayCommand(CLI::App& app) {
     cmd->add_option("--steps", o->steps, "Folder for one SVG per step (01_sites ... 09_flipped)")
         ->check(outputFolder());
     cmd->add_option("--threads", o->threads, "Worker threads for G1-G6 (0: all)")
-        ->check(CLI::Range(0, 1024))
+        ->check(integer(0, 1024))
         ->capture_default_str();
     return [o] { return runDelaunay(*o); };
 }

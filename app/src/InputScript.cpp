@@ -3,6 +3,7 @@
 #include "ViewerInput.h"
 
 #include <base/InputFile.h>
+#include <base/Numbers.h>
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -23,6 +24,9 @@ std::vector<std::string> words(const std::string& line) {
     return out;
 }
 
+// The largest count a line may give (frames to wait or hold, drag steps, window sizes).
+constexpr double kMaxCount = 1'000'000;
+
 class LineParser {
   public:
     LineParser(const std::string& source, int line, std::vector<std::string> w)
@@ -35,20 +39,19 @@ class LineParser {
         if (w_.size() - 1 < min || w_.size() - 1 > max)
             fail(std::string("expected '") + usage + "'");
     }
+    // Numbers by the rule of the command line (base/Numbers.h): finite, whole for counts.
     double number(std::size_t i) const {
-        try {
-            std::size_t used = 0;
-            const double v = std::stod(w_[i], &used);
-            if (used == w_[i].size() && std::isfinite(v)) return v;
-        } catch (const std::exception&) {
-        }
-        fail("'" + w_[i] + "' is not a number");
+        if (std::string problem = numberProblem(w_[i], -kUnbounded, kUnbounded, false);
+            !problem.empty())
+            fail(problem);
+        double v = 0.0;
+        parseNumber(w_[i], v);
+        return v;
     }
     int count(std::size_t i, int min) const {
-        const double v = number(i);
-        if (v != static_cast<double>(static_cast<int>(v)) || v < min || v > 1e6)
-            fail("'" + w_[i] + "' must be a whole number >= " + std::to_string(min));
-        return static_cast<int>(v);
+        if (std::string problem = numberProblem(w_[i], min, kMaxCount, true); !problem.empty())
+            fail(problem);
+        return static_cast<int>(number(i));
     }
     int key(std::size_t i, int* mods) const {
         std::string name = w_[i];

@@ -22,7 +22,7 @@ Runner addMakeSceneCommand(CLI::App& app) {
         sizes += std::string(sizes.empty() ? "" : ", ") + n.name + " (" +
                  std::to_string(n.triangles) + ")";
     cmd->add_option("--triangles", s->triangles, "Exact triangle count (at least 600)")
-        ->check(CLI::Range(kMinTriangles, std::size_t{50'000'000}))
+        ->check(integer(kMinTriangles, 50'000'000))
         ->capture_default_str();
     cmd->add_option("--size", s->size, "A thesis scene size by name: " + sizes);
     cmd->add_option("--seed", s->seed, "Random seed")->capture_default_str();

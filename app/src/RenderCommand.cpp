@@ -182,13 +182,13 @@ Runner addRenderCommand(CLI::App& app) {
     cmd->add_option(
            "--variant", s->controls.variant,
            "Overlay: JFA variant index (0 JFA, 1 JFA+1, 2 JFA+2, 3 JFA^2, 4 1+JFA, 5 half)")
-        ->check(CLI::Range(0, 5));
+        ->check(integer(0, 5));
     cmd->add_option("--flood-pass", s->controls.floodPass,
                     "Overlay flood-passes: show the state after this many passes (-1 = all)")
-        ->check(CLI::Range(-1, 1 << 20));
+        ->check(integer(-1, 1 << 20));
     cmd->add_option("--delaunay-step", s->controls.delaunayStep,
                     "Overlay delaunay: stage index 0-8 (sites .. flipped)")
-        ->check(CLI::Range(0, 8));
+        ->check(integer(0, 8));
     return [s] { return renderHeadless(*s); };
 }
 

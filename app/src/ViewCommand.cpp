@@ -27,8 +27,9 @@ Runner addViewCommand(CLI::App& app) {
     s->scene.strictMethodOptions = false; // the window switches methods: each takes its own
     addSceneOptions(*cmd, s->scene, false);
     addSizeOptions(*cmd, s->width, s->height);
-    cmd->add_option("--frames", s->frames, "Close after this many frames (0 = run until closed)")
-        ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--frames", s->frames,
+                    "Close after this many frames (0 = run until closed; at most 10000000)")
+        ->check(integer(0, 10'000'000));
     cmd->add_option("--screenshot", s->screenshot, "With --frames: save the last frame as PNG")
         ->check(outputFile());
     cmd->add_option("--script", s->script,
@@ -42,13 +43,13 @@ Runner addViewCommand(CLI::App& app) {
                     "On exit, write the camera path walked as JSON (replay: floodlight capture)")
         ->check(outputFile());
     cmd->add_option("--record-every", s->recordEvery, "Frames between recorded camera keys")
-        ->check(CLI::PositiveNumber);
+        ->check(integer(1, 1'000'000));
     cmd->add_option("--fps-log", s->fpsLog, "On exit, write one CSV row of timings per frame")
         ->check(outputFile());
     cmd->add_option("--stats-every", s->statsEvery,
                     "Least frames between live comparisons with standard flooding, spaced further "
                     "to add at most ~10% frame time (0 = only on G)")
-        ->check(CLI::NonNegativeNumber);
+        ->check(integer(0, 1'000'000));
     cmd->add_flag("--no-hud", *noHud, "Start with the HUD hidden (F1 shows it)");
     return [s, captureDir, noHud] {
         s->captureDir = *captureDir;

@@ -226,8 +226,19 @@ int Viewer::run() {
             if (script_->finished(tick_) && pendingScreenshots_.empty()) quit_ = true;
         }
         for (const std::string& path : std::exchange(pendingDrops_, {})) loadDropped(path);
-        if (quit_ || (options_.frames > 0 && rendered_ >= options_.frames)) break;
+        // A quit waits for the screenshots asked for before it: they are taken from the next
+        // frame, so that frame is drawn first (a script's "screenshot NAME" then "quit").
+        if ((quit_ && pendingScreenshots_.empty()) ||
+            (options_.frames > 0 && rendered_ >= options_.frames))
+            break;
         const glm::ivec2 size = scriptMinimised_ ? glm::ivec2(0) : window_->framebufferSize();
+        if (quit_ && (size.x <= 0 || size.y <= 0)) { // no frame to take them from
+            for (const std::string& name : std::exchange(pendingScreenshots_, {}))
+                std::cerr << "error: screenshot " << (name.empty() ? "(key)" : name)
+                          << " not written: the window was minimised when it quit\n";
+            lostScreenshots_ = true;
+            break;
+        }
         const double now = glfwGetTime();
         // A script steps time by a fixed 1/30 s so that its fly movements are reproducible.
         const float dt = script_ ? 1.0f / 30.0f : static_cast<float>(now - last);
@@ -241,7 +252,7 @@ int Viewer::run() {
     }
     recordPose(true);
     writeOutputs();
-    return 0;
+    return lostScreenshots_ ? 1 : 0;
 }
 
 void Viewer::renderFrame(glm::ivec2 size, float dt) {

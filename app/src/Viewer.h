@@ -100,6 +100,7 @@ class Viewer {
     std::optional<ScriptPlayer> script_;
     bool scriptMinimised_ = false;
     std::vector<std::string> pendingDrops_, pendingScreenshots_;
+    bool lostScreenshots_ = false; // a quit found screenshots it could not take (exit 1)
     std::vector<CameraKey> recorded_;
     std::string fpsRows_;
     glm::ivec2 rendererSize_{0};

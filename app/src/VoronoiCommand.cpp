@@ -219,10 +219,12 @@ void writeOutputs(const VoronoiOptions& o, const jfa::Grid& g, const jfa::ExactF
 
 // Grid sizes the kernels can take: 1 .. 16384 (integer distances in 32 bits on the GPU), and
 // with the GL backend no more than the implementation's largest texture.
+constexpr int kMaxGridSide = 16384;
+
 void checkGridSize(int w, int h, const std::string& what, bool gl) {
-    GLint glMax = 16384;
+    GLint glMax = kMaxGridSide;
     if (gl) glGetIntegerv(GL_MAX_TEXTURE_SIZE, &glMax);
-    const int limit = std::min(16384, int(glMax));
+    const int limit = std::min(kMaxGridSide, int(glMax));
     if (w < 1 || h < 1 || w > limit || h > limit)
         throw InputError(what + ": grid " + std::to_string(w) + "x" + std::to_string(h) +
                          " is outside 1.." + std::to_string(limit) + " per side" +
@@ -317,11 +319,13 @@ Runner addVoronoiCommand(CLI::App& app) {
         "voronoi", "Voronoi diagram / distance transform by jump flooding, errors vs exact");
     auto o = std::make_shared<VoronoiOptions>();
     cmd->add_option("--width", o->width, "Grid width (1..16384, at most the GL maximum)")
+        ->check(integer(1, kMaxGridSide))
         ->capture_default_str();
     cmd->add_option("--height", o->height, "Grid height (1..16384, at most the GL maximum)")
+        ->check(integer(1, kMaxGridSide))
         ->capture_default_str();
     cmd->add_option("--sites", o->sites, "Random sites")
-        ->check(CLI::Range(1, 1 << 24))
+        ->check(integer(1, 1 << 24))
         ->capture_default_str();
     cmd->add_option("--seed", o->seed, "Random seed")->capture_default_str();
     cmd->add_flag("--float-sites", o->floatSites, "Sub-pixel random sites (float distances)");
@@ -342,7 +346,7 @@ Runner addVoronoiCommand(CLI::App& app) {
         ->capture_default_str();
     cmd->add_option("--plan", o->plan,
                     "Flood plan: jfa, jfa+1, jfa+2, jfa2, 1+jfa, 1+jfa+1, doubling, "
-                    "flood, flood:N, half:jfa, half:jfa+2, ...")
+                    "flood, flood:N (N <= 16384), half:jfa, half:jfa+2, ...")
         ->capture_default_str();
     cmd->add_option("--backend", o->backend, "gl or cpu")
         ->check(CLI::IsMember({"gl", "cpu"}))

@@ -21,7 +21,8 @@ constexpr std::size_t kMinRunToCompress = 4;
 
 constexpr std::string_view kValidPlans =
     "valid plans (case-insensitive): jfa, jfa+1, jfa+2, jfa+K (K = 1..30), jfa2 (or jfa^2), "
-    "1+jfa, 1+jfa+1, doubling, flood (until nothing changes), flood:N (N step-1 passes), "
+    "1+jfa, 1+jfa+1, doubling, flood (until nothing changes), flood:N (N step-1 passes, N <= "
+    "16384), "
     "half:<plan> (e.g. half:jfa, half:jfa+2), and explicit step lists before/after the body "
     "such as (2,1)+jfa+(1,1)";
 

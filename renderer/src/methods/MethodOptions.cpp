@@ -1,6 +1,7 @@
 #include <renderer/methods/MethodOptions.h>
 #include <renderer/methods/ShadowMethod.h>
 
+#include <base/Numbers.h>
 #include <base/Text.h>
 
 #include <charconv>
@@ -12,13 +13,6 @@ namespace fl {
 
 namespace {
 
-bool parseNumber(std::string_view text, double& out) {
-    if (text.empty()) return false;
-    const char* end = text.data() + text.size();
-    const auto r = std::from_chars(text.data(), end, out);
-    return r.ec == std::errc() && r.ptr == end;
-}
-
 std::string range(const MethodOption& o) {
     return cat("[", o.min, ", ", o.max, "]");
 }
@@ -28,19 +22,19 @@ std::string range(const MethodOption& o) {
 std::string checkOptionValue(const MethodOption& o, std::string_view value) {
     double v = 0.0;
     switch (o.kind) {
-    case OptionKind::Int:
+    case OptionKind::Int: {
         if (!o.word.empty() && value == o.word) return {};
-        if (!parseNumber(value, v) || v != std::floor(v) || v < o.min || v > o.max)
-            return cat("must be ", o.word.empty() ? "" : cat(o.word, " or "), "an integer in ",
-                       range(o), ", got '", value, "'");
+        std::string problem = numberProblem(value, o.min, o.max, true);
+        if (!problem.empty())
+            return o.word.empty() ? problem : cat("must be ", o.word, " or", problem.substr(7));
+        parseNumber(value, v);
         if (o.multipleOf > 0 && static_cast<long long>(v) % o.multipleOf != 0)
             return cat("must be a multiple of ", o.multipleOf, " in ", range(o), ", got '", value,
                        "'");
         return {};
+    }
     case OptionKind::Float:
-        if (!parseNumber(value, v) || !std::isfinite(v) || v < o.min || v > o.max)
-            return cat("must be a number in ", range(o), ", got '", value, "'");
-        return {};
+        return numberProblem(value, o.min, o.max, false);
     case OptionKind::Flag:
         if (value != "true" && value != "false")
             return cat("must be true or false, got '", value, "'");

@@ -1,6 +1,7 @@
 #include <renderer/scene/CameraPath.h>
 
 #include <renderer/io/ImageIO.h>
+#include <renderer/io/JsonText.h>
 
 #include <base/InputFile.h>
 
@@ -12,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace fl {
@@ -36,8 +38,8 @@ CameraPath::CameraPath(std::vector<CameraKey> keys, float yfovDegrees,
     if (keys_.size() < 2) throw std::invalid_argument("a camera path needs at least two keys");
     for (std::size_t i = 0; i < keys_.size(); ++i)
         if (glm::length(keys_[i].target - keys_[i].eye) < 1e-6f)
-            throw std::invalid_argument("camera path key " + std::to_string(i) +
-                                        ": eye and target are the same point");
+            throw std::invalid_argument("keys[" + std::to_string(i) +
+                                        "]: eye and target are the same point");
 }
 
 CameraKey CameraPath::keyAt(float t) const {
@@ -107,11 +109,13 @@ glm::vec3 readVec3(const nlohmann::json& j, const std::string& where) {
         throw std::runtime_error(where + ": expected an array of 3 numbers");
     glm::vec3 v;
     for (int k = 0; k < 3; ++k) {
-        if (!j[static_cast<std::size_t>(k)].is_number())
-            throw std::runtime_error(where + "[" + std::to_string(k) + "]: expected a number");
-        v[k] = j[static_cast<std::size_t>(k)].get<float>();
-        if (!std::isfinite(v[k]))
-            throw std::runtime_error(where + "[" + std::to_string(k) + "]: not finite");
+        try {
+            constexpr double kFloatMax = std::numeric_limits<float>::max();
+            v[k] = static_cast<float>(
+                jsonNumber(j[static_cast<std::size_t>(k)], -kFloatMax, kFloatMax));
+        } catch (const std::runtime_error& e) {
+            throw std::runtime_error(where + "[" + std::to_string(k) + "]: " + e.what());
+        }
     }
     return v;
 }
@@ -124,10 +128,11 @@ CameraPath cameraPathFromJson(const nlohmann::json& j) {
     if (!j.is_object()) throw std::runtime_error("expected an object with \"keys\"");
     float fov = 50.0f;
     if (j.contains("fov")) {
-        if (!j["fov"].is_number()) throw std::runtime_error("fov: expected a number");
-        fov = j["fov"].get<float>();
-        if (!(fov >= 1.0f && fov <= 170.0f))
-            throw std::runtime_error("fov: must be between 1 and 170 degrees");
+        try {
+            fov = static_cast<float>(jsonNumber(j["fov"], 1.0, 170.0));
+        } catch (const std::runtime_error& e) {
+            throw std::runtime_error(std::string("fov (degrees): ") + e.what());
+        }
     }
     PathInterpolation interpolation = PathInterpolation::CatmullRom;
     if (j.contains("interpolation")) {
@@ -155,12 +160,7 @@ CameraPath cameraPathFromJson(const nlohmann::json& j) {
 } // namespace
 
 CameraPath parseCameraPath(const std::string& jsonText) {
-    nlohmann::json j;
-    try {
-        j = nlohmann::json::parse(jsonText);
-    } catch (const nlohmann::json::parse_error& e) {
-        throw std::runtime_error(std::string("not valid JSON: ") + e.what());
-    }
+    const nlohmann::json j = parseJsonText(jsonText);
     try {
         return cameraPathFromJson(j);
     } catch (const std::invalid_argument& e) {
@@ -172,14 +172,8 @@ CameraPath readCameraPath(const std::filesystem::path& file, std::string_view ro
     const std::string name = file.string();
     // Regular files within the text limit only (base/InputFile.h); InputFileError names them.
     const std::string text = readInputFile(file, role, kTextInputLimitMiB);
-    nlohmann::json j;
     try {
-        j = nlohmann::json::parse(text);
-    } catch (const nlohmann::json::parse_error& e) {
-        throw std::runtime_error(name + ": not valid JSON: " + e.what());
-    }
-    try {
-        return cameraPathFromJson(j);
+        return cameraPathFromJson(parseJsonText(text));
     } catch (const std::exception& e) {
         throw std::runtime_error(name + ": " + e.what());
     }
