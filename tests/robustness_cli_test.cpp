@@ -244,5 +244,38 @@ TEST(RobustnessCli, ScriptNumbersGetTheFileAndTheField) {
                   "camera.frames: must be an integer in [1, 100000], got 2.5");
 }
 
+// A command's outputs appear together or not at all (base/OutputFiles.h). Named after the bugs:
+// render with an unwritable --aliasing-map left its PNG and EXR; delaunay left .node/.ele/.obj
+// when its --steps folder could not be made.
+TEST(RobustnessCli, AFailedCommandLeavesNoOutputs) {
+    const fs::path d = folder("all-or-nothing");
+    std::ofstream(d / "blocker") << "a file where a folder is needed";
+    const Outcome render =
+        run("render --width 32 --height 32 --out " + d.string() + " --name frame --aliasing-map " +
+            (d / "blocker" / "a.png").string());
+    EXPECT_EQ(render.code, 1) << render.output;
+    EXPECT_FALSE(fs::exists(d / "frame.png")) << render.output;
+    EXPECT_FALSE(fs::exists(d / "frame.exr")) << render.output;
+
+    std::ofstream(d / "pts.xy") << "0 0\n1 0\n0 1\n1 1\n0.5 0.3\n";
+    const Outcome delaunay =
+        run("delaunay " + (d / "pts.xy").string() + " --backend cpu --out " +
+            (d / "mesh").string() + " --steps " + (d / "blocker" / "steps").string());
+    EXPECT_EQ(delaunay.code, 1) << delaunay.output;
+    for (const char* ext : {".node", ".ele", ".obj", ".svg"})
+        EXPECT_FALSE(fs::exists(d / (std::string("mesh") + ext))) << ext << delaunay.output;
+    EXPECT_EQ(delaunay.output.find("wrote"), std::string::npos) << delaunay.output;
+
+    // Nothing hidden is left either: every temporary was removed.
+    for (const auto& e : fs::directory_iterator(d))
+        EXPECT_NE(e.path().filename().string().front(), '.') << e.path();
+    // And the same commands succeed where they can write.
+    const Outcome ok = run("delaunay " + (d / "pts.xy").string() + " --backend cpu --out " +
+                           (d / "mesh").string() + " --steps " + (d / "steps").string());
+    EXPECT_EQ(ok.code, 0) << ok.output;
+    EXPECT_TRUE(fs::exists(d / "mesh.node"));
+    EXPECT_TRUE(fs::exists(d / "steps"));
+}
+
 } // namespace
 } // namespace fl::test

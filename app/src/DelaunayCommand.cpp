@@ -7,6 +7,7 @@
 #include "DelaunaySteps.h"
 
 #include <base/InputFile.h>
+#include <base/OutputFiles.h>
 #include <geometry/Delaunay.h>
 #include <geometry/MeshIO.h>
 #include <geometry/MeshSvg.h>
@@ -27,6 +28,7 @@
 #include <chrono>
 #include <iomanip>
 #include <iostream>
+#include <sstream>
 #include <utility>
 
 namespace fl::app {
@@ -142,7 +144,9 @@ void printCounts(const geom::DelaunayResult& r, std::ostream& out) {
         << "  triangles: " << r.mesh.triangleCount() << "\n";
 }
 
-void writeMeshFiles(const DelaunayCliOptions& o, const geom::Triangulation& mesh) {
+// "wrote ..." lines go to `log`, printed once the command's OutputSet has committed.
+void writeMeshFiles(const DelaunayCliOptions& o, const geom::Triangulation& mesh,
+                    std::ostream& log) {
     const std::filesystem::path prefix = o.out;
     if (prefix.has_parent_path()) std::filesystem::create_directories(prefix.parent_path());
     auto named = [&](const char* ext) { return std::filesystem::path(prefix.string() + ext); };
@@ -150,19 +154,19 @@ void writeMeshFiles(const DelaunayCliOptions& o, const geom::Triangulation& mesh
     if (all || o.format == "node") {
         geom::writeNodeFile(named(".node"), mesh.points);
         geom::writeEleFile(named(".ele"), mesh.points, mesh.triangles);
-        std::cout << "wrote " << named(".node").string() << " and " << named(".ele").string()
-                  << " (Triangle format, 0-based)\n";
+        log << "wrote " << named(".node").string() << " and " << named(".ele").string()
+            << " (Triangle format, 0-based)\n";
     }
     if (all || o.format == "obj") {
         geom::writeObjFile(named(".obj"), mesh.points, mesh.triangles);
-        std::cout << "wrote " << named(".obj").string() << "\n";
+        log << "wrote " << named(".obj").string() << "\n";
     }
     if (o.format == "svg" || (all && mesh.points.size() <= kMaxPicturePoints)) {
         geom::writeSvg(named(".svg"), geom::triangulationPicture(mesh.points, mesh.triangles));
-        std::cout << "wrote " << named(".svg").string() << "\n";
+        log << "wrote " << named(".svg").string() << "\n";
     } else if (all) {
-        std::cout << "skipped " << named(".svg").string() << ": more than " << kMaxPicturePoints
-                  << " points (ask for it with --format svg)\n";
+        log << "skipped " << named(".svg").string() << ": more than " << kMaxPicturePoints
+            << " points (ask for it with --format svg)\n";
     }
 }
 
@@ -223,14 +227,20 @@ int runDelaunay(const DelaunayCliOptions& o) {
                   << report.summary() << (report.summary().ends_with('\n') ? "" : "\n");
     }
 
-    if (!o.out.empty()) writeMeshFiles(o, r.mesh);
+    // Every file appears, or none (base/OutputFiles.h): a failing SVG or --steps folder used to
+    // leave the .node/.ele/.obj behind.
+    OutputSet outputs;
+    std::ostringstream wrote;
+    if (!o.out.empty()) writeMeshFiles(o, r.mesh, wrote);
     if (!o.steps.empty()) {
         if (pictures)
-            writeStepPictures(o.steps, points, r, std::cout);
+            writeStepPictures(o.steps, points, r, wrote);
         else
             std::cout << "steps: " << points.size() << " points (more than " << kMaxPicturePoints
                       << "): step pictures skipped, they would be unreadable; use a subset\n";
     }
+    outputs.commit();
+    std::cout << wrote.str();
     if (o.check && !report.ok()) {
         std::cerr << "error: " << o.input << ": the triangulation failed --check ("
                   << report.problemCount << " problem(s), listed above)\n";

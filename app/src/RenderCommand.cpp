@@ -1,5 +1,7 @@
 #include "Commands.h"
 
+#include <base/OutputFiles.h>
+
 #include <renderer/context/EglContext.h>
 #include <renderer/io/Capture.h>
 #include <renderer/metrics/ShadowStats.h>
@@ -99,8 +101,9 @@ int renderHeadless(const RenderRequest& r) {
         results.push_back(renderWith(shaders, scene, camera, settings, r.width, r.height, r));
         printShadowStats(summarizeShadowDiagnostics(results.back().diagnostics), std::cout);
     }
-    // Every image is checked and encoded before anything is written, and each file is
-    // written under a temporary name and renamed, so a failure leaves no partial output.
+    // The outputs appear together or not at all (base/OutputFiles.h): an unwritable
+    // --aliasing-map used to leave the PNG and EXR written before it.
+    OutputSet outputs;
     std::vector<std::filesystem::path> written;
     for (std::size_t i = 0; i < results.size(); ++i) {
         const std::string stem =
@@ -137,6 +140,7 @@ int renderHeadless(const RenderRequest& r) {
         for (const char* suffix : {".png", ".visibility.png", ".footprint.png"})
             written.push_back(dir / (stem + suffix));
     }
+    outputs.commit();
     for (const std::filesystem::path& p : written) std::cout << "wrote " << p.string() << "\n";
     return 0;
 }

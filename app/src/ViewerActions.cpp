@@ -3,6 +3,7 @@
 
 #include "Viewer.h"
 
+#include <base/OutputFiles.h>
 #include <base/Text.h>
 #include <renderer/io/Capture.h>
 #include <renderer/io/ImageIO.h>
@@ -290,10 +291,12 @@ void Viewer::screenshot(const std::string& name, glm::ivec2 size) {
     }
     try {
         std::filesystem::create_directories(options_.captureDir);
+        OutputSet files; // the three files of a screenshot appear together (base/OutputFiles.h)
         // The window image first: it is the back buffer, which the frame read-back leaves alone.
         writePng(options_.captureDir / (stem + ".window.png"),
                  readDefaultFramebuffer(size.x, size.y));
         const CapturePaths p = writeFrame(readFrame(*renderer_), options_.captureDir, stem);
+        files.commit();
         std::cout << "wrote " << p.png.string() << ", " << p.exr.string() << "\n";
         setMessage("wrote " + p.png.string() + " and .exr", false);
     } catch (const std::exception& e) {

@@ -7,6 +7,7 @@
 #include <renderer/io/ImageIO.h>
 
 #include <base/InputFile.h>
+#include <base/OutputFiles.h>
 
 #include <jfa/CpuKernel.h>
 #include <jfa/DistanceTransform.h>
@@ -180,8 +181,10 @@ std::array<std::uint8_t, 3> colourOf(float id) {
             std::uint8_t(64 + ((h >> 16) & 0x7f))};
 }
 
+// "wrote ..." lines go to `log`, printed once the command's OutputSet has committed.
 void writeOutputs(const VoronoiOptions& o, const jfa::Grid& g, const jfa::ExactField& exact,
-                  const std::vector<std::uint8_t>& errors, const jfa::NearestSite& crit) {
+                  const std::vector<std::uint8_t>& errors, const jfa::NearestSite& crit,
+                  std::ostream& log) {
     const int w = g.width, h = g.height;
     ByteImage pic{w, h, 4, std::vector<std::uint8_t>(size_t(w) * size_t(h) * 4)};
     std::vector<ExrChannel> ch{{"site.x", {}},   {"site.y", {}},         {"site.id", {}},
@@ -211,10 +214,9 @@ void writeOutputs(const VoronoiOptions& o, const jfa::Grid& g, const jfa::ExactF
     std::vector<ExrChannel> exr;
     for (auto& c : ch) exr.push_back({c.name, std::move(c.values)});
     writeExr(dir / (o.name + ".exr"), w, h, exr);
-    std::cout << "wrote " << (dir / (o.name + ".png")).string()
-              << " (regions by site, sites black, "
-              << "errors red)\nwrote " << (dir / (o.name + ".exr")).string()
-              << " (site.x, site.y, site.id, distance, exact_distance, error)\n";
+    log << "wrote " << (dir / (o.name + ".png")).string() << " (regions by site, sites black, "
+        << "errors red)\nwrote " << (dir / (o.name + ".exr")).string()
+        << " (site.x, site.y, site.id, distance, exact_distance, error)\n";
 }
 
 // Grid sizes the kernels can take: 1 .. 16384 (integer distances in 32 bits on the GPU), and
@@ -257,6 +259,9 @@ int runVoronoi(const VoronoiOptions& o) {
     const std::string backend = o.backend == "gl" ? "GL " + o.kernel : std::string("CPU");
     std::cout << "input: " << in.what << " on " << w << "x" << h << ", backend " << backend << "\n";
 
+    // The .png, .exr and .sdf.exr appear together or not at all (base/OutputFiles.h).
+    OutputSet outputs;
+    std::ostringstream wrote;
     std::vector<std::string> specs{o.plan};
     if (o.compare)
         specs = {"jfa",     "jfa+1",    "jfa+2",    "jfa2",       "1+jfa",
@@ -283,7 +288,8 @@ int runVoronoi(const VoronoiOptions& o) {
         else if (region == jfa::FloodRegion::Band)
             std::cout << "  flood region: full (every tile lies within the plan's reach of "
                       << jfa::planBandReach(plan) << " texels from a site)\n";
-        if (!o.compare) writeOutputs(o, r.grid, exact, jfa::errorPixelMask(r.grid, view), crit);
+        if (!o.compare)
+            writeOutputs(o, r.grid, exact, jfa::errorPixelMask(r.grid, view), crit, wrote);
     }
     if (!in.mask.empty() && !o.compare) {
         // Distance transforms of the mask on the CPU kernel, against the exact ones.
@@ -307,8 +313,10 @@ int runVoronoi(const VoronoiOptions& o) {
                       << jfa::noFeatureDistance(w, h) << " (hypot(width, height)) everywhere\n";
         const auto path = std::filesystem::path(o.out) / (o.name + ".sdf.exr");
         writeExr(path, w, h, {{"signed_distance", flipped}});
-        std::cout << "wrote " << path.string() << " (negative inside the mask)\n";
+        wrote << "wrote " << path.string() << " (negative inside the mask)\n";
     }
+    outputs.commit();
+    std::cout << wrote.str();
     return 0;
 }
 

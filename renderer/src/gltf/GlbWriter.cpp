@@ -5,6 +5,8 @@
 
 #include <geometry/Framing.h>
 
+#include <base/OutputFiles.h>
+
 #include <nlohmann/json.hpp>
 #include <stb_image_write.h>
 
@@ -326,36 +328,12 @@ std::vector<std::uint8_t> glbBytes(const Scene& scene) {
     return std::move(out.data);
 }
 
-[[noreturn]] void ioError(const std::filesystem::path& path, int err) {
-    throw std::runtime_error("writeGlb: " + path.string() + ": " + std::strerror(err));
-}
-
-/// Writes `bytes` to `file` through a temporary sibling and a rename.
-void writeAtomically(const std::filesystem::path& file, const std::vector<std::uint8_t>& bytes) {
-    std::filesystem::path tmp = file;
-    tmp += ".tmp";
-    std::FILE* f = std::fopen(tmp.c_str(), "wb");
-    if (!f) ioError(tmp, errno);
-    const bool written = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
-    const int writeErr = errno;
-    const bool closed = std::fclose(f) == 0;
-    const int closeErr = errno;
-    if (!written || !closed) {
-        std::remove(tmp.c_str());
-        ioError(tmp, !written ? writeErr : closeErr);
-    }
-    if (std::rename(tmp.c_str(), file.c_str()) != 0) {
-        const int err = errno;
-        std::remove(tmp.c_str());
-        ioError(file, err);
-    }
-}
-
 } // namespace
 
 void writeGlb(const Scene& scene, const std::filesystem::path& file) {
     validate(scene);
-    writeAtomically(file, glbBytes(scene));
+    const std::vector<std::uint8_t> bytes = glbBytes(scene);
+    writeFileAtomically(file, {reinterpret_cast<const char*>(bytes.data()), bytes.size()});
 }
 
 } // namespace fl

@@ -1,6 +1,7 @@
 #include <renderer/io/ImageIO.h>
 
 #include <base/InputFile.h>
+#include <base/OutputFiles.h>
 #include <base/Text.h>
 
 #include <ImfChannelList.h>
@@ -28,57 +29,25 @@
 #include <fstream>
 #include <stdexcept>
 #include <system_error>
-#include <unistd.h>
 
 namespace fl {
 
 namespace {
-
-// A unique temporary name next to `path`, so the final rename stays on one file system.
-std::filesystem::path tempNameFor(const std::filesystem::path& path) {
-    static int counter = 0;
-    // Appended piecewise: GCC 12 at -O3 reports a false -Wrestrict for `"." + std::string`.
-    std::string name = path.filename().string();
-    name.insert(0, 1, '.');
-    name.append(".tmp").append(std::to_string(::getpid())).append("_");
-    name.append(std::to_string(counter++));
-    return path.parent_path() / name;
-}
-
+// Image and text outputs go into folders made on demand (--out, screenshot folders).
 void ensureParent(const std::filesystem::path& path) {
     const std::filesystem::path dir = path.parent_path();
     if (dir.empty()) return;
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
-    if (ec) throw std::runtime_error(dir.string() + ": cannot create folder: " + ec.message());
+    if (ec)
+        throw std::runtime_error(path.string() + ": cannot create its folder " + dir.string() +
+                                 ": " + ec.message());
 }
-
-void commit(const std::filesystem::path& tmp, const std::filesystem::path& path) {
-    std::error_code ec;
-    std::filesystem::rename(tmp, path, ec);
-    if (ec) {
-        std::filesystem::remove(tmp, ec);
-        throw std::runtime_error(path.string() +
-                                 ": cannot move finished file into place: " + ec.message());
-    }
-}
-
 } // namespace
 
 void writeTextFile(const std::filesystem::path& path, const std::string& text) {
     ensureParent(path);
-    const std::filesystem::path tmp = tempNameFor(path);
-    {
-        std::ofstream out(tmp, std::ios::binary);
-        out << text;
-        out.close();
-        if (!out) {
-            std::error_code ec;
-            std::filesystem::remove(tmp, ec);
-            throw std::runtime_error(path.string() + ": cannot write");
-        }
-    }
-    commit(tmp, path);
+    writeFileAtomically(path, text); // base/OutputFiles.h
 }
 
 FloatImage readTexture(const gl::Texture& texture, int channels) {
@@ -138,7 +107,7 @@ ByteImage toSrgb8(const FloatImage& linear) {
 
 void writePng(const std::filesystem::path& path, const ByteImage& image) {
     ensureParent(path);
-    const std::filesystem::path tmp = tempNameFor(path);
+    const std::filesystem::path tmp = temporarySibling(path);
     const int ok = stbi_write_png(tmp.c_str(), image.width, image.height, image.channels,
                                   image.data.data(), image.width * image.channels);
     if (!ok) {
@@ -146,7 +115,7 @@ void writePng(const std::filesystem::path& path, const ByteImage& image) {
         std::filesystem::remove(tmp, ec);
         throw std::runtime_error(path.string() + ": cannot write PNG: " + std::strerror(errno));
     }
-    commit(tmp, path);
+    finishOutputFile(tmp, path);
 }
 
 ByteImage readPng(const std::filesystem::path& path, std::string_view role) {
@@ -174,7 +143,7 @@ ByteImage readPng(const std::filesystem::path& path, std::string_view role) {
 void writeExr(const std::filesystem::path& path, int width, int height,
               const std::vector<ExrChannel>& channels) {
     ensureParent(path);
-    const std::filesystem::path tmp = tempNameFor(path);
+    const std::filesystem::path tmp = temporarySibling(path);
     try {
         Imf::Header header(width, height);
         header.compression() = Imf::ZIP_COMPRESSION;
@@ -196,7 +165,7 @@ void writeExr(const std::filesystem::path& path, int width, int height,
         std::filesystem::remove(tmp, ec);
         throw std::runtime_error(path.string() + ": cannot write EXR: " + e.what());
     }
-    commit(tmp, path);
+    finishOutputFile(tmp, path);
 }
 
 std::vector<ExrChannel> readExr(const std::filesystem::path& path, int& width, int& height) {

@@ -1,0 +1,108 @@
+// base/OutputFiles.h: files appear whole (temporary sibling, then rename), and a command's set
+// of outputs appears together or not at all.
+
+#include "TestPaths.h"
+
+#include <base/OutputFiles.h>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace fl {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path freshDir(const std::string& name) {
+    const fs::path d = test::outputDir("output_files") / name;
+    fs::remove_all(d);
+    fs::create_directories(d);
+    return d;
+}
+
+std::string contents(const fs::path& p) {
+    std::ifstream in(p);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+std::size_t entries(const fs::path& dir) {
+    std::size_t n = 0;
+    for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++n;
+    return n;
+}
+
+TEST(OutputFiles, AFileAppearsWholeAndLeavesNoTemporary) {
+    const fs::path d = freshDir("single");
+    writeFileAtomically(d / "a.txt", "hello");
+    EXPECT_EQ(contents(d / "a.txt"), "hello");
+    writeFileAtomically(d / "a.txt", "again"); // replaces
+    EXPECT_EQ(contents(d / "a.txt"), "again");
+    EXPECT_THROW(writeFileAtomically(d / "sub" / "b.txt", "x"), OutputFileError)
+        << "the folder must exist";
+    EXPECT_EQ(entries(d), 1u) << "no temporaries left";
+    EXPECT_THROW(writeFileAtomically(d / "a.txt" / "c.txt", "x"), OutputFileError);
+}
+
+TEST(OutputFiles, ASetAppearsAtCommitOnly) {
+    const fs::path d = freshDir("commit");
+    {
+        OutputSet set;
+        writeFileAtomically(d / "a.txt", "1");
+        const fs::path tmp = temporarySibling(d / "b.bin");
+        std::ofstream(tmp) << "2";
+        finishOutputFile(tmp, d / "b.bin");
+        EXPECT_FALSE(fs::exists(d / "a.txt"));
+        EXPECT_FALSE(fs::exists(d / "b.bin"));
+        EXPECT_EQ(set.pending().size(), 2u);
+        set.commit();
+    }
+    EXPECT_EQ(contents(d / "a.txt"), "1");
+    EXPECT_EQ(contents(d / "b.bin"), "2");
+    EXPECT_EQ(entries(d), 2u);
+}
+
+// Named after the bug: render with an unwritable --aliasing-map left its PNG and EXR behind.
+TEST(OutputFiles, AFailureBeforeCommitLeavesNothing) {
+    const fs::path d = freshDir("rollback");
+    std::ofstream(d / "old.txt") << "kept";
+    try {
+        OutputSet set;
+        writeFileAtomically(d / "frame.png", "png");
+        writeFileAtomically(d / "old.txt", "replaced?");
+        writeFileAtomically(d / "old.txt" / "aliasing.png", "fails: a file is not a folder");
+        set.commit();
+        FAIL() << "the third file cannot be written";
+    } catch (const OutputFileError& e) {
+        EXPECT_NE(std::string(e.what()).find("aliasing.png"), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(fs::exists(d / "frame.png"));
+    EXPECT_EQ(contents(d / "old.txt"), "kept") << "an existing file is replaced only at commit";
+    EXPECT_EQ(entries(d), 1u) << "no temporaries left";
+}
+
+TEST(OutputFiles, ANestedSetHandsItsFilesToTheOuterOne) {
+    const fs::path d = freshDir("nested");
+    {
+        OutputSet outer;
+        {
+            OutputSet inner;
+            writeFileAtomically(d / "inner.txt", "i");
+            inner.commit();
+        }
+        EXPECT_FALSE(fs::exists(d / "inner.txt")) << "the outer set decides";
+        writeFileAtomically(d / "outer.txt", "o");
+        // No commit: both are dropped.
+    }
+    EXPECT_EQ(entries(d), 0u);
+    writeFileAtomically(d / "after.txt", "a"); // no set open any more: written at once
+    EXPECT_TRUE(fs::exists(d / "after.txt"));
+}
+
+} // namespace
+} // namespace fl
