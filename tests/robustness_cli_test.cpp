@@ -277,5 +277,28 @@ TEST(RobustnessCli, AFailedCommandLeavesNoOutputs) {
     EXPECT_TRUE(fs::exists(d / "steps"));
 }
 
+// Messages name the input and the problem, not our functions (SvgPicture::render:,
+// randomIntegerSites:) or raw "filesystem error" text.
+TEST(RobustnessCli, MessagesNameTheInputNotTheFunction) {
+    const fs::path d = folder("messages");
+    std::ofstream(d / "huge.xy") << "1e308 0\n-1e308 0\n0 1e308\n5 7\n";
+    const Outcome svg =
+        run("delaunay " + (d / "huge.xy").string() + " --backend cpu --out " + (d / "m").string());
+    expectRefused(svg, (d / "huge.xy").string() + ": cannot draw " + (d / "m.svg").string());
+    EXPECT_EQ(svg.output.find("SvgPicture"), std::string::npos) << svg.output;
+    EXPECT_FALSE(fs::exists(d / "m.node")) << "all or nothing";
+
+    const Outcome sites = run("voronoi --width 8 --height 8 --sites 100 --out " + d.string());
+    expectRefused(sites, "--sites: 100 distinct sites do not fit a 8x8 grid");
+    EXPECT_EQ(sites.output.find("randomIntegerSites"), std::string::npos) << sites.output;
+
+    std::ofstream(d / "file") << "x";
+    const Outcome steps = run("delaunay " + (d / "huge.xy").string() + " --backend cpu --steps " +
+                              (d / "file" / "steps").string());
+    expectRefused(steps,
+                  "--steps " + (d / "file" / "steps").string() + ": cannot create the folder");
+    EXPECT_EQ(steps.output.find("filesystem error"), std::string::npos) << steps.output;
+}
+
 } // namespace
 } // namespace fl::test

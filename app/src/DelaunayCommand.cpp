@@ -148,7 +148,7 @@ void printCounts(const geom::DelaunayResult& r, std::ostream& out) {
 void writeMeshFiles(const DelaunayCliOptions& o, const geom::Triangulation& mesh,
                     std::ostream& log) {
     const std::filesystem::path prefix = o.out;
-    if (prefix.has_parent_path()) std::filesystem::create_directories(prefix.parent_path());
+    if (prefix.has_parent_path()) makeOutputFolder(prefix.parent_path(), "--out");
     auto named = [&](const char* ext) { return std::filesystem::path(prefix.string() + ext); };
     const bool all = o.format == "all";
     if (all || o.format == "node") {
@@ -162,7 +162,12 @@ void writeMeshFiles(const DelaunayCliOptions& o, const geom::Triangulation& mesh
         log << "wrote " << named(".obj").string() << "\n";
     }
     if (o.format == "svg" || (all && mesh.points.size() <= kMaxPicturePoints)) {
-        geom::writeSvg(named(".svg"), geom::triangulationPicture(mesh.points, mesh.triangles));
+        try {
+            geom::writeSvg(named(".svg"), geom::triangulationPicture(mesh.points, mesh.triangles));
+        } catch (const std::invalid_argument& e) { // e.g. an extent beyond a double
+            throw InputError(o.input + ": cannot draw " + named(".svg").string() + " (" + e.what() +
+                             "); --format node or obj writes the mesh without it");
+        }
         log << "wrote " << named(".svg").string() << "\n";
     } else if (all) {
         log << "skipped " << named(".svg").string() << ": more than " << kMaxPicturePoints
@@ -233,9 +238,13 @@ int runDelaunay(const DelaunayCliOptions& o) {
     std::ostringstream wrote;
     if (!o.out.empty()) writeMeshFiles(o, r.mesh, wrote);
     if (!o.steps.empty()) {
-        if (pictures)
-            writeStepPictures(o.steps, points, r, wrote);
-        else
+        if (pictures) {
+            try {
+                writeStepPictures(o.steps, points, r, wrote);
+            } catch (const std::invalid_argument& e) {
+                throw InputError(o.input + ": cannot draw the --steps pictures (" + e.what() + ")");
+            }
+        } else
             std::cout << "steps: " << points.size() << " points (more than " << kMaxPicturePoints
                       << "): step pictures skipped, they would be unreadable; use a subset\n";
     }

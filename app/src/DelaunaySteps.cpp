@@ -3,6 +3,8 @@
 
 #include "DelaunaySteps.h"
 
+#include "Common.h"
+
 #include <geometry/MeshSvg.h>
 
 #include <algorithm>
@@ -156,7 +158,7 @@ void writeStepPictures(const std::filesystem::path& dir, const std::vector<glm::
     if (r.stages.size() < 5)
         throw std::runtime_error("--steps: the pipeline kept " + std::to_string(r.stages.size()) +
                                  " stages, expected 5 (T', C1, C2, C3, C4)");
-    std::filesystem::create_directories(dir);
+    makeOutputFolder(dir, "--steps");
     const geom::DiscreteDelaunay& d = r.discrete;
     const geom::TextureMapping& m = d.snapped.mapping;
     const std::vector<glm::dvec2> pixels = pixelPositions(d);

@@ -119,6 +119,10 @@ Input makeInput(const VoronoiOptions& o) {
         sites = readPoints(o.points);
     else if (o.floatSites)
         sites = jfa::randomFloatSites(o.sites, o.width, o.height, o.seed);
+    else if (std::int64_t(o.sites) > std::int64_t(o.width) * o.height)
+        throw InputError("--sites: " + std::to_string(o.sites) + " distinct sites do not fit a " +
+                         std::to_string(o.width) + "x" + std::to_string(o.height) +
+                         " grid (use --float-sites, or a larger grid)");
     else
         sites = jfa::randomIntegerSites(o.sites, o.width, o.height, o.seed);
     in.integer = !o.floatSites;

@@ -302,7 +302,7 @@ std::string SvgPicture::render() const {
     const glm::dvec2 view = extent + 2.0 * margin;
     if (!std::isfinite(view.x) || !std::isfinite(view.y) || !std::isfinite(viewMin.x) ||
         !std::isfinite(viewMin.y) || !(view.x > 0 && view.y > 0))
-        throw std::invalid_argument("SvgPicture::render: the picture's extent overflows double");
+        throw std::invalid_argument("the picture's extent overflows a double");
 
     // Pixel sizes from the mean spacing of the points on the nominal picture: markers 15% of
     // it, lines a sixteenth, clamped so that few points do not get blobs and many do not vanish.
