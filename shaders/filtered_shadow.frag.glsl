@@ -18,6 +18,9 @@ uniform int uPcss; // 0 PCF, 1 PCSS
 uniform vec3 uDiskCenter;
 uniform float uDiskRadius;
 uniform float uSearchDepth;
+uniform vec3 uDiskNormalView; // the disk's normal (toward the scene) and tangents, light view
+uniform vec3 uDiskTangentView;
+uniform vec3 uDiskBitangentView;
 uniform int uTapCount;
 uniform vec2 uTaps[225];
 uniform int uBlockerCount;
@@ -29,8 +32,6 @@ vec3 unproject(vec3 ndc) {
     return v.xyz / v.w;
 }
 
-// Light-view depth (distance along the light's axis) of a stored window-space depth.
-float viewDepth(float z) { return -unproject(vec3(0.0, 0.0, 2.0 * z - 1.0)).z; }
 
 // One tap at light NDC point s for the receiver plane (pv, nv) in view space: x = 1 lit,
 // 0 shadowed; y = the stored depth (1 when off the map).
@@ -67,6 +68,23 @@ vec4 diskThrough(vec3 pv, vec3 cv, float d) {
     return vec4(clip.xy / clip.w, vec2(uLightProj[0][0], uLightProj[1][1]) * r / clip.w);
 }
 
+// PCSS's filter region: the disk seen from pv through the plane parallel to the disk at
+// distance `blocker` in front of it; NDC centre (xy) and the images of the disk's tangents.
+// Taken across the disk, not across the map, which differ where the map is not aimed along the
+// spot (fl::diskImage on the CPU, the same operations).
+void diskImage(vec3 pv, vec3 cv, float blocker, out vec2 centre, out vec2 u, out vec2 v) {
+    float dR = dot(pv - cv, uDiskNormalView);
+    float k = (dR - blocker) / max(dR, 1e-6);
+    vec3 x = pv + (cv - pv) * k;
+    float r = uDiskRadius * max(k, 0.0);
+    vec4 c0 = uLightProj * vec4(x, 1.0);
+    vec4 cu = uLightProj * vec4(x + r * uDiskTangentView, 1.0);
+    vec4 cb = uLightProj * vec4(x + r * uDiskBitangentView, 1.0);
+    centre = c0.xy / c0.w;
+    u = cu.xy / cu.w - centre;
+    v = cb.xy / cb.w - centre;
+}
+
 float filtered(vec3 world, vec3 n) {
     vec3 pv = (uLightView * vec4(world, 1.0)).xyz;
     vec3 nv = mat3(uLightView) * n;
@@ -83,17 +101,22 @@ float filtered(vec3 world, vec3 n) {
     vec4 search = diskThrough(pv, cv, uSearchDepth);
     float blockers = 0.0, depthSum = 0.0;
     for (int i = 0; i < uBlockerCount; ++i) {
-        vec2 r = tap(search.xy + search.zw * uBlockerTaps[i], pv, nv, ndc.z);
+        vec2 s = search.xy + search.zw * uBlockerTaps[i];
+        vec2 r = tap(s, pv, nv, ndc.z);
         if (r.x == 0.0) {
             blockers += 1.0;
-            depthSum += viewDepth(r.y);
+            // The blocker's distance in front of the disk, from its point in the map.
+            vec3 bv = unproject(vec3(s, 2.0 * r.y - 1.0));
+            depthSum += dot(bv - cv, uDiskNormalView);
         }
     }
     if (blockers == 0.0) return 1.0;
-    // Filter: the disk seen through the mean blocker depth (penumbra by similar triangles).
-    vec4 f = diskThrough(pv, cv, depthSum / blockers);
+    // Filter: the disk seen through the mean blocker distance (penumbra by similar triangles).
+    vec2 centre, u, v;
+    diskImage(pv, cv, depthSum / blockers, centre, u, v);
     float lit = 0.0;
-    for (int i = 0; i < uTapCount; ++i) lit += tap(f.xy + f.zw * uTaps[i], pv, nv, ndc.z).x;
+    for (int i = 0; i < uTapCount; ++i)
+        lit += tap(centre + u * uTaps[i].x + v * uTaps[i].y, pv, nv, ndc.z).x;
     return lit / float(uTapCount);
 }
 

@@ -1,5 +1,7 @@
 #include <renderer/soft/FilteredShadow.h>
 
+#include <geometry/DiskSampling.h>
+
 #include <renderer/passes/SurfacesPass.h>
 
 #include <glm/gtc/type_ptr.hpp>
@@ -85,6 +87,26 @@ glm::vec4 diskThrough(const FilterFrame& f, glm::vec3 pv, glm::vec3 cv, float d)
             f.lightProj[1][1] * r / clip.w};
 }
 
+// PCSS's filter region: the disk light seen from the receiver pv through the plane parallel to
+// the disk at distance `blocker` in front of it (the blockers' mean distance), projected into
+// the light's NDC: centre and the images of the disk's two tangents (the projection taken as
+// affine across the small region). Same operations as diskImage() in the shader.
+struct DiskImage {
+    glm::vec2 centre, u, v;
+};
+DiskImage diskImage(const FilterFrame& f, glm::vec3 pv, glm::vec3 cv, float blocker) {
+    const float dR = glm::dot(pv - cv, f.diskNormalView);
+    const float k = (dR - blocker) / std::max(dR, 1e-6f);
+    const glm::vec3 x = pv + (cv - pv) * k;
+    const float r = f.disk.radius * std::max(k, 0.0f);
+    auto ndc = [&](glm::vec3 q) {
+        const glm::vec4 c = f.lightProj * glm::vec4(q, 1.0f);
+        return glm::vec2(c.x / c.w, c.y / c.w);
+    };
+    const glm::vec2 c0 = ndc(x);
+    return {c0, ndc(x + r * f.diskTangentView) - c0, ndc(x + r * f.diskBitangentView) - c0};
+}
+
 } // namespace
 
 std::vector<float> readDepthMap(const gl::Texture& depth) {
@@ -115,12 +137,18 @@ float filteredVisibility(const FilterFrame& f, glm::vec3 p, glm::vec3 n) {
             tap(f, invProj, glm::vec2(search) + glm::vec2(search.z, search.w) * b, pv, nv, ndc.z);
         if (r.lit == 0.0f) {
             blockers += 1.0f;
-            depthSum += -unproject(invProj, {0.0f, 0.0f, 2.0f * r.stored - 1.0f}).z;
+            // The blocker's distance in front of the disk, from its point in the map.
+            const glm::vec2 s = glm::vec2(search) + glm::vec2(search.z, search.w) * b;
+            const glm::vec3 bv = unproject(invProj, {s, 2.0f * r.stored - 1.0f});
+            depthSum += glm::dot(bv - cv, f.diskNormalView);
         }
     }
     if (blockers == 0.0f) return 1.0f;
-    const glm::vec4 fd = diskThrough(f, pv, cv, depthSum / blockers);
-    return filter(glm::vec2(fd), glm::vec2(fd.z, fd.w));
+    const DiskImage d = diskImage(f, pv, cv, depthSum / blockers);
+    float lit = 0.0f;
+    for (glm::vec2 t : f.taps)
+        lit += tap(f, invProj, d.centre + d.u * t.x + d.v * t.y, pv, nv, ndc.z).lit;
+    return lit / static_cast<float>(f.taps.size());
 }
 
 FilteredShadowPass::FilteredShadowPass(const gl::ShaderLibrary& shaders)
@@ -144,6 +172,11 @@ FilterFrame FilteredShadowPass::frame(const Inputs& in) const {
     // The blocker search looks through the near plane, but never at or behind the disk.
     const float diskDepth = -(in.lightVolume.view * glm::vec4(in.light.center, 1.0f)).z;
     f.searchDepth = std::max(in.lightVolume.znear, diskDepth + 1e-3f * in.lightVolume.znear);
+    const glm::mat3 toView(in.lightVolume.view);
+    const geom::DiskFrame axes = geom::diskFrame(in.light.normal);
+    f.diskNormalView = glm::normalize(toView * in.light.normal);
+    f.diskTangentView = toView * axes.tangent;
+    f.diskBitangentView = toView * axes.bitangent;
     const int k = in.settings.pcfKernel;
     if (in.pcss) {
         f.taps = vogelDisk(in.settings.pcss.filterSamples);
@@ -181,6 +214,9 @@ FilteredShadowPass::Outputs FilteredShadowPass::execute(const Inputs& in, gl::Pa
     program_.set("uDiskCenter", f.disk.center);
     program_.set("uDiskRadius", f.disk.radius);
     program_.set("uSearchDepth", f.searchDepth);
+    program_.set("uDiskNormalView", f.diskNormalView);
+    program_.set("uDiskTangentView", f.diskTangentView);
+    program_.set("uDiskBitangentView", f.diskBitangentView);
     program_.set("uTapCount", static_cast<int>(f.taps.size()));
     glProgramUniform2fv(id, glGetUniformLocation(id, "uTaps"), static_cast<GLsizei>(f.taps.size()),
                         glm::value_ptr(f.taps[0]));
