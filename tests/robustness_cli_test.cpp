@@ -27,8 +27,13 @@ Outcome run(const std::string& args) {
     return runCommand("timeout 120 " + std::string(FLOODLIGHT_BINARY) + " " + args);
 }
 
+// One folder per test: ctest runs the tests of this file as parallel processes, and a FIFO
+// named mask.png in one test was replaced by another test's mask.png.
 fs::path dir() {
-    return outputDir("robustness_cli");
+    const fs::path d = outputDir("robustness_cli") /
+                       ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    fs::create_directories(d);
+    return d;
 }
 
 // A FIFO at dir()/name (replacing whatever was there): reading it would block forever.
