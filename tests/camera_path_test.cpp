@@ -41,6 +41,11 @@ TEST(CameraPath, BadFilesNameTheField) {
          "\"target\": [1,0,0]}]}",
          "keys[0].target[2]"},
         {"{\"fov\": 500, \"keys\": []}", "fov"},
+        // Found by fuzz/fuzz_camera_path: a key at 1.7e38 (within a float) gave infinite
+        // cameras between the keys.
+        {"{\"keys\": [{\"eye\": [1e3,-2,0.5], \"target\": [0,0,0]}, {\"eye\": "
+         "[166666666666666666666666666666666666666,1,1], \"target\": [1,1,2]}]}",
+         "keys[1].eye[0]: must be a finite number in [-1e+15, 1e+15]"},
         {"{}", "keys: missing"},
         {"[1, 2", "not valid JSON"},
     };

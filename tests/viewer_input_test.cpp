@@ -125,6 +125,14 @@ void expectError(const std::string& text, const std::string& expected) {
     }
 }
 
+// Found by fuzz/fuzz_input_script: a position beyond a float (2.7e150) parsed as a finite double
+// and became an infinite click position.
+TEST(InputScript, ClickBeyondAFloatIsRefused) {
+    expectError("wait 2\nclick 10 2" + std::string(150, '7') + "\n",
+                "my.script:2: must be a finite number in [-1000000, 1000000]");
+    expectError("drag left 0 0 1e39 0\n", "must be a finite number in [-1000000, 1000000]");
+}
+
 TEST(InputScript, RejectsBadLinesWithFileAndLine) {
     expectError("wait 1\njump 3\n", "my.script:2: unknown event 'jump'");
     expectError("key\n", "my.script:1: expected 'key NAME'");
@@ -132,9 +140,9 @@ TEST(InputScript, RejectsBadLinesWithFileAndLine) {
     expectError("wait 0\n", "my.script:1: must be an integer in [1, 1000000], got '0'");
     expectError("wait 2.5\n", "must be an integer");
     expectError("wait 1e7\n", "must be an integer in [1, 1000000]");
-    expectError("scroll x\n", "must be a finite number, got 'x'");
-    expectError("scroll nan\n", "must be a finite number, got 'nan'");
-    expectError("scroll 1e400\n", "must be a finite number, got '1e400'");
+    expectError("scroll x\n", "must be a finite number in [-1000000, 1000000], got 'x'");
+    expectError("scroll nan\n", "got 'nan'");
+    expectError("scroll 1e400\n", "got '1e400'");
     expectError("resize -1 5\n", "must be an integer in [0, 1000000], got '-1'");
     expectError("drag middle 0 0 1 1\n", "left or right");
     expectError("screenshot ../x\n", "without folders");

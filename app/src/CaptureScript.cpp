@@ -10,7 +10,6 @@
 
 #include <cmath>
 #include <iomanip>
-#include <limits>
 #include <set>
 #include <sstream>
 
@@ -24,6 +23,10 @@ using Json = nlohmann::json;
 [[noreturn]] void fail(const std::string& field, const std::string& problem) {
     throw CaptureScriptError(field + ": " + problem);
 }
+
+// Positions and sizes at most 1e15, the world's limit (camera paths and the ray tracer have the
+// same): beyond it, interpolation and the light's frustum overflow a float.
+constexpr double kMaxCoordinate = 1e15;
 
 // A number of the script, by the rule of the command line (base/Numbers.h).
 double readNumber(const Json& j, const std::string& field, double lo, double hi, bool integer) {
@@ -43,9 +46,8 @@ glm::vec3 readVec3(const Json& j, const std::string& field) {
     glm::vec3 v{0.0f};
     for (int k = 0; k < 3; ++k) {
         const Json& c = j[static_cast<std::size_t>(k)];
-        constexpr double kFloatMax = std::numeric_limits<float>::max();
-        v[k] = static_cast<float>(
-            readNumber(c, field + "[" + std::to_string(k) + "]", -kFloatMax, kFloatMax, false));
+        v[k] = static_cast<float>(readNumber(c, field + "[" + std::to_string(k) + "]",
+                                             -kMaxCoordinate, kMaxCoordinate, false));
     }
     return v;
 }
@@ -87,8 +89,8 @@ void parseCamera(const Json& j, const std::filesystem::path& dir, CaptureScript&
 void parseLight(const Json& j, CaptureScript& s) {
     checkKeys(j, "light", {"radius", "keys"});
     if (j.contains("radius")) {
-        s.lightRadius = static_cast<float>(
-            readNumber(j["radius"], "light.radius", 0.0, std::numeric_limits<float>::max(), false));
+        s.lightRadius =
+            static_cast<float>(readNumber(j["radius"], "light.radius", 0.0, kMaxCoordinate, false));
     }
     if (j.contains("keys")) {
         if (!j["keys"].is_array() || j["keys"].empty())

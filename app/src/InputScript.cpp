@@ -24,8 +24,11 @@ std::vector<std::string> words(const std::string& line) {
     return out;
 }
 
-// The largest count a line may give (frames to wait or hold, drag steps, window sizes).
+// The largest count a line may give (frames to wait or hold, drag steps, window sizes), and the
+// largest magnitude of a position or scroll amount: beyond a float, a click at 2.7e150 became
+// an infinite window position (found by fuzz/fuzz_input_script).
 constexpr double kMaxCount = 1'000'000;
+constexpr double kMaxMagnitude = 1'000'000;
 
 class LineParser {
   public:
@@ -41,7 +44,7 @@ class LineParser {
     }
     // Numbers by the rule of the command line (base/Numbers.h): finite, whole for counts.
     double number(std::size_t i) const {
-        if (std::string problem = numberProblem(w_[i], -kUnbounded, kUnbounded, false);
+        if (std::string problem = numberProblem(w_[i], -kMaxMagnitude, kMaxMagnitude, false);
             !problem.empty())
             fail(problem);
         double v = 0.0;

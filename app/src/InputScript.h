@@ -13,8 +13,8 @@
 //   drop PATH              as if PATH (the rest of the line) were dropped on the window
 //   wait FRAMES            render FRAMES frames
 //   quit                   close the window (also implied at the end of the script)
-// Events up to the next hold/wait run before the same frame renders. Numbers are finite; counts
-// (FRAMES, STEPS, W, H) are whole and at most 1000000.
+// Events up to the next hold/wait run before the same frame renders. Numbers are finite and at
+// most 1000000 in magnitude; counts (FRAMES, STEPS, W, H) are whole and at most 1000000.
 
 #include <glm/glm.hpp>
 

@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Runs a libFuzzer target for SECONDS (default 60): bash scripts/fuzz.sh TARGET|all [SECONDS].
+# Targets: plan, points, input_script, camera_path (fuzz/). It builds the clang preset `fuzz`, starts from
+# the committed seeds (fuzz/corpus/TARGET, never modified) plus what earlier runs found
+# (build/fuzz/corpus/TARGET), and stops at the first crash, leak or timeout, whose input is
+# written to build/fuzz/artifacts/ (make it a regression fixture named after the bug).
+# Prints the executions per second and in total.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+target=${1:?usage: bash scripts/fuzz.sh TARGET|all [SECONDS]}
+seconds=${2:-60}
+targets=(plan points input_script camera_path)
+[ "$target" = all ] || targets=("$target")
+
+cmake --preset fuzz >/dev/null
+cmake --build build/fuzz -j "$(nproc)" --target "${targets[@]/#/fuzz_}"
+mkdir -p build/fuzz/artifacts
+for t in "${targets[@]}"; do
+  found=build/fuzz/corpus/$t
+  mkdir -p "$found"
+  log=build/fuzz/$t.log
+  # -rss_limit_mb and -timeout turn unbounded memory and hangs into failures.
+  if ! "build/fuzz/fuzz/fuzz_$t" "$found" "fuzz/corpus/$t" -max_total_time="$seconds" \
+      -rss_limit_mb=2048 -timeout=10 -artifact_prefix="build/fuzz/artifacts/$t-" \
+      -print_final_stats=1 >"$log" 2>&1; then
+    tail -40 "$log"
+    echo "fuzz_$t: FAILED (input under build/fuzz/artifacts/)" >&2
+    exit 1
+  fi
+  runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$')
+  echo "fuzz_$t: $runs executions in ${seconds} s ($((runs / seconds)) per second), no failure"
+done
