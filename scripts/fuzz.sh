@@ -4,7 +4,9 @@
 # the committed seeds (fuzz/corpus/TARGET, never modified) plus what earlier runs found
 # (build/fuzz/corpus/TARGET), and stops at the first crash, leak or timeout, whose input is
 # written to build/fuzz/artifacts/ (make it a regression fixture named after the bug).
-# Prints the executions per second and in total.
+# Prints the executions per second and in total. FLOODLIGHT_FUZZ_SEED=N fixes libFuzzer's seed:
+# from a clean build/fuzz the run is then the same sequence of inputs on every machine (CI uses 1;
+# a longer run with that seed here covers what CI's shorter one tries).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 target=${1:?usage: bash scripts/fuzz.sh TARGET|all [SECONDS]}
@@ -20,7 +22,9 @@ for t in "${targets[@]}"; do
   mkdir -p "$found"
   log=build/fuzz/$t.log
   # -rss_limit_mb and -timeout turn unbounded memory and hangs into failures.
-  if ! "build/fuzz/fuzz/fuzz_$t" "$found" "fuzz/corpus/$t" -max_total_time="$seconds" \
+  seed=()
+  [ -n "${FLOODLIGHT_FUZZ_SEED:-}" ] && seed=(-seed="$FLOODLIGHT_FUZZ_SEED")
+  if ! "build/fuzz/fuzz/fuzz_$t" "$found" "fuzz/corpus/$t" -max_total_time="$seconds" "${seed[@]}" \
       -rss_limit_mb=2048 -timeout=10 -artifact_prefix="build/fuzz/artifacts/$t-" \
       -print_final_stats=1 >"$log" 2>&1; then
     tail -40 "$log"
