@@ -7,6 +7,7 @@
 #include "Commands.h"
 
 #include <base/InputFile.h>
+#include <base/OutputFiles.h>
 #include <renderer/run/FrameRunner.h>
 
 #include <renderer/context/EglContext.h>
@@ -35,11 +36,8 @@ struct CaptureRequest {
 // Creates DIR, proves it writable and removes the outputs of an earlier run there, so that a
 // failure of this run cannot leave an old summary or report looking like this run's.
 void prepareOutput(const fs::path& dir) {
+    makeOutputFolder(dir, "--out");
     std::error_code ec;
-    fs::create_directories(dir, ec);
-    if (ec || !fs::is_directory(dir))
-        throw InputError("--out " + dir.string() + ": cannot create the folder" +
-                         (ec ? " (" + ec.message() + ")" : std::string()));
     try {
         writeTextFile(dir / ".capture-write-test", "");
     } catch (const std::runtime_error& e) {
@@ -219,9 +217,11 @@ void captureSize(const CaptureSetup& c, int w, int h, FrameRunner& runner,
     results.referenceFrameMs.insert(results.referenceFrameMs.end(), refMs.begin(), refMs.end());
 }
 
-// frames.csv, the worst-frame pictures, summary.json, and report.html last; a report that
-// cannot be written takes the summary with it, so neither claims a run that did not finish.
+// frames.csv, the worst-frame pictures, summary.json and report.html, together or not at all
+// (base/OutputFiles.h): a report that cannot be written takes the summary with it, so neither
+// claims a run that did not finish.
 nlohmann::json writeOutputs(const fs::path& dir, const CaptureResults& results) {
+    OutputSet outputs;
     writeCsv(dir / "frames.csv", resultsCsv(results));
     const fs::path imageDir = dir / "report";
     for (const MethodRun& run : results.runs)
@@ -231,14 +231,9 @@ nlohmann::json writeOutputs(const fs::path& dir, const CaptureResults& results) 
                         differencePicture(run.worstMethod, run.worstReference, 4.0f,
                                           run.worstReceivers)}));
     const nlohmann::json summary = resultsSummary(results);
-    try {
-        writeJson(dir / "summary.json", summary);
-        writeTextFile(dir / "report.html", reportHtml(results, summary, "report"));
-    } catch (...) {
-        std::error_code ec;
-        fs::remove(dir / "summary.json", ec);
-        throw;
-    }
+    writeJson(dir / "summary.json", summary);
+    writeTextFile(dir / "report.html", reportHtml(results, summary, "report"));
+    outputs.commit();
     return summary;
 }
 

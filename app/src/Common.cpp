@@ -112,15 +112,6 @@ CLI::Validator integer(double lo, double hi) {
         [lo, hi](const std::string& text) { return numberProblem(text, lo, hi, true); }, "INT");
 }
 
-void makeOutputFolder(const std::filesystem::path& dir, std::string_view option) {
-    if (dir.empty()) return;
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    if (ec || !std::filesystem::is_directory(dir))
-        throw InputError(std::string(option) + " " + dir.string() + ": cannot create the folder" +
-                         (ec ? " (" + ec.message() + ")" : std::string(" (a file is in the way)")));
-}
-
 CLI::Validator outputFolder() {
     return CLI::Validator(
         [](const std::string& text) -> std::string {

@@ -79,9 +79,6 @@ CLI::Validator outputStem();
 /// A validator for an output file or file prefix (make-scene --out, delaunay --out, --record):
 /// not empty and ending in a file name (not '/', "." or "..").
 CLI::Validator outputFile();
-/// Creates the output folder `dir` given by `option` (and its parents); throws InputError
-/// "OPTION DIR: cannot create the folder (reason)" instead of a raw filesystem error.
-void makeOutputFolder(const std::filesystem::path& dir, std::string_view option);
 /// Registers --out as an output folder (outputFolder) with its default shown.
 CLI::Option* addOutOption(CLI::App& cmd, std::string& out, const std::string& help);
 /// Registers --name as a file-name stem inside --out (outputStem) with its default shown.

@@ -3,7 +3,7 @@
 
 #include "DelaunaySteps.h"
 
-#include "Common.h"
+#include <base/OutputFiles.h>
 
 #include <geometry/MeshSvg.h>
 

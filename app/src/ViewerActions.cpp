@@ -290,7 +290,7 @@ void Viewer::screenshot(const std::string& name, glm::ivec2 size) {
         } while (std::filesystem::exists(options_.captureDir / (stem + ".png")));
     }
     try {
-        std::filesystem::create_directories(options_.captureDir);
+        makeOutputFolder(options_.captureDir, "--screenshot-dir");
         OutputSet files; // the three files of a screenshot appear together (base/OutputFiles.h)
         // The window image first: it is the back buffer, which the frame read-back leaves alone.
         writePng(options_.captureDir / (stem + ".window.png"),

@@ -1,5 +1,7 @@
 #include "base/InputFile.h"
 
+#include <base/Text.h>
+
 #include <cerrno>
 #include <cstring>
 #include <utility>
@@ -13,10 +15,6 @@ namespace fl {
 namespace {
 
 constexpr std::uintmax_t kMiB = std::uintmax_t{1} << 20;
-
-std::string systemMessage(int err) {
-    return std::error_code(err, std::generic_category()).message();
-}
 
 /// What a non-regular file is, for the message.
 std::string kindOf(mode_t mode) {

@@ -1,5 +1,7 @@
 #include <base/OutputFiles.h>
 
+#include <base/Text.h>
+
 #include <atomic>
 #include <cerrno>
 #include <cstring>
@@ -14,10 +16,6 @@ namespace fl {
 namespace {
 
 thread_local OutputSet* current = nullptr;
-
-std::string systemMessage(int err) {
-    return std::generic_category().message(err);
-}
 
 [[noreturn]] void fail(const std::filesystem::path& path, const std::string& problem) {
     throw OutputFileError(path.string() + ": " + problem);
@@ -80,6 +78,16 @@ void renameInto(const std::filesystem::path& tmp, const std::filesystem::path& p
 }
 
 } // namespace
+
+void makeOutputFolder(const std::filesystem::path& dir, std::string_view role) {
+    if (dir.empty()) return;
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec || !std::filesystem::is_directory(dir))
+        throw OutputFileError((role.empty() ? std::string() : std::string(role) + " ") +
+                              dir.string() + ": cannot create the folder (" +
+                              (ec ? ec.message() : std::string("a file is in the way")) + ")");
+}
 
 std::filesystem::path temporarySibling(const std::filesystem::path& path) {
     TempFile f = createSibling(path);

@@ -1,6 +1,7 @@
 #include <base/Text.h>
 
 #include <cstdio>
+#include <system_error>
 
 namespace fl {
 
@@ -32,6 +33,10 @@ std::string xmlEscape(std::string_view text) {
         }
     }
     return out;
+}
+
+std::string systemMessage(int err) {
+    return std::generic_category().message(err);
 }
 
 } // namespace fl

@@ -21,6 +21,11 @@ class OutputFileError : public std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+/// Creates the folder `dir` and its parents (nothing for an empty path); throws OutputFileError
+/// "ROLE DIR: cannot create the folder (reason)" (just "DIR: ..." without a role), never a raw
+/// filesystem_error. ROLE is the option that named it, e.g. "--steps".
+void makeOutputFolder(const std::filesystem::path& dir, std::string_view role = {});
+
 /// A new, empty, uniquely named hidden file beside `path` (".NAME.tmpPID.N"), for writers
 /// that need a path to write to (stb, OpenEXR). The folder must exist (callers that make
 /// folders, such as the image writers, make them first).
@@ -34,7 +39,7 @@ void finishOutputFile(const std::filesystem::path& tmp, const std::filesystem::p
 void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes);
 
 /// The outputs of one command: all of them appear at commit(), or none does. One per thread is
-/// current (a nested set hands its files to the outer one at its commit). Move-only by scope:
+/// current (a nested set hands its files to the outer one at its commit). Tied to its scope:
 /// neither copyable nor movable.
 class OutputSet {
   public:

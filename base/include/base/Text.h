@@ -19,6 +19,9 @@ std::string cat(const Args&... args) {
 /// `v` with `digits` digits after the point ("%.*f"): fixed(3.14159, 2) == "3.14".
 std::string fixed(double v, int digits);
 
+/// An errno value in words ("No such file or directory"), for file messages.
+std::string systemMessage(int err);
+
 /// `text` with &, <, > and " replaced by XML entities (element text and attribute values).
 std::string xmlEscape(std::string_view text);
 

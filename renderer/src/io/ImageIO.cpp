@@ -32,22 +32,9 @@
 
 namespace fl {
 
-namespace {
-// Image and text outputs go into folders made on demand (--out, screenshot folders).
-void ensureParent(const std::filesystem::path& path) {
-    const std::filesystem::path dir = path.parent_path();
-    if (dir.empty()) return;
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    if (ec)
-        throw std::runtime_error(path.string() + ": cannot create its folder " + dir.string() +
-                                 ": " + ec.message());
-}
-} // namespace
-
 void writeTextFile(const std::filesystem::path& path, const std::string& text) {
-    ensureParent(path);
-    writeFileAtomically(path, text); // base/OutputFiles.h
+    makeOutputFolder(path.parent_path()); // folders are made on demand
+    writeFileAtomically(path, text);      // base/OutputFiles.h
 }
 
 FloatImage readTexture(const gl::Texture& texture, int channels) {
@@ -106,7 +93,7 @@ ByteImage toSrgb8(const FloatImage& linear) {
 }
 
 void writePng(const std::filesystem::path& path, const ByteImage& image) {
-    ensureParent(path);
+    makeOutputFolder(path.parent_path()); // folders are made on demand
     const std::filesystem::path tmp = temporarySibling(path);
     const int ok = stbi_write_png(tmp.c_str(), image.width, image.height, image.channels,
                                   image.data.data(), image.width * image.channels);
@@ -142,7 +129,7 @@ ByteImage readPng(const std::filesystem::path& path, std::string_view role) {
 
 void writeExr(const std::filesystem::path& path, int width, int height,
               const std::vector<ExrChannel>& channels) {
-    ensureParent(path);
+    makeOutputFolder(path.parent_path()); // folders are made on demand
     const std::filesystem::path tmp = temporarySibling(path);
     try {
         Imf::Header header(width, height);
