@@ -1,6 +1,7 @@
 #include "CaptureScript.h"
 
 #include <base/InputFile.h>
+#include <base/Numbers.h>
 #include <base/Text.h>
 
 #include <renderer/io/JsonText.h>
@@ -24,10 +25,6 @@ using Json = nlohmann::json;
     throw CaptureScriptError(field + ": " + problem);
 }
 
-// Positions and sizes at most 1e15, the world's limit (camera paths and the ray tracer have the
-// same): beyond it, interpolation and the light's frustum overflow a float.
-constexpr double kMaxCoordinate = 1e15;
-
 // A number of the script, by the rule of the command line (base/Numbers.h).
 double readNumber(const Json& j, const std::string& field, double lo, double hi, bool integer) {
     try {
@@ -47,7 +44,7 @@ glm::vec3 readVec3(const Json& j, const std::string& field) {
     for (int k = 0; k < 3; ++k) {
         const Json& c = j[static_cast<std::size_t>(k)];
         v[k] = static_cast<float>(readNumber(c, field + "[" + std::to_string(k) + "]",
-                                             -kMaxCoordinate, kMaxCoordinate, false));
+                                             -kMaxWorldCoordinate, kMaxWorldCoordinate, false));
     }
     return v;
 }
@@ -89,8 +86,8 @@ void parseCamera(const Json& j, const std::filesystem::path& dir, CaptureScript&
 void parseLight(const Json& j, CaptureScript& s) {
     checkKeys(j, "light", {"radius", "keys"});
     if (j.contains("radius")) {
-        s.lightRadius =
-            static_cast<float>(readNumber(j["radius"], "light.radius", 0.0, kMaxCoordinate, false));
+        s.lightRadius = static_cast<float>(
+            readNumber(j["radius"], "light.radius", 0.0, kMaxWorldCoordinate, false));
     }
     if (j.contains("keys")) {
         if (!j["keys"].is_array() || j["keys"].empty())
@@ -250,28 +247,21 @@ CaptureScript parseCaptureScript(const std::string& text, const std::filesystem:
                          "\"" + s.reference.kind + "\" is not one of " + groundTruthKinds());
                 }
             }
-            // Each option within the chosen ground truth's own range (the method table's).
+            // Each option by the chosen ground truth's row of the method table (its range or
+            // choices), as the methods' own options are checked.
             const MethodDescriptor& truth = s.reference.method();
-            for (const auto& [key, value] : {std::pair{"samples", &s.reference.samples},
-                                             std::pair{"mapSize", &s.reference.mapSize}}) {
-                if (!r.contains(key)) continue;
+            for (const auto& [key, value] : r.items()) {
+                if (key == "kind") continue;
+                const std::string f = "reference." + key;
                 const MethodOption* o = truth.option(key);
-                if (!o)
-                    fail(std::string("reference.") + key,
-                         "the " + s.reference.kind + " reference does not take it");
-                *value = readInt(r[key], std::string("reference.") + key, static_cast<int>(o->min),
-                                 static_cast<int>(o->max));
-            }
-            if (r.contains("pattern")) {
-                const MethodOption* o = truth.option("pattern");
-                if (!o)
-                    fail("reference.pattern",
-                         "the " + s.reference.kind + " reference does not take it");
-                if (!r["pattern"].is_string())
-                    fail("reference.pattern", "expected \"" + std::string(o->choices) + "\"");
-                s.reference.pattern = r["pattern"].get<std::string>();
-                if (const std::string bad = checkOptionValue(*o, s.reference.pattern); !bad.empty())
-                    fail("reference.pattern", bad);
+                if (!o) fail(f, "the " + s.reference.kind + " reference does not take it");
+                const std::string given = optionText(value);
+                if (const std::string bad = checkOptionValue(*o, given); !bad.empty()) fail(f, bad);
+                if (key == "pattern")
+                    s.reference.pattern = given;
+                else
+                    (key == "samples" ? s.reference.samples : s.reference.mapSize) =
+                        std::stoi(given);
             }
         }
         if (!j.contains("methods")) fail("methods", "missing (a list of method names)");

@@ -43,18 +43,16 @@ class LineParser {
             fail(std::string("expected '") + usage + "'");
     }
     // Numbers by the rule of the command line (base/Numbers.h): finite, whole for counts.
-    double number(std::size_t i) const {
-        if (std::string problem = numberProblem(w_[i], -kMaxMagnitude, kMaxMagnitude, false);
-            !problem.empty())
+    double read(std::size_t i, double lo, double hi, bool integer) const {
+        if (std::string problem = numberProblem(w_[i], lo, hi, integer); !problem.empty())
             fail(problem);
         double v = 0.0;
         parseNumber(w_[i], v);
         return v;
     }
+    double number(std::size_t i) const { return read(i, -kMaxMagnitude, kMaxMagnitude, false); }
     int count(std::size_t i, int min) const {
-        if (std::string problem = numberProblem(w_[i], min, kMaxCount, true); !problem.empty())
-            fail(problem);
-        return static_cast<int>(number(i));
+        return static_cast<int>(read(i, min, kMaxCount, true));
     }
     int key(std::size_t i, int* mods) const {
         std::string name = w_[i];

@@ -13,6 +13,7 @@
 #include <jfa/DistanceTransform.h>
 #include <jfa/ErrorAnalysis.h>
 #include <jfa/GlKernel.h>
+#include <jfa/Plan.h>
 #include <jfa/Reference.h>
 #include <jfa/Sites.h>
 
@@ -330,10 +331,12 @@ Runner addVoronoiCommand(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand(
         "voronoi", "Voronoi diagram / distance transform by jump flooding, errors vs exact");
     auto o = std::make_shared<VoronoiOptions>();
-    cmd->add_option("--width", o->width, "Grid width (1..16384, at most the GL maximum)")
+    cmd->add_option("--width", o->width,
+                    "Grid width (1.." + std::to_string(kMaxGridSide) + ", at most the GL maximum)")
         ->check(integer(1, kMaxGridSide))
         ->capture_default_str();
-    cmd->add_option("--height", o->height, "Grid height (1..16384, at most the GL maximum)")
+    cmd->add_option("--height", o->height,
+                    "Grid height (1.." + std::to_string(kMaxGridSide) + ", at most the GL maximum)")
         ->check(integer(1, kMaxGridSide))
         ->capture_default_str();
     cmd->add_option("--sites", o->sites, "Random sites")
@@ -357,8 +360,9 @@ Runner addVoronoiCommand(CLI::App& app) {
         ->check(CLI::IsMember({"band", "full"}))
         ->capture_default_str();
     cmd->add_option("--plan", o->plan,
-                    "Flood plan: jfa, jfa+1, jfa+2, jfa2, 1+jfa, 1+jfa+1, doubling, "
-                    "flood, flood:N (N <= 16384), half:jfa, half:jfa+2, ...")
+                    "Flood plan: jfa, jfa+1, jfa+2, jfa2, 1+jfa, 1+jfa+1, doubling, flood, "
+                    "flood:N (N <= " +
+                        std::to_string(jfa::kMaxFloodPasses) + "), half:jfa, half:jfa+2, ...")
         ->capture_default_str();
     cmd->add_option("--backend", o->backend, "gl or cpu")
         ->check(CLI::IsMember({"gl", "cpu"}))

@@ -23,8 +23,13 @@ std::string show(double v) {
     return cat(v);
 }
 
-// "an integer in [1, 16384]", "a finite number >= 0", "a finite number".
-std::string rule(double lo, double hi, bool integer) {
+bool fits(double v, double lo, double hi, bool integer) {
+    return std::isfinite(v) && v >= lo && v <= hi && (!integer || v == std::floor(v));
+}
+
+} // namespace
+
+std::string numberRule(double lo, double hi, bool integer) {
     const std::string what = integer ? "an integer" : "a finite number";
     const bool hasLo = std::isfinite(lo), hasHi = std::isfinite(hi);
     if (hasLo && hasHi) return cat(what, " in [", show(lo), ", ", show(hi), "]");
@@ -33,21 +38,15 @@ std::string rule(double lo, double hi, bool integer) {
     return what;
 }
 
-bool fits(double v, double lo, double hi, bool integer) {
-    return std::isfinite(v) && v >= lo && v <= hi && (!integer || v == std::floor(v));
-}
-
-} // namespace
-
 std::string numberProblem(double value, double lo, double hi, bool integer) {
     if (fits(value, lo, hi, integer)) return {};
-    return cat("must be ", rule(lo, hi, integer), ", got ", show(value));
+    return cat("must be ", numberRule(lo, hi, integer), ", got ", show(value));
 }
 
 std::string numberProblem(std::string_view text, double lo, double hi, bool integer) {
     double v = 0.0;
     if (parseNumber(text, v) && fits(v, lo, hi, integer)) return {};
-    return cat("must be ", rule(lo, hi, integer), ", got '", text, "'");
+    return cat("must be ", numberRule(lo, hi, integer), ", got '", text, "'");
 }
 
 } // namespace fl

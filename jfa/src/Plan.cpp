@@ -19,12 +19,15 @@ constexpr int kMaxExtraPasses = 30;
 // Runs of at least this many equal steps print as "1*63" instead of 63 ones.
 constexpr std::size_t kMinRunToCompress = 4;
 
-constexpr std::string_view kValidPlans =
-    "valid plans (case-insensitive): jfa, jfa+1, jfa+2, jfa+K (K = 1..30), jfa2 (or jfa^2), "
-    "1+jfa, 1+jfa+1, doubling, flood (until nothing changes), flood:N (N step-1 passes, N <= "
-    "16384), "
-    "half:<plan> (e.g. half:jfa, half:jfa+2), and explicit step lists before/after the body "
-    "such as (2,1)+jfa+(1,1)";
+// The forms parsePlan takes, for its messages (kMaxFloodPasses from Plan.h, as the help shows).
+std::string validPlans() {
+    return fl::cat("valid plans (case-insensitive): jfa, jfa+1, jfa+2, jfa+K (K = 1..30), jfa2 "
+                   "(or jfa^2), 1+jfa, 1+jfa+1, doubling, flood (until nothing changes), flood:N "
+                   "(N step-1 passes, N <= ",
+                   kMaxFloodPasses,
+                   "), half:<plan> (e.g. half:jfa, half:jfa+2), and explicit step lists "
+                   "before/after the body such as (2,1)+jfa+(1,1)");
+}
 
 [[noreturn]] void throwInvalidSpec(std::string_view spec, std::string_view reason) {
     std::string message = "invalid flood plan \"";
@@ -32,7 +35,7 @@ constexpr std::string_view kValidPlans =
     message += "\": ";
     message += reason;
     message += "; ";
-    message += kValidPlans;
+    message += validPlans();
     throw std::invalid_argument(message);
 }
 

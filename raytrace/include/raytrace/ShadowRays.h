@@ -9,6 +9,8 @@
 // the scene's bounding-box diagonal. That is far above float rounding at the scene's scale and
 // far below any feature a shadow map resolves (a 4096^2 map's texel is 1/4096 of the scene).
 
+#include <base/Numbers.h>
+
 #include <glm/vec3.hpp>
 
 #include <cstdint>
@@ -32,9 +34,9 @@ struct Triangles {
     std::vector<std::uint32_t> indices;
 };
 
-/// Largest |coordinate| a vertex may have: Embree works in float, and the BVH's bounds and the
-/// ray offsets lose all precision far beyond the scene's own scale.
-inline constexpr float kMaxCoordinate = 1e15f;
+/// Largest |coordinate| a vertex may have (fl::kMaxWorldCoordinate): Embree works in float, and
+/// the BVH's bounds and the ray offsets lose all precision far beyond the scene's own scale.
+inline constexpr float kMaxCoordinate = static_cast<float>(kMaxWorldCoordinate);
 
 /// The scene's triangles in an Embree BVH. Move-only.
 class RayScene {

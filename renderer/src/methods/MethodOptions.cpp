@@ -24,9 +24,10 @@ std::string checkOptionValue(const MethodOption& o, std::string_view value) {
     switch (o.kind) {
     case OptionKind::Int: {
         if (!o.word.empty() && value == o.word) return {};
-        std::string problem = numberProblem(value, o.min, o.max, true);
-        if (!problem.empty())
-            return o.word.empty() ? problem : cat("must be ", o.word, " or", problem.substr(7));
+        if (std::string problem = numberProblem(value, o.min, o.max, true); !problem.empty())
+            return o.word.empty() ? problem
+                                  : cat("must be ", o.word, " or ", numberRule(o.min, o.max, true),
+                                        ", got '", value, "'");
         parseNumber(value, v);
         if (o.multipleOf > 0 && static_cast<long long>(v) % o.multipleOf != 0)
             return cat("must be a multiple of ", o.multipleOf, " in ", range(o), ", got '", value,

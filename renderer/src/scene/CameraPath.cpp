@@ -4,6 +4,7 @@
 #include <renderer/io/JsonText.h>
 
 #include <base/InputFile.h>
+#include <base/Numbers.h>
 
 #include <geometry/Framing.h>
 
@@ -109,11 +110,10 @@ glm::vec3 readVec3(const nlohmann::json& j, const std::string& where) {
     glm::vec3 v;
     for (int k = 0; k < 3; ++k) {
         try {
-            // At most 1e15, the world's limit (the ray tracer's too): a key at 1.7e38, within a
-            // float, made the interpolated cameras infinite (found by fuzz/fuzz_camera_path).
-            constexpr double kMaxCoordinate = 1e15;
-            v[k] = static_cast<float>(
-                jsonNumber(j[static_cast<std::size_t>(k)], -kMaxCoordinate, kMaxCoordinate));
+            // At most the world's limit: a key at 1.7e38, within a float, made the interpolated
+            // cameras infinite (found by fuzz/fuzz_camera_path).
+            v[k] = static_cast<float>(jsonNumber(j[static_cast<std::size_t>(k)],
+                                                 -kMaxWorldCoordinate, kMaxWorldCoordinate));
         } catch (const std::runtime_error& e) {
             throw std::runtime_error(where + "[" + std::to_string(k) + "]: " + e.what());
         }
