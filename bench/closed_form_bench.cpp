@@ -12,6 +12,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -39,7 +40,14 @@ int main(int argc, char** argv) {
             std::cerr << "error: --set " << kv << ": expected --FLAG=VALUE\n";
             return 2;
         }
-        options.set(kv.substr(0, eq), kv.substr(eq + 1));
+        const std::string flag = kv.substr(0, eq);
+        const auto known = fl::allMethodOptions();
+        if (std::none_of(known.begin(), known.end(),
+                         [&](const fl::MethodOption* o) { return o->flag == flag; })) {
+            std::cerr << "error: --set " << kv << ": no method takes " << flag << "\n";
+            return 2;
+        }
+        options.set(flag, kv.substr(eq + 1));
     }
     try {
         auto ctx = fl::EglContext::create(false);
@@ -58,8 +66,7 @@ int main(int argc, char** argv) {
                 s.shadow.size = shadowMap;
                 s.method = std::string(m.name);
                 for (const fl::MethodOption* o : m.options)
-                    if (options.has(o->flag))
-                        s.options.set(o->flag, options.values().find(o->flag)->second);
+                    if (options.has(o->flag)) s.options.set(o->flag, options.text(*o)); // checked
                 const fl::ClosedFormFrame f = fl::renderClosedForm(shaders, c, s, size);
                 const fl::FloatImage& visibility = f.visibility;
                 const fl::ClosedFormError& e = f.error;

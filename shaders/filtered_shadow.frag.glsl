@@ -32,7 +32,6 @@ vec3 unproject(vec3 ndc) {
     return v.xyz / v.w;
 }
 
-
 // One tap at light NDC point s for the receiver plane (pv, nv) in view space: x = 1 lit,
 // 0 shadowed; y = the stored depth (1 when off the map).
 vec2 tap(vec2 s, vec3 pv, vec3 nv, float receiverNdcZ) {

@@ -1,6 +1,7 @@
 // The baselines' CPU parts: PCSS presets, tap patterns, the ground truth's disk samples and the
 // visibility difference it reports its sampling error with.
 
+#include <renderer/methods/ShadowMethod.h>
 #include <renderer/soft/FilteredShadow.h>
 #include <renderer/soft/ReferenceShadow.h>
 
@@ -81,6 +82,13 @@ TEST(Baselines, ReferenceSamplesLieOnTheDiskInEveryPattern) {
         EXPECT_THROW((void)referenceDiskSamples(disk, 0, p.pattern), std::invalid_argument);
     }
     EXPECT_EQ(geom::diskPatternNamed("spiral"), geom::DiskPattern::Spiral);
+    // --reference-pattern's choices (the method table) are exactly the patterns' names.
+    const MethodOption* option = methodOrThrow("reference").option("pattern");
+    ASSERT_NE(option, nullptr);
+    std::string names;
+    for (const geom::DiskPatternName& p : geom::kDiskPatterns)
+        names += (names.empty() ? "" : "|") + std::string(p.name);
+    EXPECT_EQ(std::string(option->choices), names);
     EXPECT_THROW((void)geom::diskPatternNamed("halton"), std::invalid_argument);
 }
 

@@ -33,9 +33,10 @@ struct DiskPatternName {
     DiskPattern pattern;
     std::string_view name;
 };
-inline constexpr DiskPatternName kDiskPatterns[] = {{DiskPattern::Grid, "grid"},
-                                                    {DiskPattern::Jittered, "jittered"},
-                                                    {DiskPattern::Spiral, "spiral"}};
+// The default (the shadow-map reference's) first, as --reference-pattern lists them.
+inline constexpr DiskPatternName kDiskPatterns[] = {{DiskPattern::Spiral, "spiral"},
+                                                    {DiskPattern::Grid, "grid"},
+                                                    {DiskPattern::Jittered, "jittered"}};
 
 /// The pattern named `name` (one of kDiskPatterns); throws std::invalid_argument otherwise.
 DiskPattern diskPatternNamed(std::string_view name);

@@ -123,32 +123,30 @@ float filteredVisibility(const FilterFrame& f, glm::vec3 p, glm::vec3 n) {
     const glm::vec4 clip = f.lightProj * glm::vec4(pv, 1.0f);
     if (clip.w <= 0.0f) return 1.0f;
     const glm::vec3 ndc = glm::vec3(clip) / clip.w;
-    auto filter = [&](glm::vec2 centre, glm::vec2 scale) {
+    // The taps at centre + u * t.x + v * t.y (PCF: u, v the unit axes, an exact no-op).
+    auto filter = [&](glm::vec2 centre, glm::vec2 u, glm::vec2 v) {
         float lit = 0.0f;
-        for (glm::vec2 t : f.taps) lit += tap(f, invProj, centre + scale * t, pv, nv, ndc.z).lit;
+        for (glm::vec2 t : f.taps)
+            lit += tap(f, invProj, centre + u * t.x + v * t.y, pv, nv, ndc.z).lit;
         return lit / static_cast<float>(f.taps.size());
     };
-    if (f.mode == FilterFrame::Mode::Pcf) return filter(glm::vec2(ndc), glm::vec2(1.0f));
+    if (f.mode == FilterFrame::Mode::Pcf) return filter(glm::vec2(ndc), {1.0f, 0.0f}, {0.0f, 1.0f});
     const glm::vec3 cv = glm::vec3(f.lightView * glm::vec4(f.disk.center, 1.0f));
     const glm::vec4 search = diskThrough(f, pv, cv, f.searchDepth);
     float blockers = 0.0f, depthSum = 0.0f;
     for (glm::vec2 b : f.blockerTaps) {
-        const Tap r =
-            tap(f, invProj, glm::vec2(search) + glm::vec2(search.z, search.w) * b, pv, nv, ndc.z);
+        const glm::vec2 s = glm::vec2(search) + glm::vec2(search.z, search.w) * b;
+        const Tap r = tap(f, invProj, s, pv, nv, ndc.z);
         if (r.lit == 0.0f) {
             blockers += 1.0f;
             // The blocker's distance in front of the disk, from its point in the map.
-            const glm::vec2 s = glm::vec2(search) + glm::vec2(search.z, search.w) * b;
             const glm::vec3 bv = unproject(invProj, {s, 2.0f * r.stored - 1.0f});
             depthSum += glm::dot(bv - cv, f.diskNormalView);
         }
     }
     if (blockers == 0.0f) return 1.0f;
     const DiskImage d = diskImage(f, pv, cv, depthSum / blockers);
-    float lit = 0.0f;
-    for (glm::vec2 t : f.taps)
-        lit += tap(f, invProj, d.centre + d.u * t.x + d.v * t.y, pv, nv, ndc.z).lit;
-    return lit / static_cast<float>(f.taps.size());
+    return filter(d.centre, d.u, d.v);
 }
 
 FilteredShadowPass::FilteredShadowPass(const gl::ShaderLibrary& shaders)
