@@ -11,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <unistd.h>
 
 namespace fl {
 namespace {
@@ -102,6 +103,21 @@ TEST(OutputFiles, ANestedSetHandsItsFilesToTheOuterOne) {
     EXPECT_EQ(entries(d), 0u);
     writeFileAtomically(d / "after.txt", "a"); // no set open any more: written at once
     EXPECT_TRUE(fs::exists(d / "after.txt"));
+}
+
+// A run killed mid-write leaves its hidden temporary; the folder it is continued in (capture
+// --resume) sheds those of dead processes, and keeps a live writer's and every other file.
+TEST(OutputFiles, TemporariesOfKilledWritersAreRemovedAndNothingElse) {
+    const fs::path d = freshDir("killed");
+    fs::create_directories(d / "frames");
+    const std::string mine = ".b.png.tmp" + std::to_string(::getpid()) + ".0";
+    for (const fs::path& f : {d / "frames" / ".a.exr.tmp999999999.3", d / mine, d / "keep.png",
+                              d / ".hidden", d / "x.tmp12.1"})
+        std::ofstream(f) << "x";
+    EXPECT_EQ(removeKilledTemporaries(d), 1u);
+    EXPECT_FALSE(fs::exists(d / "frames" / ".a.exr.tmp999999999.3"));
+    for (const fs::path& f : {d / mine, d / "keep.png", d / ".hidden", d / "x.tmp12.1"})
+        EXPECT_TRUE(fs::exists(f)) << f;
 }
 
 } // namespace

@@ -1,8 +1,10 @@
 // `floodlight capture SCRIPT.json --out DIR`: every frame of a capture script with every method
 // and the ground truth (`reference`), headless. Writes PNG + EXR per frame x method, frames.csv
 // (one row per frame x method), summary.json and report.html (written last, so a run that fails
-// leaves neither a summary nor a report behind).
+// leaves neither a summary nor a report behind). Every finished frame goes into the folder's
+// progress (CaptureProgress.h) first: `--resume` continues a killed or failed run from there.
 
+#include "CaptureProgress.h"
 #include "CaptureResults.h"
 #include "Commands.h"
 
@@ -16,6 +18,8 @@
 #include <renderer/metrics/SoftStats.h>
 #include <renderer/soft/EyeSoftShadow.h>
 
+#include <algorithm>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -31,7 +35,12 @@ struct CaptureRequest {
     std::string out = "captures/capture";
     std::string shaderDir;
     std::string timing = "auto";
+    bool resume = false;
+    int stopAfter = 0; // frames this run renders at most (0: all)
 };
+
+// The exit status of a run that --stop-after ended with frames left (its progress is kept).
+constexpr int kStoppedEarly = 3;
 
 // Creates DIR, proves it writable and removes the outputs of an earlier run there, so that a
 // failure of this run cannot leave an old summary or report looking like this run's.
@@ -96,7 +105,8 @@ struct CaptureSetup {
 class FrameScorer {
   public:
     FrameScorer(std::vector<MethodRun>& runs, std::size_t first, int jfaPasses)
-        : runs_(runs), first_(first), previous_(runs.size() - first) {
+        : runs_(runs), first_(first) {
+        state_.previous.resize(runs.size() - first);
         for (std::size_t k = first; k < runs.size(); ++k) {
             const int c = counterpartOf(runs, k, jfaPasses);
             counterpart_.push_back(c);
@@ -108,7 +118,7 @@ class FrameScorer {
     void score(int i, std::vector<FloatImage>& visibility, const FrameImages& ref) {
         // Flicker compares with the previous frame: count pixels that are receivers in both.
         const FloatImage flickerReceivers =
-            i > 0 ? bothReceivers(previousReceivers_, ref.receivers) : FloatImage{};
+            i > 0 ? bothReceivers(state_.previousReceivers, ref.receivers) : FloatImage{};
         for (std::size_t k = 0; k < visibility.size(); ++k) {
             MethodRun& run = runs_[first_ + k];
             FrameRow row;
@@ -116,15 +126,10 @@ class FrameScorer {
             // Every method sees the same surfaces: the reference's receivers are theirs.
             row.metrics = compareWithReference(visibility[k], ref.visibility, ref.receivers);
             if (i > 0)
-                row.flicker = addedFlicker(previous_[k], visibility[k], previousReference_,
-                                           ref.visibility, flickerReceivers);
-            if (row.metrics.rmse > run.worstRmse) {
-                run.worstRmse = row.metrics.rmse;
-                run.worstFrame = i;
-                run.worstMethod = visibility[k];
-                run.worstReference = ref.visibility;
-                run.worstReceivers = ref.receivers;
-            }
+                row.flicker =
+                    addedFlicker(state_.previous[k], visibility[k], state_.previousReference,
+                                 ref.visibility, flickerReceivers);
+            if (isWorse(run, row)) run.worst = {visibility[k], ref.visibility, ref.receivers};
             run.rows.push_back(std::move(row));
         }
         for (std::size_t k = 0; k < visibility.size(); ++k) {
@@ -134,24 +139,88 @@ class FrameScorer {
                         visibility[k],
                         visibility[static_cast<std::size_t>(counterpart_[k]) - first_])
                         .deltaBuckets;
-            previous_[k] = std::move(visibility[k]);
+            state_.previous[k] = std::move(visibility[k]);
         }
-        previousReference_ = ref.visibility;
-        previousReceivers_ = ref.receivers;
+        state_.previousReference = ref.visibility;
+        state_.previousReceivers = ref.receivers;
     }
 
+    /// Takes back the frames an earlier run finished (a resumed capture): their rows, each
+    /// run's worst pictures and, when frames are left (`more`), the state after the last one.
+    void replay(const std::vector<const FrameRecord*>& done, bool more, CaptureProgress& progress) {
+        std::vector<std::pair<std::size_t, int>> worst;
+        for (std::size_t k = 0; k + first_ < runs_.size(); ++k) {
+            MethodRun& run = runs_[first_ + k];
+            for (const FrameRecord* r : done) {
+                isWorse(run, r->runs.at(k).row);
+                run.rows.push_back(r->runs.at(k).row);
+            }
+            if (run.worstFrame >= 0) {
+                run.worst = progress.loadWorst(first_ + k, run.worstFrame);
+                worst.emplace_back(first_ + k, run.worstFrame);
+            }
+        }
+        std::optional<std::pair<int, int>> last; // (resolution, frame) of the state kept
+        if (!done.empty() && more) {
+            last = {done.back()->size, done.back()->frame};
+            state_ = progress.loadState(last->first, last->second, state_.previous.size());
+        }
+        progress.adopt(last, worst);
+    }
+
+    /// What the next frame's flicker needs from the last one scored.
+    [[nodiscard]] const ScorerState& state() const { return state_; }
+
   private:
+    // Whether `row` is the run's worst frame so far; if so, it becomes the run's worst.
+    static bool isWorse(MethodRun& run, const FrameRow& row) {
+        if (row.metrics.rmse <= run.worstRmse) return false;
+        run.worstRmse = row.metrics.rmse;
+        run.worstFrame = row.frame;
+        return true;
+    }
+
     std::vector<MethodRun>& runs_;
     std::size_t first_;
     std::vector<int> counterpart_;
-    std::vector<FloatImage> previous_;
-    FloatImage previousReference_, previousReceivers_;
+    ScorerState state_;
 };
 
-// Every frame of the script at w x h: appends one MethodRun per method to `results`.
-void captureSize(const CaptureSetup& c, int w, int h, FrameRunner& runner,
-                 CaptureResults& results) {
+// The stem of frame i's files ("frame_00042").
+std::string frameStem(int i) {
+    char stem[32];
+    std::snprintf(stem, sizeof stem, "frame_%05d", i);
+    return stem;
+}
+
+// A resumed frame's files must still be there: a frame whose line is in the journal is kept,
+// not rendered again.
+void requireFrameFiles(const fs::path& dir, int i) {
+    for (const char* ext : {".png", ".visibility.png", ".exr"}) {
+        const fs::path file = dir / (frameStem(i) + ext);
+        if (!fs::is_regular_file(file))
+            throw InputError(file.string() + ": missing, but the progress journal says frame " +
+                             std::to_string(i) +
+                             " is finished (run without --resume to start "
+                             "over)");
+    }
+}
+
+// One resolution's part of a capture run.
+struct SizeRun {
+    int index = 0; // into the script's resolutions
+    int width = 0, height = 0;
+    std::vector<const FrameRecord*> done; // its frames an earlier run finished
+    int budget = -1;                      // frames this run may still render (-1: all)
+};
+
+// Every frame of the script at one resolution: appends one MethodRun per method to `results`,
+// takes back the frames an earlier run finished, and records every frame it renders in
+// `progress`. Returns the frames it rendered.
+int captureSize(const CaptureSetup& c, const SizeRun& at, FrameRunner& runner,
+                CaptureResults& results, CaptureProgress& progress) {
     const CaptureScript& script = c.script;
+    const int w = at.width, h = at.height;
     const std::string size = std::to_string(w) + "x" + std::to_string(h);
     const std::size_t first = results.runs.size();
     // One renderer per method: each keeps its own maps and timers, and the reference's maps (its
@@ -182,39 +251,77 @@ void captureSize(const CaptureSetup& c, int w, int h, FrameRunner& runner,
     MethodOptions defaults; // the script's jfaPasses as a number (0: auto)
     defaults.set(floodPassesOption().flag, script.jfaPasses);
     FrameScorer scorer(results.runs, first, defaults.integer(floodPassesOption()));
+    const fs::path framesDir = c.dir / "frames" / size;
+    std::vector<fs::path> laneDirs(lanes.size(), framesDir / "reference");
+    for (std::size_t k = 0; k < script.methods.size(); ++k)
+        if (laneOf[k] != 0) laneDirs[laneOf[k]] = framesDir / safeName(script.methods[k].label);
+
+    // The frames an earlier run finished: their files, times and rows, and the scorer's state.
+    for (const FrameRecord* r : at.done) {
+        if (script.saveFrames)
+            for (const fs::path& d : laneDirs) requireFrameFiles(d, r->frame);
+        for (std::size_t l = 0; l < lanes.size(); ++l) {
+            // A lane's times are those of its methods' rows (lane 0: the reference's own time,
+            // with its phases where a `reference` entry kept them).
+            const auto k = std::find(laneOf.begin(), laneOf.end(), l) - laneOf.begin();
+            if (k == std::ssize(laneOf))
+                lanes[l].times.append(r->referenceMs, {}, std::nullopt);
+            else
+                lanes[l].times.append(r->runs.at(std::size_t(k)).frameMs,
+                                      r->runs.at(std::size_t(k)).phases,
+                                      r->runs.at(std::size_t(k)).flood);
+        }
+    }
+    scorer.replay(at.done, std::ssize(at.done) < script.frames, progress);
+
+    const int firstFrame = static_cast<int>(at.done.size());
+    const int rendered = at.budget < 0 ? script.frames - firstFrame
+                                       : std::min(at.budget, script.frames - firstFrame);
     const FramePlan plan{
         .scene = &c.scene,
         .camera = script.camera
                       ? *script.camera
                       : defaultWalkthrough(initialCamera(c.scene, c.options, w, h), c.scene.bounds),
         .frames = script.frames,
+        .first = firstFrame,
+        .last = firstFrame + rendered - 1,
         .width = w,
         .height = h,
-        .lightKeys = script.lightKeys};
-    const fs::path framesDir = c.dir / "frames" / size;
-    runner.run(plan, lanes, [&](int i, std::vector<FrameImages>& laneImages) {
-        const FrameImages& ref = laneImages[0];
-        if (script.saveFrames) {
-            char stem[32];
-            std::snprintf(stem, sizeof stem, "frame_%05d", i);
-            writeFrame(ref, framesDir / "reference", stem);
+        .lightKeys = script.lightKeys,
+        // A resumed run's first frame would carry the start-up (shader compilation, first
+        // allocations) that only frame 0 carries in a run without a break: one frame unrecorded.
+        .warmup = firstFrame > 0 ? 1 : 0};
+    if (rendered > 0)
+        runner.run(plan, lanes, [&](int i, std::vector<FrameImages>& laneImages) {
+            const FrameImages& ref = laneImages[0];
+            if (script.saveFrames)
+                for (std::size_t l = 0; l < lanes.size(); ++l)
+                    writeFrame(laneImages[l], laneDirs[l], frameStem(i));
+            std::vector<FloatImage> visibility(script.methods.size());
             for (std::size_t k = 0; k < script.methods.size(); ++k)
-                if (laneOf[k] != 0)
-                    writeFrame(laneImages[laneOf[k]], framesDir / safeName(script.methods[k].label),
-                               stem);
-        }
-        std::vector<FloatImage> visibility(script.methods.size());
-        for (std::size_t k = 0; k < script.methods.size(); ++k)
-            // A `reference` entry's row is the reference against itself (lane 0, copied);
-            // every other lane belongs to one method alone.
-            visibility[k] =
-                laneOf[k] == 0 ? ref.visibility : std::move(laneImages[laneOf[k]].visibility);
-        scorer.score(i, visibility, ref);
-    });
+                // A `reference` entry's row is the reference against itself (lane 0, copied);
+                // every other lane belongs to one method alone.
+                visibility[k] =
+                    laneOf[k] == 0 ? ref.visibility : std::move(laneImages[laneOf[k]].visibility);
+            scorer.score(i, visibility, ref);
+
+            // The frame is finished: into the progress, with the worst pictures it replaced.
+            FrameRecord record{at.index, i, lanes[0].times.frameMs().back(), {}};
+            std::vector<std::pair<std::size_t, const WorstPictures*>> worst;
+            for (std::size_t k = 0; k < script.methods.size(); ++k) {
+                const MethodRun& run = results.runs[first + k];
+                const PhaseTimes& t = lanes[laneOf[k]].times;
+                const std::size_t n = t.frames() - 1;
+                record.runs.push_back({run.rows.back(), t.frameMs()[n], t.phases(n), t.flood(n)});
+                if (run.worstFrame == i) worst.emplace_back(first + k, &run.worst);
+            }
+            progress.save(record, scorer.state(), worst);
+        });
     for (std::size_t k = 0; k < script.methods.size(); ++k)
         results.runs[first + k].times = lanes[laneOf[k]].times;
     const std::vector<double>& refMs = lanes[0].times.frameMs();
     results.referenceFrameMs.insert(results.referenceFrameMs.end(), refMs.begin(), refMs.end());
+    return rendered;
 }
 
 // frames.csv, the worst-frame pictures, summary.json and report.html, together or not at all
@@ -227,9 +334,9 @@ nlohmann::json writeOutputs(const fs::path& dir, const CaptureResults& results) 
     for (const MethodRun& run : results.runs)
         writePng(
             imageDir / ("worst_" + safeName(run.label) + ".png"),
-            sideBySide({visibilityToGrey(run.worstMethod), visibilityToGrey(run.worstReference),
-                        differencePicture(run.worstMethod, run.worstReference, 4.0f,
-                                          run.worstReceivers)}));
+            sideBySide({visibilityToGrey(run.worst.method), visibilityToGrey(run.worst.reference),
+                        differencePicture(run.worst.method, run.worst.reference, 4.0f,
+                                          run.worst.receivers)}));
     const nlohmann::json summary = resultsSummary(results);
     writeJson(dir / "summary.json", summary);
     writeTextFile(dir / "report.html", reportHtml(results, summary, "report"));
@@ -254,6 +361,54 @@ void printSummaryTable(const nlohmann::json& summary) {
     std::cout << std::defaultfloat;
 }
 
+// The hash of everything a capture's results depend on besides the build: the script's bytes,
+// its camera keys (a camera file's among them), the scene file's size and time, the shaders.
+std::string captureIdentity(const CaptureScript& script, const CaptureRequest& req) {
+    CaptureIdentity id;
+    id.add(readInputFile(script.file, "capture script", kTextInputLimitMiB));
+    if (script.camera) {
+        for (const CameraKey& k : script.camera->keys())
+            for (int a = 0; a < 3; ++a) id.add(k.eye[a]).add(k.target[a]);
+        id.add(script.camera->yfovDegrees())
+            .add(static_cast<double>(script.camera->interpolation()));
+    }
+    std::error_code ec;
+    if (!script.scene.empty())
+        id.add(script.scene.string())
+            .add(static_cast<double>(fs::file_size(script.scene, ec)))
+            .add(static_cast<double>(
+                fs::last_write_time(script.scene, ec).time_since_epoch().count()));
+    id.add(req.shaderDir);
+    return id.hex();
+}
+
+// Whether DIR holds the finished capture of this identity (its summary.json says so).
+bool finishedHere(const fs::path& dir, const std::string& identity) {
+    std::ifstream in(dir / "summary.json");
+    if (!in) return false;
+    const nlohmann::json summary = nlohmann::json::parse(in, nullptr, false);
+    return summary.is_object() && summary.value("identity", "") == identity &&
+           summary.value("complete", false);
+}
+
+// The journal's frames, grouped by resolution; throws InputError unless they are the first
+// frames of the script in the order a run renders them.
+std::vector<std::vector<const FrameRecord*>>
+framesDone(const CaptureProgress& progress, const CaptureScript& script, const fs::path& dir) {
+    std::vector<std::vector<const FrameRecord*>> done(script.resolutions.size());
+    std::size_t size = 0;
+    for (const FrameRecord& r : progress.records()) {
+        if (size < done.size() && std::ssize(done[size]) == script.frames) ++size;
+        if (r.size != static_cast<int>(size) || size >= done.size() ||
+            r.frame != std::ssize(done[size]) || r.runs.size() != script.methods.size())
+            throw InputError((dir / "progress.jsonl").string() + ": frame " +
+                             std::to_string(r.frame) + " of resolution " + std::to_string(r.size) +
+                             " is out of order (damaged; run without --resume to start over)");
+        done[size].push_back(&r);
+    }
+    return done;
+}
+
 int runCapture(const CaptureRequest& req) {
     CaptureScript script;
     try {
@@ -262,7 +417,25 @@ int runCapture(const CaptureRequest& req) {
         throw InputError(e.what());
     }
     const fs::path dir(req.out);
+    const std::string identity = captureIdentity(script, req);
+    const int total = script.frames * static_cast<int>(script.resolutions.size());
+    if (req.resume && !fs::exists(dir / "progress.jsonl") && finishedHere(dir, identity)) {
+        std::cout << dir.string()
+                  << ": this capture is finished (summary.json); nothing to "
+                     "resume\n";
+        return 0;
+    }
     prepareOutput(dir);
+    std::optional<CaptureProgress> progress;
+    if (req.resume) {
+        progress = CaptureProgress::resume(dir, identity, total);
+        if (!progress)
+            std::cout << "no unfinished capture in " << dir.string()
+                      << " to resume: starting from frame 0\n";
+    }
+    if (!progress) progress = CaptureProgress::start(dir, identity, total);
+    const std::vector<std::vector<const FrameRecord*>> done = framesDone(*progress, script, dir);
+    const int finished = static_cast<int>(progress->records().size());
 
     SceneOptions so;
     so.scene = script.scene.string();
@@ -290,18 +463,43 @@ int runCapture(const CaptureRequest& req) {
 
     CaptureResults results;
     results.script = &script;
+    results.identity = identity;
     results.context = context->description();
     results.sceneName = scene.source;
     std::cout << "context: " << results.context << "\nscene: " << scene.source << " ("
               << scene.triangleCount() << " triangles), " << script.frames << " frames x "
               << script.methods.size() << " methods x " << script.resolutions.size()
               << " resolution(s); reference: " << referenceText(script.reference) << "\n";
-    FrameRunner runner(script.frames * static_cast<int>(script.resolutions.size()));
-    for (const auto& [w, h] : script.resolutions) captureSize(setup, w, h, runner, results);
+    if (finished > 0)
+        std::cout << "resuming: " << finished << " of " << total << " frames finished earlier\n";
+    FrameRunner runner(total, finished);
+    int budget = req.stopAfter > 0 ? req.stopAfter : -1;
+    try {
+        for (std::size_t s = 0; s < script.resolutions.size(); ++s) {
+            const auto [w, h] = script.resolutions[s];
+            const int rendered = captureSize(setup, {static_cast<int>(s), w, h, done[s], budget},
+                                             runner, results, *progress);
+            if (budget >= 0) budget -= rendered;
+        }
+    } catch (const std::exception&) {
+        runner.finish();
+        if (!progress->records().empty())
+            std::cerr << "note: " << progress->records().size() << " of " << total
+                      << " frames are finished in " << dir.string()
+                      << "; add --resume to continue from there\n";
+        throw;
+    }
     runner.finish();
+    if (const int left = total - static_cast<int>(progress->records().size()); left > 0) {
+        std::cout << "stopped after " << req.stopAfter
+                  << " frames (--stop-after): " << progress->records().size() << " of " << total
+                  << " finished in " << dir.string() << "; add --resume to continue\n";
+        return kStoppedEarly;
+    }
 
     // Everything is measured; now the outputs, the summary and the report last.
     const nlohmann::json summary = writeOutputs(dir, results);
+    progress->finish();
     printSummaryTable(summary);
     std::cout << "wrote " << (dir / "frames.csv").string() << ", "
               << (dir / "summary.json").string() << ", " << (dir / "report.html").string()
@@ -327,6 +525,14 @@ Runner addCaptureCommand(CLI::App& app) {
     cmd->add_option("--timing", r->timing, "Pass timing: auto, query (GL timers), finish")
         ->check(CLI::IsMember({"auto", "query", "finish"}))
         ->capture_default_str();
+    cmd->add_flag("--resume", r->resume,
+                  "Continue the unfinished run in --out (killed, failed or stopped): keep its "
+                  "finished frames, render the rest. Refused if the script, its camera or scene "
+                  "changed; without an unfinished run, starts from frame 0");
+    cmd->add_option("--stop-after", r->stopAfter,
+                    "Render at most N frames in this run, then stop with exit status 3, keeping "
+                    "the progress for --resume (a long capture in several sittings)")
+        ->check(integer(1, kMaxCaptureFrames));
     return [r] { return runCapture(*r); };
 }
 

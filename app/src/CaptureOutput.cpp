@@ -88,6 +88,7 @@ nlohmann::json resultsSummary(const CaptureResults& r) {
     const CaptureScript& s = *r.script;
     nlohmann::json j;
     j["script"] = s.file.string();
+    j["identity"] = r.identity;
     j["scene"] = r.sceneName;
     j["context"] = r.context;
     j["frames"] = s.frames;

@@ -28,6 +28,11 @@ struct FrameRow {
     std::optional<std::array<double, 4>> deltaBuckets;
 };
 
+/// A method's worst frame: its visibility, the reference's and the receivers its metrics counted.
+struct WorstPictures {
+    FloatImage method, reference, receivers;
+};
+
 /// Every frame of one method at one resolution, and its worst frame's pictures.
 struct MethodRun {
     std::string label; // "pcss:16/24", with " @WxH" when the script has several resolutions
@@ -38,13 +43,13 @@ struct MethodRun {
     PhaseTimes times; // frame and per-pass times, one entry per row
     int worstFrame = -1;
     double worstRmse = -1.0;
-    FloatImage worstMethod, worstReference; // visibility
-    FloatImage worstReceivers;              // the pixels its metrics counted
+    WorstPictures worst;
 };
 
 struct CaptureResults {
     const CaptureScript* script = nullptr;
-    std::string context; // GL renderer description
+    std::string identity; // the hash a resumed run must match (CaptureProgress.h)
+    std::string context;  // GL renderer description
     std::string sceneName;
     std::vector<MethodRun> runs;
     std::vector<double> referenceFrameMs; // the ground truth's own time, every frame

@@ -4,7 +4,9 @@
 
 #include <atomic>
 #include <cerrno>
+#include <csignal>
 #include <cstring>
+#include <regex>
 #include <string>
 #include <system_error>
 
@@ -94,6 +96,25 @@ std::filesystem::path temporarySibling(const std::filesystem::path& path) {
     if (const int err = f.close(); err != 0) fail(path, "cannot write: " + systemMessage(err));
     f.release();
     return f.path();
+}
+
+std::size_t removeKilledTemporaries(const std::filesystem::path& dir) {
+    // ".NAME.tmpPID.N" (createSibling); only dead processes' files, so a run writing in the
+    // same folder keeps its own.
+    static const std::regex name(R"(\..+\.tmp([0-9]{1,9})\.[0-9]+)");
+    std::size_t removed = 0;
+    std::error_code ec;
+    for (auto it = std::filesystem::recursive_directory_iterator(dir, ec);
+         !ec && it != std::filesystem::recursive_directory_iterator(); it.increment(ec)) {
+        std::smatch m;
+        const std::string leaf = it->path().filename().string();
+        if (!it->is_regular_file(ec) || !std::regex_match(leaf, m, name)) continue;
+        const auto pid = static_cast<pid_t>(std::stol(m[1].str()));
+        if (pid == ::getpid() || (::kill(pid, 0) == 0 || errno == EPERM)) continue; // alive
+        std::error_code gone;
+        if (std::filesystem::remove(it->path(), gone)) ++removed;
+    }
+    return removed;
 }
 
 void finishOutputFile(const std::filesystem::path& tmp, const std::filesystem::path& path) {

@@ -31,6 +31,10 @@ void makeOutputFolder(const std::filesystem::path& dir, std::string_view role = 
 /// folders, such as the image writers, make them first).
 std::filesystem::path temporarySibling(const std::filesystem::path& path);
 
+/// Removes, under `dir` and its subfolders, the temporaries that writers killed mid-write left
+/// (temporarySibling's names); returns how many. For a folder a killed run is continued in.
+std::size_t removeKilledTemporaries(const std::filesystem::path& dir);
+
 /// Moves the finished temporary `tmp` to `path`: now, or at the commit of the thread's open
 /// OutputSet. Throws OutputFileError (and removes `tmp`) if the rename fails.
 void finishOutputFile(const std::filesystem::path& tmp, const std::filesystem::path& path);

@@ -29,8 +29,12 @@ std::optional<FloodSample> floodSample(const Renderer& renderer) {
 void PhaseTimes::record(const gl::PassTimer& timer, std::optional<FloodSample> flood) {
     Phases phases;
     for (const gl::PassTime& p : timer.passes()) phases.emplace_back(p.name, p.ms);
+    append(timer.frameMs(), std::move(phases), flood);
+}
+
+void PhaseTimes::append(double frameMs, Phases phases, std::optional<FloodSample> flood) {
     phases_.push_back(std::move(phases));
-    frameMs_.push_back(timer.frameMs());
+    frameMs_.push_back(frameMs);
     flood_.push_back(flood);
 }
 
@@ -84,15 +88,16 @@ std::vector<std::string> phaseNames(const std::vector<const PhaseTimes*>& times)
     return names;
 }
 
-FrameRunner::FrameRunner(int totalFrames)
-    : total_(totalFrames), tty_(::isatty(STDOUT_FILENO) != 0) {}
+FrameRunner::FrameRunner(int totalFrames, int done)
+    : total_(totalFrames), done_(done), doneBefore_(done), tty_(::isatty(STDOUT_FILENO) != 0) {}
 
 void FrameRunner::run(const FramePlan& plan, std::vector<Lane>& lanes, const OnFrame& onFrame) {
     const Scene& scene = *plan.scene;
     const float aspect = static_cast<float>(plan.width) / static_cast<float>(plan.height);
     std::vector<FrameImages> images(lanes.size());
-    for (int k = -plan.warmup; k < plan.frames; ++k) {
-        const int i = std::max(k, 0);
+    const int end = plan.last < 0 ? plan.frames : std::min(plan.last + 1, plan.frames);
+    for (int k = plan.first - plan.warmup; k < end; ++k) {
+        const int i = std::max(k, plan.first);
         if (!plan.lightKeys.empty()) {
             Light light = sceneLight(scene);
             light.position = lightPositionAt(plan.lightKeys, i, plan.frames);
@@ -107,7 +112,7 @@ void FrameRunner::run(const FramePlan& plan, std::vector<Lane>& lanes, const OnF
         for (std::size_t l = 0; l < lanes.size(); ++l) {
             Renderer& r = *lanes[l].renderer;
             r.render(cam);
-            if (k < 0) continue;
+            if (k < plan.first) continue;
             if (plan.readBack) {
                 images[l] = readFrame(r);
                 requireFinite(images[l].visibility,
@@ -115,7 +120,7 @@ void FrameRunner::run(const FramePlan& plan, std::vector<Lane>& lanes, const OnF
             }
             lanes[l].times.record(r.timer(), floodSample(r));
         }
-        if (k < 0) continue;
+        if (k < plan.first) continue;
         if (onFrame) onFrame(i, images);
         ++done_;
         showProgress();
@@ -126,7 +131,8 @@ void FrameRunner::showProgress() {
     if (!tty_) return;
     const double s = std::chrono::duration<double>(Clock::now() - start_).count();
     const int width = 30, filled = total_ > 0 ? width * done_ / total_ : width;
-    const double eta = done_ > 0 ? s / done_ * (total_ - done_) : 0.0;
+    const int now = done_ - doneBefore_; // this run's frames give the rate
+    const double eta = now > 0 ? s / now * (total_ - done_) : 0.0;
     std::cout << "\r[" << std::string(static_cast<size_t>(filled), '#')
               << std::string(static_cast<size_t>(width - filled), '.') << "] " << done_ << "/"
               << total_ << " frames, " << std::fixed << std::setprecision(0) << s << " s, ETA "

@@ -48,6 +48,8 @@ class PhaseTimes {
 
     /// Appends the frame `timer` has just timed, with its flood.
     void record(const gl::PassTimer& timer, std::optional<FloodSample> flood = std::nullopt);
+    /// Appends a frame timed earlier (a resumed capture's frames, read from its progress).
+    void append(double frameMs, Phases phases, std::optional<FloodSample> flood);
     /// Frame i's flood; nullopt where the method did not flood.
     [[nodiscard]] const std::optional<FloodSample>& flood(std::size_t i) const {
         return flood_.at(i);
@@ -86,16 +88,20 @@ struct Lane {
     PhaseTimes times; // filled by FrameRunner::run, one entry per frame
 };
 
-/// What one loop renders: frames [0, frames) at width x height, along a camera path or all from
-/// one camera (a benchmark's repeated frame). The light moves along `lightKeys`
-/// (lightPositionAt); with none, each renderer's light stays where it is.
+/// What one loop renders: frames [first, frames) of a `frames`-frame run at width x height, along
+/// a camera path or all from one camera (a benchmark's repeated frame). The light moves along
+/// `lightKeys` (lightPositionAt); with none, each renderer's light stays where it is.
 struct FramePlan {
     const Scene* scene = nullptr;
     std::variant<CameraView, CameraPath> camera;
     int frames = 0;
+    /// The first frame rendered: a resumed capture starts after the frames it already has.
+    int first = 0;
+    /// The last frame rendered (-1: frames - 1): a capture told to stop early ends before.
+    int last = -1;
     int width = 0, height = 0;
     std::vector<glm::vec3> lightKeys;
-    /// Frames rendered before frame 0 at frame 0's camera and light, neither recorded nor passed
+    /// Frames rendered before frame `first` at its camera and light, neither recorded nor passed
     /// on: a benchmark's warm-up (shader compilation, first-use allocations).
     int warmup = 0;
     /// false: frames are timed only, nothing is read back (onFrame gets empty images).
@@ -108,8 +114,9 @@ class FrameRunner {
     /// The frame's images, one per lane in lane order; the callback may move from them.
     using OnFrame = std::function<void(int frame, std::vector<FrameImages>& images)>;
 
-    /// `totalFrames`: the frames of every plan this runner will run (the progress bar's end).
-    explicit FrameRunner(int totalFrames);
+    /// `totalFrames`: the frames of every plan this runner will run (the progress bar's end);
+    /// `done`: how many of them an earlier run already rendered (a resumed capture).
+    explicit FrameRunner(int totalFrames, int done = 0);
     /// Renders every frame of `plan` with every lane (in lane order, frame by frame, so lanes
     /// share the machine's state alike), reads each back and checks its visibility is finite
     /// (unless !plan.readBack), appends the lane's times, then calls `onFrame` (if set).
@@ -122,8 +129,9 @@ class FrameRunner {
 
     using Clock = std::chrono::steady_clock;
     int total_;
-    int done_ = 0;
-    bool tty_; // the bar is drawn on a terminal only: logs and pipes get no carriage returns
+    int done_;
+    int doneBefore_; // frames of an earlier run: not in this run's rate
+    bool tty_;       // the bar is drawn on a terminal only: logs and pipes get no carriage returns
     Clock::time_point start_ = Clock::now();
 };
 
