@@ -10,6 +10,8 @@
 
 #include <base/InputFile.h>
 #include <base/OutputFiles.h>
+#include <base/Process.h>
+#include <base/Stats.h>
 #include <renderer/run/FrameRunner.h>
 
 #include <renderer/context/EglContext.h>
@@ -19,6 +21,7 @@
 #include <renderer/soft/EyeSoftShadow.h>
 
 #include <algorithm>
+#include <chrono>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -315,7 +318,14 @@ int captureSize(const CaptureSetup& c, const SizeRun& at, FrameRunner& runner,
                 record.runs.push_back({run.rows.back(), t.frameMs()[n], t.phases(n), t.flood(n)});
                 if (run.worstFrame == i) worst.emplace_back(first + k, &run.worst);
             }
+            const auto saveStart = std::chrono::steady_clock::now();
             progress.save(record, scorer.state(), worst);
+            results.progressMs.push_back(std::chrono::duration<double, std::milli>(
+                                             std::chrono::steady_clock::now() - saveStart)
+                                             .count());
+            ResourceSample& sample =
+                results.firstFrame.frame < 0 ? results.firstFrame : results.lastFrame;
+            sample = {i, residentKiB(), gl::countLiveObjects()};
         });
     for (std::size_t k = 0; k < script.methods.size(); ++k)
         results.runs[first + k].times = lanes[laneOf[k]].times;
@@ -501,6 +511,16 @@ int runCapture(const CaptureRequest& req) {
     const nlohmann::json summary = writeOutputs(dir, results);
     progress->finish();
     printSummaryTable(summary);
+    if (results.lastFrame.frame >= 0)
+        std::cout << "resources: resident " << results.firstFrame.residentKiB << " KiB after frame "
+                  << results.firstFrame.frame << ", " << results.lastFrame.residentKiB
+                  << " KiB after frame " << results.lastFrame.frame << "; GL objects "
+                  << results.firstFrame.glObjects.total() << ", "
+                  << results.lastFrame.glObjects.total() << "\n";
+    if (!results.progressMs.empty())
+        std::cout << "progress for --resume: " << std::fixed << std::setprecision(1)
+                  << median(results.progressMs) << " ms a frame (median) to keep\n"
+                  << std::defaultfloat;
     std::cout << "wrote " << (dir / "frames.csv").string() << ", "
               << (dir / "summary.json").string() << ", " << (dir / "report.html").string()
               << (script.saveFrames ? ", frames under " + (dir / "frames").string() : "") << "\n";

@@ -180,6 +180,18 @@ nlohmann::json resultsSummary(const CaptureResults& r) {
         methods.push_back(e);
     }
     j["methods"] = methods;
+    const auto sample = [](const ResourceSample& at) {
+        nlohmann::json gl = nlohmann::json::object();
+        for (std::size_t k = 0; k < gl::kObjectKinds.size(); ++k)
+            gl[std::string(gl::kObjectKinds[k])] = at.glObjects.live[k];
+        return nlohmann::json{{"frame", at.frame},
+                              {"residentKiB", at.residentKiB},
+                              {"glObjects", at.glObjects.total()},
+                              {"glObjectsByKind", gl}};
+    };
+    // After this run's first and last frame (a resumed run's first is its first of this sitting).
+    if (r.firstFrame.frame >= 0)
+        j["resources"] = {{"firstFrame", sample(r.firstFrame)}, {"lastFrame", sample(r.lastFrame)}};
     j["complete"] = true;
     return j;
 }

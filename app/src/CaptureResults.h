@@ -5,6 +5,8 @@
 #include "CaptureScript.h"
 #include <renderer/run/FrameRunner.h>
 
+#include <gpu/LiveObjects.h>
+
 #include <renderer/io/ImageIO.h>
 #include <renderer/metrics/Metrics.h>
 
@@ -46,6 +48,14 @@ struct MethodRun {
     WorstPictures worst;
 };
 
+/// What the process held after a frame: a capture of thousands of frames must end about where
+/// it began (a soak: bench/soak.sh).
+struct ResourceSample {
+    int frame = -1; // -1: not sampled
+    std::size_t residentKiB = 0;
+    gl::ObjectCounts glObjects;
+};
+
 struct CaptureResults {
     const CaptureScript* script = nullptr;
     std::string identity; // the hash a resumed run must match (CaptureProgress.h)
@@ -53,6 +63,8 @@ struct CaptureResults {
     std::string sceneName;
     std::vector<MethodRun> runs;
     std::vector<double> referenceFrameMs; // the ground truth's own time, every frame
+    ResourceSample firstFrame, lastFrame; // after this run's first and last frame
+    std::vector<double> progressMs;       // per frame: keeping its progress (CaptureProgress)
 };
 
 /// Folder-safe form of a label ("pcss:16/24 @64x64" -> "pcss_16-24_64x64").

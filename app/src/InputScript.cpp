@@ -122,12 +122,16 @@ ScriptEvent parseEvent(const LineParser& p) {
         p.expectArgs(1, 1, "wait FRAMES");
         e.kind = K::Wait;
         e.frames = p.count(1, 1);
+    } else if (verb == "stats") {
+        p.expectArgs(0, 1, "stats [LABEL]");
+        e.kind = K::Stats;
+        if (w.size() == 2) e.text = w[1];
     } else if (verb == "quit") {
         p.expectArgs(0, 0, "quit");
         e.kind = K::Quit;
     } else {
         p.fail("unknown event '" + verb +
-               "' (key, hold, drag, click, scroll, resize, screenshot, drop, wait, quit)");
+               "' (key, hold, drag, click, scroll, resize, screenshot, drop, wait, stats, quit)");
     }
     return e;
 }

@@ -12,6 +12,8 @@
 //                          {overlay} and {provider} in NAME are replaced by the current ones
 //   drop PATH              as if PATH (the rest of the line) were dropped on the window
 //   wait FRAMES            render FRAMES frames
+//   stats [LABEL]          print the frame number, resident memory and the live GL objects
+//                          ("stats LABEL: frame F, resident K KiB, GL objects N (...)"): soaks
 //   quit                   close the window (also implied at the end of the script)
 // Events up to the next hold/wait run before the same frame renders. Numbers are finite and at
 // most 1000000 in magnitude; counts (FRAMES, STEPS, W, H) are whole and at most 1000000.
@@ -27,7 +29,7 @@
 namespace fl::app {
 
 struct ScriptEvent {
-    enum class Kind { Key, Hold, Drag, Click, Scroll, Resize, Screenshot, Drop, Wait, Quit };
+    enum class Kind { Key, Hold, Drag, Click, Scroll, Resize, Screenshot, Drop, Wait, Quit, Stats };
     Kind kind = Kind::Wait;
     int key = 0;                    // Key, Hold: GLFW key
     int mods = 0;                   // Key: GLFW modifier bits
@@ -37,7 +39,7 @@ struct ScriptEvent {
     int steps = 8;                  // Drag
     double scroll = 0.0;            // Scroll
     glm::ivec2 size{0};             // Resize
-    std::string text;               // Screenshot name, Drop path
+    std::string text;               // Screenshot name, Drop path, Stats label
     int line = 0;                   // source line, for messages
 };
 

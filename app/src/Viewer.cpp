@@ -2,7 +2,9 @@
 
 #include "Commands.h"
 
+#include <base/Process.h>
 #include <base/Text.h>
+#include <gpu/LiveObjects.h>
 #include <renderer/io/Capture.h>
 #include <renderer/io/ImageIO.h>
 
@@ -183,6 +185,15 @@ void Viewer::applyScriptEvent(const ScriptEvent& e) {
     case K::Quit:
         quit_ = true;
         break;
+    case K::Stats: {
+        // Before this frame renders: what the frames so far left behind.
+        const gl::ObjectCounts live = gl::countLiveObjects();
+        std::cout << "stats" << (e.text.empty() ? "" : " " + e.text) << ": frame " << tick_
+                  << ", resident " << residentKiB() << " KiB, GL objects " << live.total() << " ("
+                  << live.text() << ")\n"
+                  << std::flush;
+        break;
+    }
     case K::Hold:
     case K::Wait:
         break; // the player pauses; Hold's key is reported by held()

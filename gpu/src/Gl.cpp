@@ -1,4 +1,5 @@
 #include <gpu/Gl.h>
+#include <gpu/LiveObjects.h>
 
 #include <mutex>
 #include <sstream>
@@ -11,12 +12,14 @@ namespace {
 GLuint newBuffer() {
     GLuint id = 0;
     glCreateBuffers(1, &id);
+    noteCreated(ObjectKind::Buffer, id);
     return id;
 }
 
 GLuint newTexture2D() {
     GLuint id = 0;
     glCreateTextures(GL_TEXTURE_2D, 1, &id);
+    noteCreated(ObjectKind::Texture, id);
     return id;
 }
 
@@ -44,6 +47,7 @@ void Texture::setSampling(GLenum minFilter, GLenum magFilter, GLenum wrap) {
 Framebuffer Framebuffer::create() {
     GLuint id = 0;
     glCreateFramebuffers(1, &id);
+    noteCreated(ObjectKind::Framebuffer, id);
     return Framebuffer(id);
 }
 
@@ -69,6 +73,7 @@ Framebuffer Framebuffer::withTargets(std::initializer_list<const Texture*> color
 Handle<detail::SamplerDeleter> makeRawTexelSampler() {
     GLuint id = 0;
     glCreateSamplers(1, &id);
+    noteCreated(ObjectKind::Sampler, id);
     glSamplerParameteri(id, GL_TEXTURE_COMPARE_MODE, GL_NONE);
     glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
@@ -102,12 +107,14 @@ void Framebuffer::check(const char* what) const {
 VertexArray VertexArray::create() {
     GLuint id = 0;
     glCreateVertexArrays(1, &id);
+    noteCreated(ObjectKind::VertexArray, id);
     return VertexArray(id);
 }
 
 Query Query::create(GLenum target) {
     GLuint id = 0;
     glCreateQueries(target, 1, &id);
+    noteCreated(ObjectKind::Query, id);
     return Query(id);
 }
 

@@ -1,3 +1,4 @@
+#include <gpu/LiveObjects.h>
 #include <gpu/Program.h>
 
 #include <glm/gtc/type_ptr.hpp>
@@ -57,6 +58,7 @@ Shader compile(const ShaderLibrary& library, const StageSource& s,
     std::vector<std::string> files;
     const std::string source = withDefines(library.expand(s.file, files), defines);
     Shader shader(glCreateShader(s.stage));
+    noteCreated(ObjectKind::Shader, shader.id());
     const char* text = source.c_str();
     glShaderSource(shader.id(), 1, &text, nullptr);
     glCompileShader(shader.id());
@@ -123,6 +125,7 @@ Program Program::build(const ShaderLibrary& library, const std::vector<StageSour
     }
     Program p;
     p.handle_ = ProgramHandle(glCreateProgram());
+    noteCreated(ObjectKind::Program, p.id());
     for (const Shader& s : shaders) glAttachShader(p.id(), s.id());
     glLinkProgram(p.id());
     for (const Shader& s : shaders) glDetachShader(p.id(), s.id());

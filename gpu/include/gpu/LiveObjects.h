@@ -1,0 +1,46 @@
+#pragma once
+// The GL objects the current context holds, counted by asking GL itself (glIsBuffer, ...), not
+// by our wrappers' bookkeeping: a leak through a path that bypasses the wrappers counts too.
+// For soak runs: over thousands of frames with methods, overlays and map sizes switched, the
+// counts at the same settings must come back to the same numbers.
+
+#include <epoxy/gl.h>
+
+#include <array>
+#include <string>
+#include <string_view>
+
+namespace fl::gl {
+
+/// Every kind of GL object Floodlight creates, in the order of kObjectKinds.
+enum class ObjectKind {
+    Buffer,
+    Texture,
+    Framebuffer,
+    VertexArray,
+    Program,
+    Shader,
+    Query,
+    Sampler
+};
+inline constexpr std::array<std::string_view, 8> kObjectKinds = {
+    "buffers",  "textures", "framebuffers", "vertex arrays",
+    "programs", "shaders",  "queries",      "samplers"};
+
+/// Live objects per kind (indexed by ObjectKind) and their sum.
+struct ObjectCounts {
+    std::array<int, kObjectKinds.size()> live{};
+    [[nodiscard]] int total() const;
+    /// "buffers 12, textures 30, ..." (kinds with none left out).
+    [[nodiscard]] std::string text() const;
+};
+
+/// Counts the current context's live objects: every name up to the highest one created so far
+/// (noteCreated) is asked. Cost: one glIs* call per name ever issued.
+ObjectCounts countLiveObjects();
+
+/// Records a name just created (called by the wrappers' constructors), so that
+/// countLiveObjects knows how far to ask.
+void noteCreated(ObjectKind kind, GLuint name);
+
+} // namespace fl::gl
