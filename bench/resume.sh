@@ -27,7 +27,7 @@ t1=$(now)
 "$bin" capture "$work/script.json" --out "$work/killed" >/dev/null 2>&1 &
 pid=$!
 while kill -0 $pid 2>/dev/null &&
-    [ $(($(wc -l <"$work/killed/progress.jsonl" 2>/dev/null || echo 0) - 1)) -lt "$kill_at" ]; do
+    [ $(($(wc -l 2>/dev/null <"$work/killed/progress.jsonl" || echo 0) - 1)) -lt "$kill_at" ]; do
     sleep 0.05
 done
 kill -9 $pid

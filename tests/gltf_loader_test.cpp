@@ -247,6 +247,26 @@ TEST(GltfLoaderRepair, OrthographicCameraSkipped) {
     EXPECT_TRUE(l.warned("cameras[0]: orthographic camera skipped"));
 }
 
+// Bug (fuzz_gltf): a camera whose numbers are finite doubles but overflow a float (znear 1e300,
+// or an eye at 1e30 that an infinite far plane must reach back from) got an infinite zfar.
+TEST(GltfLoaderRepair, CameraOverflowingFloatSkipped) {
+    const auto withCamera = [](const json& perspective, const json& translation) {
+        Gltf g = triangle();
+        g.push("cameras", {{"type", "perspective"}, {"perspective", perspective}});
+        g.push("nodes", {{"camera", 0}, {"translation", translation}});
+        g.doc["scenes"][0]["nodes"] = {0, 1};
+        return g;
+    };
+    const Loaded hugeNear = load(
+        withCamera({{"yfov", 0.8}, {"znear", 1e300}}, {0, 0, 5}).write("camera_znear_1e300.gltf"));
+    EXPECT_TRUE(hugeNear.scene.cameras.empty());
+    EXPECT_TRUE(hugeNear.warned("cameras[0]: znear 1e+300 and zfar 0 do not fit a float"));
+    const Loaded farAway = load(
+        withCamera({{"yfov", 0.8}, {"znear", 0.1}}, {0, 0, 1e30}).write("camera_at_1e30.gltf"));
+    EXPECT_TRUE(farAway.scene.cameras.empty());
+    EXPECT_TRUE(farAway.warned("cameras[0]: placed by nodes[1] beyond 1e+15"));
+}
+
 // --- conversions -----------------------------------------------------------------------------
 
 TEST(GltfLoaderConvert, IndexComponentTypes) {
@@ -509,6 +529,28 @@ TEST(GltfLoaderConvert, LightRadiusDefaultsToTwoPercentOfScene) {
 
 TEST(GltfLoaderConvert, NoLightWithoutExtension) {
     EXPECT_FALSE(load(triangle().write("unlit.gltf")).scene.light.has_value());
+}
+
+// The camera's bug (CameraOverflowingFloatSkipped) for the light: parameters that are finite
+// doubles but infinite floats get their defaults, and a light placed beyond the world's limit is
+// skipped.
+TEST(GltfLoaderRepair, LightOverflowingFloatRepaired) {
+    Gltf g = litTriangle({{"radius", 1e300}});
+    json& light = g.doc["extensions"]["KHR_lights_punctual"]["lights"][0];
+    light["intensity"] = 1e300;
+    light["color"] = {1e300, 0, 0};
+    const Loaded l = load(g.write("light_1e300.gltf"));
+    ASSERT_TRUE(l.scene.light.has_value());
+    EXPECT_FLOAT_EQ(l.scene.light->intensity, 1.0f);
+    expectVec3Near(l.scene.light->color, {1, 1, 1});
+    EXPECT_FLOAT_EQ(l.scene.light->radius, 0.02f * l.scene.bounds.radius());
+    EXPECT_TRUE(l.warned("intensity is not a finite number >= 0; 1 used"));
+    EXPECT_TRUE(l.warned("color is not 3 finite numbers; white used"));
+    EXPECT_TRUE(l.warned("extras.radius: not a number in [0, 1e+15]; ignored"));
+    g.node(1)["translation"] = {0, 1e30, 0};
+    const Loaded far = load(g.write("light_at_1e30.gltf"));
+    EXPECT_FALSE(far.scene.light.has_value());
+    EXPECT_TRUE(far.warned("unusable transform; light skipped"));
 }
 
 } // namespace

@@ -286,6 +286,15 @@ TEST(GltfLoaderValidation, TransformOverflowsFloat) {
     expectRejected(g, "translation_1e300.gltf", {"nodes[0]", "world transform is not finite"});
 }
 
+// Bug (fuzz_gltf): positions finite as floats but far beyond the world's limit (1e35) loaded,
+// and the scene's radius, and with it a camera's far plane, came out infinite.
+TEST(GltfLoaderValidation, PositionsBeyondTheWorldLimit) {
+    Gltf g = triangle();
+    g.node(0)["scale"] = {1e35, 1, 1};
+    expectRejected(g, "scale_1e35.gltf",
+                   {"scene: world-space bounds are not finite or reach beyond 1e+15"});
+}
+
 TEST(GltfLoaderValidation, InvalidPrimitiveMode) {
     Gltf g = triangle();
     g.prim()["mode"] = 9;

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -150,6 +151,42 @@ TEST(RobustnessCli, AllSiteMaskWritesAFiniteSignedDistance) {
         ASSERT_EQ(w * h, 60);
         for (const float v : channels[0].values) ASSERT_EQ(v, -13.0f) << backend; // hypot(12, 5)
     }
+}
+
+// A PNG chunk as bytes: length, type, data and a CRC (zero: neither stb_image nor we check it).
+std::string pngChunk(const std::string& type, const std::string& data, std::uint32_t length) {
+    std::string out;
+    for (int shift = 24; shift >= 0; shift -= 8) out += static_cast<char>(length >> shift);
+    return out + type + data + std::string(4, '\0');
+}
+
+// The PNG signature and an IHDR of W x H at `depth` bits of colour type `colour`.
+std::string pngStart(std::uint32_t w, std::uint32_t h, int depth, int colour) {
+    std::string ihdr;
+    for (const std::uint32_t v : {w, h})
+        for (int shift = 24; shift >= 0; shift -= 8) ihdr += static_cast<char>(v >> shift);
+    ihdr += {static_cast<char>(depth), static_cast<char>(colour), 0, 0, 0};
+    return "\x89PNG\r\n\x1a\n" + pngChunk("IHDR", ihdr, 13);
+}
+
+// Bug (fuzz_png_mask): stb_image sizes its buffers from a PNG's chunk lengths and header before
+// it reads the data, so a 116-byte mask whose IDAT chunk claimed 1.1 GB allocated 2 GiB, and a
+// tiny 16384^2 16-bit header as much again. readPng refuses both before decoding.
+TEST(RobustnessCli, PngClaimingMoreThanItHoldsIsRefusedBeforeDecoding) {
+    const fs::path longChunk = dir() / "long_chunk.png";
+    std::ofstream(longChunk, std::ios::binary)
+        << pngStart(8, 8, 8, 2) + pngChunk("IDAT", "x\xda", 1'192'036'890);
+    expectRefused(
+        run("voronoi --backend cpu --mask " + longChunk.string() + " --out " + dir().string()),
+        "--mask " + longChunk.string() + ": the chunk at byte 33 claims 1192036890 " +
+            "bytes, past the end of the");
+    const fs::path huge = dir() / "huge_header.png";
+    std::ofstream(huge, std::ios::binary) << pngStart(16384, 16384, 16, 6) +
+                                                 pngChunk("IDAT", std::string(20, 'x'), 20) +
+                                                 pngChunk("IEND", "", 0);
+    expectRefused(run("voronoi --backend cpu --mask " + huge.string() + " --out " + dir().string()),
+                  "--mask " + huge.string() +
+                      ": 20 bytes of image data cannot hold the 16384x16384 image");
 }
 
 // Bug: `delaunay` crashed (SIGSEGV in snapSites) on coordinates around 1e-307 .. 1e-309.

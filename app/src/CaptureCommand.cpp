@@ -445,7 +445,7 @@ int runCapture(const CaptureRequest& req) {
     }
     if (!progress) progress = CaptureProgress::start(dir, identity, total);
     const std::vector<std::vector<const FrameRecord*>> done = framesDone(*progress, script, dir);
-    const int finished = static_cast<int>(progress->records().size());
+    const int finished = progress->finished();
 
     SceneOptions so;
     so.scene = script.scene.string();
@@ -493,16 +493,16 @@ int runCapture(const CaptureRequest& req) {
         }
     } catch (const std::exception&) {
         runner.finish();
-        if (!progress->records().empty())
-            std::cerr << "note: " << progress->records().size() << " of " << total
+        if (progress->finished() > 0)
+            std::cerr << "note: " << progress->finished() << " of " << total
                       << " frames are finished in " << dir.string()
                       << "; add --resume to continue from there\n";
         throw;
     }
     runner.finish();
-    if (const int left = total - static_cast<int>(progress->records().size()); left > 0) {
+    if (progress->finished() < total) {
         std::cout << "stopped after " << req.stopAfter
-                  << " frames (--stop-after): " << progress->records().size() << " of " << total
+                  << " frames (--stop-after): " << progress->finished() << " of " << total
                   << " finished in " << dir.string() << "; add --resume to continue\n";
         return kStoppedEarly;
     }

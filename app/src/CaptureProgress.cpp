@@ -249,7 +249,7 @@ void CaptureProgress::save(const FrameRecord& record, const ScorerState& state,
         if (!worst_[run].empty() && worst_[run] != now) fs::remove(worst_[run], ec);
         worst_[run] = now;
     }
-    records_.push_back(record);
+    ++saved_;
 }
 
 ScorerState CaptureProgress::loadState(int size, int frame, std::size_t runs) const {

@@ -73,8 +73,10 @@ class CaptureProgress {
     static std::optional<CaptureProgress> resume(const std::filesystem::path& dir,
                                                  const std::string& identity, int totalFrames);
 
-    /// The frames finished, in the order they were rendered.
+    /// The frames an earlier run finished (read by resume()), in the order they were rendered.
     [[nodiscard]] const std::vector<FrameRecord>& records() const { return records_; }
+    /// How many frames are finished: the earlier run's and this run's.
+    [[nodiscard]] int finished() const { return static_cast<int>(records_.size()) + saved_; }
 
     /// Saves frame `frame` of resolution `size`: the scorer's state after it, the worst
     /// pictures of the runs whose worst frame it is (global run index, pictures), then its line.
@@ -101,6 +103,7 @@ class CaptureProgress {
 
     std::filesystem::path dir_;
     std::vector<FrameRecord> records_;
+    int saved_ = 0; // frames this run saved (their records live in the capture's results only)
     std::filesystem::path state_;              // the current state file
     std::vector<std::filesystem::path> worst_; // by global run: its current worst file
 };

@@ -144,8 +144,9 @@ MethodSpec parseMethodEntry(const Json& j, const std::string& field) {
         const MethodOption* o = d->option(key);
         if (!o) {
             // Another method's option, or no option at all: say which.
+            // Captured by name: clang before 16 cannot capture a structured binding.
             const std::string takers = methodNamesWhere(
-                [&](const MethodDescriptor& other) { return other.option(key) != nullptr; });
+                [&k = key](const MethodDescriptor& other) { return other.option(k) != nullptr; });
             fail(f, takers.empty()
                         ? "unknown key (" + name + " takes: " +
                               [&] {

@@ -5,6 +5,7 @@
 
 #include <renderer/context/EglContext.h>
 #include <renderer/io/ImageIO.h>
+#include <renderer/io/MaskImage.h>
 
 #include <base/InputFile.h>
 #include <base/OutputFiles.h>
@@ -86,28 +87,13 @@ Input makeInput(const VoronoiOptions& o) {
                 throw InputError(e.what());
             }
         }();
-        in.mask.resize(size_t(img.width) * size_t(img.height));
-        // PNG row 0 is the top; grid row 0 is y = 0: flip so the picture reads the same way.
-        for (int y = 0; y < img.height; ++y)
-            for (int x = 0; x < img.width; ++x)
-                in.mask[size_t(img.height - 1 - y) * size_t(img.width) + size_t(x)] =
-                    img.data[(size_t(y) * size_t(img.width) + size_t(x)) * 4] > 127;
+        in.mask = maskGrid(img);
         std::vector<std::int32_t> labels;
         if (!o.labels.empty()) {
             const ByteImage lab = readPng(o.labels, "--labels");
             if (lab.width != img.width || lab.height != img.height)
                 throw InputError(o.labels + ": label image size differs from the mask's");
-            std::map<std::uint32_t, std::int32_t> ids; // colour -> id, in order of appearance
-            labels.resize(in.mask.size());
-            for (int y = 0; y < lab.height; ++y)
-                for (int x = 0; x < lab.width; ++x) {
-                    const std::uint8_t* p =
-                        &lab.data[(size_t(y) * size_t(lab.width) + size_t(x)) * 4];
-                    const std::uint32_t rgb =
-                        std::uint32_t(p[0]) << 16 | std::uint32_t(p[1]) << 8 | p[2];
-                    auto [it, added] = ids.try_emplace(rgb, std::int32_t(ids.size()));
-                    labels[size_t(lab.height - 1 - y) * size_t(lab.width) + size_t(x)] = it->second;
-                }
+            labels = labelGrid(lab);
         }
         in.seeds =
             jfa::seedMask(in.mask, img.width, img.height, labels.empty() ? nullptr : &labels);

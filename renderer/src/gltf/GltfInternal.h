@@ -8,6 +8,7 @@
 // tinygltf accepts much malformed content, so every step validates what it reads and reports
 // through Context::fail (reject) or Context::warn (repair).
 
+#include <base/Numbers.h>
 #include <base/Text.h>
 #include <renderer/gltf/GltfLoader.h>
 #include <renderer/scene/Scene.h>
@@ -16,6 +17,7 @@
 
 #include <glm/glm.hpp>
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -26,6 +28,13 @@
 #include <vector>
 
 namespace fl::gltf {
+
+/// Within the world's limit (base/Numbers.h) on every axis: a vertex, camera or light farther
+/// out makes the renderer's float bounds, frusta and light transforms overflow.
+inline bool inWorld(const glm::vec3& p) {
+    return std::abs(p.x) <= kMaxWorldCoordinate && std::abs(p.y) <= kMaxWorldCoordinate &&
+           std::abs(p.z) <= kMaxWorldCoordinate;
+}
 
 // Limits that keep a hostile file from making us allocate gigabytes or spin for minutes. They
 // sit far above anything Floodlight can render interactively, so real scenes never meet them.

@@ -5,12 +5,15 @@
 // - Rejected (SceneError "file: element: problem"): unreadable file or unknown extension,
 //   tinygltf parse errors, unsupported required extensions, invalid indices into any array we
 //   follow, byte ranges past their bufferView/buffer, wrong accessor types for an attribute,
-//   indices past the vertex count, non-finite positions or transforms, node cycles and nodes
-//   with two parents, missing image files, absurd counts, no triangles at all.
+//   indices past the vertex count, non-finite positions or transforms, world-space bounds
+//   beyond kMaxWorldCoordinate (base/Numbers.h), node cycles and nodes with two parents,
+//   missing image files, absurd counts, no triangles at all.
 // - Repaired with a warning: degenerate triangles (dropped), zero/non-finite normals
 //   (regenerated from the faces), non-finite texcoords (zeroed), points and lines (skipped),
 //   undecodable images or missing texture indices (texture dropped), orthographic or invalid
-//   cameras (skipped), invalid light parameters (defaults).
+//   cameras, and cameras or lights placed beyond kMaxWorldCoordinate (skipped), invalid light
+//   parameters (defaults). Numbers are checked as the floats the renderer uses: a finite double
+//   such as 1e300 is invalid.
 // - Sparse accessors are supported. Missing normals become flat normals, as the spec requires.
 
 #include <renderer/gltf/GltfLoader.h>
@@ -18,6 +21,7 @@
 #include "GltfInternal.h"
 
 #include <base/InputFile.h>
+#include <base/Numbers.h>
 
 #include <nlohmann/json.hpp>
 
@@ -268,9 +272,10 @@ void placeInstances(const gltf::Context& ctx, const std::vector<gltf::PlacedNode
     }
 }
 
-bool finite(const geom::Aabb& box) {
-    return std::isfinite(box.min.x) && std::isfinite(box.min.y) && std::isfinite(box.min.z) &&
-           std::isfinite(box.max.x) && std::isfinite(box.max.y) && std::isfinite(box.max.z);
+/// Within the world's limit on every side (gltf::inWorld; NaN is outside), so that the sizes
+/// and distances derived from the bounds (radius, far planes, light frusta) stay finite.
+bool inWorld(const geom::Aabb& box) {
+    return gltf::inWorld(box.min) && gltf::inWorld(box.max);
 }
 
 Scene convert(const gltf::Context& ctx, const std::filesystem::path& file) {
@@ -281,8 +286,9 @@ Scene convert(const gltf::Context& ctx, const std::filesystem::path& file) {
     placeInstances(ctx, placed, scene);
     if (scene.instances.empty()) ctx.fail("scene", "no triangle primitives");
     scene.computeBounds();
-    if (!scene.bounds.valid() || !finite(scene.bounds))
-        ctx.fail("scene", "world-space bounds are not finite (positions or transforms too large)");
+    if (!scene.bounds.valid() || !inWorld(scene.bounds))
+        ctx.fail("scene", cat("world-space bounds are not finite or reach beyond ",
+                              kMaxWorldCoordinate, " (positions or transforms too large)"));
 
     std::vector<bool> used(ctx.model().materials.size(), false);
     for (const Mesh& mesh : scene.meshes)

@@ -194,6 +194,11 @@ std::optional<Camera> convertCamera(const Context& ctx, const PlacedNode& placed
         ctx.warn(element, cat("placed by ", nodeElement, " with a singular transform; skipped"));
         return std::nullopt;
     }
+    if (!inWorld(glm::vec3(placed.world[3]))) {
+        ctx.warn(element, cat("placed by ", nodeElement, " beyond ", kMaxWorldCoordinate,
+                              " from the origin; skipped"));
+        return std::nullopt;
+    }
     Camera out;
     out.view = view;
     out.yfov = static_cast<float>(p.yfov);
@@ -208,6 +213,12 @@ std::optional<Camera> convertCamera(const Context& ctx, const PlacedNode& placed
         const float reach = glm::length(eye - bounds.center()) + bounds.radius();
         out.zfar = std::max(2.0f * reach, 2.0f * out.znear);
     }
+    // Finite doubles can still overflow a float, or round zfar onto znear.
+    if (!std::isfinite(out.znear) || !std::isfinite(out.zfar) || !(out.zfar > out.znear)) {
+        ctx.warn(element, cat("znear ", p.znear, " and zfar ", p.zfar,
+                              " do not fit a float projection; camera skipped"));
+        return std::nullopt;
+    }
     out.name =
         !cam.name.empty() ? cam.name : model.nodes[static_cast<std::size_t>(placed.node)].name;
     return out;
@@ -219,8 +230,9 @@ std::optional<float> extrasRadius(const Context& ctx, const tinygltf::Light& lig
     if (!light.extras.IsObject() || !light.extras.Has("radius")) return std::nullopt;
     const tinygltf::Value& v = light.extras.Get("radius");
     const double r = v.IsNumber() ? v.GetNumberAsDouble() : -1.0;
-    if (r >= 0.0 && std::isfinite(r)) return static_cast<float>(r);
-    ctx.warn(element + ".extras.radius", "not a finite number >= 0; ignored");
+    if (r >= 0.0 && r <= kMaxWorldCoordinate) return static_cast<float>(r);
+    ctx.warn(element + ".extras.radius",
+             cat("not a number in [0, ", kMaxWorldCoordinate, "]; ignored"));
     return std::nullopt;
 }
 
@@ -253,19 +265,25 @@ std::optional<Light> makeLight(const Context& ctx, const PlacedNode& placed, int
     light.position = glm::vec3(placed.world * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
     const glm::dvec3 dir = glm::dmat3(placed.world) * glm::dvec3(0.0, 0.0, -1.0);
     const double len = glm::length(dir);
-    if (!allFinite(placed.world) || !(len > 1e-20) || !std::isfinite(len)) {
+    if (!allFinite(placed.world) || !(len > 1e-20) || !std::isfinite(len) ||
+        !inWorld(light.position)) {
         ctx.warn(element, cat("placed by nodes[", placed.node,
                               "] with an unusable transform; "
                               "light skipped"));
         return std::nullopt;
     }
     light.direction = glm::vec3(dir / len);
-    if (src.color.size() == 3 && allFinite(src.color))
-        light.color = glm::max(glm::vec3(src.color[0], src.color[1], src.color[2]), 0.0f);
+    // Checked as floats: a finite double such as 1e300 is infinite as a float.
+    const glm::vec3 color = src.color.size() == 3
+                                ? glm::vec3(src.color[0], src.color[1], src.color[2])
+                                : glm::vec3(std::nanf(""));
+    if (std::isfinite(color.r) && std::isfinite(color.g) && std::isfinite(color.b))
+        light.color = glm::max(color, 0.0f);
     else if (!src.color.empty())
         ctx.warn(element, "color is not 3 finite numbers; white used");
-    if (std::isfinite(src.intensity) && src.intensity >= 0.0)
-        light.intensity = static_cast<float>(src.intensity);
+    if (const auto intensity = static_cast<float>(src.intensity);
+        std::isfinite(intensity) && intensity >= 0.0f)
+        light.intensity = intensity;
     else
         ctx.warn(element, "intensity is not a finite number >= 0; 1 used");
     const double cone = src.spot.outerConeAngle;

@@ -1,0 +1,90 @@
+// libFuzzer target: capture scripts (floodlight capture SCRIPT.json) on any text, through
+// readCaptureScript and a per-process temporary file, as the command reads them. A bad script
+// must throw CaptureScriptError naming the field; a script that parses must hold values in the
+// ranges the capture relies on: frames, resolutions and sizes within their limits, finite
+// cameras along the path and finite light keys, known methods with unique labels.
+#include "CaptureScript.h"
+#include "FuzzInput.h"
+
+#include <gpu/ShaderLibrary.h>
+#include <renderer/methods/ShadowMethod.h>
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <set>
+#include <string>
+
+// The method table names each method's factory, and the shader library its embedded sources;
+// linking the real ones would bring in every method's GL implementation. A script is only
+// parsed and checked here, so neither is ever called.
+namespace fl {
+#define FL_FUZZ_UNUSED_FACTORY(name)                                                               \
+    std::unique_ptr<ShadowMethod> name(const gl::ShaderLibrary&) {                                 \
+        std::abort();                                                                              \
+    }
+FL_FUZZ_UNUSED_FACTORY(makeHard)
+FL_FUZZ_UNUSED_FACTORY(makeJfaL)
+FL_FUZZ_UNUSED_FACTORY(makeFloodL)
+FL_FUZZ_UNUSED_FACTORY(makeJfaE)
+FL_FUZZ_UNUSED_FACTORY(makeFloodE)
+FL_FUZZ_UNUSED_FACTORY(makePcf)
+FL_FUZZ_UNUSED_FACTORY(makePcss)
+FL_FUZZ_UNUSED_FACTORY(makeGroundTruth)
+FL_FUZZ_UNUSED_FACTORY(makeVsm)
+FL_FUZZ_UNUSED_FACTORY(makeRayTrace)
+#undef FL_FUZZ_UNUSED_FACTORY
+namespace gl {
+const std::map<std::string, std::string_view>& embeddedShaders() {
+    std::abort();
+}
+} // namespace gl
+} // namespace fl
+
+namespace {
+
+bool finite(const glm::vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+/// What parseCaptureScript promises about a script it returns (CaptureScript.h).
+void checkScript(const fl::app::CaptureScript& s) {
+    REQUIRE(s.frames >= 1 && s.frames <= fl::app::kMaxCaptureFrames);
+    if (s.camera) {
+        REQUIRE(s.camera->keys().size() >= 2 && std::isfinite(s.camera->yfovDegrees()));
+        for (const float t : {0.0f, 0.37f, 1.0f}) {
+            const fl::CameraKey k = s.camera->keyAt(t);
+            REQUIRE(finite(k.eye) && finite(k.target));
+        }
+    }
+    REQUIRE(!s.lightRadius || (std::isfinite(*s.lightRadius) && *s.lightRadius >= 0.0f));
+    for (const glm::vec3& k : s.lightKeys) REQUIRE(finite(k));
+    REQUIRE(!s.resolutions.empty());
+    for (const auto& [w, h] : s.resolutions) REQUIRE(w >= 1 && w <= 8192 && h >= 1 && h <= 8192);
+    REQUIRE(s.shadowMapProvider == "uniform" || s.shadowMapProvider == "tsm");
+    REQUIRE(s.shadowMapSize >= 16 && s.shadowMapSize <= 8192);
+    REQUIRE(s.reference.samples >= 1 && s.reference.mapSize >= 16);
+    (void)fl::app::referenceText(s.reference); // throws for an unknown kind: a bug here
+    REQUIRE(!s.methods.empty());
+    std::set<std::string> labels;
+    for (const fl::app::MethodSpec& m : s.methods) {
+        REQUIRE(fl::findMethod(m.method) != nullptr && !m.label.empty());
+        REQUIRE(labels.insert(m.label).second);
+        (void)fl::app::settingsFor(fl::RenderSettings{}, m);
+    }
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    static const std::filesystem::path file = fl::fuzz::tempFile("capture_script", "json");
+    fl::fuzz::writeInput(file, data, size);
+    try {
+        checkScript(fl::app::readCaptureScript(file));
+    } catch (const fl::app::CaptureScriptError&) {
+    }
+    return 0;
+}
