@@ -456,6 +456,7 @@ int runCapture(const CaptureRequest& req) {
     so.methodOptions[std::string(floodPassesOption().flag)] = script.jfaPasses;
     so.strictMethodOptions = false; // the script's methods each take their own
     so.timing = req.timing;
+    so.ground = script.ground;
     const Scene scene = loadScene(so);
     auto context = EglContext::create();
     const gl::ShaderLibrary shaders = makeShaderLibrary(so);

@@ -1,5 +1,7 @@
 #include "CaptureScript.h"
 
+#include <renderer/scene/Ground.h>
+
 #include <base/InputFile.h>
 #include <base/Numbers.h>
 #include <base/Text.h>
@@ -190,7 +192,7 @@ CaptureScript parseCaptureScript(const std::string& text, const std::filesystem:
     try {
         checkKeys(j, "script",
                   {"scene", "camera", "light", "resolutions", "shadowMap", "jfaPasses", "reference",
-                   "methods", "saveFrames", "comment"});
+                   "methods", "saveFrames", "ground", "comment"});
         if (j.contains("scene")) {
             if (!j["scene"].is_string()) fail("scene", "expected \"default\" or a file name");
             if (j["scene"] != "default") s.scene = dir / j["scene"].get<std::string>();
@@ -275,6 +277,12 @@ CaptureScript parseCaptureScript(const std::string& text, const std::filesystem:
             if (!labels.insert(m.label).second)
                 fail(f, "\"" + m.label + "\" is listed twice (give a \"label\")");
             s.methods.push_back(std::move(m));
+        }
+        if (j.contains("ground")) {
+            const Json& g = j["ground"];
+            if (!g.is_string() || !parseGroundMode(g.get<std::string>()))
+                fail("ground", "expected \"auto\", \"on\" or \"off\"");
+            s.ground = g.get<std::string>();
         }
         if (j.contains("saveFrames")) {
             if (!j["saveFrames"].is_boolean()) fail("saveFrames", "expected true or false");

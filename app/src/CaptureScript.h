@@ -21,7 +21,8 @@
 //                                                          // keys: the method's options in the
 //                                                          // method table ("name:V" sets its
 //                                                          first)
-//    "saveFrames": true}                                   // PNG + EXR per frame x method
+//    "saveFrames": true,                                   // PNG + EXR per frame x method
+//    "ground": "auto" | "on" | "off"}                      // as --ground (default auto)
 // Every problem is reported as "FILE: FIELD: problem".
 
 #include <renderer/Renderer.h>
@@ -75,6 +76,7 @@ struct CaptureScript {
     } reference;
     std::vector<MethodSpec> methods;
     bool saveFrames = true;
+    std::string ground = "auto"; // --ground: auto | on | off (renderer/scene/Ground.h)
 };
 
 /// Parses a script's JSON text; `file` names it in messages and anchors relative paths.

@@ -1,5 +1,7 @@
 #include "Common.h"
 
+#include <renderer/scene/Ground.h>
+
 #include <renderer/scene/SceneGenerator.h>
 
 #include <base/InputFile.h>
@@ -68,6 +70,24 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool sceneAsOption) {
         ->delimiter(',')
         ->expected(3);
     cmd.add_option("--fov", o.fov, "Vertical field of view, degrees")->check(number(1.0, 170.0));
+    cmd.add_option("--ground", o.ground,
+                   "A ground plane to receive the shadow: auto (added when the scene has no "
+                   "surface under it, as a single model has not), on, off")
+        ->check(CLI::IsMember({"auto", "on", "off"}))
+        ->capture_default_str();
+    auto* dir = cmd.add_option("--light-dir", o.lightDir,
+                               "Light travel direction x,y,z (0,-1,0: straight down): replaces "
+                               "the scene's light with a disk light 2.5 scene radii back along it")
+                    ->check(number(-kMaxWorldCoordinate, kMaxWorldCoordinate))
+                    ->delimiter(',')
+                    ->expected(3);
+    cmd.add_option("--light-position", o.lightPosition,
+                   "Light position x,y,z: replaces the scene's light with a disk light there, "
+                   "aimed at the scene's centre")
+        ->check(number(-kMaxWorldCoordinate, kMaxWorldCoordinate))
+        ->delimiter(',')
+        ->expected(3)
+        ->excludes(dir);
 }
 
 void addMethodOptions(CLI::App& cmd, SceneOptions& o) {
@@ -155,6 +175,39 @@ CLI::Option* addNameOption(CLI::App& cmd, std::string& name, const std::string& 
     return cmd.add_option("--name", name, help)->check(outputStem())->capture_default_str();
 }
 
+namespace {
+
+// The light by hand (--light-dir, --light-position), else the scene's, else the default one
+// (Renderer.h sceneLight: above the scene, off to one side, so that the shadow falls beside the
+// model in the default view); --light-radius applies to whichever it is.
+void placeLight(Scene& scene, const SceneOptions& o) {
+    if (!o.lightDir.empty() || !o.lightPosition.empty()) {
+        Light l = sceneLight(Scene{.bounds = scene.bounds}); // the default light's size
+        l.name = "--light-" + std::string(o.lightDir.empty() ? "position" : "dir");
+        l.type = Light::Type::Point;
+        const glm::vec3 centre = scene.bounds.center();
+        const float r = std::max(scene.bounds.radius(), 1e-3f);
+        if (!o.lightDir.empty()) {
+            const glm::vec3 d(o.lightDir[0], o.lightDir[1], o.lightDir[2]);
+            if (!(glm::length(d) > 0.0f))
+                throw InputError("--light-dir: the zero vector has no direction");
+            l.direction = glm::normalize(d);
+            l.position = centre - l.direction * (2.5f * r);
+        } else {
+            l.position = {o.lightPosition[0], o.lightPosition[1], o.lightPosition[2]};
+            if (glm::length(centre - l.position) <= 1e-6f * r)
+                throw InputError(
+                    "--light-position: at the scene's centre, it has no direction to the scene");
+            l.direction = glm::normalize(centre - l.position);
+        }
+        scene.light = l;
+    }
+    if (!scene.light) scene.light = sceneLight(scene);
+    if (o.lightRadius) scene.light->radius = *o.lightRadius;
+}
+
+} // namespace
+
 Scene loadDefaultScene(const LoadOptions& options) {
     const std::filesystem::path asset =
         std::filesystem::path(FLOODLIGHT_SOURCE_DIR) / "assets" / "default.glb";
@@ -168,11 +221,22 @@ Scene loadScene(const SceneOptions& o) {
     LoadOptions lo;
     lo.lightRadius = o.lightRadius;
     lo.warn = [](const std::string& w) { std::cerr << "warning: " << w << "\n"; };
+    Scene scene;
     try {
-        return o.scene.empty() ? loadDefaultScene(lo) : loadGltf(o.scene, lo);
+        scene = o.scene.empty() ? loadDefaultScene(lo) : loadGltf(o.scene, lo);
     } catch (const SceneError& e) {
         throw InputError(e.what());
     }
+    // The ground first: the default light and the camera are placed from the bounds with it.
+    if (applyGround(scene, parseGroundMode(o.ground).value_or(GroundMode::Auto)))
+        std::cout
+            << "ground: added under the scene ("
+            << (o.ground == "on"
+                    ? "--ground on"
+                    : "it has no surface under it to receive a shadow; --ground off leaves it out")
+            << ")\n";
+    placeLight(scene, o);
+    return scene;
 }
 
 gl::ShaderLibrary makeShaderLibrary(const SceneOptions& o) {

@@ -51,6 +51,8 @@ struct SceneOptions {
     std::string camera = "default"; // default | auto | N (glTF camera index)
     std::vector<float> eye, target; // explicit look-at
     std::optional<float> fov;       // degrees
+    std::string ground = "auto";    // auto | on | off (renderer/scene/Ground.h)
+    std::vector<float> lightDir, lightPosition; // x,y,z: the light placed by hand
 };
 
 /// Registers the scene/shadow/camera options on a subcommand.

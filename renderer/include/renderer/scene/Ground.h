@@ -1,0 +1,42 @@
+#pragma once
+// A visible shadow for any model (issue 15): most glTF files are one object with no ground, so
+// its shadow falls on nothing. `--ground auto` (the default) adds a plain ground plane under a
+// scene that has no surface under it to receive the shadow; a scene with its own ground or
+// terrain is left as it is.
+//
+// The rule (auto): look down on the scene's footprint through a 32 x 32 grid of cells. A cell
+// is covered when the lowest upward-facing surface above it (a triangle whose normal points up
+// by at least 45 degrees, or either way for a double-sided material) lies in the bottom fifth of
+// the scene's height. The scene has a ground when at least half of the cells are covered: a
+// floor, a terrain or a plinth; a model standing on nothing covers few (its lowest upward faces
+// are high up, or small).
+
+#include <renderer/scene/Scene.h>
+
+#include <optional>
+#include <string_view>
+
+namespace fl {
+
+enum class GroundMode { Auto, On, Off };
+/// "auto" | "on" | "off"; nullopt for anything else.
+std::optional<GroundMode> parseGroundMode(std::string_view text);
+
+/// The share of the footprint's cells covered by a low upward-facing surface (the rule above),
+/// in [0, 1].
+double groundCoverage(const Scene& scene);
+/// Whether the scene has a ground of its own: groundCoverage >= 0.5.
+bool hasGround(const Scene& scene);
+
+/// Adds the ground plane to `scene` and recomputes its bounds: a neutral grey square at the
+/// bottom of the bounds, centred under them, reaching past the footprint by 0.75 x the scene's
+/// height (a shadow cast from 53 degrees above the horizon or higher lands on it whole; the
+/// default light stands at 58), as one instance with its own object id and material named
+/// "floodlight ground".
+void addGround(Scene& scene);
+
+/// Applies `mode`: adds the ground for On, and for Auto when the scene has none. Returns
+/// whether it added one.
+bool applyGround(Scene& scene, GroundMode mode);
+
+} // namespace fl

@@ -1,0 +1,129 @@
+// renderer/scene/Ground.h: `--ground auto` adds a ground under a model that stands on nothing
+// and leaves a scene with its own floor or terrain as it is.
+
+#include "TestPaths.h"
+
+#include <renderer/gltf/GltfLoader.h>
+#include <renderer/scene/Ground.h>
+#include <renderer/scene/SceneGenerator.h>
+
+#include <gtest/gtest.h>
+
+namespace fl {
+namespace {
+
+// An axis-aligned box from `lo` to `hi` as one instance, every face wound outward.
+void addBox(Scene& s, glm::vec3 lo, glm::vec3 hi) {
+    Mesh m;
+    m.name = "box";
+    const glm::vec3 centre = 0.5f * (lo + hi);
+    for (int axis = 0; axis < 3; ++axis)
+        for (int side = 0; side < 2; ++side) {
+            const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+            const auto base = static_cast<std::uint32_t>(m.positions.size());
+            for (int k = 0; k < 4; ++k) {
+                glm::vec3 p;
+                p[axis] = side ? hi[axis] : lo[axis];
+                p[u] = (k == 1 || k == 2) ? hi[u] : lo[u];
+                p[v] = (k >= 2) ? hi[v] : lo[v];
+                m.positions.push_back(p);
+            }
+            std::uint32_t tri[6] = {0, 1, 2, 0, 2, 3};
+            const glm::vec3 n = glm::cross(m.positions[base + 1] - m.positions[base],
+                                           m.positions[base + 2] - m.positions[base]);
+            if (glm::dot(n, m.positions[base] - centre) < 0.0f)
+                std::swap(tri[1], tri[2]), std::swap(tri[4], tri[5]);
+            for (std::uint32_t t : tri) m.indices.push_back(base + t);
+        }
+    m.normals.assign(m.positions.size(), glm::vec3(0.0f, 1.0f, 0.0f));
+    s.meshes.push_back(m);
+    Instance inst;
+    inst.mesh = static_cast<int>(s.meshes.size()) - 1;
+    inst.objectId = static_cast<std::uint32_t>(s.instances.size()) + 1;
+    s.instances.push_back(inst);
+    s.computeBounds();
+}
+
+// A flat quad at height y over [lo, hi] in x and z, facing up.
+void addFloor(Scene& s, float y, glm::vec2 lo, glm::vec2 hi) {
+    Mesh m;
+    m.positions = {{lo.x, y, lo.y}, {hi.x, y, lo.y}, {hi.x, y, hi.y}, {lo.x, y, hi.y}};
+    m.normals.assign(4, glm::vec3(0.0f, 1.0f, 0.0f));
+    m.indices = {0, 2, 1, 0, 3, 2};
+    s.meshes.push_back(m);
+    Instance inst;
+    inst.mesh = static_cast<int>(s.meshes.size()) - 1;
+    s.instances.push_back(inst);
+    s.computeBounds();
+}
+
+TEST(Ground, OurScenesHaveTheirOwn) {
+    EXPECT_TRUE(hasGround(loadGltf(test::defaultAsset())));
+    for (const NamedSize& size : thesisSceneSizes()) {
+        if (size.triangles > 10000) continue; // the larger ones are the same layout, denser
+        const Scene s = generateScene({size.triangles, 1});
+        EXPECT_TRUE(hasGround(s)) << size.name << ": " << groundCoverage(s);
+    }
+}
+
+TEST(Ground, AModelOnNothingGetsOneAndAFlooredOneDoesNot) {
+    Scene box;
+    addBox(box, {0, 0, 0}, {1, 2, 1});
+    // Its top is the only upward face, at the top of the bounds: not a ground.
+    EXPECT_EQ(groundCoverage(box), 0.0);
+    Scene floored = box;
+    addFloor(floored, 0.0f, {-3, -3}, {4, 4});
+    EXPECT_GT(groundCoverage(floored), 0.99);
+    EXPECT_TRUE(hasGround(floored));
+    // A plinth under the whole footprint, low down, is a ground too.
+    Scene plinth = box;
+    addBox(plinth, {-0.2f, -0.2f, -0.2f}, {1.2f, 0.0f, 1.2f});
+    EXPECT_TRUE(hasGround(plinth)) << groundCoverage(plinth);
+    // A roof over nothing (a table top, high up) is not.
+    Scene table;
+    addBox(table, {0, 1.8f, 0}, {3, 2, 3});
+    addBox(table, {0, 0, 0}, {0.2f, 1.8f, 0.2f});
+    EXPECT_FALSE(hasGround(table)) << groundCoverage(table);
+}
+
+TEST(Ground, AddedUnderTheBoundsReachingPastTheFootprint) {
+    Scene box;
+    addBox(box, {0, 0, 0}, {1, 2, 1});
+    const geom::Aabb before = box.bounds;
+    ASSERT_TRUE(applyGround(box, GroundMode::Auto));
+    ASSERT_EQ(box.instances.size(), 2u);
+    const Mesh& g = box.meshes.at(static_cast<std::size_t>(box.instances.back().mesh));
+    EXPECT_EQ(g.name, "floodlight ground");
+    EXPECT_EQ(box.materials.at(static_cast<std::size_t>(g.material)).name, "floodlight ground");
+    EXPECT_NE(box.instances.back().objectId, box.instances.front().objectId);
+    // Just under the model; past its footprint by 0.75 x its height (2) on every side.
+    EXPECT_LE(box.bounds.min.y, before.min.y);
+    EXPECT_GT(box.bounds.min.y, before.min.y - 1e-3f);
+    EXPECT_NEAR(box.bounds.min.x, 0.5f - 0.5f - 1.5f, 1e-5f);
+    EXPECT_NEAR(box.bounds.max.z, 0.5f + 0.5f + 1.5f, 1e-5f);
+    EXPECT_EQ(box.bounds.max.y, before.max.y);
+    // Its face points up, and it now counts as the scene's ground.
+    const glm::vec3 n = glm::cross(g.positions[g.indices[1]] - g.positions[g.indices[0]],
+                                   g.positions[g.indices[2]] - g.positions[g.indices[0]]);
+    EXPECT_GT(n.y, 0.0f);
+    EXPECT_TRUE(hasGround(box));
+    EXPECT_FALSE(applyGround(box, GroundMode::Auto)); // not twice
+}
+
+TEST(Ground, OnAndOffOverrideTheRule) {
+    Scene floored;
+    addFloor(floored, 0.0f, {0, 0}, {1, 1});
+    Scene alone;
+    addBox(alone, {0, 0, 0}, {1, 1, 1});
+    EXPECT_FALSE(applyGround(alone, GroundMode::Off));
+    EXPECT_EQ(alone.instances.size(), 1u);
+    EXPECT_TRUE(applyGround(floored, GroundMode::On));
+    EXPECT_EQ(floored.instances.size(), 2u);
+    EXPECT_EQ(parseGroundMode("auto"), GroundMode::Auto);
+    EXPECT_EQ(parseGroundMode("on"), GroundMode::On);
+    EXPECT_EQ(parseGroundMode("off"), GroundMode::Off);
+    EXPECT_FALSE(parseGroundMode("yes"));
+}
+
+} // namespace
+} // namespace fl
