@@ -39,6 +39,7 @@ TEST(CaptureScript, MinimalScriptHasDefaults) {
     EXPECT_EQ(s.methods[1].method, "jfa-l");
     EXPECT_EQ(s.methods[1].label, "jfa-l");
     EXPECT_TRUE(s.saveFrames);
+    EXPECT_EQ(s.ground, "auto");
 }
 
 TEST(CaptureScript, EveryField) {
@@ -55,8 +56,9 @@ TEST(CaptureScript, EveryField) {
       "methods": ["pcss:16/24", {"method": "pcss", "preset": "32/64"}, "pcf:5",
                   {"method": "jfa-l", "passes": 4, "label": "jfa-l short"}, "flood-e:3",
                   "reference"],
-      "saveFrames": false})");
+      "saveFrames": false, "ground": "off"})");
     EXPECT_EQ(s.scene, std::filesystem::path("/scripts/scenes/room.glb"));
+    EXPECT_EQ(s.ground, "off");
     ASSERT_TRUE(s.camera);
     EXPECT_EQ(s.camera->interpolation(), PathInterpolation::Linear);
     EXPECT_EQ(s.camera->yfovDegrees(), 40.0f);
@@ -182,6 +184,8 @@ TEST(CaptureScript, EveryMalformedFieldIsNamed) {
         {script(R"(, "reference": {"kind": "raytrace", "pattern": "grid"})"), "reference.pattern"},
         {script(R"(, "reference": {"kind": "raytrace", "samples": 100000})"), "reference.samples"},
         {script(R"(, "saveFrames": "yes")"), "saveFrames"},
+        {script(R"(, "ground": "maybe")"), "ground"},
+        {script(R"(, "ground": true)"), "ground"},
         {script(R"(, "frames": 3)"), "script.frames"},
         {script("", R"([])"), "methods"},
         {script("", R"("hard")"), "methods"},
