@@ -5,6 +5,7 @@
 
 #include "CliRun.h"
 #include "TestPaths.h"
+#include "TestScenes.h"
 
 #include <renderer/io/ImageIO.h>
 #include <renderer/scene/SceneGenerator.h>
@@ -20,33 +21,7 @@ namespace fs = std::filesystem;
 const fs::path& model() {
     static const fs::path file = [] {
         Scene s;
-        Mesh m;
-        m.name = "box";
-        const glm::vec3 lo(0.0f), hi(1.0f, 2.0f, 1.0f), centre = 0.5f * (lo + hi);
-        for (int axis = 0; axis < 3; ++axis)
-            for (int side = 0; side < 2; ++side) {
-                const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-                const auto base = static_cast<std::uint32_t>(m.positions.size());
-                glm::vec3 n(0.0f);
-                n[axis] = side ? 1.0f : -1.0f;
-                for (int k = 0; k < 4; ++k) {
-                    glm::vec3 p;
-                    p[axis] = side ? hi[axis] : lo[axis];
-                    p[u] = (k == 1 || k == 2) ? hi[u] : lo[u];
-                    p[v] = k >= 2 ? hi[v] : lo[v];
-                    m.positions.push_back(p);
-                    m.normals.push_back(n);
-                }
-                std::uint32_t tri[6] = {0, 1, 2, 0, 2, 3};
-                const glm::vec3 f = glm::cross(m.positions[base + 1] - m.positions[base],
-                                               m.positions[base + 2] - m.positions[base]);
-                if (glm::dot(f, m.positions[base] - centre) < 0.0f) {
-                    std::swap(tri[1], tri[2]);
-                    std::swap(tri[4], tri[5]);
-                }
-                for (std::uint32_t t : tri) m.indices.push_back(base + t);
-            }
-        s.meshes.push_back(m);
+        s.meshes.push_back(box(glm::vec3(0.0f), glm::vec3(1.0f, 2.0f, 1.0f)));
         s.instances.push_back(Instance{0, glm::mat4(1.0f), 1, "box"});
         s.computeBounds();
         const fs::path f = outputDir("ground_cli") / "box.glb";

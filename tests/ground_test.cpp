@@ -2,6 +2,7 @@
 // and leaves a scene with its own floor or terrain as it is.
 
 #include "TestPaths.h"
+#include "TestScenes.h"
 
 #include <renderer/gltf/GltfLoader.h>
 #include <renderer/scene/Ground.h>
@@ -12,31 +13,9 @@
 namespace fl {
 namespace {
 
-// An axis-aligned box from `lo` to `hi` as one instance, every face wound outward.
+// An axis-aligned box from `lo` to `hi` as one more instance.
 void addBox(Scene& s, glm::vec3 lo, glm::vec3 hi) {
-    Mesh m;
-    m.name = "box";
-    const glm::vec3 centre = 0.5f * (lo + hi);
-    for (int axis = 0; axis < 3; ++axis)
-        for (int side = 0; side < 2; ++side) {
-            const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-            const auto base = static_cast<std::uint32_t>(m.positions.size());
-            for (int k = 0; k < 4; ++k) {
-                glm::vec3 p;
-                p[axis] = side ? hi[axis] : lo[axis];
-                p[u] = (k == 1 || k == 2) ? hi[u] : lo[u];
-                p[v] = (k >= 2) ? hi[v] : lo[v];
-                m.positions.push_back(p);
-            }
-            std::uint32_t tri[6] = {0, 1, 2, 0, 2, 3};
-            const glm::vec3 n = glm::cross(m.positions[base + 1] - m.positions[base],
-                                           m.positions[base + 2] - m.positions[base]);
-            if (glm::dot(n, m.positions[base] - centre) < 0.0f)
-                std::swap(tri[1], tri[2]), std::swap(tri[4], tri[5]);
-            for (std::uint32_t t : tri) m.indices.push_back(base + t);
-        }
-    m.normals.assign(m.positions.size(), glm::vec3(0.0f, 1.0f, 0.0f));
-    s.meshes.push_back(m);
+    s.meshes.push_back(test::box(lo, hi));
     Instance inst;
     inst.mesh = static_cast<int>(s.meshes.size()) - 1;
     inst.objectId = static_cast<std::uint32_t>(s.instances.size()) + 1;

@@ -16,6 +16,8 @@ void addQuad(Mesh& m, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d, glm::v
     for (std::uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) m.indices.push_back(base + i);
 }
 
+} // namespace
+
 Mesh box(glm::vec3 lo, glm::vec3 hi) {
     Mesh m;
     m.name = "box";
@@ -28,11 +30,8 @@ Mesh box(glm::vec3 lo, glm::vec3 hi) {
     addQuad(m, p[0], p[4], p[7], p[3], {-1, 0, 0});
     addQuad(m, p[7], p[6], p[2], p[3], {0, 1, 0});
     addQuad(m, p[0], p[1], p[5], p[4], {0, -1, 0});
-    m.material = 1;
     return m;
 }
-
-} // namespace
 
 Scene groundAndBox(float half, glm::vec3 lo, glm::vec3 hi, glm::vec3 lightDir) {
     Scene s;
@@ -43,6 +42,7 @@ Scene groundAndBox(float half, glm::vec3 lo, glm::vec3 hi, glm::vec3 lightDir) {
             {0, 1, 0});
     ground.material = 0;
     s.meshes = {ground, box(lo, hi)};
+    s.meshes[1].material = 1;
     s.materials = {{"ground", glm::vec4(0.8f, 0.8f, 0.8f, 1.0f), -1, false},
                    {"box", glm::vec4(0.8f, 0.3f, 0.2f, 1.0f), -1, false}};
     s.instances = {{0, glm::mat4(1.0f), 1, "ground"}, {1, glm::mat4(1.0f), 2, "box"}};

@@ -6,6 +6,9 @@
 
 namespace fl::test {
 
+/// An axis-aligned box [lo, hi], its faces wound outward with flat normals (default material).
+Mesh box(glm::vec3 lo, glm::vec3 hi);
+
 /// A ground quad (y = 0, [-half, half]²) and an axis-aligned box [lo, hi], each its own object,
 /// lit by a directional light travelling along `lightDir`.
 Scene groundAndBox(float half, glm::vec3 lo, glm::vec3 hi, glm::vec3 lightDir);
