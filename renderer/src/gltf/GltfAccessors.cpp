@@ -269,26 +269,70 @@ ByteSpan bufferViewBytes(const Context& ctx, int index, std::string_view usage) 
     return {buffer.data.data() + bv.byteOffset, bv.byteLength};
 }
 
-std::vector<glm::vec3> readVec3(const Context& ctx, int index, std::string_view usage) {
-    const AccessorView view =
-        viewAccessor(ctx, index, usage, TINYGLTF_TYPE_VEC3, {TINYGLTF_COMPONENT_TYPE_FLOAT});
+bool usesExtension(const Context& ctx, std::string_view name) {
+    const auto& used = ctx.model().extensionsUsed;
+    return std::find(used.begin(), used.end(), name) != used.end();
+}
+
+namespace {
+
+constexpr int kByte = TINYGLTF_COMPONENT_TYPE_BYTE, kUByte = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+              kShort = TINYGLTF_COMPONENT_TYPE_SHORT,
+              kUShort = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+              kFloat = TINYGLTF_COMPONENT_TYPE_FLOAT;
+
+/// Fails unless an integer accessor is normalized where `usage` needs it to be.
+void requireNormalized(const Context& ctx, const AccessorView& view, std::string_view usage,
+                       std::string_view why) {
+    const tinygltf::Accessor& acc = *view.accessor;
+    if (acc.componentType != kFloat && !acc.normalized)
+        ctx.fail(view.element,
+                 cat(usage, " with component type ", componentTypeName(acc.componentType),
+                     " must be normalized (", why, ")"));
+}
+
+std::vector<glm::vec3> vec3s(const Context& ctx, const AccessorView& view) {
     const std::vector<float> f = readFloats(ctx, view);
     std::vector<glm::vec3> out(view.count);
     for (std::size_t i = 0; i < view.count; ++i) out[i] = {f[3 * i], f[3 * i + 1], f[3 * i + 2]};
     return out;
 }
 
-std::vector<glm::vec2> readTexcoords(const Context& ctx, int index, std::string_view usage) {
+} // namespace
+
+std::vector<glm::vec3> readPositionVec3(const Context& ctx, int index, std::string_view usage) {
+    // KHR_mesh_quantization: integer positions, scaled back to the model by the node's
+    // transform (the extension's whole point), so they are read as they are.
+    const bool quantized = usesExtension(ctx, "KHR_mesh_quantization");
+    return vec3s(ctx, quantized ? viewAccessor(ctx, index, usage, TINYGLTF_TYPE_VEC3,
+                                               {kFloat, kByte, kUByte, kShort, kUShort})
+                                : viewAccessor(ctx, index, usage, TINYGLTF_TYPE_VEC3, {kFloat}));
+}
+
+std::vector<glm::vec3> readNormalVec3(const Context& ctx, int index, std::string_view usage) {
+    if (!usesExtension(ctx, "KHR_mesh_quantization"))
+        return vec3s(ctx, viewAccessor(ctx, index, usage, TINYGLTF_TYPE_VEC3, {kFloat}));
     const AccessorView view =
-        viewAccessor(ctx, index, usage, TINYGLTF_TYPE_VEC2,
-                     {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
-                      TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT});
-    const tinygltf::Accessor& acc = *view.accessor;
-    // Integer texcoords are only meaningful normalized (core spec 3.7.2.1; the unnormalized
-    // form belongs to KHR_mesh_quantization, which we do not implement).
-    if (acc.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !acc.normalized)
-        ctx.fail(view.element, cat(usage, " with component type ",
-                                   componentTypeName(acc.componentType), " must be normalized"));
+        viewAccessor(ctx, index, usage, TINYGLTF_TYPE_VEC3, {kFloat, kByte, kShort});
+    requireNormalized(ctx, view, usage, "KHR_mesh_quantization");
+    return vec3s(ctx, view);
+}
+
+std::vector<glm::vec2> readTexcoords(const Context& ctx, int index, std::string_view usage) {
+    const bool quantized = usesExtension(ctx, "KHR_mesh_quantization");
+    const AccessorView view =
+        quantized ? viewAccessor(ctx, index, usage, TINYGLTF_TYPE_VEC2,
+                                 {kFloat, kByte, kUByte, kShort, kUShort})
+                  : viewAccessor(ctx, index, usage, TINYGLTF_TYPE_VEC2, {kFloat, kUByte, kUShort});
+    // Integer texcoords are only meaningful normalized in the core spec (3.7.2.1); unnormalized
+    // ones belong to KHR_mesh_quantization, where KHR_texture_transform scales them.
+    if (!quantized)
+        requireNormalized(ctx, view, usage, "core glTF; KHR_mesh_quantization allows it");
+    else if (view.accessor->componentType != kFloat && !view.accessor->normalized &&
+             usesExtension(ctx, "KHR_texture_transform"))
+        ctx.warn(view.element, cat(usage, ": integer texture coordinates are scaled by "
+                                          "KHR_texture_transform, which is not applied: textures "
+                                          "may be misplaced (shadows are not affected)"));
     const std::vector<float> f = readFloats(ctx, view);
     std::vector<glm::vec2> out(view.count);
     for (std::size_t i = 0; i < view.count; ++i) out[i] = {f[2 * i], f[2 * i + 1]};

@@ -107,9 +107,16 @@ struct ByteSpan {
 };
 ByteSpan bufferViewBytes(const Context& ctx, int index, std::string_view usage);
 
-/// VEC3 FLOAT (POSITION, NORMAL).
-std::vector<glm::vec3> readVec3(const Context& ctx, int index, std::string_view usage);
-/// VEC2 FLOAT or normalized UNSIGNED_BYTE / UNSIGNED_SHORT (TEXCOORD_n).
+/// Whether the file lists `name` in extensionsUsed.
+bool usesExtension(const Context& ctx, std::string_view name);
+
+/// VEC3 FLOAT; with KHR_mesh_quantization also (normalized or not) BYTE, UNSIGNED_BYTE, SHORT
+/// and UNSIGNED_SHORT (POSITION).
+std::vector<glm::vec3> readPositionVec3(const Context& ctx, int index, std::string_view usage);
+/// VEC3 FLOAT; with KHR_mesh_quantization also normalized BYTE and SHORT (NORMAL).
+std::vector<glm::vec3> readNormalVec3(const Context& ctx, int index, std::string_view usage);
+/// VEC2 FLOAT or normalized UNSIGNED_BYTE / UNSIGNED_SHORT (TEXCOORD_n); with
+/// KHR_mesh_quantization also BYTE and SHORT, and the integer forms unnormalized.
 std::vector<glm::vec2> readTexcoords(const Context& ctx, int index, std::string_view usage);
 /// SCALAR UNSIGNED_BYTE / UNSIGNED_SHORT / UNSIGNED_INT (primitive indices).
 std::vector<std::uint32_t> readIndices(const Context& ctx, int index, std::string_view usage);

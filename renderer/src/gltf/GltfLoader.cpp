@@ -15,6 +15,8 @@
 //   parameters (defaults). Numbers are checked as the floats the renderer uses: a finite double
 //   such as 1e300 is invalid.
 // - Sparse accessors are supported. Missing normals become flat normals, as the spec requires.
+// - KHR_mesh_quantization: integer positions, normals and texture coordinates in the forms the
+//   extension lists (GltfAccessors.cpp), read as they are; the nodes' transforms scale them.
 
 #include <renderer/gltf/GltfLoader.h>
 
@@ -70,7 +72,8 @@ constexpr int kMaxJsonDepth = 128;
 
 // Required extensions we implement. Everything else changes the meaning of the file (Draco,
 // quantization, texture transforms, other material models), so a file requiring it is refused.
-constexpr std::array<std::string_view, 1> kSupportedRequired = {"KHR_lights_punctual"};
+constexpr std::array<std::string_view, 2> kSupportedRequired = {"KHR_lights_punctual",
+                                                                "KHR_mesh_quantization"};
 
 std::string lowercase(std::string s) {
     std::transform(s.begin(), s.end(), s.begin(),

@@ -66,7 +66,7 @@ struct Primitive {
 
 std::vector<glm::vec3> readPositions(const Context& ctx, const Primitive& prim, int accessor) {
     const std::string usage = prim.usage("POSITION");
-    std::vector<glm::vec3> positions = readVec3(ctx, accessor, usage);
+    std::vector<glm::vec3> positions = readPositionVec3(ctx, accessor, usage);
     for (std::size_t i = 0; i < positions.size(); ++i)
         if (!finite(positions[i]))
             ctx.fail(elem("accessors", static_cast<std::size_t>(accessor)),
@@ -218,7 +218,7 @@ std::optional<Mesh> convertPrimitive(const Context& ctx, const Primitive& prim) 
     }
     attachTexcoords(ctx, prim, mesh);
     if (const int normals = prim.attribute("NORMAL"); normals >= 0) {
-        mesh.normals = readVec3(ctx, normals, prim.usage("NORMAL"));
+        mesh.normals = readNormalVec3(ctx, normals, prim.usage("NORMAL"));
         checkCount(ctx, prim, "NORMAL", mesh.normals.size(), mesh.positions.size());
         repairNormals(ctx, prim, mesh);
     } else {
