@@ -551,8 +551,10 @@ Runner addCaptureCommand(CLI::App& app) {
                   "finished frames, render the rest. Refused if the script, its camera or scene "
                   "changed; without an unfinished run, starts from frame 0");
     cmd->add_option("--stop-after", r->stopAfter,
-                    "Render at most N frames in this run, then stop with exit status 3, keeping "
-                    "the progress for --resume (a long capture in several sittings)")
+                    "Render at most N frames in this run (1 to " +
+                        std::to_string(kMaxCaptureFrames) +
+                        "), then stop with exit status 3, keeping the progress for --resume (a "
+                        "long capture in several sittings)")
         ->check(integer(1, kMaxCaptureFrames));
     return [r] { return runCapture(*r); };
 }
