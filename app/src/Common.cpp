@@ -268,7 +268,8 @@ RenderSettings makeRenderSettings(const SceneOptions& o) {
     for (const auto& [flag, value] : o.methodOptions) {
         if (o.strictMethodOptions && !method->takesFlag(flag)) {
             const std::string takers =
-                methodNamesWhere([&](const MethodDescriptor& m) { return m.takesFlag(flag); });
+                // flag is captured by name: clang 14 cannot capture a structured binding.
+                methodNamesWhere([&f = flag](const MethodDescriptor& m) { return m.takesFlag(f); });
             throw UsageError(flag + ": method " + o.method + " does not take it (only " + takers +
                              " do)");
         }
