@@ -325,14 +325,11 @@ std::vector<glm::vec2> readTexcoords(const Context& ctx, int index, std::string_
                                  {kFloat, kByte, kUByte, kShort, kUShort})
                   : viewAccessor(ctx, index, usage, TINYGLTF_TYPE_VEC2, {kFloat, kUByte, kUShort});
     // Integer texcoords are only meaningful normalized in the core spec (3.7.2.1); unnormalized
-    // ones belong to KHR_mesh_quantization, where KHR_texture_transform scales them.
+    // ones belong to KHR_mesh_quantization, where KHR_texture_transform scales them (applied by
+    // GltfMeshes.cpp, attachTexcoords).
     if (!quantized)
         requireNormalized(ctx, view, usage, "core glTF; KHR_mesh_quantization allows it");
-    else if (view.accessor->componentType != kFloat && !view.accessor->normalized &&
-             usesExtension(ctx, "KHR_texture_transform"))
-        ctx.warn(view.element, cat(usage, ": integer texture coordinates are scaled by "
-                                          "KHR_texture_transform, which is not applied: textures "
-                                          "may be misplaced (shadows are not affected)"));
+
     const std::vector<float> f = readFloats(ctx, view);
     std::vector<glm::vec2> out(view.count);
     for (std::size_t i = 0; i < view.count; ++i) out[i] = {f[2 * i], f[2 * i + 1]};

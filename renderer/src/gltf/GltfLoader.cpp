@@ -17,6 +17,8 @@
 // - Sparse accessors are supported. Missing normals become flat normals, as the spec requires.
 // - KHR_mesh_quantization: integer positions, normals and texture coordinates in the forms the
 //   extension lists (GltfAccessors.cpp), read as they are; the nodes' transforms scale them.
+// - The base colour texture's coordinate set (texCoord) and KHR_texture_transform are applied
+//   to the mesh's texture coordinates at load (GltfMeshes.cpp).
 
 #include <renderer/gltf/GltfLoader.h>
 
@@ -72,8 +74,8 @@ constexpr int kMaxJsonDepth = 128;
 
 // Required extensions we implement. Everything else changes the meaning of the file (Draco,
 // quantization, texture transforms, other material models), so a file requiring it is refused.
-constexpr std::array<std::string_view, 2> kSupportedRequired = {"KHR_lights_punctual",
-                                                                "KHR_mesh_quantization"};
+constexpr std::array<std::string_view, 3> kSupportedRequired = {
+    "KHR_lights_punctual", "KHR_mesh_quantization", "KHR_texture_transform"};
 
 std::string lowercase(std::string s) {
     std::transform(s.begin(), s.end(), s.begin(),

@@ -114,11 +114,6 @@ int baseColorTexture(const Context& ctx, const tinygltf::TextureInfo& info,
                               " in textures); texture dropped"));
         return -1;
     }
-    if (info.texCoord != 0) {
-        // Meshes carry TEXCOORD_0 only; another set would map the image wrongly.
-        ctx.warn(element, cat("uses TEXCOORD_", info.texCoord, "; texture dropped"));
-        return -1;
-    }
     const auto& texture = model.textures[static_cast<std::size_t>(info.index)];
     const std::string texElement = elem("textures", static_cast<std::size_t>(info.index));
     if (texture.source == -1) {

@@ -160,13 +160,82 @@ void generateFlatNormals(Mesh& mesh) {
     std::iota(mesh.indices.begin(), mesh.indices.end(), 0u);
 }
 
+/// The texture coordinates the base colour texture reads: its set (textureInfo.texCoord, or the
+/// KHR_texture_transform override) and that extension's offset, rotation and scale.
+struct UvMapping {
+    int set = 0;
+    glm::mat3 transform{1.0f};
+};
+
+/// The spec's matrix (KHR_texture_transform README): translation * rotation * scale, the
+/// rotation counter-clockwise by `rotation` radians. Bad values are ignored with a warning.
+UvMapping uvMapping(const Context& ctx, const Primitive& prim) {
+    UvMapping m;
+    if (prim.gltf.material < 0) return m;
+    const auto& info = ctx.model()
+                           .materials[static_cast<std::size_t>(prim.gltf.material)]
+                           .pbrMetallicRoughness.baseColorTexture;
+    if (info.index < 0) return m;
+    m.set = info.texCoord;
+    const auto ext = info.extensions.find("KHR_texture_transform");
+    if (ext == info.extensions.end() || !ext->second.IsObject()) return m;
+    const tinygltf::Value& t = ext->second;
+    const std::string element =
+        cat(elem("materials", static_cast<std::size_t>(prim.gltf.material)),
+            ".pbrMetallicRoughness.baseColorTexture.extensions.KHR_texture_transform");
+    auto number = [&](const tinygltf::Value& v, float& out) {
+        if (!v.IsNumber() || !std::isfinite(v.GetNumberAsDouble()) ||
+            std::abs(v.GetNumberAsDouble()) > 1e6)
+            return false;
+        out = static_cast<float>(v.GetNumberAsDouble());
+        return true;
+    };
+    auto pair = [&](const char* key, glm::vec2 fallback) {
+        if (!t.Has(key)) return fallback;
+        const tinygltf::Value& v = t.Get(key);
+        glm::vec2 out;
+        if (v.IsArray() && v.ArrayLen() == 2 && number(v.Get(0), out.x) && number(v.Get(1), out.y))
+            return out;
+        ctx.warn(element, cat(key, " is not 2 finite numbers of at most 1e6; ignored"));
+        return fallback;
+    };
+    const glm::vec2 offset = pair("offset", glm::vec2(0.0f)),
+                    scale = pair("scale", glm::vec2(1.0f));
+    float rotation = 0.0f;
+    if (t.Has("rotation") && !number(t.Get("rotation"), rotation)) {
+        ctx.warn(element, "rotation is not a finite number of at most 1e6; ignored");
+        rotation = 0.0f;
+    }
+    if (t.Has("texCoord")) {
+        const tinygltf::Value& v = t.Get("texCoord");
+        if (v.IsInt() && v.GetNumberAsInt() >= 0)
+            m.set = v.GetNumberAsInt();
+        else
+            ctx.warn(element, "texCoord is not a whole number >= 0; ignored");
+    }
+    const float c = std::cos(rotation), s = std::sin(rotation);
+    const glm::mat3 translation(1, 0, 0, 0, 1, 0, offset.x, offset.y, 1);
+    const glm::mat3 rotate(c, s, 0, -s, c, 0, 0, 0, 1);
+    const glm::mat3 scaling(scale.x, 0, 0, 0, scale.y, 0, 0, 0, 1);
+    m.transform = translation * rotate * scaling;
+    return m;
+}
+
 void attachTexcoords(const Context& ctx, const Primitive& prim, Mesh& mesh) {
-    const int accessor = prim.attribute("TEXCOORD_0");
-    if (accessor < 0) return;
-    mesh.texcoords = readTexcoords(ctx, accessor, prim.usage("TEXCOORD_0"));
-    checkCount(ctx, prim, "TEXCOORD_0", mesh.texcoords.size(), mesh.positions.size());
+    const UvMapping mapping = uvMapping(ctx, prim);
+    const std::string attribute = cat("TEXCOORD_", mapping.set);
+    const int accessor = prim.attribute(attribute.c_str());
+    if (accessor < 0) {
+        if (mapping.set != 0)
+            ctx.warn(prim.element, cat("its base colour texture reads ", attribute,
+                                       ", which it does not have; drawn untextured"));
+        return;
+    }
+    mesh.texcoords = readTexcoords(ctx, accessor, prim.usage(attribute));
+    checkCount(ctx, prim, attribute, mesh.texcoords.size(), mesh.positions.size());
     std::size_t repaired = 0;
     for (glm::vec2& uv : mesh.texcoords) {
+        uv = glm::vec2(mapping.transform * glm::vec3(uv, 1.0f));
         if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) {
             uv = glm::vec2(0.0f);
             ++repaired;
