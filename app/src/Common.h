@@ -48,10 +48,10 @@ struct SceneOptions {
     float slopeBias = 2.0f;
     float constantBias = 2.0f;
     std::string timing = "auto";
-    std::string camera = "default"; // default | auto | N (glTF camera index)
-    std::vector<float> eye, target; // explicit look-at
-    std::optional<float> fov;       // degrees
-    std::string ground = "auto";    // auto | on | off (renderer/scene/Ground.h)
+    std::string camera = "default";             // default | auto | N (glTF camera index)
+    std::vector<float> eye, target;             // explicit look-at
+    std::optional<float> fov;                   // degrees
+    std::string ground = "auto";                // auto | on | off (renderer/scene/Ground.h)
     std::vector<float> lightDir, lightPosition; // x,y,z: the light placed by hand
 };
 
