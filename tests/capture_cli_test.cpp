@@ -39,13 +39,6 @@ fs::path example(const char* name) {
     return dataDir().parent_path() / "examples" / "capture" / name;
 }
 
-std::string readText(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 const char* kMethods[] = {"hard", "pcf_3", "pcss_16-24", "jfa-l", "flood-l", "jfa-e", "flood-e"};
 constexpr int kFrames = 3;
 
@@ -68,7 +61,7 @@ void checkFiles(const fs::path& dir) {
 }
 
 void checkCsv(const fs::path& dir) {
-    std::istringstream csv(readText(dir / "frames.csv"));
+    std::istringstream csv(fileContents(dir / "frames.csv"));
     std::string header, line;
     std::getline(csv, header);
     EXPECT_EQ(header.rfind("frame,method,width,height,rmse,rmse_penumbra,", 0), 0u) << header;
@@ -114,7 +107,7 @@ void checkCsv(const fs::path& dir) {
 }
 
 void checkSummary(const fs::path& dir) {
-    const auto j = nlohmann::json::parse(readText(dir / "summary.json"));
+    const auto j = nlohmann::json::parse(fileContents(dir / "summary.json"));
     EXPECT_EQ(j["frames"], kFrames);
     EXPECT_EQ(j["reference"]["samples"], 16);
     EXPECT_TRUE(j["complete"].get<bool>());
@@ -199,8 +192,8 @@ TEST(CaptureRun, AnEntryOfTheReferencesMethodWithOtherOptionsIsAMethodOfItsOwn) 
            "methods": [{"method": "reference", "mapSize": 512, "label": "maps 512"}, "reference",
                        {"method": "reference", "mapSize": 256, "label": "same"}])");
     ASSERT_EQ(r.code, 0) << r.output;
-    const nlohmann::json summary =
-        nlohmann::json::parse(readText(outputDir("capture_reference_entries") / "summary.json"));
+    const nlohmann::json summary = nlohmann::json::parse(
+        fileContents(outputDir("capture_reference_entries") / "summary.json"));
     std::map<std::string, double> rmse;
     for (const auto& m : summary["methods"]) rmse[m["label"]] = m["rmse"].get<double>();
     EXPECT_GT(rmse.at("maps 512"), 0.0);
@@ -218,7 +211,7 @@ TEST(CaptureRun, TheRayTracedReferenceIsUsedAndNamed) {
     ASSERT_EQ(r.code, 0) << r.output;
     EXPECT_NE(r.output.find("reference: raytrace: 16 shadow rays per pixel"), std::string::npos)
         << r.output;
-    const nlohmann::json summary = nlohmann::json::parse(readText(dir / "summary.json"));
+    const nlohmann::json summary = nlohmann::json::parse(fileContents(dir / "summary.json"));
     EXPECT_EQ(summary["reference"]["kind"], "raytrace");
     EXPECT_EQ(summary["reference"]["method"], "raytrace");
     EXPECT_FALSE(summary["reference"].contains("mapSize"));
@@ -229,7 +222,7 @@ TEST(CaptureRun, TheRayTracedReferenceIsUsedAndNamed) {
         else
             EXPECT_GT(m["rmse"].get<double>(), 0.0);
     }
-    const std::string report = readText(dir / "report.html");
+    const std::string report = fileContents(dir / "report.html");
     EXPECT_NE(report.find("raytrace: 16 shadow rays per pixel (Embree)"), std::string::npos);
 }
 

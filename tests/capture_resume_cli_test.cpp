@@ -47,13 +47,6 @@ const fs::path& root() {
     return r;
 }
 
-std::string readText(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 Outcome capture(const fs::path& out, const std::string& flags = {},
                 const fs::path& script = root() / "script.json") {
     return runCommand(std::string(FLOODLIGHT_BINARY) + " capture " + script.string() + " --out " +
@@ -63,7 +56,7 @@ Outcome capture(const fs::path& out, const std::string& flags = {},
 // The CSV without its time columns (frame_ms and the phases' *_ms): what a resumed run must
 // reproduce exactly.
 std::string untimedCsv(const fs::path& dir) {
-    std::istringstream in(readText(dir / "frames.csv"));
+    std::istringstream in(fileContents(dir / "frames.csv"));
     std::string out, line;
     std::vector<bool> keep;
     while (std::getline(in, line)) {
@@ -81,7 +74,7 @@ std::string untimedCsv(const fs::path& dir) {
 
 // The summary's measurements but its times.
 nlohmann::json untimedSummary(const fs::path& dir) {
-    nlohmann::json j = nlohmann::json::parse(readText(dir / "summary.json"));
+    nlohmann::json j = nlohmann::json::parse(fileContents(dir / "summary.json"));
     j["reference"].erase("medianFrameMs");
     j.erase("resources"); // the process's memory and objects, after this sitting's frames
     for (auto& m : j["methods"])
@@ -106,7 +99,7 @@ void expectSameAsUnbroken(const fs::path& dir) {
     EXPECT_EQ(untimedCsv(dir), untimedCsv(unbroken()));
     EXPECT_EQ(untimedSummary(dir), untimedSummary(unbroken()));
     for (const auto& e : fs::directory_iterator(unbroken() / "report"))
-        EXPECT_EQ(readText(dir / "report" / e.path().filename()), readText(e.path()))
+        EXPECT_EQ(fileContents(dir / "report" / e.path().filename()), fileContents(e.path()))
             << e.path().filename() << ": the worst frame's picture differs";
     std::size_t frames = 0, unbrokenFrames = 0;
     for (const auto& e : fs::recursive_directory_iterator(dir / "frames"))
@@ -146,11 +139,11 @@ TEST(CaptureResume, StoppedTwiceAndResumedGivesTheRunWithoutABreak) {
     expectSameAsUnbroken(d);
 
     // Resuming a finished capture does nothing, and says so.
-    const std::string summary = readText(d / "summary.json");
+    const std::string summary = fileContents(d / "summary.json");
     o = capture(d, "--resume");
     EXPECT_EQ(o.code, 0) << o.output;
     EXPECT_NE(o.output.find("nothing to resume"), std::string::npos) << o.output;
-    EXPECT_EQ(readText(d / "summary.json"), summary);
+    EXPECT_EQ(fileContents(d / "summary.json"), summary);
 }
 
 TEST(CaptureResume, AKilledRunLosesAtMostTheFrameInFlight) {

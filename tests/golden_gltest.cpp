@@ -18,11 +18,6 @@ namespace {
 
 class GoldenTest : public GlTest {};
 
-std::string readAll(const std::filesystem::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), {}};
-}
-
 FrameImages renderDefault(int size, int shadowMap,
                           ShadowMapProvider provider = ShadowMapProvider::Uniform) {
     const Scene scene = loadGltf(defaultAsset());
@@ -51,7 +46,7 @@ void expectMatchesGolden(const ByteImage& image, const std::string& name, const 
 TEST(DefaultAsset, IsTheGeneratorOutput) {
     const auto fresh = outputDir("asset") / "default.glb";
     writeGlb(generateScene({6320, 1}), fresh);
-    EXPECT_TRUE(readAll(fresh) == readAll(defaultAsset()))
+    EXPECT_TRUE(fileContents(fresh) == fileContents(defaultAsset()))
         << "assets/default.glb differs from `floodlight make-scene --triangles 6320 --seed 1`; "
            "regenerate it (assets/README.md) and the goldens (tests/golden/README.md)";
 }

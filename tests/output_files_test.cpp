@@ -25,13 +25,6 @@ fs::path freshDir(const std::string& name) {
     return d;
 }
 
-std::string contents(const fs::path& p) {
-    std::ifstream in(p);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 std::size_t entries(const fs::path& dir) {
     std::size_t n = 0;
     for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++n;
@@ -41,9 +34,9 @@ std::size_t entries(const fs::path& dir) {
 TEST(OutputFiles, AFileAppearsWholeAndLeavesNoTemporary) {
     const fs::path d = freshDir("single");
     writeFileAtomically(d / "a.txt", "hello");
-    EXPECT_EQ(contents(d / "a.txt"), "hello");
+    EXPECT_EQ(test::fileContents(d / "a.txt"), "hello");
     writeFileAtomically(d / "a.txt", "again"); // replaces
-    EXPECT_EQ(contents(d / "a.txt"), "again");
+    EXPECT_EQ(test::fileContents(d / "a.txt"), "again");
     EXPECT_THROW(writeFileAtomically(d / "sub" / "b.txt", "x"), OutputFileError)
         << "the folder must exist";
     EXPECT_EQ(entries(d), 1u) << "no temporaries left";
@@ -63,8 +56,8 @@ TEST(OutputFiles, ASetAppearsAtCommitOnly) {
         EXPECT_EQ(set.pending().size(), 2u);
         set.commit();
     }
-    EXPECT_EQ(contents(d / "a.txt"), "1");
-    EXPECT_EQ(contents(d / "b.bin"), "2");
+    EXPECT_EQ(test::fileContents(d / "a.txt"), "1");
+    EXPECT_EQ(test::fileContents(d / "b.bin"), "2");
     EXPECT_EQ(entries(d), 2u);
 }
 
@@ -83,7 +76,8 @@ TEST(OutputFiles, AFailureBeforeCommitLeavesNothing) {
         EXPECT_NE(std::string(e.what()).find("aliasing.png"), std::string::npos) << e.what();
     }
     EXPECT_FALSE(fs::exists(d / "frame.png"));
-    EXPECT_EQ(contents(d / "old.txt"), "kept") << "an existing file is replaced only at commit";
+    EXPECT_EQ(test::fileContents(d / "old.txt"), "kept")
+        << "an existing file is replaced only at commit";
     EXPECT_EQ(entries(d), 1u) << "no temporaries left";
 }
 

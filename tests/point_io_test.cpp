@@ -35,13 +35,6 @@ fs::path fixture(const std::string& name) {
     return test::dataDir() / "data" / "points" / name;
 }
 
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
 std::size_t countOf(const std::string& text, const std::string& needle) {
     std::size_t n = 0;
     for (std::size_t pos = text.find(needle); pos != std::string::npos;
@@ -113,7 +106,7 @@ TEST(PointIO, EveryFormatRoundTripsBitForBit) {
     }
     const NodeFile node = readNodeFile(dir / "p.node");
     EXPECT_EQ(node.indexBase, 0);
-    EXPECT_EQ(slurp(dir / "p.bin").size(), 16 * points.size());
+    EXPECT_EQ(test::fileContents(dir / "p.bin").size(), 16 * points.size());
     EXPECT_TRUE(hiddenFiles(dir).empty());
 }
 
@@ -123,7 +116,7 @@ TEST(PointIO, EmptyPointSetsRoundTrip) {
         writePoints(dir / name, {});
         EXPECT_TRUE(readPoints(dir / name).empty()) << name;
     }
-    EXPECT_EQ(slurp(dir / "e.node"), "0 2 0 0\n");
+    EXPECT_EQ(test::fileContents(dir / "e.node"), "0 2 0 0\n");
 }
 
 TEST(PointIO, FormatOverrideBeatsTheExtension) {
@@ -346,7 +339,7 @@ TEST(PointIO, RewritingReplacesTheWholeFile) {
     const fs::path dir = freshDir("replace");
     writeTextPoints(dir / "p.txt", awkwardPoints());
     writeTextPoints(dir / "p.txt", {{1, 2}});
-    EXPECT_EQ(slurp(dir / "p.txt"), "1 2\n");
+    EXPECT_EQ(test::fileContents(dir / "p.txt"), "1 2\n");
     EXPECT_TRUE(hiddenFiles(dir).empty());
 }
 
@@ -359,16 +352,16 @@ TEST(MeshIO, EleMatchesTheNodeIndexBase) {
     const fs::path dir = freshDir("ele");
     writeNodeFile(dir / "sq.node", kSquare);
     writeEleFile(dir / "sq.ele", kSquare, kSquareTriangles);
-    EXPECT_EQ(slurp(dir / "sq.node"), "4 2 0 0\n0 0 0\n1 1 0\n2 1 1\n3 0 1\n");
-    EXPECT_EQ(slurp(dir / "sq.ele"), "2 3 0\n0 0 1 2\n1 0 2 3\n");
+    EXPECT_EQ(test::fileContents(dir / "sq.node"), "4 2 0 0\n0 0 0\n1 1 0\n2 1 1\n3 0 1\n");
+    EXPECT_EQ(test::fileContents(dir / "sq.ele"), "2 3 0\n0 0 1 2\n1 0 2 3\n");
     writeEleFile(dir / "sq1.ele", kSquare, kSquareTriangles, 1);
-    EXPECT_EQ(slurp(dir / "sq1.ele"), "2 3 0\n1 1 2 3\n2 1 3 4\n");
+    EXPECT_EQ(test::fileContents(dir / "sq1.ele"), "2 3 0\n1 1 2 3\n2 1 3 4\n");
 }
 
 TEST(MeshIO, ObjHasOneFacePerTriangleCountingFromOne) {
     const fs::path dir = freshDir("obj");
     writeObjFile(dir / "sq.obj", kSquare, kSquareTriangles);
-    const std::string obj = slurp(dir / "sq.obj");
+    const std::string obj = test::fileContents(dir / "sq.obj");
     EXPECT_EQ(countOf(obj, "\nv "), 4u);
     EXPECT_EQ(countOf(obj, "\nf "), 2u);
     EXPECT_NE(obj.find("\nv 1 1 0\n"), std::string::npos);
@@ -418,7 +411,7 @@ double attribute(const std::string& svg, const std::string& attr, std::size_t fr
 TEST(MeshSvg, TriangulationPictureIsWellFormed) {
     const fs::path dir = freshDir("svg");
     writeSvg(dir / "sq.svg", triangulationPicture(kSquare, kSquareTriangles));
-    const std::string svg = slurp(dir / "sq.svg");
+    const std::string svg = test::fileContents(dir / "sq.svg");
     EXPECT_TRUE(svg.starts_with("<svg xmlns=\"http://www.w3.org/2000/svg\""));
     EXPECT_TRUE(svg.ends_with("</svg>\n"));
     const std::vector<std::string> names = checkXmlNesting(svg);

@@ -1,5 +1,8 @@
 #include "TestPaths.h"
 
+#include <fstream>
+#include <iterator>
+
 namespace fl::test {
 
 std::filesystem::path dataDir() {
@@ -14,6 +17,11 @@ std::filesystem::path outputDir(const std::string& sub) {
     std::filesystem::path p = std::filesystem::path(FLOODLIGHT_TEST_OUTPUT) / sub;
     std::filesystem::create_directories(p);
     return p;
+}
+
+std::string fileContents(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), {}};
 }
 
 } // namespace fl::test

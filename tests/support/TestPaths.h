@@ -12,5 +12,7 @@ std::filesystem::path dataDir();
 std::filesystem::path defaultAsset();
 /// A per-test output folder under the build tree, created on demand.
 std::filesystem::path outputDir(const std::string& sub = {});
+/// The whole file as bytes; empty if it cannot be read (the test's expectations then fail).
+std::string fileContents(const std::filesystem::path& path);
 
 } // namespace fl::test
