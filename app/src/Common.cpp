@@ -76,14 +76,14 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool sceneAsOption) {
         ->check(CLI::IsMember({"auto", "on", "off"}))
         ->capture_default_str();
     auto* dir = cmd.add_option("--light-dir", o.lightDir,
-                               "Light travel direction x,y,z (0,-1,0: straight down): replaces "
-                               "the scene's light with a disk light 2.5 scene radii back along it")
+                               "Light travel direction x,y,z (0,-1,0: straight down): moves the "
+                               "scene's light 2.5 scene radii back along it")
                     ->check(number(-kMaxWorldCoordinate, kMaxWorldCoordinate))
                     ->delimiter(',')
                     ->expected(3);
     cmd.add_option("--light-position", o.lightPosition,
-                   "Light position x,y,z: replaces the scene's light with a disk light there, "
-                   "aimed at the scene's centre")
+                   "Light position x,y,z: moves the scene's light there, aimed at the scene's "
+                   "centre")
         ->check(number(-kMaxWorldCoordinate, kMaxWorldCoordinate))
         ->delimiter(',')
         ->expected(3)
@@ -177,12 +177,13 @@ CLI::Option* addNameOption(CLI::App& cmd, std::string& name, const std::string& 
 
 namespace {
 
-// The light by hand (--light-dir, --light-position), else the scene's, else the default one
-// (Renderer.h sceneLight: above the scene, off to one side, so that the shadow falls beside the
-// model in the default view); --light-radius applies to whichever it is.
+// The scene's light, else the default one (Renderer.h sceneLight: above the scene, off to one
+// side, so that the shadow falls beside the model in the default view), placed by hand with
+// --light-dir or --light-position (keeping its radius, colour and intensity); --light-radius
+// applies to whichever it is.
 void placeLight(Scene& scene, const SceneOptions& o) {
+    Light l = sceneLight(scene);
     if (!o.lightDir.empty() || !o.lightPosition.empty()) {
-        Light l = sceneLight(Scene{.bounds = scene.bounds}); // the default light's size
         l.name = "--light-" + std::string(o.lightDir.empty() ? "position" : "dir");
         l.type = Light::Type::Point;
         const glm::vec3 centre = scene.bounds.center();
@@ -200,10 +201,9 @@ void placeLight(Scene& scene, const SceneOptions& o) {
                     "--light-position: at the scene's centre, it has no direction to the scene");
             l.direction = glm::normalize(centre - l.position);
         }
-        scene.light = l;
     }
-    if (!scene.light) scene.light = sceneLight(scene);
-    if (o.lightRadius) scene.light->radius = *o.lightRadius;
+    if (o.lightRadius) l.radius = *o.lightRadius;
+    scene.light = l;
 }
 
 } // namespace
