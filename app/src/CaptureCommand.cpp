@@ -323,9 +323,14 @@ int captureSize(const CaptureSetup& c, const SizeRun& at, FrameRunner& runner,
             results.progressMs.push_back(std::chrono::duration<double, std::milli>(
                                              std::chrono::steady_clock::now() - saveStart)
                                              .count());
-            ResourceSample& sample =
-                results.firstFrame.frame < 0 ? results.firstFrame : results.lastFrame;
-            sample = {i, residentKiB(), gl::countLiveObjects()};
+            // Memory and GL objects (one glIs* per name ever issued) after this sitting's first
+            // frame and each resolution's last, not every frame.
+            const bool firstSample = results.firstFrame.frame < 0, lastSample = i == plan.last;
+            if (firstSample || lastSample) {
+                const ResourceSample sample{i, residentKiB(), gl::countLiveObjects()};
+                if (firstSample) results.firstFrame = sample;
+                if (lastSample) results.lastFrame = sample;
+            }
         });
     for (std::size_t k = 0; k < script.methods.size(); ++k)
         results.runs[first + k].times = lanes[laneOf[k]].times;
