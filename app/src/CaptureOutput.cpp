@@ -183,7 +183,7 @@ nlohmann::json resultsSummary(const CaptureResults& r) {
     const auto sample = [](const ResourceSample& at) {
         nlohmann::json gl = nlohmann::json::object();
         for (std::size_t k = 0; k < gl::kObjectKinds.size(); ++k)
-            gl[std::string(gl::kObjectKinds[k])] = at.glObjects.live[k];
+            gl[std::string(gl::kObjectKinds[k].name)] = at.glObjects.live[k];
         return nlohmann::json{{"frame", at.frame},
                               {"residentKiB", at.residentKiB},
                               {"glObjects", at.glObjects.total()},

@@ -23,9 +23,24 @@ enum class ObjectKind {
     Query,
     Sampler
 };
-inline constexpr std::array<std::string_view, 8> kObjectKinds = {
-    "buffers",  "textures", "framebuffers", "vertex arrays",
-    "programs", "shaders",  "queries",      "samplers"};
+
+/// A kind's name in reports and GL's test for a live name of that kind.
+struct ObjectKindInfo {
+    std::string_view name;
+    GLboolean (*isLive)(GLuint name);
+};
+/// The one table of kinds, indexed by ObjectKind.
+inline constexpr std::array<ObjectKindInfo, 8> kObjectKinds = {{
+    {"buffers", [](GLuint n) { return glIsBuffer(n); }},
+    {"textures", [](GLuint n) { return glIsTexture(n); }},
+    {"framebuffers", [](GLuint n) { return glIsFramebuffer(n); }},
+    {"vertex arrays", [](GLuint n) { return glIsVertexArray(n); }},
+    {"programs", [](GLuint n) { return glIsProgram(n); }},
+    {"shaders", [](GLuint n) { return glIsShader(n); }},
+    {"queries", [](GLuint n) { return glIsQuery(n); }},
+    {"samplers", [](GLuint n) { return glIsSampler(n); }},
+}};
+static_assert(static_cast<std::size_t>(ObjectKind::Sampler) + 1 == kObjectKinds.size());
 
 /// Live objects per kind (indexed by ObjectKind) and their sum.
 struct ObjectCounts {
