@@ -7,6 +7,7 @@
 #include <renderer/gltf/GltfLoader.h>
 
 #include "GltfBuilder.h"
+#include "PngBytes.h"
 #include "TestPaths.h"
 
 #include <gtest/gtest.h>
@@ -222,6 +223,19 @@ TEST(GltfLoaderRepair, UndecodableImageDropsTexture) {
     EXPECT_EQ(l.scene.materials[0].baseColorTexture, -1);
     EXPECT_TRUE(l.scene.images.empty());
     EXPECT_TRUE(l.warned("images[0]: unsupported or corrupt image data"));
+}
+
+// Bug class of fuzz_png_mask, in textures: a PNG claiming a 1.1 GB IDAT chunk made stb_image
+// allocate before finding the bytes missing. The texture is dropped without decoding.
+TEST(GltfLoaderRepair, PngClaimingMoreThanItHoldsDropsTextureBeforeDecoding) {
+    Gltf g = triangle();
+    const std::string png = pngStart(8, 8, 8, 2) + pngChunk("IDAT", "x\xda", 1'192'036'890);
+    g.texturedMaterial(
+        g.texture({{"uri", "data:image/png;base64," +
+                               base64(std::vector<std::uint8_t>(png.begin(), png.end()))}}));
+    const Loaded l = load(g.write("long_chunk_texture.gltf"));
+    EXPECT_EQ(l.scene.materials[0].baseColorTexture, -1);
+    EXPECT_TRUE(l.warned("images[0]: the chunk at byte 33 claims 1192036890 bytes, past the end"));
 }
 
 TEST(GltfLoaderRepair, LinesSkippedWithWarning) {

@@ -5,6 +5,7 @@
 // Every command runs under `timeout`, so a reader that blocks again fails here instead of hanging.
 
 #include "CliRun.h"
+#include "PngBytes.h"
 #include "TestPaths.h"
 
 #include <renderer/io/ImageIO.h>
@@ -151,22 +152,6 @@ TEST(RobustnessCli, AllSiteMaskWritesAFiniteSignedDistance) {
         ASSERT_EQ(w * h, 60);
         for (const float v : channels[0].values) ASSERT_EQ(v, -13.0f) << backend; // hypot(12, 5)
     }
-}
-
-// A PNG chunk as bytes: length, type, data and a CRC (zero: neither stb_image nor we check it).
-std::string pngChunk(const std::string& type, const std::string& data, std::uint32_t length) {
-    std::string out;
-    for (int shift = 24; shift >= 0; shift -= 8) out += static_cast<char>(length >> shift);
-    return out + type + data + std::string(4, '\0');
-}
-
-// The PNG signature and an IHDR of W x H at `depth` bits of colour type `colour`.
-std::string pngStart(std::uint32_t w, std::uint32_t h, int depth, int colour) {
-    std::string ihdr;
-    for (const std::uint32_t v : {w, h})
-        for (int shift = 24; shift >= 0; shift -= 8) ihdr += static_cast<char>(v >> shift);
-    ihdr += {static_cast<char>(depth), static_cast<char>(colour), 0, 0, 0};
-    return "\x89PNG\r\n\x1a\n" + pngChunk("IHDR", ihdr, 13);
 }
 
 // Bug (fuzz_png_mask): stb_image sizes its buffers from a PNG's chunk lengths and header before

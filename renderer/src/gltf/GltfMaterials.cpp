@@ -13,6 +13,8 @@
 
 #include "GltfInternal.h"
 
+#include <renderer/io/PngLimits.h>
+
 #include <base/InputFile.h>
 
 #include <stb_image.h>
@@ -45,6 +47,11 @@ std::optional<Image> decode(const ByteSpan& bytes, std::string& why) {
         static_cast<long long>(w) * h > kMaxImagePixels) {
         why = cat("absurd image size ", w, "x", h, " (limit ", kMaxImageSide, " per side, ",
                   kMaxImagePixels, " pixels)");
+        return std::nullopt;
+    }
+    // stb_image would allocate what the PNG's chunks claim before finding them missing.
+    if (std::string problem = pngSizeProblem(bytes.data, bytes.size); !problem.empty()) {
+        why = std::move(problem);
         return std::nullopt;
     }
     stbi_uc* pixels = stbi_load_from_memory(bytes.data, size, &w, &h, &channels, 4);
