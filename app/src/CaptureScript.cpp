@@ -280,8 +280,12 @@ CaptureScript parseCaptureScript(const std::string& text, const std::filesystem:
         }
         if (j.contains("ground")) {
             const Json& g = j["ground"];
-            if (!g.is_string() || !parseGroundMode(g.get<std::string>()))
-                fail("ground", "expected \"auto\", \"on\" or \"off\"");
+            if (!g.is_string() || !parseGroundMode(g.get<std::string>())) {
+                std::string names; // "auto|on|off", from the one list
+                for (std::string_view n : kGroundModeNames)
+                    names += (names.empty() ? "" : "|") + std::string(n);
+                fail("ground", "expected \"" + names + "\"");
+            }
             s.ground = g.get<std::string>();
         }
         if (j.contains("saveFrames")) {

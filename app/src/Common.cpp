@@ -73,7 +73,8 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool sceneAsOption) {
     cmd.add_option("--ground", o.ground,
                    "A ground plane to receive the shadow: auto (added when the scene has no "
                    "surface under it, as a single model has not), on, off")
-        ->check(CLI::IsMember({"auto", "on", "off"}))
+        ->check(CLI::IsMember(
+            std::vector<std::string>(kGroundModeNames.begin(), kGroundModeNames.end())))
         ->capture_default_str();
     auto* dir = cmd.add_option("--light-dir", o.lightDir,
                                "Light travel direction x,y,z (0,-1,0: straight down): moves the "

@@ -25,10 +25,9 @@ float edge(glm::vec2 a, glm::vec2 b, glm::vec2 c) {
 } // namespace
 
 std::optional<GroundMode> parseGroundMode(std::string_view text) {
-    if (text == "auto") return GroundMode::Auto;
-    if (text == "on") return GroundMode::On;
-    if (text == "off") return GroundMode::Off;
-    return std::nullopt;
+    const auto it = std::find(kGroundModeNames.begin(), kGroundModeNames.end(), text);
+    if (it == kGroundModeNames.end()) return std::nullopt;
+    return static_cast<GroundMode>(it - kGroundModeNames.begin());
 }
 
 double groundCoverage(const Scene& scene) {

@@ -13,13 +13,16 @@
 
 #include <renderer/scene/Scene.h>
 
+#include <array>
 #include <optional>
 #include <string_view>
 
 namespace fl {
 
 enum class GroundMode { Auto, On, Off };
-/// "auto" | "on" | "off"; nullopt for anything else.
+/// The modes' names, in GroundMode's order: what --ground and capture scripts accept.
+inline constexpr std::array<std::string_view, 3> kGroundModeNames = {"auto", "on", "off"};
+/// The mode named `text` (kGroundModeNames); nullopt for anything else.
 std::optional<GroundMode> parseGroundMode(std::string_view text);
 
 /// The share of the footprint's cells covered by a low upward-facing surface (the rule above),
