@@ -56,6 +56,10 @@ void checkScene(const fl::Scene& s) {
         for (const glm::vec3& p : m.positions) REQUIRE(finite(p));
         for (const glm::vec3& n : m.normals) REQUIRE(finite(n));
         for (const glm::vec2& t : m.texcoords) REQUIRE(finite(t));
+        REQUIRE(m.colors.empty() || m.colors.size() == m.positions.size());
+        for (const glm::vec4& c : m.colors)
+            REQUIRE(c.x >= 0 && c.x <= 1 && c.y >= 0 && c.y <= 1 && c.z >= 0 && c.z <= 1 &&
+                    c.w >= 0 && c.w <= 1);
         for (const std::uint32_t i : m.indices) REQUIRE(i < m.positions.size());
     }
     for (const fl::Instance& i : s.instances) {
@@ -65,6 +69,7 @@ void checkScene(const fl::Scene& s) {
     REQUIRE(s.bounds.valid() && finite(s.bounds.min) && finite(s.bounds.max));
     for (const fl::Material& m : s.materials) {
         REQUIRE(finite(m.baseColorFactor));
+        REQUIRE(std::isfinite(m.alphaCutoff) && m.alphaCutoff >= 0.0f);
         REQUIRE(m.baseColorTexture >= -1 && m.baseColorTexture < static_cast<int>(s.images.size()));
     }
     for (const fl::Image& im : s.images)

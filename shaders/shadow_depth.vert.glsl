@@ -3,8 +3,11 @@
 // warp (identity for the uniform map, N_T for TSM); the depth stays the light's own
 // post-perspective depth, interpolated as clip z and w (both linear in the vertex, so
 // perspective-correct interpolation in the warped space gives them exactly). The world position
-// is passed on for the receiver-position target that JFA-L floods over.
+// is passed on for the receiver-position target that JFA-L floods over, and the texture
+// coordinate and vertex alpha for the alpha cut-out (alpha_coverage.glsl).
 layout(location = 0) in vec3 aPosition;
+layout(location = 2) in vec2 aTexcoord;
+layout(location = 3) in vec4 aColor;
 
 uniform mat4 uLightViewProj;
 uniform mat4 uShadowWarp;
@@ -12,10 +15,14 @@ uniform mat4 uModel;
 
 out vec2 vLightZW;
 out vec3 vWorld;
+out vec2 vTexcoord;
+out float vAlpha;
 
 void main() {
     vec4 world = uModel * vec4(aPosition, 1.0);
     vWorld = world.xyz;
+    vTexcoord = aTexcoord;
+    vAlpha = aColor.a;
     vec4 light = uLightViewProj * world;
     vLightZW = light.zw;
     gl_Position = uShadowWarp * light;

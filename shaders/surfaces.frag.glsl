@@ -2,11 +2,13 @@
 // Step 2 of a frame: the one geometry pass from the eye. Everything a shadow method, the shading
 // pass and the metrics need about the visible surface of each pixel (renderer/passes/
 // SurfacesPass.h lists the targets); the clear values mark background.
+#include "alpha_coverage.glsl"
 #include "light.glsl"
 
 in vec3 vWorld;
 in vec3 vNormal;
 in vec2 vTexcoord;
+in vec4 vColor;
 
 layout(location = 0) out vec4 oPosition;   // xyz world, w = 1 (0 background)
 layout(location = 1) out vec4 oNormal;     // xyz shading normal facing the eye, w object id
@@ -14,22 +16,20 @@ layout(location = 2) out vec4 oPlane;      // xyz geometric normal (the triangle
 layout(location = 3) out vec4 oBaseColor;  // material base colour (texture applied)
 layout(location = 4) out float oReceiver;  // 1 where the surface faces the light
 
-layout(binding = 0) uniform sampler2D uBaseColorTexture;
-uniform vec4 uBaseColor;
-uniform int uHasTexture;
 uniform int uObjectId;
 
 void main() {
-    vec4 base = uBaseColor;
-    if (uHasTexture != 0) base *= texture(uBaseColorTexture, vTexcoord);
+    // The receiver plane from the triangle (screen derivatives, in uniform control flow, so
+    // before the cut-out's discard; its orientation does not matter, only the plane).
+    // Degenerate derivatives fall back to the shading normal. The filtering methods (PCF, PCSS, VSM) test against this plane.
+    vec3 g = cross(dFdx(vWorld), dFdy(vWorld));
+    g = length(g) > 0.0 ? normalize(g) : normalize(vNormal);
+    // MASK cut-outs; blended surfaces are not drawn here (GpuScene::Surfaces::Solid).
+    discardCutOut(vTexcoord, vColor.a);
+    vec4 base = baseColour(vTexcoord, vColor);
     vec3 n = normalize(vNormal);
     // Two-sided shading: the visible side of a surface faces the eye.
     if (!gl_FrontFacing) n = -n;
-    // The receiver plane from the triangle (screen derivatives, in uniform control flow; its
-    // orientation does not matter, only the plane). Degenerate derivatives fall back to the
-    // shading normal. The filtering methods (PCF, PCSS, VSM) test against this plane.
-    vec3 g = cross(dFdx(vWorld), dFdy(vWorld));
-    g = length(g) > 0.0 ? normalize(g) : normalize(vNormal);
     oPosition = vec4(vWorld, 1.0);
     oNormal = vec4(n, float(uObjectId));
     oPlane = vec4(g, 0.0);

@@ -166,6 +166,42 @@ TEST(RayTraceTest, FullyOccludedIsZeroUnoccludedIsOne) {
     EXPECT_EQ(rays, 4u * 64u);
 }
 
+// Alpha cut-outs: a hit where transmits() says so is no hit, and the ray goes on to what lies
+// behind; only flagged triangles are asked.
+TEST(RayTraceTest, CutOutTrianglesLetRaysThroughWhereTheyTransmit) {
+    Triangles upper = halfPlane(1.0f, 0.0f), lower = halfPlane(0.5f, 0.0f);
+    const Disk disk{{0, 5, 0}, {0, -1, 0}, 0.5f};
+    const std::vector<Receiver> deep = {{{-10, 0, 0}, {0, 1, 0}, true}};
+    VisibilitySettings s;
+    s.samples = 16;
+    upper.cutOut = {1, 1};
+    upper.transmits = [](std::uint32_t, float, float) { return true; };
+    EXPECT_EQ(fl::rt::diskVisibility(RayScene(upper), disk, deep, s)[0], 1.0f)
+        << "a fully transparent occluder blocks nothing";
+    upper.transmits = [](std::uint32_t, float, float) { return false; };
+    EXPECT_EQ(fl::rt::diskVisibility(RayScene(upper), disk, deep, s)[0], 0.0f);
+    // The transparent layer above an opaque one: traversal goes on and finds the opaque one.
+    Triangles both = upper;
+    both.transmits = [](std::uint32_t t, float, float) { return t < 2; };
+    const auto base = static_cast<std::uint32_t>(both.vertices.size());
+    both.vertices.insert(both.vertices.end(), lower.vertices.begin(), lower.vertices.end());
+    for (std::uint32_t i : lower.indices) both.indices.push_back(base + i);
+    both.cutOut = {1, 1, 0, 0};
+    EXPECT_EQ(fl::rt::diskVisibility(RayScene(both), disk, deep, s)[0], 0.0f);
+    // The hits lie in triangle 0 around (-8, 1, 0), where u + v = 0.5 + z / 200: transmitting
+    // where u + v > 0.5 lets the rays with z > 0 through, so the hit's barycentrics reach the test.
+    upper.transmits = [](std::uint32_t, float u, float v) { return u + v > 0.5f; };
+    const float half = fl::rt::diskVisibility(RayScene(upper), disk, deep, s)[0];
+    EXPECT_GT(half, 0.0f);
+    EXPECT_LT(half, 1.0f);
+    // Flags that are not one per triangle, or flags without a test, are refused.
+    upper.cutOut = {1};
+    EXPECT_THROW(RayScene{upper}, std::invalid_argument);
+    upper.cutOut = {1, 0};
+    upper.transmits = nullptr;
+    EXPECT_THROW(RayScene{upper}, std::invalid_argument);
+}
+
 TEST(RayTraceTest, TheSameForAnyThreadCount) {
     const RayScene scene(halfPlane(1.0f, 0.4f));
     const Disk disk{{0, 5, 0}, {0, -1, 0}, 1.0f};

@@ -15,16 +15,6 @@ namespace {
 
 class RendererTest : public GlTest {};
 
-// Pixel (x, y from the top) where world point p lands, or false if off-screen.
-bool project(const CameraView& cam, int w, int h, glm::vec3 p, int& x, int& y) {
-    const glm::vec4 clip = cam.proj * cam.view * glm::vec4(p, 1.0f);
-    if (clip.w <= 0.0f) return false;
-    const glm::vec3 ndc = glm::vec3(clip) / clip.w;
-    x = static_cast<int>((ndc.x * 0.5f + 0.5f) * static_cast<float>(w));
-    y = static_cast<int>((0.5f - ndc.y * 0.5f) * static_cast<float>(h));
-    return x >= 0 && y >= 0 && x < w && y < h;
-}
-
 TEST_F(RendererTest, HardShadowMatchesRayCastReference) {
     // A box lit from the upper left casts its shadow to the right onto the ground; a camera
     // above sees most of that shadow beside the box.

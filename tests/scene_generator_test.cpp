@@ -488,6 +488,28 @@ void expectRoundTrip(const Scene& s, const std::filesystem::path& file) {
     }
 }
 
+TEST(GlbWriter, AlphaModesAndVertexColoursRoundTrip) {
+    Scene s = handMadeScene();
+    s.materials[0].alphaMode = AlphaMode::Mask;
+    s.materials[0].alphaCutoff = 0.3f;
+    s.materials.push_back(
+        Material{"glass", glm::vec4(0.2f, 0.4f, 0.9f, 0.4f), -1, false, AlphaMode::Blend, 0.5f});
+    s.meshes.push_back(s.meshes[0]);
+    s.meshes[1].material = 1;
+    s.meshes[1].colors = {{1, 0, 0, 1}, {0, 1, 0, 0.5f}, {0, 0, 1, 0.25f}, {1, 1, 1, 0}};
+    s.instances[1].mesh = 1;
+    const auto file = test::outputDir("scene_generator") / "roundtrip_alpha.glb";
+    writeGlb(s, file);
+    const Scene r = loadGltf(file);
+    ASSERT_EQ(r.materials.size(), 2u);
+    EXPECT_EQ(r.materials[0].alphaMode, AlphaMode::Mask);
+    EXPECT_FLOAT_EQ(r.materials[0].alphaCutoff, 0.3f);
+    EXPECT_EQ(r.materials[1].alphaMode, AlphaMode::Blend);
+    ASSERT_EQ(r.meshes.size(), 2u);
+    EXPECT_EQ(r.meshes[1].colors, s.meshes[1].colors);
+    EXPECT_TRUE(r.meshes[0].colors.empty());
+}
+
 TEST(GlbWriter, GeneratedSceneRoundTripsThroughTheLoader) {
     expectRoundTrip(generateScene({.triangles = 6320}),
                     test::outputDir("scene_generator") / "roundtrip.glb");

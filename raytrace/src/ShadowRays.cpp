@@ -53,6 +53,26 @@ double unit(std::uint32_t bits) {
     return static_cast<double>(bits >> 8) * (1.0 / 16777216.0);
 }
 
+/// What the occlusion filter reads (Embree's geometry user data): Triangles' cut-out flags and
+/// test.
+struct AlphaTest {
+    std::vector<std::uint8_t> cutOut;
+    std::function<bool(std::uint32_t, float, float)> transmits;
+};
+
+/// Embree's occlusion filter: a hit on a cut-out triangle where the surface transmits is no hit,
+/// and traversal goes on behind it.
+void alphaFilter(const RTCFilterFunctionNArguments* args) {
+    const auto* alpha = static_cast<const AlphaTest*>(args->geometryUserPtr);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] != -1) continue;
+        const unsigned prim = RTCHitN_primID(args->hit, args->N, i);
+        if (alpha->cutOut[prim] != 0 && alpha->transmits(prim, RTCHitN_u(args->hit, args->N, i),
+                                                         RTCHitN_v(args->hit, args->N, i)))
+            args->valid[i] = 0;
+    }
+}
+
 } // namespace
 
 struct RayScene::Embree {
@@ -62,6 +82,7 @@ struct RayScene::Embree {
     RTCGeometry geometry = nullptr;
     glm::vec3* vertices = nullptr; // Embree's vertex buffer (padded by one float)
     std::size_t vertexCount = 0;
+    AlphaTest alpha; // the filter's user data: lives as long as the geometry
 
     ~Embree() {
         if (scene) rtcReleaseScene(scene);
@@ -83,6 +104,11 @@ RayScene::RayScene(const Triangles& t) : e_(std::make_unique<Embree>()) {
         if (t.indices[i] >= t.vertices.size())
             throw std::invalid_argument(cat("raytrace: triangle ", i / 3, " uses vertex ",
                                             t.indices[i], " of ", t.vertices.size()));
+    const std::size_t triangles = t.indices.size() / 3;
+    if (!t.cutOut.empty() && (t.cutOut.size() != triangles || !t.transmits))
+        throw std::invalid_argument(cat("raytrace: ", t.cutOut.size(), " cut-out flags for ",
+                                        triangles, " triangles",
+                                        t.transmits ? "" : ", and no transmits() test"));
     e_->device = rtcNewDevice(nullptr);
     if (!e_->device)
         throw std::runtime_error(
@@ -97,7 +123,6 @@ RayScene::RayScene(const Triangles& t) : e_(std::make_unique<Embree>()) {
     rtcSetSceneBuildQuality(e_->scene, RTC_BUILD_QUALITY_HIGH);
     e_->geometry = rtcNewGeometry(e_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
     e_->check();
-    const std::size_t triangles = t.indices.size() / 3;
     // Embree reads vertices 16 bytes at a time: its buffers are padded.
     e_->vertexCount = t.vertices.size();
     e_->vertices = static_cast<glm::vec3*>(
@@ -109,6 +134,11 @@ RayScene::RayScene(const Triangles& t) : e_(std::make_unique<Embree>()) {
     e_->check();
     std::copy(t.vertices.begin(), t.vertices.end(), e_->vertices);
     std::copy(t.indices.begin(), t.indices.end(), indices);
+    if (std::any_of(t.cutOut.begin(), t.cutOut.end(), [](std::uint8_t f) { return f != 0; })) {
+        e_->alpha = {t.cutOut, t.transmits};
+        rtcSetGeometryUserData(e_->geometry, &e_->alpha);
+        rtcSetGeometryOccludedFilterFunction(e_->geometry, alphaFilter);
+    }
     rtcCommitGeometry(e_->geometry);
     rtcAttachGeometry(e_->scene, e_->geometry);
     rtcCommitScene(e_->scene);

@@ -168,10 +168,12 @@ void Renderer::render(const CameraView& camera) {
                          &timer_,
                          settings_.progress ? &settings_.progress : nullptr};
     const gl::Texture& methodVisibility = impl.execute(in);
-    // 4. Shading with the method's visibility; then the optional shadow-map diagnostics
-    //    (texel footprint, the previous frame's visibility: measurement only).
+    // 4. Shading with the method's visibility, and the blended surfaces over it; then the
+    //    optional shadow-map diagnostics (texel footprint, the previous frame's visibility:
+    //    measurement only).
     timer_.begin("shading");
-    const ShadingPass::Outputs shaded = shadingPass_.execute({surfaces, light_, methodVisibility});
+    const ShadingPass::Outputs shaded =
+        shadingPass_.execute({surfaces, light_, methodVisibility, scene_, camera});
     timer_.end();
     diagnostics_ = nullptr;
     if (settings_.diagnostics) {

@@ -40,6 +40,15 @@ void GlTest::TearDown() {
     }
 }
 
+bool project(const CameraView& cam, int w, int h, glm::vec3 p, int& x, int& y) {
+    const glm::vec4 clip = cam.proj * cam.view * glm::vec4(p, 1.0f);
+    if (clip.w <= 0.0f) return false;
+    const glm::vec3 ndc = glm::vec3(clip) / clip.w;
+    x = static_cast<int>((ndc.x * 0.5f + 0.5f) * static_cast<float>(w));
+    y = static_cast<int>((0.5f - ndc.y * 0.5f) * static_cast<float>(h));
+    return x >= 0 && y >= 0 && x < w && y < h;
+}
+
 FrameImages renderFrame(const Scene& scene, const CameraView& camera, std::string_view method,
                         int mapSize, int size) {
     const gl::ShaderLibrary shaders;

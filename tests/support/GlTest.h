@@ -6,6 +6,7 @@
 #include <jfa/Grid.h>
 #include <renderer/context/EglContext.h>
 
+#include <glm/vec3.hpp>
 #include <gtest/gtest.h>
 
 #include <array>
@@ -35,6 +36,9 @@ class GlTest : public ::testing::Test {
   private:
     static std::unique_ptr<EglContext> context_;
 };
+
+/// Pixel (x, y from the top) where world point p lands in a w x h frame, or false if off-screen.
+bool project(const CameraView& cam, int w, int h, glm::vec3 p, int& x, int& y);
 
 /// One frame of `scene` from `camera` with `method` at size x size pixels and a mapSize² shadow
 /// map (the method's other settings at their defaults), read back.

@@ -1,5 +1,7 @@
 #include "TestScenes.h"
 
+#include <renderer/scene/AlphaCoverage.h>
+
 #include <cmath>
 
 namespace fl::test {
@@ -66,6 +68,7 @@ float rayCastVisibility(const Scene& scene, const Light& light, glm::vec3 p, flo
         tMax = glm::length(dir);
         dir /= tMax;
     }
+    const AlphaCoverage coverage(scene); // cut-outs let the ray through, as in the GL passes
     for (const Instance& inst : scene.instances) {
         const Mesh& m = scene.meshes[static_cast<size_t>(inst.mesh)];
         for (size_t t = 0; t + 2 < m.indices.size(); t += 3) {
@@ -84,10 +87,39 @@ float rayCastVisibility(const Scene& scene, const Light& light, glm::vec3 p, flo
             const float v = glm::dot(dir, qv) / det;
             if (v < 0.0f || u + v > 1.0f) continue;
             const float hit = glm::dot(e2, qv) / det;
-            if (hit > epsilon && hit < tMax) return 0.0f;
+            if (hit > epsilon && hit < tMax && coverage.blocks(inst.mesh, t / 3, u, v)) return 0.0f;
         }
     }
     return 1.0f;
+}
+
+Scene checkerCardOverGround(AlphaMode mode, int cells) {
+    Scene s = groundAndBox(3.0f, {-0.5f, 0.0f, -0.5f}, {0.5f, 1.0f, 0.5f}, {1.2f, -1, 0.3f});
+    // A point light: every method and the ray caster agree on where its hard shadow falls (a
+    // directional light's disk stands at a finite distance for the soft methods).
+    s.light->type = Light::Type::Point;
+    s.light->position = glm::vec3(0, 1, 0) - 3.0f * glm::vec3(1.2f, -1, 0.3f);
+    // The box becomes a horizontal 2 x 2 card at height 1, textured with the checker.
+    Mesh card;
+    card.name = "checker card";
+    addQuad(card, {-1, 1, 1}, {1, 1, 1}, {1, 1, -1}, {-1, 1, -1}, {0, 1, 0});
+    card.texcoords = {{0, 1}, {1, 1}, {1, 0}, {0, 0}};
+    card.material = 1;
+    s.meshes[1] = card;
+    Image checker;
+    checker.name = "checker";
+    checker.width = checker.height = cells;
+    for (int y = 0; y < cells; ++y)
+        for (int x = 0; x < cells; ++x) {
+            const bool solid = (x + y) % 2 == 0;
+            for (std::uint8_t c : {std::uint8_t{200}, std::uint8_t{120}, std::uint8_t{40},
+                                   static_cast<std::uint8_t>(solid ? 255 : 0)})
+                checker.rgba.push_back(c);
+        }
+    s.images = {checker};
+    s.materials[1] = {"checker", glm::vec4(1.0f), 0, true, mode, 0.5f};
+    s.computeBounds();
+    return s;
 }
 
 SceneView spotLitBox() {

@@ -13,6 +13,12 @@ Mesh box(glm::vec3 lo, glm::vec3 hi);
 /// lit by a directional light travelling along `lightDir`.
 Scene groundAndBox(float half, glm::vec3 lo, glm::vec3 hi, glm::vec3 lightDir);
 
+/// groundAndBox's ground under a horizontal double-sided 2 x 2 card at height 1 whose base-colour
+/// texture is a cells x cells checker of alpha 1 and 0 (material `mode`, cutoff 0.5), under a
+/// point light at (-3.6, 4, -0.9): the card's shadow, a checker, falls mostly beside it (over
+/// x in [-0.13, 2.53], z in [-1.03, 1.63]).
+Scene checkerCardOverGround(AlphaMode mode, int cells);
+
 /// A scene and the camera that views it.
 struct SceneView {
     Scene scene;
@@ -25,7 +31,8 @@ SceneView spotLitBox();
 
 /// CPU reference for a hard shadow: 1 if the segment from `p` towards the light (direction
 /// -light.direction for directional lights, else to light.position) hits no triangle, 0 if it
-/// does. `epsilon` skips hits right at p (the receiver itself).
+/// does. `epsilon` skips hits right at p (the receiver itself). Alpha cut-outs let the ray through
+/// (renderer/scene/AlphaCoverage.h).
 float rayCastVisibility(const Scene& scene, const Light& light, glm::vec3 p, float epsilon = 1e-3f);
 
 } // namespace fl::test

@@ -32,6 +32,11 @@ struct Disk {
 struct Triangles {
     std::vector<glm::vec3> vertices;
     std::vector<std::uint32_t> indices;
+    /// Alpha cut-outs (leaves, fences): empty, or one flag per triangle. For a flagged triangle
+    /// a ray asks `transmits(triangle, u, v)` whether it passes the point (1-u-v) a + u b + v c
+    /// it hits; unflagged triangles block everywhere. Called from many threads at once.
+    std::vector<std::uint8_t> cutOut;
+    std::function<bool(std::uint32_t triangle, float u, float v)> transmits;
 };
 
 /// Largest |coordinate| a vertex may have (fl::kMaxWorldCoordinate): Embree works in float, and
@@ -42,8 +47,8 @@ inline constexpr float kMaxCoordinate = static_cast<float>(kMaxWorldCoordinate);
 class RayScene {
   public:
     /// Builds the BVH. Throws std::invalid_argument naming the vertex or triangle for a
-    /// non-finite or too large coordinate or an index out of range, and std::runtime_error for an
-    /// Embree failure. Degenerate triangles (zero area) block nothing and are kept.
+    /// non-finite or too large coordinate or an index out of range, or for cut-out flags that are
+    /// not one per triangle or come without `transmits`; std::runtime_error for an Embree failure. Degenerate triangles (zero area) block nothing and are kept.
     explicit RayScene(const Triangles& triangles);
     ~RayScene();
     RayScene(RayScene&&) noexcept;

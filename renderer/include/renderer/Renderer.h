@@ -5,7 +5,8 @@
 //   3. the shadow method: visibility per pixel (renderer/methods/ShadowMethod.h); a method's
 //      own phases (its timed names; JFA-L's and JFA-E's "phase 2..5" are the thesis' numbers)
 //      are parts of this step, not frame steps;
-//   4. shading with that visibility (ShadingPass); then, optionally, the shadow-map diagnostics;
+//   4. shading with that visibility (ShadingPass) and the blended surfaces over it; then,
+//      optionally, the shadow-map diagnostics;
 //   5. overlays and HUD (renderer/overlays, HudPass: drawn by the caller over the frame);
 //   6. present (window only): present() puts the colour in the window's framebuffer
 //      (PresentPass) before the caller draws step 5 over it, and the caller's buffer swap shows it.

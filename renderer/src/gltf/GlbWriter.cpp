@@ -180,6 +180,11 @@ class Document {
         for (const glm::vec2& p : v) bin.f32(p.x), bin.f32(p.y);
         return accessor(endView(offset, kArrayBuffer), kFloat, v.size(), "VEC2");
     }
+    int vec4s(const std::vector<glm::vec4>& v) {
+        const std::size_t offset = beginView();
+        for (const glm::vec4& p : v) bin.f32(p.x), bin.f32(p.y), bin.f32(p.z), bin.f32(p.w);
+        return accessor(endView(offset, kArrayBuffer), kFloat, v.size(), "VEC4");
+    }
     /// u16 when every index fits below the primitive-restart value 65535, else u32.
     int indices(const std::vector<std::uint32_t>& idx, std::size_t vertexCount) {
         const bool small = vertexCount <= 65535;
@@ -207,6 +212,7 @@ void writeMeshes(Document& doc, const Scene& scene) {
         json attributes = {{"POSITION", doc.positions(m.positions)}};
         if (!m.normals.empty()) attributes["NORMAL"] = doc.vec3s(m.normals);
         if (!m.texcoords.empty()) attributes["TEXCOORD_0"] = doc.vec2s(m.texcoords);
+        if (!m.colors.empty()) attributes["COLOR_0"] = doc.vec4s(m.colors);
         json primitive = {{"attributes", std::move(attributes)},
                           {"indices", doc.indices(m.indices, m.positions.size())},
                           {"mode", 4}};
@@ -224,6 +230,12 @@ void writeMaterials(Document& doc, const Scene& scene) {
         if (mat.baseColorTexture >= 0) pbr["baseColorTexture"] = {{"index", mat.baseColorTexture}};
         json material = {{"name", mat.name}, {"pbrMetallicRoughness", std::move(pbr)}};
         if (mat.doubleSided) material["doubleSided"] = true;
+        if (mat.alphaMode == AlphaMode::Mask) {
+            material["alphaMode"] = "MASK";
+            material["alphaCutoff"] = mat.alphaCutoff;
+        } else if (mat.alphaMode == AlphaMode::Blend) {
+            material["alphaMode"] = "BLEND";
+        }
         doc.push("materials", std::move(material));
     }
     if (scene.images.empty()) return;

@@ -336,6 +336,19 @@ std::vector<glm::vec2> readTexcoords(const Context& ctx, int index, std::string_
     return out;
 }
 
+std::vector<glm::vec4> readColors(const Context& ctx, int index, std::string_view usage) {
+    const auto& acc = ctx.lookup(ctx.model().accessors, index, usage, "accessor", "accessors");
+    const int type = acc.type == TINYGLTF_TYPE_VEC3 ? TINYGLTF_TYPE_VEC3 : TINYGLTF_TYPE_VEC4;
+    const AccessorView view = viewAccessor(ctx, index, usage, type, {kFloat, kUByte, kUShort});
+    requireNormalized(ctx, view, usage, "core glTF, 3.7.2.1");
+    const std::vector<float> f = readFloats(ctx, view);
+    std::vector<glm::vec4> out(view.count, glm::vec4(1.0f));
+    for (std::size_t i = 0; i < view.count; ++i)
+        for (std::size_t c = 0; c < view.components; ++c)
+            out[i][static_cast<int>(c)] = f[i * view.components + c];
+    return out;
+}
+
 std::vector<std::uint32_t> readIndices(const Context& ctx, int index, std::string_view usage) {
     const AccessorView view =
         viewAccessor(ctx, index, usage, TINYGLTF_TYPE_SCALAR,

@@ -118,6 +118,8 @@ std::vector<glm::vec3> readNormalVec3(const Context& ctx, int index, std::string
 /// VEC2 FLOAT or normalized UNSIGNED_BYTE / UNSIGNED_SHORT (TEXCOORD_n); with
 /// KHR_mesh_quantization also BYTE and SHORT, and the integer forms unnormalized.
 std::vector<glm::vec2> readTexcoords(const Context& ctx, int index, std::string_view usage);
+/// VEC3 or VEC4 FLOAT or normalized UNSIGNED_BYTE / UNSIGNED_SHORT (COLOR_0); VEC3 gets alpha 1.
+std::vector<glm::vec4> readColors(const Context& ctx, int index, std::string_view usage);
 /// SCALAR UNSIGNED_BYTE / UNSIGNED_SHORT / UNSIGNED_INT (primitive indices).
 std::vector<std::uint32_t> readIndices(const Context& ctx, int index, std::string_view usage);
 

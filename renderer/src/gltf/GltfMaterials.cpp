@@ -143,6 +143,24 @@ glm::vec4 baseColorFactor(const Context& ctx, const std::vector<double>& f,
     return glm::clamp(glm::vec4(f[0], f[1], f[2], f[3]), 0.0f, 1.0f);
 }
 
+/// alphaMode and alphaCutoff (spec 3.9.4); an unknown mode is drawn opaque and a cutoff that is
+/// not a finite number >= 0 replaced by the default 0.5, each with a warning.
+void readAlpha(const Context& ctx, const tinygltf::Material& src, const std::string& element,
+               Material& m) {
+    if (src.alphaMode == "MASK")
+        m.alphaMode = AlphaMode::Mask;
+    else if (src.alphaMode == "BLEND")
+        m.alphaMode = AlphaMode::Blend;
+    else if (src.alphaMode != "OPAQUE")
+        ctx.warn(element, cat("alphaMode \"", src.alphaMode,
+                              "\" is not OPAQUE, MASK or BLEND; drawn opaque"));
+    if (!std::isfinite(src.alphaCutoff) || src.alphaCutoff < 0.0 || src.alphaCutoff > 1e6) {
+        ctx.warn(element, "alphaCutoff is not a finite number >= 0; 0.5 used");
+        return;
+    }
+    m.alphaCutoff = static_cast<float>(src.alphaCutoff);
+}
+
 } // namespace
 
 std::vector<Material> convertMaterials(const Context& ctx, const std::vector<bool>& used,
@@ -162,6 +180,7 @@ std::vector<Material> convertMaterials(const Context& ctx, const std::vector<boo
                 baseColorTexture(ctx, pbr.baseColorTexture,
                                  element + ".pbrMetallicRoughness.baseColorTexture", table);
         m.doubleSided = src[i].doubleSided;
+        readAlpha(ctx, src[i], element, m);
         materials.push_back(std::move(m));
     }
     return materials;

@@ -7,6 +7,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 
@@ -141,6 +142,7 @@ void repairNormals(const Context& ctx, const Primitive& prim, Mesh& mesh) {
 void generateFlatNormals(Mesh& mesh) {
     std::vector<glm::vec3> positions, normals;
     std::vector<glm::vec2> texcoords;
+    std::vector<glm::vec4> colors;
     positions.reserve(mesh.indices.size());
     normals.reserve(mesh.indices.size());
     for (std::size_t t = 0; t < mesh.indices.size(); t += 3) {
@@ -152,11 +154,13 @@ void generateFlatNormals(Mesh& mesh) {
             positions.push_back(mesh.positions[tri[k]]);
             normals.push_back(n);
             if (!mesh.texcoords.empty()) texcoords.push_back(mesh.texcoords[tri[k]]);
+            if (!mesh.colors.empty()) colors.push_back(mesh.colors[tri[k]]);
         }
     }
     mesh.positions = std::move(positions);
     mesh.normals = std::move(normals);
     mesh.texcoords = std::move(texcoords);
+    mesh.colors = std::move(colors);
     std::iota(mesh.indices.begin(), mesh.indices.end(), 0u);
 }
 
@@ -245,6 +249,26 @@ void attachTexcoords(const Context& ctx, const Primitive& prim, Mesh& mesh) {
         ctx.warn(prim.element, cat(repaired, " non-finite texcoord(s) set to (0, 0)"));
 }
 
+/// COLOR_0, which multiplies the base colour and its alpha (spec 3.9.2); values outside [0, 1] are
+/// clamped and non-finite ones made white, with a warning.
+void attachColors(const Context& ctx, const Primitive& prim, Mesh& mesh) {
+    const int accessor = prim.attribute("COLOR_0");
+    if (accessor < 0) return;
+    mesh.colors = readColors(ctx, accessor, prim.usage("COLOR_0"));
+    checkCount(ctx, prim, "COLOR_0", mesh.colors.size(), mesh.positions.size());
+    std::size_t repaired = 0;
+    for (glm::vec4& c : mesh.colors) {
+        glm::vec4 fixed = c;
+        for (int k = 0; k < 4; ++k)
+            fixed[k] = std::isfinite(c[k]) ? std::clamp(c[k], 0.0f, 1.0f) : 1.0f;
+        if (fixed != c) ++repaired;
+        c = fixed;
+    }
+    if (repaired > 0)
+        ctx.warn(prim.element,
+                 cat(repaired, " COLOR_0 value(s) outside [0, 1] or not finite repaired"));
+}
+
 /// Draco-compressed primitives are readable only through their optional uncompressed fallback;
 /// without it the accessors have no data and would silently read as zeros.
 void checkDracoFallback(const Context& ctx, const Primitive& prim, int positionAccessor) {
@@ -286,6 +310,7 @@ std::optional<Mesh> convertPrimitive(const Context& ctx, const Primitive& prim) 
         return std::nullopt;
     }
     attachTexcoords(ctx, prim, mesh);
+    attachColors(ctx, prim, mesh);
     if (const int normals = prim.attribute("NORMAL"); normals >= 0) {
         mesh.normals = readNormalVec3(ctx, normals, prim.usage("NORMAL"));
         checkCount(ctx, prim, "NORMAL", mesh.normals.size(), mesh.positions.size());

@@ -5,6 +5,8 @@ namespace fl {
 ShadingPass::ShadingPass(const gl::ShaderLibrary& shaders)
     : program_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
                                             {GL_FRAGMENT_SHADER, "shading.frag.glsl"}})),
+      blended_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "forward.vert.glsl"},
+                                            {GL_FRAGMENT_SHADER, "blended.frag.glsl"}})),
       emptyVao_(gl::VertexArray::create()) {}
 
 void ShadingPass::resize(int width, int height) {
@@ -12,6 +14,34 @@ void ShadingPass::resize(int width, int height) {
     color_ = gl::Texture(GL_RGBA16F, width, height);
     visibility_ = gl::Texture(GL_R32F, width, height);
     fbo_ = gl::Framebuffer::withTargets({&color_, &visibility_}, nullptr, "shading pass");
+    blendFbo_ = {};
+    blendDepth_ = 0;
+}
+
+void ShadingPass::drawBlended(const Inputs& in) {
+    if (!blendFbo_ || blendDepth_ != in.surfaces.depth.id()) {
+        blendFbo_ = gl::Framebuffer::withTargets({&color_}, &in.surfaces.depth, "blended pass");
+        blendDepth_ = in.surfaces.depth.id();
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, blendFbo_.id());
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_FALSE); // the eye's surfaces stay what step 2 wrote
+    glEnable(GL_BLEND);
+    // "Over" for the colour; the colour target's alpha (1 = something drawn) becomes 1 under a
+    // blended surface too, as the sky's 0 means "nothing here".
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    glDisable(GL_CULL_FACE);
+    blended_.set("uViewProj", in.camera.proj * in.camera.view);
+    blended_.set("uLightPosition", in.light.position);
+    blended_.set("uLightDirection", in.light.direction);
+    blended_.set("uLightDirectional", in.light.type == Light::Type::Directional ? 1 : 0);
+    blended_.set("uLightColor", in.light.color);
+    in.scene.draw(blended_, GpuScene::Uniforms::Material, GpuScene::Surfaces::Blended);
+    glDisable(GL_BLEND);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_DEPTH_TEST);
+    glBindTextureUnit(0, 0);
 }
 
 ShadingPass::Outputs ShadingPass::execute(const Inputs& in) {
@@ -28,6 +58,7 @@ ShadingPass::Outputs ShadingPass::execute(const Inputs& in) {
     glBindTextureUnit(3, in.visibility.id());
     gl::drawFullscreenTriangle(program_, emptyVao_);
     for (GLuint unit : {0u, 1u, 2u, 3u}) glBindTextureUnit(unit, 0);
+    if (in.scene.hasBlended()) drawBlended(in);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return {color_, visibility_};
 }

@@ -38,7 +38,8 @@ SurfacesPass::Outputs SurfacesPass::execute(const Inputs& in) {
     program_.set("uLightPosition", in.light.position);
     program_.set("uLightDirection", in.light.direction);
     program_.set("uLightDirectional", in.light.type == Light::Type::Directional ? 1 : 0);
-    in.scene.draw(program_, GpuScene::Uniforms::Material);
+    // Blended surfaces are drawn over the shaded image (ShadingPass, step 4b), not here.
+    in.scene.draw(program_, GpuScene::Uniforms::Material, GpuScene::Surfaces::Solid);
     glBindTextureUnit(0, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return outputs();

@@ -11,6 +11,7 @@ struct Vertex {
     glm::vec3 position;
     glm::vec3 normal;
     glm::vec2 uv;
+    glm::vec4 color; // COLOR_0, white where the mesh has none
 };
 
 struct MeshRange {
@@ -43,7 +44,8 @@ GpuScene::GpuScene(const Scene& scene) : source_(&scene) {
                           static_cast<GLint>(vertices.size())});
         for (size_t i = 0; i < m.positions.size(); ++i) {
             const glm::vec2 uv = i < m.texcoords.size() ? m.texcoords[i] : glm::vec2(0.0f);
-            vertices.push_back({m.positions[i], m.normals.at(i), uv});
+            const glm::vec4 color = i < m.colors.size() ? m.colors[i] : glm::vec4(1.0f);
+            vertices.push_back({m.positions[i], m.normals.at(i), uv, color});
         }
         indices.insert(indices.end(), m.indices.begin(), m.indices.end());
     }
@@ -58,10 +60,11 @@ GpuScene::GpuScene(const Scene& scene) : source_(&scene) {
     vao_ = gl::VertexArray::create();
     glVertexArrayVertexBuffer(vao_.id(), 0, vertices_.id(), 0, sizeof(Vertex));
     glVertexArrayElementBuffer(vao_.id(), indices_.id());
-    const GLuint offsets[3] = {offsetof(Vertex, position), offsetof(Vertex, normal),
-                               offsetof(Vertex, uv)};
-    const GLint sizes[3] = {3, 3, 2};
-    for (GLuint a = 0; a < 3; ++a) {
+    // Attribute locations 0..3, as the vertex stages declare them.
+    const GLuint offsets[4] = {offsetof(Vertex, position), offsetof(Vertex, normal),
+                               offsetof(Vertex, uv), offsetof(Vertex, color)};
+    const GLint sizes[4] = {3, 3, 2, 4};
+    for (GLuint a = 0; a < 4; ++a) {
         glEnableVertexArrayAttrib(vao_.id(), a);
         glVertexArrayAttribFormat(vao_.id(), a, sizes[a], GL_FLOAT, GL_FALSE, offsets[a]);
         glVertexArrayAttribBinding(vao_.id(), a, 0);
@@ -73,14 +76,17 @@ GpuScene::GpuScene(const Scene& scene) : source_(&scene) {
         const MeshRange& r = ranges.at(static_cast<size_t>(inst.mesh));
         Material mat;
         if (mesh.material >= 0) mat = scene.materials.at(static_cast<size_t>(mesh.material));
+        const std::optional<float> cutoff = shadowCutoff(mat);
         draws_.push_back({inst.world, glm::transpose(glm::inverse(glm::mat3(inst.world))),
                           r.indexCount, r.firstIndex, r.baseVertex, mat.baseColorFactor,
-                          mat.baseColorTexture, inst.objectId});
+                          mat.baseColorTexture, inst.objectId, cutoff.value_or(-1.0f),
+                          mat.alphaMode == AlphaMode::Blend});
+        blended_ = blended_ || mat.alphaMode == AlphaMode::Blend;
         triangles_ += mesh.triangleCount();
     }
 }
 
-void GpuScene::draw(const gl::Program& program, Uniforms what) const {
+void GpuScene::draw(const gl::Program& program, Uniforms what, Surfaces which) const {
     if (program.location("uViewProj") >= 0) ++eyeDrawCalls_;
     glUseProgram(program.id());
     glBindVertexArray(vao_.id());
@@ -89,26 +95,35 @@ void GpuScene::draw(const gl::Program& program, Uniforms what) const {
     const GLint model = program.location("uModel");
     const bool material = what == Uniforms::Material;
     const GLint normalMatrix = material ? program.location("uNormalMatrix") : -1;
-    const GLint baseColor = material ? program.location("uBaseColor") : -1;
-    const GLint hasTexture = material ? program.location("uHasTexture") : -1;
     const GLint objectId = material ? program.location("uObjectId") : -1;
+    // Every pass that draws the scene decides visibility, so all take the alpha cut-out
+    // (shaders/alpha_coverage.glsl): its uniforms are set whether or not `what` asks for the
+    // material's colour.
+    const GLint cutoff = program.location("uAlphaCutoff");
+    const GLint baseColor = program.location("uBaseColor");
+    const GLint hasTexture = program.location("uHasTexture");
     for (const Draw& d : draws_) {
         if (d.indexCount == 0) continue;
+        if ((which == Surfaces::Solid && d.blended) || (which == Surfaces::Blended && !d.blended))
+            continue;
         glProgramUniformMatrix4fv(id, model, 1, GL_FALSE, &d.model[0][0]);
         if (material) {
             glProgramUniformMatrix3fv(id, normalMatrix, 1, GL_FALSE, &d.normalMatrix[0][0]);
-            glProgramUniform4fv(id, baseColor, 1, &d.baseColor[0]);
-            const bool textured = d.texture >= 0 && d.texture < static_cast<int>(textures_.size());
-            glProgramUniform1i(id, hasTexture, textured ? 1 : 0);
             glProgramUniform1i(id, objectId, static_cast<int>(d.objectId));
-            if (textured) glBindTextureUnit(0, textures_[static_cast<size_t>(d.texture)].id());
         }
+        glProgramUniform1f(id, cutoff, d.cutoff);
+        glProgramUniform4fv(id, baseColor, 1, &d.baseColor[0]);
+        const bool textured = d.texture >= 0 && d.texture < static_cast<int>(textures_.size());
+        glProgramUniform1i(id, hasTexture, textured ? 1 : 0);
+        if (textured && (material || d.cutoff >= 0.0f))
+            glBindTextureUnit(0, textures_[static_cast<size_t>(d.texture)].id());
         glDrawElementsBaseVertex(
             GL_TRIANGLES, d.indexCount, GL_UNSIGNED_INT,
             reinterpret_cast<const void*>(d.firstIndex * sizeof(std::uint32_t)), d.baseVertex);
     }
     glBindVertexArray(0);
     glUseProgram(0);
+    glBindTextureUnit(0, 0); // the textures bound above are this draw's, not the caller's
 }
 
 } // namespace fl

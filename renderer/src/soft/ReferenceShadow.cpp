@@ -93,7 +93,6 @@ ReferenceShadowPass::Outputs ReferenceShadowPass::execute(const Inputs& in, gl::
     accumulate_.set("uShadowWarp", glm::mat4(1.0f));
     glBlendEquation(GL_FUNC_ADD);
     glBlendFunc(GL_ONE, GL_ONE);
-    glBindTextureUnit(0, in.positions.id());
     for (const glm::vec3& q : samples) {
         // The volume the scene's own point light at q would get (Renderer's lightVolume()).
         const glm::mat4 viewProj =
@@ -113,6 +112,8 @@ ReferenceShadowPass::Outputs ReferenceShadowPass::execute(const Inputs& in, gl::
         glDisable(GL_DEPTH_TEST);
         glEnable(GL_BLEND);
         accumulate_.set("uLightViewProj", viewProj);
+        // Bound per map: the scene's draw binds alpha cut-out textures on unit 0.
+        glBindTextureUnit(0, in.positions.id());
         glBindTextureUnit(1, map_.id());
         gl::drawFullscreenTriangle(accumulate_, emptyVao_);
         glDisable(GL_BLEND);

@@ -1,19 +1,46 @@
 #include <renderer/soft/ShadowRayInputs.h>
 
+#include <renderer/scene/AlphaCoverage.h>
+
 #include <base/Text.h>
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 
 namespace fl {
 
+namespace {
+
+/// Which instance and mesh triangle each of worldTriangles' triangles is, for the cut-out test.
+struct CutOutTest {
+    AlphaCoverage coverage;
+    std::vector<std::uint32_t> firstTriangle; // per instance, its first triangle in the list
+    std::vector<int> mesh;                    // per instance
+
+    bool transmits(std::uint32_t triangle, float u, float v) const {
+        const auto it = std::upper_bound(firstTriangle.begin(), firstTriangle.end(), triangle);
+        const auto i = static_cast<std::size_t>(it - firstTriangle.begin()) - 1;
+        return !coverage.blocks(mesh[i], triangle - firstTriangle[i], u, v);
+    }
+};
+
+} // namespace
+
 rt::Triangles worldTriangles(const Scene& scene) {
     rt::Triangles t;
+    auto test = std::make_shared<CutOutTest>(CutOutTest{AlphaCoverage(scene), {}, {}});
     for (const Instance& inst : scene.instances) {
         const Mesh& m = scene.meshes.at(static_cast<std::size_t>(inst.mesh));
         const auto base = static_cast<std::uint32_t>(t.vertices.size());
+        test->firstTriangle.push_back(static_cast<std::uint32_t>(t.indices.size() / 3));
+        test->mesh.push_back(inst.mesh);
+        if (test->coverage.any())
+            t.cutOut.resize(t.indices.size() / 3 + m.triangleCount(),
+                            test->coverage.cutsOut(inst.mesh) ? 1 : 0);
         for (std::size_t v = 0; v < m.positions.size(); ++v) {
             const glm::vec3 p(inst.world * glm::vec4(m.positions[v], 1.0f));
             for (int a = 0; a < 3; ++a)
@@ -26,6 +53,10 @@ rt::Triangles worldTriangles(const Scene& scene) {
         }
         for (std::uint32_t i : m.indices) t.indices.push_back(base + i);
     }
+    if (test->coverage.any())
+        t.transmits = [test](std::uint32_t triangle, float u, float v) {
+            return test->transmits(triangle, u, v);
+        };
     return t;
 }
 

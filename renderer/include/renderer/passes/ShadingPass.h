@@ -1,7 +1,9 @@
 #pragma once
 // Step 4 of a frame: shading, shared by every shadow method. A fullscreen pass over the surfaces
 // of step 2 applies the method's visibility (step 3): linear colour, and the visibility itself
-// with background set to 1 (what the metrics and the visibility PNG read).
+// with background set to 1 (what the metrics and the visibility PNG read). Step 4b draws the
+// scene's alphaMode BLEND surfaces over that colour (not into the visibility: they are not among
+// the surfaces a method shades).
 // PresentPass is step 6 in a window: the colour to the default framebuffer, sRGB-encoded (the
 // caller draws step 5 over it before the buffer swap).
 
@@ -9,6 +11,7 @@
 #include <gpu/Program.h>
 #include <gpu/ShaderLibrary.h>
 #include <renderer/passes/SurfacesPass.h>
+#include <renderer/scene/GpuScene.h>
 #include <renderer/scene/Scene.h>
 
 namespace fl {
@@ -23,6 +26,8 @@ class ShadingPass {
         const SurfacesPass::Outputs& surfaces;
         const Light& light;
         const gl::Texture& visibility; // the method's, R32F, the frame's size
+        const GpuScene& scene;         // for step 4b
+        const CameraView& camera;
     };
     struct Outputs {
         const gl::Texture& color;      // RGBA16F linear; alpha 0 where nothing was drawn
@@ -31,10 +36,16 @@ class ShadingPass {
     Outputs execute(const Inputs& in);
 
   private:
+    /// Step 4b: the blended surfaces over color_, depth-tested against step 2's depth.
+    void drawBlended(const Inputs& in);
+
     gl::Program program_;
+    gl::Program blended_;
     gl::VertexArray emptyVao_;
     gl::Texture color_, visibility_;
     gl::Framebuffer fbo_;
+    gl::Framebuffer blendFbo_; // color_ and the surfaces' depth, built when first needed
+    GLuint blendDepth_ = 0;    // the depth texture blendFbo_ holds (SurfacesPass may realloc it)
 };
 
 class PresentPass {

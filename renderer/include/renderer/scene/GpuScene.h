@@ -18,9 +18,17 @@ class GpuScene {
 
     /// What a draw sets per instance.
     enum class Uniforms { Geometry, Material };
-    /// Draws every instance with `program`, setting uModel (and uNormalMatrix, uBaseColor,
-    /// uHasTexture, uObjectId and the base-colour texture on unit 0 for Uniforms::Material).
-    void draw(const gl::Program& program, Uniforms what) const;
+    /// Which instances a draw takes: all (the light's passes: a blended surface casts the shadow
+    /// of its alpha >= 0.5 part), those not blended (the eye's surfaces), or only the blended
+    /// ones (drawn over the shaded image).
+    enum class Surfaces { All, Solid, Blended };
+    /// Draws the `which` instances with `program`, setting uModel and the alpha cut-out's
+    /// uAlphaCutoff, uBaseColor, uHasTexture and base-colour texture on unit 0 (every pass that
+    /// draws the scene decides visibility), plus uNormalMatrix and uObjectId for
+    /// Uniforms::Material.
+    void draw(const gl::Program& program, Uniforms what, Surfaces which = Surfaces::All) const;
+    /// True when some instance's material is BLEND.
+    [[nodiscard]] bool hasBlended() const { return blended_; }
 
     [[nodiscard]] std::size_t triangleCount() const { return triangles_; }
     /// The scene this was uploaded from.
@@ -39,6 +47,8 @@ class GpuScene {
         glm::vec4 baseColor;
         int texture; // index into textures_, -1 none
         std::uint32_t objectId;
+        float cutoff; // shadowCutoff(material), -1 for none
+        bool blended; // alphaMode BLEND
     };
     const Scene* source_;
     gl::Buffer vertices_;
@@ -47,6 +57,7 @@ class GpuScene {
     std::vector<gl::Texture> textures_;
     std::vector<Draw> draws_;
     std::size_t triangles_ = 0;
+    bool blended_ = false;
     mutable std::size_t eyeDrawCalls_ = 0; // counted by draw(), which is const to its callers
 };
 

@@ -21,13 +21,23 @@ struct Image {
     std::vector<std::uint8_t> rgba; // width * height * 4, row 0 at the top (as stored in files)
 };
 
+/// glTF alphaMode: what the base colour's alpha (factor x texture x vertex colour) means.
+enum class AlphaMode { Opaque, Mask, Blend };
+
 /// glTF metallic-roughness material reduced to what we shade with.
 struct Material {
     std::string name;
     glm::vec4 baseColorFactor{1.0f};
     int baseColorTexture = -1; // index into Scene::images, -1 = none
     bool doubleSided = false;
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    float alphaCutoff = 0.5f; // MASK: a point with alpha below it is not there
 };
+
+/// Alpha at and above which a surface of `m` blocks light, in every pass that decides visibility:
+/// MASK's cutoff, 0.5 for BLEND (a blended surface casts the shadow of its alpha >= 0.5 part, as
+/// most engines do), nullopt for OPAQUE (alpha is ignored and every point blocks).
+std::optional<float> shadowCutoff(const Material& m);
 
 /// One triangle list (glTF primitive) in its own model space. Always triangles, indexed u32.
 struct Mesh {
@@ -35,6 +45,7 @@ struct Mesh {
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;     // same size as positions (generated if the file has none)
     std::vector<glm::vec2> texcoords;   // empty or same size as positions
+    std::vector<glm::vec4> colors;      // COLOR_0, linear RGBA: empty (white) or same size
     std::vector<std::uint32_t> indices; // 3 per triangle, every index < positions.size()
     int material = -1;                  // index into Scene::materials, -1 = default material
     [[nodiscard]] std::size_t triangleCount() const { return indices.size() / 3; }

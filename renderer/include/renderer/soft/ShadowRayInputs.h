@@ -13,7 +13,9 @@ namespace fl {
 
 /// Every instance's triangles in world space, as the vertex stage places them. Throws
 /// std::invalid_argument naming the node and mesh when a node's transform takes a vertex beyond
-/// rt::kMaxCoordinate (the loader has already refused non-finite input).
+/// rt::kMaxCoordinate (the loader has already refused non-finite input). The triangles of MASK
+/// and BLEND materials are cut out as the GL passes cut them (renderer/scene/AlphaCoverage.h);
+/// that test reads `scene`, which must outlive the result and any RayScene built from it.
 rt::Triangles worldTriangles(const Scene& scene);
 
 /// One receiver per pixel of `surfaces`, in GL's row order (row 0 at the bottom): the world
