@@ -6,15 +6,22 @@
 # Usage: bench/compare_revisions.sh BEFORE AFTER ROUNDS METHOD[,METHOD...] [BENCH OPTIONS...]
 # e.g.   bench/compare_revisions.sh fd2178a HEAD 3 hard,jfa-l,jfa-e,pcf,pcss \
 #            --width 512 --height 512 --shadow-map-size 1024 --light-radius 1.5
+# A shader change alone: BEFORE = shaders:REV runs this checkout's build/release binary with
+# REV's shaders/ (--shader-dir), AFTER = shaders:HEAD with the working tree's; no builds.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 before=$1 after=$2 rounds=$3 methods=$4
 shift 4
 root=$PWD/build/revisions
 mkdir -p "$root"
+shaderArgs=() # per side: --shader-dir for shaders:REV
 build() { # REV -> path of its floodlight_bench
     local rev sha dir
     rev=$1
+    if [[ $rev == shaders:* ]]; then
+        echo "$PWD/build/release/bench/floodlight_bench"
+        return
+    fi
     sha=$(git rev-parse --short "$rev")
     dir=$root/$sha
     if [ ! -d "$dir" ]; then git worktree add -q --detach "$dir" "$sha"; fi
@@ -26,13 +33,23 @@ build() { # REV -> path of its floodlight_bench
 a=$(build "$before")
 b=$(build "$after")
 out=$(mktemp)
-trap 'rm -f "$out"' EXIT
+shaders=$(mktemp -d)
+trap 'rm -rf "$out" "$shaders"' EXIT
+shaderDir() { # REV -> the --shader-dir option for shaders:REV (none otherwise)
+    local rev=${1#shaders:}
+    [[ $1 == shaders:* ]] || return 0
+    if [ "$rev" = HEAD ]; then echo "--shader-dir=$PWD/shaders"; return; fi
+    mkdir -p "$shaders/$rev" && git archive "$rev" shaders | tar -x -C "$shaders/$rev"
+    echo "--shader-dir=$shaders/$rev/shaders"
+}
+beforeDir=$(shaderDir "$before")
+afterDir=$(shaderDir "$after")
 for ((r = 1; r <= rounds; ++r)); do
     for m in ${methods//,/ }; do
         for side in before after; do
-            bin=$a
-            [ "$side" = after ] && bin=$b
-            ms=$(MESA_SHADER_CACHE_DISABLE=true "$bin" --method "$m" "$@" |
+            bin=$a dir=$beforeDir
+            [ "$side" = after ] && bin=$b dir=$afterDir
+            ms=$(MESA_SHADER_CACHE_DISABLE=true "$bin" --method "$m" $dir "$@" |
                 awk '$1 == "frame" { for (i = 1; i <= NF; ++i) if ($i == "median") print $(i + 1) }')
             echo "$m $side $ms" >>"$out"
         done

@@ -8,11 +8,15 @@ layout(location = 3) in vec4 aColor; // COLOR_0 (white where the mesh has none)
 uniform mat4 uViewProj;
 uniform mat4 uModel;
 uniform mat3 uNormalMatrix;
+// The previous frame's camera (the surfaces pass's motion target). The scene is static, so the
+// point's previous world position is its current one.
+uniform mat4 uPreviousViewProj;
 
 out vec3 vWorld;
 out vec3 vNormal;
 out vec2 vTexcoord;
 out vec4 vColor;
+out vec4 vPreviousClip;
 
 void main() {
     vec4 world = uModel * vec4(aPosition, 1.0);
@@ -20,5 +24,6 @@ void main() {
     vNormal = uNormalMatrix * aNormal;
     vTexcoord = aTexcoord;
     vColor = aColor;
+    vPreviousClip = uPreviousViewProj * world;
     gl_Position = uViewProj * world;
 }

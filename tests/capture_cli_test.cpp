@@ -113,9 +113,9 @@ void checkSummary(const fs::path& dir) {
     EXPECT_TRUE(j["complete"].get<bool>());
     ASSERT_EQ(j["methods"].size(), std::size(kMethods));
     for (const auto& m : j["methods"]) {
-        for (const char* f :
-             {"rmse", "rmsePenumbra", "misclassifiedPercent", "meanAbsWidthErrorPx", "addedFlicker",
-              "medianFrameMs", "frameTimeOverHard", "medianPhaseMs", "worstFrame"})
+        for (const char* f : {"rmse", "rmsePenumbra", "misclassifiedPercent", "meanAbsWidthErrorPx",
+                              "addedFlicker", "addedFlickerScreen", "medianFrameMs",
+                              "frameTimeOverHard", "medianPhaseMs", "worstFrame"})
             EXPECT_TRUE(m.contains(f)) << m["label"] << " lacks " << f;
         // With a 1.5 light radius every method differs somewhat from a 16-sample ground truth,
         // and none is wildly off.

@@ -125,6 +125,59 @@ TEST(Metrics, AddedFlicker) {
     EXPECT_DOUBLE_EQ(addedFlicker(still, still, a, b), -0.25);
 }
 
+// A motion image that says each pixel's point was `shift` pixels to the left in the previous
+// frame, at depth `depth` (and at depth `depth` now).
+FloatImage shiftedMotion(int w, int h, float shift, float depth) {
+    FloatImage m{w, h, 4, {}};
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            m.data.insert(m.data.end(), {static_cast<float>(x) + 0.5f - shift,
+                                         static_cast<float>(y) + 0.5f, depth, depth});
+    return m;
+}
+
+TEST(Metrics, SurfaceFlickerFollowsThePointNotThePixel) {
+    // A shadow edge that moved one pixel right on screen because the camera moved, not because
+    // the shadow moved on the surface: the screen-space change is large, the same-point one 0.
+    const int w = 8, h = 4;
+    const FloatImage before = image(w, h, [](int x, int) { return x < 4 ? 0.0f : 1.0f; });
+    const FloatImage after = image(w, h, [](int x, int) { return x < 5 ? 0.0f : 1.0f; });
+    const FloatImage motion = shiftedMotion(w, h, 1.0f, 5.0f);
+    const Reprojection r(motion, depthOf(motion), {}, {});
+    EXPECT_EQ(r.pixels(), static_cast<std::size_t>((w - 1) * h)) << "column 0 came from outside";
+    EXPECT_DOUBLE_EQ(r.meanAbsoluteChange(before, after), 0.0);
+    EXPECT_GT(meanAbsoluteChange(before, after), 0.1);
+    // A half-pixel shift samples the previous image between two pixels (bilinear).
+    const Reprojection half(shiftedMotion(w, h, 0.5f, 5.0f), depthOf(motion), {}, {});
+    EXPECT_DOUBLE_EQ(half.meanAbsoluteChange(before, before),
+                     h * 0.5 / static_cast<double>(half.pixels()));
+    // The method flickers on one pixel the reference does not.
+    FloatImage method = after;
+    method.data[6] = 0.0f;
+    EXPECT_DOUBLE_EQ(addedSurfaceFlicker(r, before, method, before, after),
+                     1.0 / static_cast<double>(r.pixels()));
+}
+
+TEST(Metrics, SurfaceFlickerSkipsPointsHiddenOrUncovered) {
+    const int w = 4, h = 2;
+    const FloatImage motion = shiftedMotion(w, h, 0.0f, 5.0f);
+    // Another depth there before (something stood in front, or behind): not the same point.
+    FloatImage previousDepth = depthOf(motion);
+    previousDepth.data[1] = 4.0f;
+    const Reprojection occluded(motion, previousDepth, {}, {});
+    EXPECT_EQ(occluded.pixels(), 7u);
+    // Within 1% of the depth: the same point.
+    previousDepth.data[1] = 5.04f;
+    EXPECT_EQ(Reprojection(motion, previousDepth, {}, {}).pixels(), 8u);
+    // Not a receiver now, or not then.
+    const FloatImage mask{w, h, 1, {1, 1, 1, 1, 1, 1, 0, 1}};
+    EXPECT_EQ(Reprojection(motion, depthOf(motion), mask, {}).pixels(), 7u);
+    EXPECT_EQ(Reprojection(motion, depthOf(motion), {}, mask).pixels(), 7u);
+    EXPECT_THROW(Reprojection(motion, motion, {}, {}), std::invalid_argument);
+    EXPECT_THROW(Reprojection(constant(w, h, 1.0f), depthOf(motion), {}, {}),
+                 std::invalid_argument);
+}
+
 TEST(Metrics, MismatchedSizesThrow) {
     EXPECT_THROW((void)compareWithReference(constant(2, 2, 0.0f), constant(3, 2, 0.0f)),
                  std::invalid_argument);

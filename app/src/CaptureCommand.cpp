@@ -119,19 +119,28 @@ class FrameScorer {
 
     /// Scores frame i: `visibility` holds one image per run (moved from), `ref` the truth.
     void score(int i, std::vector<FloatImage>& visibility, const FrameImages& ref) {
-        // Flicker compares with the previous frame: count pixels that are receivers in both.
+        // Flicker compares with the previous frame: on the same surface points (reprojected with
+        // the reference's motion; every method sees the same surfaces), and, as before, on the
+        // same pixels where both frames have receivers.
         const FloatImage flickerReceivers =
             i > 0 ? bothReceivers(state_.previousReceivers, ref.receivers) : FloatImage{};
+        std::optional<Reprojection> reprojection;
+        if (i > 0)
+            reprojection.emplace(ref.motion, state_.previousDepth, ref.receivers,
+                                 state_.previousReceivers);
         for (std::size_t k = 0; k < visibility.size(); ++k) {
             MethodRun& run = runs_[first_ + k];
             FrameRow row;
             row.frame = i;
             // Every method sees the same surfaces: the reference's receivers are theirs.
             row.metrics = compareWithReference(visibility[k], ref.visibility, ref.receivers);
-            if (i > 0)
-                row.flicker =
+            if (reprojection) {
+                row.flicker = addedSurfaceFlicker(*reprojection, state_.previous[k], visibility[k],
+                                                  state_.previousReference, ref.visibility);
+                row.screenFlicker =
                     addedFlicker(state_.previous[k], visibility[k], state_.previousReference,
                                  ref.visibility, flickerReceivers);
+            }
             if (isWorse(run, row)) run.worst = {visibility[k], ref.visibility, ref.receivers};
             run.rows.push_back(std::move(row));
         }
@@ -146,6 +155,7 @@ class FrameScorer {
         }
         state_.previousReference = ref.visibility;
         state_.previousReceivers = ref.receivers;
+        state_.previousDepth = depthOf(ref.motion);
     }
 
     /// Takes back the frames an earlier run finished (a resumed capture): their rows, each

@@ -47,6 +47,7 @@ CsvTable resultsCsv(const CaptureResults& r) {
                                         "width_reference_px",
                                         "width_error_px",
                                         "added_flicker",
+                                        "added_flicker_screen",
                                         "dI_lt_0.05",
                                         "dI_0.05_0.1",
                                         "dI_0.1_0.2",
@@ -63,10 +64,12 @@ CsvTable resultsCsv(const CaptureResults& r) {
             csv << row.frame << csvName(m.label) << m.width << m.height << f.rmse << f.rmsePenumbra
                 << f.penumbraPixels << 100.0 * f.misclassified << f.widthMethod << f.widthReference
                 << f.widthError;
-            if (row.flicker)
-                csv << *row.flicker;
-            else
-                csv.blank();
+            for (const std::optional<double>& flicker : {row.flicker, row.screenFlicker}) {
+                if (flicker)
+                    csv << *flicker;
+                else
+                    csv.blank();
+            }
             for (std::size_t k = 0; k < 4; ++k) {
                 if (row.deltaBuckets)
                     csv << 100.0 * (*row.deltaBuckets)[k];
@@ -110,15 +113,19 @@ nlohmann::json resultsSummary(const CaptureResults& r) {
         {"rmse", "pooled over the receivers of all frames"},
         {"rmsePenumbra", "pooled over the reference's penumbra pixels of all frames"},
         {"width", "median over receivers with 0.1 <= v <= 0.9 of 0.8 / |grad v|, pixels"},
-        {"addedFlicker", "mean |v_t - v_t-1| over receivers in both frames, of the method minus "
-                         "that of the reference"}};
+        {"addedFlicker", "mean |v_t(p) - v_t-1(reproject(p))| over the receivers whose surface "
+                         "point was a receiver at the same depth in the previous frame (bilinear "
+                         "there), of the method minus that of the reference"},
+        {"addedFlickerScreen", "mean |v_t - v_t-1| on the same pixel over receivers in both "
+                               "frames, of the method minus that of the reference (camera "
+                               "motion counts too)"}};
     const std::vector<std::string> phases = allPhases(r);
     nlohmann::json methods = nlohmann::json::array();
     std::optional<double> hardMs;
     for (const MethodRun& m : r.runs)
         if (m.spec.method == "hard" && !hardMs) hardMs = m.times.medianFrameMs();
     for (const MethodRun& m : r.runs) {
-        double sq = 0.0, sqPen = 0.0, miscl = 0.0, widthErr = 0.0, flick = 0.0;
+        double sq = 0.0, sqPen = 0.0, miscl = 0.0, widthErr = 0.0, flick = 0.0, screen = 0.0;
         double pixels = 0.0, penPixels = 0.0, wm = 0.0, wr = 0.0;
         int flickN = 0;
         std::array<double, 4> buckets{};
@@ -135,6 +142,7 @@ nlohmann::json resultsSummary(const CaptureResults& r) {
             wr += f.widthReference;
             if (row.flicker) {
                 flick += *row.flicker;
+                screen += row.screenFlicker.value_or(0.0);
                 ++flickN;
             }
             if (row.deltaBuckets) {
@@ -157,6 +165,7 @@ nlohmann::json resultsSummary(const CaptureResults& r) {
         e["meanWidthPx"] = wm / n;
         e["meanReferenceWidthPx"] = wr / n;
         e["addedFlicker"] = flickN > 0 ? flick / flickN : 0.0;
+        e["addedFlickerScreen"] = flickN > 0 ? screen / flickN : 0.0;
         const double frameMs = m.times.medianFrameMs();
         e["medianFrameMs"] = frameMs;
         if (hardMs && *hardMs > 0) e["frameTimeOverHard"] = frameMs / *hardMs;

@@ -98,12 +98,14 @@ std::string recordLine(const FrameRecord& r) {
     for (const RunFrame& f : r.runs) {
         json phases = json::array();
         for (const auto& [name, ms] : f.phases) phases.push_back({name, ms});
-        runs.push_back({{"metrics", metricsJson(f.row.metrics)},
-                        {"flicker", f.row.flicker ? json(*f.row.flicker) : json()},
-                        {"dI", f.row.deltaBuckets ? json(*f.row.deltaBuckets) : json()},
-                        {"ms", f.frameMs},
-                        {"phases", phases},
-                        {"flood", f.flood ? json{f.flood->passes, f.flood->activeShare} : json()}});
+        runs.push_back(
+            {{"metrics", metricsJson(f.row.metrics)},
+             {"flicker", f.row.flicker ? json(*f.row.flicker) : json()},
+             {"screenFlicker", f.row.screenFlicker ? json(*f.row.screenFlicker) : json()},
+             {"dI", f.row.deltaBuckets ? json(*f.row.deltaBuckets) : json()},
+             {"ms", f.frameMs},
+             {"phases", phases},
+             {"flood", f.flood ? json{f.flood->passes, f.flood->activeShare} : json()}});
     }
     return json{
         {"size", r.size}, {"frame", r.frame}, {"referenceMs", r.referenceMs}, {"runs", runs}}
@@ -122,6 +124,8 @@ FrameRecord parseRecordLine(const std::string& line) {
             run.row.frame = r.frame;
             run.row.metrics = metricsFrom(f.at("metrics"));
             if (!f.at("flicker").is_null()) run.row.flicker = f["flicker"].get<double>();
+            if (!f.at("screenFlicker").is_null())
+                run.row.screenFlicker = f["screenFlicker"].get<double>();
             if (!f.at("dI").is_null()) run.row.deltaBuckets = f["dI"].get<std::array<double, 4>>();
             run.frameMs = f.at("ms").get<double>();
             for (const json& p : f.at("phases"))
@@ -228,7 +232,8 @@ void CaptureProgress::save(const FrameRecord& record, const ScorerState& state,
     {
         const FloatImage& ref = state.previousReference;
         std::vector<ExrChannel> channels{{"reference.visibility", ref.data},
-                                         {"reference.receivers", state.previousReceivers.data}};
+                                         {"reference.receivers", state.previousReceivers.data},
+                                         {"reference.depth", state.previousDepth.data}};
         for (std::size_t k = 0; k < state.previous.size(); ++k)
             channels.push_back({std::to_string(k) + ".visibility", state.previous[k].data});
         writeExr(statePicture, ref.width, ref.height, channels);
@@ -259,6 +264,7 @@ ScorerState CaptureProgress::loadState(int size, int frame, std::size_t runs) co
     ScorerState s;
     s.previousReference = imageFrom(channels, "reference.visibility", w, h, file);
     s.previousReceivers = imageFrom(channels, "reference.receivers", w, h, file);
+    s.previousDepth = imageFrom(channels, "reference.depth", w, h, file);
     for (std::size_t k = 0; k < runs; ++k)
         s.previous.push_back(imageFrom(channels, std::to_string(k) + ".visibility", w, h, file));
     return s;

@@ -46,6 +46,7 @@ struct FrameRecord {
 struct ScorerState {
     std::vector<FloatImage> previous; // each method's visibility
     FloatImage previousReference, previousReceivers;
+    FloatImage previousDepth; // the reference frame's depthOf(motion): the next reprojection
 };
 
 /// A hash of everything that fixes a capture's results, as 16 hex digits (FNV-1a 64): a resumed

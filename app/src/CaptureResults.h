@@ -24,7 +24,11 @@ namespace fl::app {
 struct FrameRow {
     int frame = 0;
     FrameMetrics metrics;
-    std::optional<double> flicker; // added flicker since the previous frame (none on frame 0)
+    /// Added flicker since the previous frame on the same surface points (Metrics.h,
+    /// addedSurfaceFlicker; none on frame 0), and the screen-space figure of before (the same
+    /// pixel in both frames: camera motion moving a shadow across the screen counts too).
+    std::optional<double> flicker;
+    std::optional<double> screenFlicker;
     /// |dI| buckets against the standard-flooding counterpart (thesis Fig. 5.4(a)), for JFA
     /// methods whose counterpart is in the script.
     std::optional<std::array<double, 4>> deltaBuckets;

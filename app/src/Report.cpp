@@ -55,7 +55,8 @@ std::string summaryTable(const nlohmann::json& summary) {
     std::ostringstream s;
     s << "<table id=\"summary\"><tr><th>method</th><th>RMSE</th><th>RMSE penumbra</th>"
          "<th>misclassified %</th><th>|width error| px</th><th>width px (ref.)</th>"
-         "<th>added flicker</th><th>frame ms (median)</th><th>time / hard</th></tr>";
+         "<th>added flicker</th><th>(same pixel)</th><th>frame ms (median)</th>"
+         "<th>time / hard</th></tr>";
     for (const auto& m : summary["methods"]) {
         s << "<tr><td>" << xmlEscape(m["label"].get<std::string>()) << "</td><td>"
           << fmt(m["rmse"].get<double>(), 4) << "</td><td>"
@@ -65,6 +66,7 @@ std::string summaryTable(const nlohmann::json& summary) {
           << fmt(m["meanWidthPx"].get<double>(), 2) << " ("
           << fmt(m["meanReferenceWidthPx"].get<double>(), 2) << ")</td><td>"
           << fmt(m["addedFlicker"].get<double>(), 5) << "</td><td>"
+          << fmt(m["addedFlickerScreen"].get<double>(), 5) << "</td><td>"
           << fmt(m["medianFrameMs"].get<double>(), 2) << "</td><td>"
           << (m.contains("frameTimeOverHard") ? fmt(m["frameTimeOverHard"].get<double>(), 2)
                                               : std::string("-"))
@@ -170,9 +172,11 @@ std::string reportHtml(const CaptureResults& r, const nlohmann::json& summary,
          "pixels are receivers the reference has in "
          "(0.02, 0.98); classes umbra &le; 0.02 &lt; penumbra &lt; 0.98 &le; lit; RMSEs are "
          "pooled over all frames; the 10&ndash;90% width is the median of 0.8/|&nabla;V| over "
-         "receivers with 0.1 &le; V &le; 0.9; added flicker is the mean |V<sub>t</sub> &minus; "
-         "V<sub>t&minus;1</sub>| over receivers in both frames, of a method minus the "
-         "reference's own.</p>\n"
+         "receivers with 0.1 &le; V &le; 0.9; added flicker is the mean |V<sub>t</sub>(p) &minus; "
+         "V<sub>t&minus;1</sub>(reproject(p))| on the same surface point, over receivers seen "
+         "at the same depth in both frames, of a method minus the reference's own (camera "
+         "motion alone adds none); &ldquo;same pixel&rdquo; is the older screen-space figure, "
+         "|V<sub>t</sub> &minus; V<sub>t&minus;1</sub>| per pixel.</p>\n"
       << "<h2>Summary</h2>\n"
       << summaryTable(summary) << "\n<h2>Error per frame</h2>\n"
       << errorCharts(r) << "\n<h2>|dI| against standard flooding</h2>\n"

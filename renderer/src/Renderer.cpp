@@ -135,7 +135,7 @@ void Renderer::resize(int width, int height) {
     height_ = height;
 }
 
-void Renderer::render(const CameraView& camera) {
+void Renderer::render(const CameraView& camera, const CameraView& previous) {
     if (width_ == 0) throw std::logic_error("Renderer::render before resize");
     const MethodDescriptor& method = *method_;
     ShadowMethod& impl = currentMethod();
@@ -151,7 +151,8 @@ void Renderer::render(const CameraView& camera) {
     timer_.end();
     // 2. Surfaces: the scene drawn once from the eye; every later step reads these targets.
     timer_.begin("surfaces");
-    const SurfacesPass::Outputs surfaces = surfacesPass_.execute({scene_, camera, light_});
+    const SurfacesPass::Outputs surfaces =
+        surfacesPass_.execute({scene_, camera, light_, previous});
     timer_.end();
     // 3. The shadow method: visibility per pixel (it times its own phases).
     const FrameInputs in{scene_,

@@ -85,7 +85,10 @@ class Renderer {
     /// Sets the output size in pixels (both > 0).
     void resize(int width, int height);
     /// Renders one frame into color()/visibility(); throws fl::gl::GlError on any GL error.
-    void render(const CameraView& camera);
+    /// `previous` is the camera of the frame before, for the motion target (motion()); the
+    /// one-argument form treats the frame as the first (no motion).
+    void render(const CameraView& camera, const CameraView& previous);
+    void render(const CameraView& camera) { render(camera, camera); }
     /// Draws the last frame to the default framebuffer (windows).
     void present(int framebufferWidth, int framebufferHeight);
 
@@ -94,6 +97,8 @@ class Renderer {
     /// R8 mask of the last frame: 1 where the visible surface faces the light (its visibility
     /// changes the image), 0 on back-facing surfaces and background.
     [[nodiscard]] const gl::Texture& receivers() const { return surfacesPass_.outputs().receivers; }
+    /// The last frame's motion target (SurfacesPass::Outputs::motion).
+    [[nodiscard]] const gl::Texture& motion() const { return surfacesPass_.outputs().motion; }
     /// Step 2's targets of the last frame.
     [[nodiscard]] SurfacesPass::Outputs surfaces() const { return surfacesPass_.outputs(); }
     /// The disk light the soft methods use.

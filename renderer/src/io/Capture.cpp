@@ -6,8 +6,13 @@
 namespace fl {
 
 FrameImages readFrame(const Renderer& renderer) {
+    FloatImage motion = readTexture(renderer.motion(), 4);
+    // The target holds GL window coordinates (y up from the bottom edge); the images here have
+    // row 0 at the top.
+    for (std::size_t i = 1; i < motion.data.size(); i += 4)
+        motion.data[i] = static_cast<float>(motion.height) - motion.data[i];
     return {readTexture(renderer.color(), 4), readTexture(renderer.visibility(), 1),
-            readTexture(renderer.receivers(), 1)};
+            readTexture(renderer.receivers(), 1), std::move(motion)};
 }
 
 ByteImage visibilityToGrey(const FloatImage& v) {

@@ -126,6 +126,87 @@ double addedFlicker(const FloatImage& methodPrevious, const FloatImage& method,
            meanAbsoluteChange(referencePrevious, reference, mask);
 }
 
+namespace {
+
+/// The bilinear footprint along one axis of a continuous pixel position p (texel centres at
+/// half-integers) in n texels: the lower texel and the upper one's weight; false outside.
+bool footprint(float p, int n, std::size_t& lower, float& weight) {
+    const float f = p - 0.5f;
+    if (!(f >= 0.0f && f <= static_cast<float>(n - 1))) return false;
+    lower = n > 1 ? std::min(static_cast<std::size_t>(f), static_cast<std::size_t>(n - 2)) : 0;
+    weight = n > 1 ? f - static_cast<float>(lower) : 0.0f;
+    return true;
+}
+
+} // namespace
+
+Reprojection::Reprojection(const FloatImage& motion, const FloatImage& previousDepth,
+                           const FloatImage& receivers, const FloatImage& previousReceivers)
+    : width_(motion.width), height_(motion.height) {
+    const auto fits = [&](const FloatImage& im, int channels) {
+        return im.width == width_ && im.height == height_ && im.channels == channels &&
+               im.data.size() == static_cast<std::size_t>(width_) *
+                                     static_cast<std::size_t>(height_) *
+                                     static_cast<std::size_t>(channels);
+    };
+    if (!fits(motion, 4) || !fits(previousDepth, 1) ||
+        (!receivers.data.empty() && !fits(receivers, 1)) ||
+        (!previousReceivers.data.empty() && !fits(previousReceivers, 1)))
+        throw std::invalid_argument("Reprojection: a 4-channel motion image and 1-channel depth "
+                                    "and receiver masks of one size needed");
+    const auto w = static_cast<std::size_t>(width_);
+    for (std::size_t i = 0; i < motion.data.size() / 4; ++i) {
+        if (!isReceiver(receivers, i)) continue;
+        const float* m = &motion.data[4 * i];
+        std::size_t x0 = 0, y0 = 0;
+        float ax = 0.0f, ay = 0.0f;
+        if (!footprint(m[0], width_, x0, ax) || !footprint(m[1], height_, y0, ay)) continue;
+        const std::size_t x1 = width_ > 1 ? x0 + 1 : x0, y1 = height_ > 1 ? y0 + 1 : y0;
+        Tap t{i,
+              {y0 * w + x0, y0 * w + x1, y1 * w + x0, y1 * w + x1},
+              {(1 - ax) * (1 - ay), ax * (1 - ay), (1 - ax) * ay, ax * ay}};
+        // Texels that weigh nothing (the point sits on a texel row or column) need not match.
+        bool seen = true;
+        for (int k = 0; k < 4; ++k) {
+            const std::size_t q = t.texel[k];
+            seen = seen && (t.weight[k] == 0.0f ||
+                            (isReceiver(previousReceivers, q) &&
+                             std::abs(previousDepth.data[q] - m[2]) <= 0.01f * m[2]));
+        }
+        if (seen) taps_.push_back(t);
+    }
+}
+
+double Reprojection::meanAbsoluteChange(const FloatImage& previous,
+                                        const FloatImage& current) const {
+    requireSameShape(previous, current, "Reprojection::meanAbsoluteChange");
+    if (current.width != width_ || current.height != height_ || current.channels != 1)
+        throw std::invalid_argument("Reprojection::meanAbsoluteChange: a 1-channel image of the "
+                                    "motion image's size");
+    double sum = 0.0;
+    for (const Tap& t : taps_) {
+        double before = 0.0;
+        for (int k = 0; k < 4; ++k)
+            before += static_cast<double>(t.weight[k]) * previous.data[t.texel[k]];
+        sum += std::abs(static_cast<double>(current.data[t.pixel]) - before);
+    }
+    return taps_.empty() ? 0.0 : sum / static_cast<double>(taps_.size());
+}
+
+FloatImage depthOf(const FloatImage& motion) {
+    if (motion.channels != 4) throw std::invalid_argument("depthOf: a 4-channel motion image");
+    FloatImage d{motion.width, motion.height, 1, std::vector<float>(motion.data.size() / 4)};
+    for (std::size_t i = 0; i < d.data.size(); ++i) d.data[i] = motion.data[4 * i + 3];
+    return d;
+}
+
+double addedSurfaceFlicker(const Reprojection& r, const FloatImage& methodPrevious,
+                           const FloatImage& method, const FloatImage& referencePrevious,
+                           const FloatImage& reference) {
+    return r.meanAbsoluteChange(methodPrevious, method) -
+           r.meanAbsoluteChange(referencePrevious, reference);
+}
+
 FloatImage bothReceivers(const FloatImage& a, const FloatImage& b) {
     if (a.data.empty()) return b;
     if (b.data.empty()) return a;

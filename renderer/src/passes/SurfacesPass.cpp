@@ -13,20 +13,22 @@ void SurfacesPass::resize(int width, int height) {
     plane_ = gl::Texture(GL_RGBA32F, width, height);
     baseColor_ = gl::Texture(GL_RGBA32F, width, height);
     receivers_ = gl::Texture(GL_R8, width, height);
+    motion_ = gl::Texture(GL_RGBA32F, width, height);
     depth_ = gl::Texture(GL_DEPTH_COMPONENT32F, width, height);
-    fbo_ = gl::Framebuffer::withTargets({&position_, &normal_, &plane_, &baseColor_, &receivers_},
-                                        &depth_, "surfaces pass");
+    fbo_ = gl::Framebuffer::withTargets(
+        {&position_, &normal_, &plane_, &baseColor_, &receivers_, &motion_}, &depth_,
+        "surfaces pass");
 }
 
 SurfacesPass::Outputs SurfacesPass::outputs() const {
-    return {position_,         normal_,           plane_, baseColor_, receivers_, depth_,
+    return {position_,         normal_,           plane_, baseColor_, receivers_, depth_, motion_,
             position_.width(), position_.height()};
 }
 
 SurfacesPass::Outputs SurfacesPass::execute(const Inputs& in) {
     const float none[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     const float far = 1.0f;
-    for (GLint i = 0; i < 5; ++i) glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, i, none);
+    for (GLint i = 0; i < 6; ++i) glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, i, none);
     glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &far);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glViewport(0, 0, position_.width(), position_.height());
@@ -35,6 +37,8 @@ SurfacesPass::Outputs SurfacesPass::execute(const Inputs& in) {
     glDepthMask(GL_TRUE);
     glDisable(GL_CULL_FACE); // glTF doubleSided and open meshes: both faces are visible
     program_.set("uViewProj", in.camera.proj * in.camera.view);
+    program_.set("uPreviousViewProj", in.previousCamera.proj * in.previousCamera.view);
+    program_.set("uViewport", glm::vec2(position_.width(), position_.height()));
     program_.set("uLightPosition", in.light.position);
     program_.set("uLightDirection", in.light.direction);
     program_.set("uLightDirectional", in.light.type == Light::Type::Directional ? 1 : 0);

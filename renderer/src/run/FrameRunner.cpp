@@ -109,9 +109,12 @@ void FrameRunner::run(const FramePlan& plan, std::vector<Lane>& lanes, const OnF
         const auto* path = std::get_if<CameraPath>(&plan.camera);
         const CameraView cam = path ? path->frame(i, plan.frames, scene.bounds, aspect)
                                     : std::get<CameraView>(plan.camera);
+        // The frame before's camera, for the motion target (flicker on the same surface point).
+        const CameraView previous =
+            path && i > 0 ? path->frame(i - 1, plan.frames, scene.bounds, aspect) : cam;
         for (std::size_t l = 0; l < lanes.size(); ++l) {
             Renderer& r = *lanes[l].renderer;
-            r.render(cam);
+            r.render(cam, previous);
             if (k < plan.first) continue;
             if (plan.readBack) {
                 images[l] = readFrame(r);

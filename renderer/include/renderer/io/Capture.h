@@ -20,6 +20,9 @@ struct FrameImages {
     FloatImage color;      // 4 channels
     FloatImage visibility; // 1 channel
     FloatImage receivers;  // 1 channel: 1 where a visible surface faces the light, else 0
+    /// 4 channels: each pixel's surface point in the previous frame, pixel x, y (row 0 at the
+    /// top, as here), depth there; and its depth now (SurfacesPass's motion target).
+    FloatImage motion;
 };
 FrameImages readFrame(const Renderer& renderer);
 

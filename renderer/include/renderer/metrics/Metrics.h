@@ -72,6 +72,48 @@ struct FrameMetrics {
                                   const FloatImage& referencePrevious, const FloatImage& reference,
                                   const FloatImage& receivers = {});
 
+/// Where each pixel's surface point lay in the previous frame, from the surfaces pass's motion
+/// target (SurfacesPass.h; read back with row 0 at the top: channels x, y = the point's pixel
+/// position in the previous frame, z = its depth (clip w) there, w = its depth in this frame).
+/// A pixel takes part when it is a receiver now and the point was seen then: its previous
+/// position lies inside the frame, and the four pixels around it were receivers whose depth
+/// matches the point's (within 1%; else it was hidden, or is newly uncovered).
+class Reprojection {
+  public:
+    /// `previousDepth` is the previous frame's depth (depthOf its motion image). Throws
+    /// std::invalid_argument for images of different sizes or a motion image without 4
+    /// channels.
+    Reprojection(const FloatImage& motion, const FloatImage& previousDepth,
+                 const FloatImage& receivers, const FloatImage& previousReceivers);
+    /// Mean |current(p) - previous(reproject(p))| over the pixels that take part (bilinear in
+    /// the previous image); 0 when none does.
+    [[nodiscard]] double meanAbsoluteChange(const FloatImage& previous,
+                                            const FloatImage& current) const;
+    /// How many pixels take part.
+    [[nodiscard]] std::size_t pixels() const { return taps_.size(); }
+
+  private:
+    struct Tap {
+        std::size_t pixel;
+        std::size_t texel[4];
+        float weight[4];
+    };
+    int width_ = 0, height_ = 0;
+    std::vector<Tap> taps_;
+};
+
+/// The motion image's w channel: each pixel's depth (clip w) in its own frame, what the next
+/// frame's Reprojection matches against.
+[[nodiscard]] FloatImage depthOf(const FloatImage& motion);
+
+/// Added flicker on the same surface point: the method's mean |V_t(p) - V_t-1(reproject(p))|
+/// minus the reference's, over the pixels `r` pairs. Camera motion alone moves a still shadow
+/// across the screen, not across the surface, so it adds nothing here.
+[[nodiscard]] double addedSurfaceFlicker(const Reprojection& r, const FloatImage& methodPrevious,
+                                         const FloatImage& method,
+                                         const FloatImage& referencePrevious,
+                                         const FloatImage& reference);
+
 /// Whether pixel i counts under a receiver mask (> 0.5; an empty mask counts every pixel).
 [[nodiscard]] inline bool isReceiver(const FloatImage& receivers, std::size_t i) {
     return receivers.data.empty() || receivers.data[i] > 0.5f;

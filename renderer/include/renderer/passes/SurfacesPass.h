@@ -28,6 +28,9 @@ class SurfacesPass {
         const GpuScene& scene;
         const CameraView& camera;
         const Light& light; // for the receiver mask (the surface faces the light)
+        /// The camera of the frame before (the same camera for a first frame): the motion
+        /// target says where each pixel's surface point lay in it.
+        const CameraView& previousCamera;
     };
     /// The visible surface of each pixel; background keeps the clear values noted.
     struct Outputs {
@@ -37,6 +40,10 @@ class SurfacesPass {
         const gl::Texture& baseColor; // RGBA32F: material base colour with its texture
         const gl::Texture& receivers; // R8: 1 where the surface faces the light (N.L > 0)
         const gl::Texture& depth;     // DEPTH32F: window depth (1 background)
+        /// RGBA32F: xy = the surface point's pixel position in the previous frame (GL window
+        /// coordinates), z = its depth (clip w) there, w = its depth (clip w) in this frame; what
+        /// flicker on the same surface point needs (Metrics.h, Reprojection).
+        const gl::Texture& motion;
         int width, height;
     };
     /// Draws the scene once from the camera into the targets.
@@ -46,7 +53,7 @@ class SurfacesPass {
 
   private:
     gl::Program program_;
-    gl::Texture position_, normal_, plane_, baseColor_, receivers_, depth_;
+    gl::Texture position_, normal_, plane_, baseColor_, receivers_, motion_, depth_;
     gl::Framebuffer fbo_;
 };
 
