@@ -14,6 +14,7 @@
 #include <array>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <set>
 
 namespace fl::test {
@@ -291,6 +292,14 @@ TEST(GltfDracoBadInput, InvalidDracoBufferViewIsRejected) {
     DracoGltf d = dracoGltf(gridMesh(9));
     dracoExt(d.gltf)["bufferView"] = 7;
     expectRejected(d.gltf, "draco_view.gltf", {kDracoExt, "bufferView 7 does not exist"});
+}
+
+TEST(GltfDracoBadInput, NonFinitePositionIsRejectedAsInAnyMesh) {
+    GridMesh grid = gridMesh(9);
+    grid.positions[40].z = std::numeric_limits<float>::infinity();
+    const DracoGltf d = dracoGltf(grid, /*positionBits=*/0); // unquantised: inf survives
+    expectRejected(d.gltf, "draco_inf_position.gltf",
+                   {"accessors[0]", "attributes.POSITION: vertex", "is not finite"});
 }
 
 TEST(GltfDracoBadInput, StripModeIsRejected) {

@@ -133,7 +133,8 @@ DracoGltf dracoGltf(const GridMesh& mesh, int positionBits, int normalBits, int 
     const std::unique_ptr<draco::Mesh> source = builder.Finalize();
     if (!source) throw std::runtime_error("draco: building the mesh failed");
     draco::Encoder encoder;
-    encoder.SetAttributeQuantization(draco::GeometryAttribute::POSITION, positionBits);
+    if (positionBits > 0) // else positions are stored as they are (lossless)
+        encoder.SetAttributeQuantization(draco::GeometryAttribute::POSITION, positionBits);
     encoder.SetAttributeQuantization(draco::GeometryAttribute::NORMAL, normalBits);
     encoder.SetAttributeQuantization(draco::GeometryAttribute::TEX_COORD, texcoordBits);
     draco::EncoderBuffer encoded;
@@ -152,7 +153,9 @@ DracoGltf dracoGltf(const GridMesh& mesh, int positionBits, int normalBits, int 
     if (!decoded.ok()) throw std::runtime_error("draco: " + decoded.status().error_msg_string());
     d.points = decoded.value()->num_points();
     d.faces = decoded.value()->num_faces();
-    d.positionStep = range(mesh.positions) / static_cast<float>((1 << positionBits) - 1);
+    d.positionStep = positionBits > 0
+                         ? range(mesh.positions) / static_cast<float>((1 << positionBits) - 1)
+                         : 0.0f;
     d.normalStep = 2.0f / static_cast<float>((1 << normalBits) - 1);
     d.texcoordStep = range(mesh.texcoords) / static_cast<float>((1 << texcoordBits) - 1);
 

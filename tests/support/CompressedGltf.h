@@ -32,7 +32,8 @@ struct DracoGltf {
     float positionStep = 0, normalStep = 0, texcoordStep = 0; // quantisation steps
 };
 
-/// Encodes `mesh` with draco::Encoder at the given quantisation bits. Its accessors have no
+/// Encodes `mesh` with draco::Encoder at the given quantisation bits (positionBits 0: positions
+/// unquantised, as they are). Its accessors have no
 /// bufferView (no uncompressed fallback); indices are UNSIGNED_SHORT or, past 65536 points,
 /// UNSIGNED_INT. Throws std::runtime_error when Draco fails.
 DracoGltf dracoGltf(const GridMesh& mesh, int positionBits = 14, int normalBits = 10,
