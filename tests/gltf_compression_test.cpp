@@ -151,7 +151,17 @@ TEST(GltfMeshoptBadInput, UncompressedViewReadingTheFallbackBufferIsRejected) {
     Gltf g = meshoptGltf(gridMesh(9)).compressed;
     g.doc["bufferViews"][1].erase("extensions");
     expectRejected(g, "meshopt_fallback_read.gltf",
-                   {"bufferViews[1]", "fallback buffer without data"});
+                   {"bufferViews[1]", "fallback buffer, but is not compressed itself"});
+}
+
+TEST(GltfMeshoptFallback, FallbackBufferFileIsNeverRead) {
+    // Only compressed views use a fallback buffer, so its file need not be there.
+    MeshoptGltf files = meshoptGltf(gridMesh(9));
+    files.compressed.extraBuffers[0]["uri"] = "fallback_not_shipped.bin";
+    const Loaded compressed = load(files.compressed.write("meshopt_fallback_uri.gltf"));
+    const Loaded plain = load(files.plain.write("meshopt_fallback_uri_plain.gltf"));
+    EXPECT_EQ(onlyMesh(compressed).positions, onlyMesh(plain).positions);
+    EXPECT_EQ(onlyMesh(compressed).indices, onlyMesh(plain).indices);
 }
 
 // --- KHR_draco_mesh_compression ------------------------------------------------------------

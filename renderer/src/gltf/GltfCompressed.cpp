@@ -32,7 +32,8 @@ json* member(json& object, std::string_view key) {
     return it != object.end() && it->is_object() ? &*it : nullptr;
 }
 
-/// Gives meshopt fallback buffers without uri a one-byte data URI (see GltfCompressed.h).
+/// Gives meshopt fallback buffers a one-byte data URI in place of their data, if any (see
+/// GltfCompressed.h).
 bool placeholderFallbackBuffers(json& doc) {
     bool changed = false;
     const auto buffers = doc.find("buffers");
@@ -40,7 +41,7 @@ bool placeholderFallbackBuffers(json& doc) {
     for (json& buffer : *buffers) {
         json* ext = member(buffer, "extensions");
         json* meshopt = ext ? member(*ext, kMeshopt) : nullptr;
-        if (!meshopt || buffer.contains("uri")) continue;
+        if (!meshopt) continue;
         const auto fallback = meshopt->find("fallback");
         if (fallback == meshopt->end() || *fallback != true) continue;
         buffer["uri"] = kFallbackPlaceholderUri;

@@ -21,7 +21,7 @@
 
 namespace fl::gltf {
 
-/// The data URI prepareCompressedJson gives a meshopt fallback buffer that has none.
+/// The data URI prepareCompressedJson gives every meshopt fallback buffer.
 inline constexpr std::string_view kFallbackPlaceholderUri =
     "data:application/octet-stream;base64,AA==";
 
@@ -29,10 +29,11 @@ inline constexpr std::string_view kFallbackPlaceholderUri =
 /// that tinygltf 2.7 parses it, and for a .glb rebuilds the container around the new JSON chunk;
 /// `bytes` keeps `padding` zero bytes past `size`. Leaves everything as it is (and returns false)
 /// when nothing needs rewriting or the JSON does not parse (tinygltf then reports the problem):
-/// - a meshopt fallback buffer (extensions.EXT_meshopt_compression.fallback) without uri: it
-///   has no data by design, but tinygltf fails a .gltf buffer without uri, and hands a .glb's
-///   such buffer the BIN chunk. It gets a one-byte placeholder; only compressed bufferViews may
-///   read it (checked when decoding).
+/// - a meshopt fallback buffer (extensions.EXT_meshopt_compression.fallback): only compressed
+///   bufferViews may use it (spec), so its data, if any, is never read. It usually has no uri,
+///   which tinygltf fails in a .gltf and hands the BIN chunk in a .glb; when it has one, its file
+///   need not be there. It gets a one-byte data URI placeholder (decodeMeshoptView rejects an
+///   uncompressed bufferView over it).
 /// - a Draco primitive's indices accessor without bufferView, which tinygltf refuses. It points
 ///   at the Draco bufferView until decodeDraco gives it the decoded faces.
 bool prepareCompressedJson(std::vector<unsigned char>& bytes, std::size_t& size,
@@ -51,7 +52,7 @@ void decodeCompressed(const Context& ctx, tinygltf::Model& model,
 bool isMeshoptFallback(const tinygltf::Buffer& buffer);
 
 /// Decodes bufferViews[view] if it has EXT_meshopt_compression, and makes it read the decoded
-/// bytes (a new buffer); fails when an uncompressed view reads a fallback buffer.
+/// bytes (a new buffer); fails when an uncompressed view uses a fallback buffer.
 void decodeMeshoptView(const Context& ctx, tinygltf::Model& model, int view);
 
 // --- GltfDraco.cpp -------------------------------------------------------------------------

@@ -95,15 +95,13 @@ void decodeMeshoptView(const Context& ctx, tinygltf::Model& model, int index) {
     tinygltf::BufferView& view = model.bufferViews[static_cast<std::size_t>(index)];
     const auto it = view.extensions.find(kName);
     if (it == view.extensions.end()) {
-        // A fallback buffer that came without data (prepareCompressedJson gave it the
-        // placeholder) must not be read by an uncompressed view: it would read the placeholder.
-        if (Context::inRange(model.buffers, view.buffer)) {
-            const tinygltf::Buffer& buffer = model.buffers[static_cast<std::size_t>(view.buffer)];
-            if (isMeshoptFallback(buffer) && buffer.uri == kFallbackPlaceholderUri)
-                ctx.fail(element, cat("reads buffers[", view.buffer,
-                                      "], an EXT_meshopt_compression fallback buffer without "
-                                      "data, but is not compressed itself"));
-        }
+        // Only compressed views may use a fallback buffer (spec), whose data is never loaded
+        // (prepareCompressedJson replaced it with a placeholder).
+        if (Context::inRange(model.buffers, view.buffer) &&
+            isMeshoptFallback(model.buffers[static_cast<std::size_t>(view.buffer)]))
+            ctx.fail(element, cat("uses buffers[", view.buffer,
+                                  "], an EXT_meshopt_compression fallback buffer, but is not "
+                                  "compressed itself"));
         return;
     }
     const std::string extElement = element + ".extensions.EXT_meshopt_compression";
