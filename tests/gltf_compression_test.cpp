@@ -42,7 +42,7 @@ std::multiset<std::array<std::uint32_t, 3>> triangles(const std::vector<std::uin
     return out;
 }
 
-class MeshoptContainers : public ::testing::TestWithParam<Container> {};
+class GltfMeshoptContainers : public ::testing::TestWithParam<Container> {};
 
 std::string suffix(Container c) {
     return c == Container::Glb ? ".glb" : c == Container::BinFile ? "_bin.gltf" : ".gltf";
@@ -51,7 +51,7 @@ std::string suffix(Container c) {
 // The fallback buffer has no uri (tinygltf 2.7 refuses that in a .gltf, and hands it a .glb's
 // BIN chunk): the loader must still read the compressed views, and give exactly the mesh of the
 // decoded bytes stored uncompressed.
-TEST_P(MeshoptContainers, LoadsAsTheDecodedBytesStoredPlainly) {
+TEST_P(GltfMeshoptContainers, LoadsAsTheDecodedBytesStoredPlainly) {
     for (const bool sequence : {false, true}) {
         const MeshoptGltf files = meshoptGltf(gridMesh(9), sequence);
         const std::string name = std::string(sequence ? "meshopt_indices" : "meshopt_triangles");
@@ -70,7 +70,7 @@ TEST_P(MeshoptContainers, LoadsAsTheDecodedBytesStoredPlainly) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Containers, MeshoptContainers,
+INSTANTIATE_TEST_SUITE_P(Containers, GltfMeshoptContainers,
                          ::testing::Values(Container::DataUri, Container::BinFile, Container::Glb));
 
 json& meshoptExt(Gltf& g, int view) {
@@ -166,7 +166,7 @@ TEST(GltfMeshoptFallback, FallbackBufferFileIsNeverRead) {
 
 // --- KHR_draco_mesh_compression ------------------------------------------------------------
 
-class DracoContainers : public ::testing::TestWithParam<Container> {};
+class GltfDracoContainers : public ::testing::TestWithParam<Container> {};
 
 /// For each vertex of `got`, the vertex of `want` nearest by position; fails past `tolerance`.
 std::vector<std::uint32_t> nearestVertices(const Mesh& got, const Mesh& want, float tolerance) {
@@ -189,7 +189,7 @@ std::vector<std::uint32_t> nearestVertices(const Mesh& got, const Mesh& want, fl
 // Draco reorders the points, so the decoded mesh is matched to the original vertex by vertex
 // (the grid's spacing is far above the quantisation step) and then compared triangle by
 // triangle: every attribute within its quantisation step, the same triangles, same winding.
-TEST_P(DracoContainers, LoadsAsTheUncompressedMeshWithinTheQuantisationStep) {
+TEST_P(GltfDracoContainers, LoadsAsTheUncompressedMeshWithinTheQuantisationStep) {
     const GridMesh grid = gridMesh(9);
     const DracoGltf draco = dracoGltf(grid);
     const std::string name = "draco" + suffix(GetParam());
@@ -213,7 +213,7 @@ TEST_P(DracoContainers, LoadsAsTheUncompressedMeshWithinTheQuantisationStep) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Containers, DracoContainers,
+INSTANTIATE_TEST_SUITE_P(Containers, GltfDracoContainers,
                          ::testing::Values(Container::DataUri, Container::Glb));
 
 constexpr const char* kDracoExt = "meshes[0].primitives[0].extensions.KHR_draco_mesh_compression";
