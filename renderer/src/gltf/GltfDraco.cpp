@@ -234,6 +234,12 @@ void decodeDraco(const Context& ctx, tinygltf::Model& model, std::size_t meshInd
         ctx.fail(d.extElement, cat("Draco data in bufferViews[", d.bufferView,
                                    "] does not decode (", result.status().error_msg_string(), ")"));
     const std::unique_ptr<draco::Mesh> mesh = std::move(result).value();
+    // The accessor limit, as for uncompressed data (the counts must match the accessors').
+    if (mesh->num_points() > kMaxAccessorCount ||
+        3 * std::size_t{mesh->num_faces()} > kMaxAccessorCount)
+        ctx.fail(d.extElement, cat("the Draco data decodes ", mesh->num_points(), " points and ",
+                                   mesh->num_faces(), " triangles (absurd size; limit ",
+                                   kMaxAccessorCount, " vertices or indices)"));
 
     // Decoding appends buffers and bufferViews and edits accessors: `prim` and `ext` stay valid.
     const tinygltf::Value& attributes = ext.Get("attributes");
