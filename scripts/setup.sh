@@ -5,7 +5,8 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config git
-  libglfw3-dev libglm-dev libtinygltf-dev libopenexr-dev nlohmann-json3-dev libstb-dev
+  libglfw3-dev libglm-dev libtinygltf-dev libdraco-dev libmeshoptimizer-dev libopenexr-dev
+  nlohmann-json3-dev libstb-dev
   libepoxy-dev libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
   libgtest-dev libbenchmark-dev libcli11-dev libembree-dev clang libclang-rt-14-dev
   xvfb xauth assimp-testmodels chromium

@@ -301,13 +301,15 @@ TEST(GltfLoaderValidation, InvalidPrimitiveMode) {
     expectRejected(g, "bad_mode.gltf", {"meshes[0].primitives[0]", "invalid mode 9"});
 }
 
-TEST(GltfLoaderValidation, DracoWithoutFallback) {
+TEST(GltfLoaderValidation, DracoExtensionOverDataThatIsNotDraco) {
+    // Draco is decoded (gltf_compression_test.cpp); here its bufferView holds the positions.
     Gltf g = triangle();
     g.accessorAt(0).erase("bufferView");
     g.prim()["extensions"] = {
         {"KHR_draco_mesh_compression", {{"bufferView", 0}, {"attributes", {{"POSITION", 0}}}}}};
-    expectRejected(g, "draco_no_fallback.gltf",
-                   {"meshes[0].primitives[0]", "KHR_draco_mesh_compression"});
+    expectRejected(g, "draco_not_draco.gltf",
+                   {"meshes[0].primitives[0].extensions.KHR_draco_mesh_compression",
+                    "bufferViews[0] is not a Draco triangle mesh"});
 }
 
 } // namespace

@@ -22,12 +22,17 @@ std::string base64(const std::vector<std::uint8_t>& in) {
     return out;
 }
 
-int Gltf::view(const void* data, std::size_t size, int stride) {
+std::size_t Gltf::append(const void* data, std::size_t size) {
     while (bin.size() % 4 != 0) bin.push_back(0);
-    json v = {{"buffer", 0}, {"byteOffset", bin.size()}, {"byteLength", size}};
-    if (stride != 0) v["byteStride"] = stride;
+    const std::size_t offset = bin.size();
     const auto* p = static_cast<const std::uint8_t*>(data);
     bin.insert(bin.end(), p, p + size);
+    return offset;
+}
+
+int Gltf::view(const void* data, std::size_t size, int stride) {
+    json v = {{"buffer", 0}, {"byteOffset", append(data, size)}, {"byteLength", size}};
+    if (stride != 0) v["byteStride"] = stride;
     return push("bufferViews", v);
 }
 
@@ -49,6 +54,7 @@ fs::path Gltf::write(const std::string& name, Container container) const {
             buffer["uri"] = binPath.filename().string();
         }
         d["buffers"] = json::array({buffer});
+        for (const json& extra : extraBuffers) d["buffers"].push_back(extra);
     }
     std::string text = d.dump();
     if (container != Container::Glb) {

@@ -27,7 +27,11 @@ enum class Container { DataUri, BinFile, Glb };
 struct Gltf {
     json doc = {{"asset", {{"version", "2.0"}}}};
     std::vector<std::uint8_t> bin;
+    /// Buffers written after the one holding `bin` (indices 1, 2, ...), e.g. a meshopt fallback.
+    std::vector<json> extraBuffers;
 
+    /// Appends bytes to `bin` at the next 4-byte boundary; returns their offset.
+    std::size_t append(const void* data, std::size_t size);
     /// Appends bytes (4-byte aligned) and a bufferView over them.
     int view(const void* data, std::size_t size, int stride = 0);
     template <class T>

@@ -17,11 +17,15 @@
 // - Sparse accessors are supported. Missing normals become flat normals, as the spec requires.
 // - KHR_mesh_quantization: integer positions, normals and texture coordinates in the forms the
 //   extension lists (GltfAccessors.cpp), read as they are; the nodes' transforms scale them.
+// - KHR_draco_mesh_compression and EXT_meshopt_compression: decoded (libdraco, libmeshoptimizer)
+//   into ordinary buffers before the meshes are converted, so decoded data gets every check
+//   above; corrupt or inconsistent compressed data is rejected (GltfCompressed.h).
 // - The base colour texture's coordinate set (texCoord) and KHR_texture_transform are applied
 //   to the mesh's texture coordinates at load (GltfMeshes.cpp).
 
 #include <renderer/gltf/GltfLoader.h>
 
+#include "GltfCompressed.h"
 #include "GltfInternal.h"
 
 #include <base/InputFile.h>
@@ -72,10 +76,11 @@ constexpr std::size_t kPadding = 16;
 // would only serve to overflow the stack.
 constexpr int kMaxJsonDepth = 128;
 
-// Required extensions we implement. Everything else changes the meaning of the file (Draco,
-// quantization, texture transforms, other material models), so a file requiring it is refused.
-constexpr std::array<std::string_view, 3> kSupportedRequired = {
-    "KHR_lights_punctual", "KHR_mesh_quantization", "KHR_texture_transform"};
+// Required extensions we implement. Everything else changes the meaning of the file (other
+// compressions, other material models), so a file requiring it is refused.
+constexpr std::array<std::string_view, 5> kSupportedRequired = {
+    "EXT_meshopt_compression", "KHR_draco_mesh_compression", "KHR_lights_punctual",
+    "KHR_mesh_quantization", "KHR_texture_transform"};
 
 std::string lowercase(std::string s) {
     std::transform(s.begin(), s.end(), s.begin(),
@@ -204,7 +209,7 @@ std::optional<std::string> unsupportedRequired(const std::vector<unsigned char>&
 tinygltf::Model parse(const std::filesystem::path& file, const std::string& name,
                       const LoadOptions& options) {
     std::size_t size = 0;
-    const std::vector<unsigned char> bytes = readFile(file, name, size);
+    std::vector<unsigned char> bytes = readFile(file, name, size);
     tinygltf::TinyGLTF parser;
     parser.SetImageLoader(&gltf::keepEncodedImage, nullptr);
     parser.SetFsCallbacks(
@@ -217,6 +222,7 @@ tinygltf::Model parse(const std::filesystem::path& file, const std::string& name
     const auto [jsonBegin, jsonEnd] = jsonRange(bytes, size, binary);
     if (jsonDepth(bytes, jsonBegin, jsonEnd) > kMaxJsonDepth)
         throw SceneError(cat(name, ": JSON nested deeper than ", kMaxJsonDepth, " levels"));
+    gltf::prepareCompressedJson(bytes, size, {jsonBegin, jsonEnd}, binary, kPadding);
     const auto length = static_cast<unsigned int>(size);
     const bool ok =
         binary ? parser.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), length, baseDir)
@@ -283,11 +289,13 @@ bool inWorld(const geom::Aabb& box) {
     return gltf::inWorld(box.min) && gltf::inWorld(box.max);
 }
 
-Scene convert(const gltf::Context& ctx, const std::filesystem::path& file) {
+/// `model` is the one `ctx` reads: decoding compressed meshes adds buffers to it.
+Scene convert(const gltf::Context& ctx, tinygltf::Model& model, const std::filesystem::path& file) {
     checkRequiredExtensions(ctx);
     Scene scene;
     scene.source = file.string();
     const std::vector<gltf::PlacedNode> placed = gltf::placeSceneNodes(ctx);
+    gltf::decodeCompressed(ctx, model, placed);
     placeInstances(ctx, placed, scene);
     if (scene.instances.empty()) ctx.fail("scene", "no triangle primitives");
     scene.computeBounds();
@@ -310,9 +318,9 @@ Scene loadGltf(const std::filesystem::path& file, const LoadOptions& options) {
     const std::string name =
         file.has_filename() ? file.filename().string() : file.string(); // names every message
     try {
-        const tinygltf::Model model = parse(file, name, options);
+        tinygltf::Model model = parse(file, name, options);
         const gltf::Context ctx(name, file.parent_path(), model, options);
-        return convert(ctx, file);
+        return convert(ctx, model, file);
     } catch (const SceneError&) {
         throw;
     } catch (const std::bad_alloc&) {

@@ -269,17 +269,6 @@ void attachColors(const Context& ctx, const Primitive& prim, Mesh& mesh) {
                  cat(repaired, " COLOR_0 value(s) outside [0, 1] or not finite repaired"));
 }
 
-/// Draco-compressed primitives are readable only through their optional uncompressed fallback;
-/// without it the accessors have no data and would silently read as zeros.
-void checkDracoFallback(const Context& ctx, const Primitive& prim, int positionAccessor) {
-    if (prim.gltf.extensions.count("KHR_draco_mesh_compression") == 0) return;
-    const auto& acc = ctx.lookup(ctx.model().accessors, positionAccessor, prim.usage("POSITION"),
-                                 "accessor", "accessors");
-    if (acc.bufferView < 0 && !acc.sparse.isSparse)
-        ctx.fail(prim.element, "KHR_draco_mesh_compression without uncompressed fallback data "
-                               "is not supported");
-}
-
 /// The fl::Mesh of one triangle primitive, or nullopt (with a warning) when it has nothing to
 /// draw.
 std::optional<Mesh> convertPrimitive(const Context& ctx, const Primitive& prim) {
@@ -296,7 +285,6 @@ std::optional<Mesh> convertPrimitive(const Context& ctx, const Primitive& prim) 
         ctx.warn(prim.element, "no POSITION attribute; primitive skipped");
         return std::nullopt;
     }
-    checkDracoFallback(ctx, prim, positionAccessor);
 
     Mesh mesh;
     if (prim.gltf.material != -1)
