@@ -5,6 +5,7 @@
 #include <geometry/Aabb.h>
 
 #include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
 
 #include <cstdint>
 #include <optional>
@@ -48,15 +49,72 @@ struct Mesh {
     std::vector<glm::vec4> colors;      // COLOR_0, linear RGBA: empty (white) or same size
     std::vector<std::uint32_t> indices; // 3 per triangle, every index < positions.size()
     int material = -1;                  // index into Scene::materials, -1 = default material
+    /// Skinning (JOINTS_0 / WEIGHTS_0): empty, or one per vertex each; a vertex's joints index
+    /// its instance's Skin::joints and its weights sum to 1.
+    std::vector<glm::uvec4> joints;
+    std::vector<glm::vec4> weights;
+    /// Morph targets: each one's POSITION and NORMAL deltas (each empty or one per vertex), and
+    /// the mesh's default weights (one per target).
+    struct MorphTarget {
+        std::vector<glm::vec3> positions;
+        std::vector<glm::vec3> normals;
+    };
+    std::vector<MorphTarget> targets;
+    std::vector<float> morphWeights;
     [[nodiscard]] std::size_t triangleCount() const { return indices.size() / 3; }
+};
+
+/// A node of the file's hierarchy (Scene::nodes[i] is the file's nodes[i]), kept for animation:
+/// its rest transform and its parent. Local transform = matrix if set, else T * R * S; an
+/// animation channel drives T, R or S (the loader turns a targeted matrix node into TRS).
+struct Node {
+    std::string name;
+    int parent = -1; // index into Scene::nodes, -1 for a root
+    glm::vec3 translation{0.0f};
+    glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};
+    glm::vec3 scale{1.0f};
+    std::optional<glm::mat4> matrix; // the file's matrix (never animated)
+    std::vector<float> weights;      // the node's morph weights (empty: its mesh's defaults)
+};
+
+/// A glTF skin: the joints (nodes) a skinned mesh follows and their inverse bind matrices.
+struct Skin {
+    std::string name;
+    std::vector<int> joints;            // indices into Scene::nodes
+    std::vector<glm::mat4> inverseBind; // one per joint (identity where the file has none)
+};
+
+/// A glTF animation: samplers (key times and values) driving channels (a node's property).
+struct Animation {
+    enum class Interpolation { Linear, Step, CubicSpline };
+    enum class Path { Translation, Rotation, Scale, Weights };
+    struct Sampler {
+        Interpolation interpolation = Interpolation::Linear;
+        std::vector<float> times;  // seconds, increasing
+        std::vector<float> values; // per key `width` values (CUBICSPLINE: in-tangent, value,
+                                   // out-tangent, each `width`)
+        int width = 0;             // 3 (T, S), 4 (R, xyzw), or the node's morph target count
+    };
+    struct Channel {
+        int node = -1; // index into Scene::nodes
+        Path path = Path::Translation;
+        int sampler = 0; // index into samplers
+    };
+    std::string name;
+    std::vector<Sampler> samplers;
+    std::vector<Channel> channels;
+    float duration = 0.0f; // the last key time over every sampler
 };
 
 /// A mesh placed in the world by a node's accumulated transform.
 struct Instance {
     int mesh = 0;               // index into Scene::meshes
-    glm::mat4 world{1.0f};      // model -> world
+    glm::mat4 world{1.0f};      // model -> world at rest (no animation applied)
     std::uint32_t objectId = 0; // one id per glTF node (JFA-E's object-ID restriction uses it)
     std::string nodeName;
+    int node = -1; // index into Scene::nodes (-1: not animated, `world` always)
+    int skin = -1; // index into Scene::skins (-1: not skinned; skinned: the joints place it,
+                   // neither `world` nor its node applies, glTF 3.7.3.3)
 };
 
 /// A perspective camera: world->view transform and projection parameters.
@@ -90,7 +148,11 @@ struct Scene {
     std::vector<Image> images;
     std::vector<Camera> cameras; // with their node transforms applied (view = inverse(node world))
     std::optional<Light> light;  // absent: the renderer places a default light
-    geom::Aabb bounds;           // world-space bounds of all instances
+    std::vector<Node> nodes;     // the file's nodes when it has skins, morph targets or
+                                 // animations; empty otherwise
+    std::vector<Skin> skins;
+    std::vector<Animation> animations;
+    geom::Aabb bounds; // world-space bounds of all instances
 
     /// Total triangles over all instances.
     [[nodiscard]] std::size_t triangleCount() const;
