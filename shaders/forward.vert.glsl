@@ -1,16 +1,16 @@
 #version 450 core
-// World-space position, normal, texture coordinate and vertex colour for the eye's passes.
+// World-space position, normal, texture coordinate and vertex colour for the eye's passes, posed
+// (pose.glsl), and where the point was in the previous frame (the surfaces pass's motion target).
+#include "pose.glsl"
+
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
 layout(location = 2) in vec2 aTexcoord;
 layout(location = 3) in vec4 aColor; // COLOR_0 (white where the mesh has none)
 
 uniform mat4 uViewProj;
-uniform mat4 uModel;
-uniform mat3 uNormalMatrix;
-// The previous frame's camera (the surfaces pass's motion target). The scene is static, so the
-// point's previous world position is its current one.
-uniform mat4 uPreviousViewProj;
+uniform mat3 uNormalMatrix;     // the instance's (unskinned); skinned normals use the blend
+uniform mat4 uPreviousViewProj; // the previous frame's camera
 
 out vec3 vWorld;
 out vec3 vNormal;
@@ -19,11 +19,14 @@ out vec4 vColor;
 out vec4 vPreviousClip;
 
 void main() {
-    vec4 world = uModel * vec4(aPosition, 1.0);
+    vec4 world = poseWorld(aPosition, false);
     vWorld = world.xyz;
-    vNormal = uNormalMatrix * aNormal;
+    vec3 normal = morphed(aNormal, 1, false);
+    // Skinned: the blend's upper 3x3 (exact for rigid joints, the usual case; glTF does not
+    // require more).
+    vNormal = uJointBase < 0 ? uNormalMatrix * normal : mat3(poseModel(false)) * normal;
     vTexcoord = aTexcoord;
     vColor = aColor;
-    vPreviousClip = uPreviousViewProj * world;
+    vPreviousClip = uPreviousViewProj * poseWorld(aPosition, true);
     gl_Position = uViewProj * world;
 }

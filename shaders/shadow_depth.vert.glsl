@@ -4,14 +4,16 @@
 // post-perspective depth, interpolated as clip z and w (both linear in the vertex, so
 // perspective-correct interpolation in the warped space gives them exactly). The world position
 // is passed on for the receiver-position target that JFA-L floods over, and the texture
-// coordinate and vertex alpha for the alpha cut-out (alpha_coverage.glsl).
+// coordinate and vertex alpha for the alpha cut-out (alpha_coverage.glsl). Vertices are posed as
+// in the eye's passes (pose.glsl).
+#include "pose.glsl"
+
 layout(location = 0) in vec3 aPosition;
 layout(location = 2) in vec2 aTexcoord;
 layout(location = 3) in vec4 aColor;
 
 uniform mat4 uLightViewProj;
 uniform mat4 uShadowWarp;
-uniform mat4 uModel;
 
 out vec2 vLightZW;
 out vec3 vWorld;
@@ -19,7 +21,7 @@ out vec2 vTexcoord;
 out float vAlpha;
 
 void main() {
-    vec4 world = uModel * vec4(aPosition, 1.0);
+    vec4 world = poseWorld(aPosition, false);
     vWorld = world.xyz;
     vTexcoord = aTexcoord;
     vAlpha = aColor.a;

@@ -70,6 +70,13 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool sceneAsOption) {
         ->delimiter(',')
         ->expected(3);
     cmd.add_option("--fov", o.fov, "Vertical field of view, degrees")->check(number(1.0, 170.0));
+    cmd.add_option("--time", o.time,
+                   "Seconds into the scene's animations (glTF animations, skins, morph targets)")
+        ->check(number(0.0, kMaxAnimationTime))
+        ->capture_default_str();
+    cmd.add_option("--animation", o.animation,
+                   "Which animations play: all, none, or one by name or index")
+        ->capture_default_str();
     cmd.add_option("--ground", o.ground,
                    "A ground plane to receive the shadow: auto (added when the scene has no "
                    "surface under it, as a single model has not), on, off")
@@ -255,6 +262,18 @@ void checkMethodOptions(const RenderSettings& s, int width, int height) {
     } catch (const std::invalid_argument& e) {
         throw InputError(e.what());
     }
+}
+
+void applyAnimation(Renderer& renderer, const Scene& scene, const SceneOptions& o) {
+    std::vector<int> chosen;
+    try { // checked for every scene: a name the scene does not have is a usage error
+        chosen = chooseAnimations(scene, o.animation);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
+    }
+    if (!isAnimated(scene)) return;
+    renderer.setAnimations(std::move(chosen));
+    renderer.setTime(o.time);
 }
 
 RenderSettings makeRenderSettings(const SceneOptions& o) {

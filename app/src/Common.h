@@ -53,6 +53,8 @@ struct SceneOptions {
     std::optional<float> fov;                   // degrees
     std::string ground = "auto";                // auto | on | off (renderer/scene/Ground.h)
     std::vector<float> lightDir, lightPosition; // x,y,z: the light placed by hand
+    double time = 0.0;                          // --time: seconds into the animations
+    std::string animation = "all";              // --animation: all | none | NAME | INDEX
 };
 
 /// Registers the scene/shadow/camera options on a subcommand.
@@ -96,6 +98,9 @@ gl::ShaderLibrary makeShaderLibrary(const SceneOptions& o);
 /// The render settings the options ask for; throws UsageError for a method option the chosen
 /// method does not take (with o.strictMethodOptions).
 RenderSettings makeRenderSettings(const SceneOptions& o);
+/// Plays --animation at --time on `renderer` (of `scene`); throws UsageError naming the scene's
+/// animations for an --animation it does not have.
+void applyAnimation(Renderer& renderer, const Scene& scene, const SceneOptions& o);
 /// Checks the method's options for a width x height frame before rendering (e.g. JFA passes that
 /// the map or the frame cannot use); throws InputError naming the option and the valid range.
 void checkMethodOptions(const RenderSettings& s, int width, int height);

@@ -61,6 +61,7 @@ ProviderResult renderWith(const gl::ShaderLibrary& shaders, const Scene& scene,
         };
     }
     Renderer renderer(shaders, scene, settings);
+    applyAnimation(renderer, scene, request.scene);
     renderer.resize(width, height);
     renderer.render(camera);
     std::cout << "shadow map " << providerName(settings.shadow.provider) << " "

@@ -12,6 +12,7 @@
 #include <GLFW/glfw3.h>
 
 #include <iostream>
+#include <utility>
 
 namespace fl::app {
 
@@ -55,6 +56,8 @@ Viewer::Viewer(const ViewerOptions& options) : options_(options), showHud_(optio
               << "press H in the window for the key bindings\n";
     shaders_ = makeShaderLibrary(options_.scene);
     renderer_ = std::make_unique<Renderer>(shaders_, scene_, makeRenderSettings(options_.scene));
+    applyAnimation(*renderer_, scene_, options_.scene);
+    animationTime_ = options_.scene.time;
     controller_ =
         std::make_unique<CameraController>(initial, scene_.bounds.radius(), verticalFov(initial));
     if (options_.autoMethod) chooseOpeningMethod(initial);
@@ -210,10 +213,20 @@ void Viewer::loadDropped(const std::string& path) {
         Scene scene = loadScene(o);
         const glm::ivec2 size = glm::max(window_->framebufferSize(), glm::ivec2(1));
         const CameraView initial = initialCamera(scene, o, size.x, size.y);
-        auto renderer = std::make_unique<Renderer>(shaders_, scene, renderer_->settings());
-        renderer_ = std::move(renderer);
+        // A renderer keeps a reference to its scene (the ray tracer and the animation read it),
+        // so the new scene takes scene_'s place before the renderer that draws it is built; if
+        // that fails, the old scene goes back under the old renderer.
+        Scene previous = std::exchange(scene_, std::move(scene));
+        try {
+            auto renderer = std::make_unique<Renderer>(shaders_, scene_, renderer_->settings());
+            applyAnimation(*renderer, scene_, o);
+            renderer_ = std::move(renderer);
+            animationTime_ = 0.0;
+        } catch (...) {
+            scene_ = std::move(previous);
+            throw;
+        }
         rendererSize_ = glm::ivec2(0);
-        scene_ = std::move(scene);
         controller_ = std::make_unique<CameraController>(initial, scene_.bounds.radius(),
                                                          verticalFov(initial));
         stats_.reset();
@@ -269,6 +282,7 @@ int Viewer::run() {
 void Viewer::renderFrame(glm::ivec2 size, float dt) {
     const double start = glfwGetTime();
     controller_->update([this](int key) { return held(key); }, dt);
+    advanceAnimation(dt);
     if (size != rendererSize_) {
         renderer_->resize(size.x, size.y);
         rendererSize_ = size;

@@ -68,6 +68,11 @@ class Viewer {
     void loadDropped(const std::string& path);
     void act(Action a);
     void renderFrame(glm::ivec2 size, float dt);
+    /// Advances the animation clock by dt (when playing; looping over the longest animation)
+    /// and poses the renderer's scene there.
+    void advanceAnimation(float dt);
+    /// The HUD line of the animation clock (empty for a scene that does not move).
+    [[nodiscard]] std::string animationLine() const;
     void renderWithStats(const CameraView& view);
     [[nodiscard]] std::vector<std::string> hudLines(const std::vector<std::string>& overlay) const;
     void screenshot(const std::string& name, glm::ivec2 size);
@@ -106,6 +111,11 @@ class Viewer {
     glm::ivec2 rendererSize_{0};
     int tick_ = 0, rendered_ = 0, captureCounter_ = 0;
     double fpsTime_ = 0.0, fps_ = 0.0;
+    // The animation clock (renderer/scene/Pose.h): seconds, speed factor, playing or paused;
+    // `animationStep_` is a pending step of paused frames (J / K).
+    double animationTime_ = 0.0, animationSpeed_ = 1.0;
+    bool animationPlaying_ = true;
+    int animationStep_ = 0;
     int fpsFrames_ = 0;
     bool quit_ = false;
 };

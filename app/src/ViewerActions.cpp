@@ -152,6 +152,19 @@ void Viewer::act(Action a) {
     case Action::LightLarger:
         scaleLight(a == Action::LightLarger ? 1.25f : 0.8f);
         return;
+    case Action::PlayPause:
+        animationPlaying_ = !animationPlaying_;
+        return;
+    case Action::AnimationBack:
+    case Action::AnimationForward:
+        animationPlaying_ = false;
+        animationStep_ += a == Action::AnimationForward ? 1 : -1;
+        return;
+    case Action::AnimationSlower:
+    case Action::AnimationFaster:
+        animationSpeed_ = std::clamp(animationSpeed_ * (a == Action::AnimationFaster ? 2.0 : 0.5),
+                                     1.0 / 64.0, 64.0);
+        return;
     }
     renderer_->setSettings(s);
     std::cout << "method " << s.method << ", shadow map " << providerName(s.shadow.provider) << " "
@@ -221,6 +234,34 @@ void Viewer::renderWithStats(const CameraView& view) {
     statsRequested_ = false;
 }
 
+void Viewer::advanceAnimation(float dt) {
+    if (!isAnimated(scene_)) return;
+    const double duration = animationDuration(scene_, renderer_->animations());
+    const double previous = animationTime_;
+    if (animationPlaying_) animationTime_ += static_cast<double>(dt) * animationSpeed_;
+    animationTime_ += animationStep_ / 30.0;
+    animationStep_ = 0;
+    if (duration > 0.0) {
+        animationTime_ = std::fmod(animationTime_, duration);
+        if (animationTime_ < 0.0) animationTime_ += duration;
+    } else {
+        animationTime_ = 0.0;
+    }
+    renderer_->setTime(animationTime_, std::clamp(previous, 0.0, kMaxAnimationTime));
+}
+
+std::string Viewer::animationLine() const {
+    if (!isAnimated(scene_)) return {};
+    const std::vector<int>& playing = renderer_->animations();
+    std::string names;
+    for (int a : playing)
+        names += (names.empty() ? "" : ", ") + scene_.animations[static_cast<std::size_t>(a)].name;
+    return "animation " + (playing.empty() ? std::string("none") : names) + "   t " +
+           fixed(animationTime_, 2) + " / " + fixed(animationDuration(scene_, playing), 2) +
+           " s   x" + fixed(animationSpeed_, 3) + (animationPlaying_ ? "   playing" : "   paused") +
+           "   (Space J K 9 0)";
+}
+
 std::vector<std::string> Viewer::hudLines(const std::vector<std::string>& overlay) const {
     const RenderSettings& s = renderer_->settings();
     const std::vector<std::string> methods = cycledMethods();
@@ -256,6 +297,7 @@ std::vector<std::string> Viewer::hudLines(const std::vector<std::string>& overla
                                     ? "orbit"
                                     : "fly x" + fixed(controller_->flySpeed(), 2)) +
                     "   overlay " + std::string(overlayName(overlayMode_)));
+    if (const std::string a = animationLine(); !a.empty()) lines.push_back(a);
     lines.insert(lines.end(), overlay.begin(), overlay.end());
     if (!message_.empty() && glfwGetTime() < messageUntil_) lines.push_back(message_);
     if (!openingNote_.empty()) lines.push_back(openingNote_);

@@ -38,6 +38,11 @@ enum class Action {
     LightDown,
     LightSmaller,
     LightLarger,
+    PlayPause,
+    AnimationBack,
+    AnimationForward,
+    AnimationSlower,
+    AnimationFaster,
 };
 
 struct KeyBinding {

@@ -1,5 +1,7 @@
 #include <renderer/Renderer.h>
 
+#include <cmath>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <stdexcept>
@@ -91,6 +93,7 @@ Renderer::Renderer(const gl::ShaderLibrary& shaders, const Scene& scene,
       shadowPass_(shaders), surfacesPass_(shaders), shadingPass_(shaders),
       diagnosticsPass_(shaders), presentPass_(shaders), timer_(settings.timing) {
     methods_.resize(methodTable().size());
+    if (isAnimated(scene)) setAnimations(chooseAnimations(scene, "all"));
     (void)currentMethod(); // its shader errors now, not at the first frame
     gl::throwIfErrors("renderer set-up");
 }
@@ -120,6 +123,23 @@ void Renderer::setLight(const Light& light) {
     disk_ = makeDiskLight(light_, sceneBounds_);
     lightVolume_ = lightVolume(sceneBounds_, light_);
     diagnosticsPass_.reset(); // a moved light changes the map: nothing to compare with
+}
+
+void Renderer::setAnimations(std::vector<int> animations) {
+    animations_ = std::move(animations);
+    sceneBounds_ = animatedBounds(scene_.source(), animations_);
+    setLight(light_); // refits the light to the new bounds
+    setTime(0.0);
+}
+
+void Renderer::setTime(double time, double previousTime) {
+    if (!std::isfinite(time) || time < 0.0 || !std::isfinite(previousTime) || previousTime < 0.0)
+        throw std::invalid_argument("the time must be a finite number of seconds >= 0, got " +
+                                    std::to_string(time));
+    time_ = time;
+    if (!isAnimated(scene_.source())) return;
+    const Scene& s = scene_.source();
+    scene_.setPose(evaluatePose(s, animations_, time), evaluatePose(s, animations_, previousTime));
 }
 
 void Renderer::resize(int width, int height) {

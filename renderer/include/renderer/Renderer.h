@@ -21,6 +21,7 @@
 #include <renderer/passes/ShadowMapPass.h>
 #include <renderer/passes/SurfacesPass.h>
 #include <renderer/scene/GpuScene.h>
+#include <renderer/scene/Pose.h>
 #include <renderer/scene/Scene.h>
 #include <renderer/soft/DiskLight.h>
 
@@ -123,6 +124,18 @@ class Renderer {
     /// Replaces the light (e.g. moved from the window): recomputes the disk light and the light's
     /// view volume from the scene bounds; the next render() uses it.
     void setLight(const Light& light);
+    /// Plays `animations` (indices into the scene's: chooseAnimations, renderer/scene/Pose.h)
+    /// from now on, posed at time 0. The light's frustum fits every pose they take
+    /// (animatedBounds), so that the map's texel grid stays put while they move. A new renderer
+    /// plays all of the scene's.
+    void setAnimations(std::vector<int> animations);
+    /// Poses the scene at `time` seconds for the next frames; `previousTime` is the frame
+    /// before's, for the motion target (equal: no motion). Throws std::invalid_argument for a
+    /// negative or non-finite time.
+    void setTime(double time, double previousTime);
+    void setTime(double time) { setTime(time, time); }
+    [[nodiscard]] double time() const { return time_; }
+    [[nodiscard]] const std::vector<int>& animations() const { return animations_; }
     [[nodiscard]] int width() const { return width_; }
     [[nodiscard]] int height() const { return height_; }
 
@@ -139,7 +152,9 @@ class Renderer {
     const MethodDescriptor* method_ = nullptr;
     GpuScene scene_;
     Light light_;
-    geom::Aabb sceneBounds_;
+    geom::Aabb sceneBounds_; // the scene's, or every pose its animations take
+    std::vector<int> animations_;
+    double time_ = 0.0;
     DiskLight disk_;
     geom::ViewVolume lightVolume_;
     ShadowMapPass shadowPass_;

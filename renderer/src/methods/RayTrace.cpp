@@ -22,10 +22,14 @@ class RayTrace final : public ShadowMethod {
     const gl::Texture& execute(const FrameInputs& in) override {
         const int w = in.width(), h = in.height();
         if (visibility_.width() != w || visibility_.height() != h) resize(w, h);
-        // The BVH once per scene (a static scene: the renderer's scene never changes).
-        if (!bvh_) {
+        // The BVH once per scene, and again (refit: the same triangles, moved) whenever the
+        // scene's pose changes.
+        if (!bvh_ || posedVersion_ != in.scene.poseVersion()) {
             if (in.timer) in.timer->begin("raytrace bvh");
-            bvh_.emplace(worldTriangles(in.scene.source()));
+            if (!bvh_) bvh_.emplace(worldTriangles(in.scene.source()));
+            if (const auto& pose = in.scene.pose())
+                bvh_->refit(worldVertices(in.scene.source(), *pose));
+            posedVersion_ = in.scene.poseVersion();
             if (in.timer) in.timer->end();
         }
         if (in.timer) in.timer->begin("raytrace rays");
@@ -45,6 +49,7 @@ class RayTrace final : public ShadowMethod {
 
   private:
     std::optional<rt::RayScene> bvh_;
+    std::uint64_t posedVersion_ = 0; // the GpuScene pose the BVH holds
     gl::Texture visibility_;
 };
 

@@ -60,6 +60,15 @@ rt::Triangles worldTriangles(const Scene& scene) {
     return t;
 }
 
+std::vector<glm::vec3> worldVertices(const Scene& scene, const Pose& pose) {
+    std::vector<glm::vec3> out, posed;
+    for (std::size_t i = 0; i < scene.instances.size(); ++i) {
+        posedVertices(scene, pose, i, posed);
+        out.insert(out.end(), posed.begin(), posed.end());
+    }
+    return out;
+}
+
 std::vector<rt::Receiver> surfaceReceivers(const SurfacesPass::Outputs& surfaces) {
     const std::size_t pixels =
         static_cast<std::size_t>(surfaces.width) * static_cast<std::size_t>(surfaces.height);

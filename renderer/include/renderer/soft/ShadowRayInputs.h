@@ -5,6 +5,7 @@
 
 #include <raytrace/ShadowRays.h>
 #include <renderer/passes/SurfacesPass.h>
+#include <renderer/scene/Pose.h>
 #include <renderer/scene/Scene.h>
 
 #include <vector>
@@ -17,6 +18,9 @@ namespace fl {
 /// and BLEND materials are cut out as the GL passes cut them (renderer/scene/AlphaCoverage.h);
 /// that test reads `scene`, which must outlive the result and any RayScene built from it.
 rt::Triangles worldTriangles(const Scene& scene);
+/// The same triangles' vertices in `pose` (renderer/scene/Pose.h): what RayScene::refit takes
+/// for an animated frame.
+std::vector<glm::vec3> worldVertices(const Scene& scene, const Pose& pose);
 
 /// One receiver per pixel of `surfaces`, in GL's row order (row 0 at the bottom): the world
 /// position, the triangle's plane turned to the side the eye sees (by the shading normal), and
