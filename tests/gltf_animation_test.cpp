@@ -3,8 +3,10 @@
 // rejected or repaired input (file, element and problem in the message).
 
 #include <renderer/gltf/GltfLoader.h>
+#include <renderer/scene/SceneGenerator.h>
 
 #include "GltfBuilder.h"
+#include "TestPaths.h"
 
 #include <gtest/gtest.h>
 
@@ -159,6 +161,88 @@ TEST(GltfAnimation, AnimatedMatrixNodeBecomesTrs) {
     const glm::mat4 back = glm::scale(
         glm::translate(glm::mat4(1.0f), n.translation) * glm::mat4_cast(n.rotation), n.scale);
     for (int c = 0; c < 4; ++c) expectNear(back[c], m[c], 1e-5f);
+}
+
+TEST(GltfAnimation, FuzzSeedLoads) {
+    // fuzz/corpus/gltf/animated.gltf: skinnedBar() plus a morph target driven by a weights
+    // channel, so that fuzzing starts from every kind of animation data.
+    const Loaded l = load(dataDir() / "../fuzz/corpus/gltf/animated.gltf");
+    EXPECT_TRUE(l.warnings.empty()) << l.warnings.front();
+    ASSERT_EQ(l.scene.animations.size(), 1u);
+    EXPECT_EQ(l.scene.animations[0].channels.size(), 4u);
+    EXPECT_EQ(l.scene.animations[0].channels[3].path, Animation::Path::Weights);
+    EXPECT_EQ(l.scene.instances[0].skin, 0);
+    EXPECT_EQ(l.scene.meshes[0].targets.size(), 1u);
+}
+
+TEST(GltfAnimation, GlbRoundTripKeepsAnimationData) {
+    const Scene a = load(dataDir() / "../fuzz/corpus/gltf/animated.gltf").scene;
+    const fs::path file = outputDir("gltf_loader") / "animated_round_trip.glb";
+    writeGlb(a, file);
+    const Loaded l = load(file);
+    EXPECT_TRUE(l.warnings.empty()) << l.warnings.front();
+    const Scene& b = l.scene;
+    ASSERT_EQ(b.nodes.size(), a.nodes.size());
+    for (std::size_t i = 0; i < a.nodes.size(); ++i) {
+        EXPECT_EQ(b.nodes[i].name, a.nodes[i].name);
+        EXPECT_EQ(b.nodes[i].parent, a.nodes[i].parent);
+        EXPECT_EQ(b.nodes[i].translation, a.nodes[i].translation);
+        EXPECT_EQ(b.nodes[i].rotation, a.nodes[i].rotation);
+        EXPECT_EQ(b.nodes[i].scale, a.nodes[i].scale);
+        EXPECT_EQ(b.nodes[i].matrix, a.nodes[i].matrix);
+        EXPECT_EQ(b.nodes[i].weights, a.nodes[i].weights);
+    }
+    ASSERT_EQ(b.skins.size(), 1u);
+    EXPECT_EQ(b.skins[0].joints, a.skins[0].joints);
+    EXPECT_EQ(b.skins[0].inverseBind, a.skins[0].inverseBind);
+    ASSERT_EQ(b.instances.size(), 1u);
+    EXPECT_EQ(b.instances[0].node, a.instances[0].node);
+    EXPECT_EQ(b.instances[0].skin, 0);
+    EXPECT_EQ(b.instances[0].world, a.instances[0].world);
+    const Mesh &ma = a.meshes[0], &mb = b.meshes[0];
+    EXPECT_EQ(mb.joints, ma.joints);
+    EXPECT_EQ(mb.weights, ma.weights);
+    ASSERT_EQ(mb.targets.size(), 1u);
+    EXPECT_EQ(mb.targets[0].positions, ma.targets[0].positions);
+    EXPECT_EQ(mb.morphWeights, ma.morphWeights);
+    ASSERT_EQ(b.animations.size(), 1u);
+    const Animation &aa = a.animations[0], &ab = b.animations[0];
+    EXPECT_EQ(ab.name, aa.name);
+    EXPECT_EQ(ab.duration, aa.duration);
+    ASSERT_EQ(ab.samplers.size(), aa.samplers.size());
+    for (std::size_t i = 0; i < aa.samplers.size(); ++i) {
+        EXPECT_EQ(ab.samplers[i].interpolation, aa.samplers[i].interpolation) << i;
+        EXPECT_EQ(ab.samplers[i].times, aa.samplers[i].times) << i;
+        EXPECT_EQ(ab.samplers[i].values, aa.samplers[i].values) << i;
+        EXPECT_EQ(ab.samplers[i].width, aa.samplers[i].width) << i;
+    }
+    ASSERT_EQ(ab.channels.size(), aa.channels.size());
+    for (std::size_t i = 0; i < aa.channels.size(); ++i) {
+        EXPECT_EQ(ab.channels[i].node, aa.channels[i].node) << i;
+        EXPECT_EQ(ab.channels[i].path, aa.channels[i].path) << i;
+        EXPECT_EQ(ab.channels[i].sampler, aa.channels[i].sampler) << i;
+    }
+}
+
+TEST(GltfAnimation, GlbRoundTripKeepsMultiPrimitiveNodes) {
+    // One node placing two primitives: the writer gives the node one mesh with both, so that
+    // node weights and weights channels still reach them.
+    Gltf g = morphTriangle();
+    g.doc["meshes"][0]["primitives"].push_back(g.prim());
+    animate(g, g.floats({0, 1}, "SCALAR"), g.floats({0, 1}, "SCALAR"), 0, "weights");
+    const Scene a = load(g.write("morph_two_primitives.gltf")).scene;
+    ASSERT_EQ(a.instances.size(), 2u);
+    const fs::path file = outputDir("gltf_loader") / "morph_two_primitives.glb";
+    writeGlb(a, file);
+    const Loaded l = load(file);
+    EXPECT_TRUE(l.warnings.empty()) << l.warnings.front();
+    ASSERT_EQ(l.scene.instances.size(), 2u);
+    EXPECT_EQ(l.scene.instances[0].node, 0);
+    EXPECT_EQ(l.scene.instances[1].node, 0);
+    EXPECT_EQ(l.scene.nodes[0].weights, std::vector<float>{0.25f});
+    ASSERT_EQ(l.scene.animations.size(), 1u);
+    EXPECT_EQ(l.scene.animations[0].channels.size(), 1u);
+    EXPECT_EQ(l.scene.meshes[1].morphWeights, std::vector<float>{0.5f});
 }
 
 // --- the assimp sample files (scripts/setup.sh installs assimp-testmodels) -------------------

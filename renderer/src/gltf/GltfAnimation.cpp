@@ -166,7 +166,8 @@ void decomposeMatrix(const Context& ctx, std::size_t index, Node& node, const st
                           " animates it"));
 }
 
-Animation convertAnimation(const Context& ctx, std::size_t index, std::vector<Node>& nodes) {
+Animation convertAnimation(const Context& ctx, std::size_t index, std::vector<Node>& nodes,
+                           MorphTargetCounts& targetCounts) {
     const tinygltf::Animation& src = ctx.model().animations[index];
     const std::string element = elem("animations", index);
     Animation out;
@@ -199,8 +200,7 @@ Animation convertAnimation(const Context& ctx, std::size_t index, std::vector<No
                                          element + ".samplers");
         std::size_t targets = 0;
         if (*path == Path::Weights) {
-            const int mesh = ctx.model().nodes[node].mesh;
-            if (Context::inRange(ctx.model().meshes, mesh)) targets = morphTargetCount(ctx, mesh);
+            targets = targetCounts(ctx.model().nodes[node].mesh);
             if (targets == 0) {
                 ctx.warn(channel, cat("weights of nodes[", node,
                                       "], which has no mesh with morph targets; channel skipped"));
@@ -237,10 +237,11 @@ Animation convertAnimation(const Context& ctx, std::size_t index, std::vector<No
 } // namespace
 
 std::vector<Animation> convertAnimations(const Context& ctx, std::vector<Node>& nodes) {
+    MorphTargetCounts targetCounts(ctx);
     std::vector<Animation> out;
     out.reserve(ctx.model().animations.size());
     for (std::size_t a = 0; a < ctx.model().animations.size(); ++a)
-        out.push_back(convertAnimation(ctx, a, nodes));
+        out.push_back(convertAnimation(ctx, a, nodes, targetCounts));
     return out;
 }
 

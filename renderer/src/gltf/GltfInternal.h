@@ -45,6 +45,8 @@ inline bool inWorld(const glm::vec3& p) {
 inline constexpr std::size_t kMaxAccessorCount = std::size_t{1} << 24; // elements per accessor
 inline constexpr std::size_t kMaxDecodedValues = std::size_t{1} << 28; // all accessors: 1 GiB
 inline constexpr std::size_t kMaxNodes = std::size_t{1} << 20;
+// Morph targets cost memory even when they name no accessor; real files have a few hundred.
+inline constexpr std::size_t kMaxMorphTargets = std::size_t{1} << 16;
 inline constexpr int kMaxImageSide = 16384; // GL_MAX_TEXTURE_SIZE of common desktop drivers
 inline constexpr long long kMaxImagePixels = 1LL << 26; // 256 MiB of RGBA8
 
@@ -147,6 +149,26 @@ void convertMesh(const Context& ctx, int meshIndex, std::vector<Mesh>& out);
 
 /// The number of morph targets of meshes[meshIndex] (every primitive must have the same).
 std::size_t morphTargetCount(const Context& ctx, int meshIndex);
+
+/// morphTargetCount of each mesh, computed once: nodes and channels ask per node, and a file can
+/// have a million nodes over one mesh of many primitives.
+class MorphTargetCounts {
+  public:
+    explicit MorphTargetCounts(const Context& ctx)
+        : ctx_(ctx), counts_(ctx.model().meshes.size(), kUnknown) {}
+    /// Target count of meshes[mesh]; 0 for an index that is not a mesh.
+    std::size_t operator()(int mesh) {
+        if (!Context::inRange(counts_, mesh)) return 0;
+        std::size_t& count = counts_[static_cast<std::size_t>(mesh)];
+        if (count == kUnknown) count = morphTargetCount(ctx_, mesh);
+        return count;
+    }
+
+  private:
+    static constexpr std::size_t kUnknown = ~std::size_t{0};
+    const Context& ctx_;
+    std::vector<std::size_t> counts_;
+};
 
 /// glTF primitive modes TRIANGLES / TRIANGLE_STRIP / TRIANGLE_FAN as a triangle list (spec
 /// 3.7.2.1 vertex order); a list's trailing partial triangle is dropped.

@@ -245,8 +245,13 @@ tinygltf::Model parse(const std::filesystem::path& file, const std::string& name
         throw SceneError(
             cat(name, ": ", message.empty() ? "tinygltf could not parse it" : message));
     }
+    // tinygltf 2.7 reports a skin without inverseBindMatrices, which the spec allows (identity
+    // matrices, 3.7.3.2), as a missing required property: not a problem worth a warning.
+    constexpr std::string_view kOptionalMatrices =
+        "'inverseBindMatrices' property is missing in Skin.";
     if (options.warn)
-        for (const std::string& line : lines(warn + err)) options.warn(cat(name, ": ", line));
+        for (const std::string& line : lines(warn + err))
+            if (line != kOptionalMatrices) options.warn(cat(name, ": ", line));
     return model;
 }
 

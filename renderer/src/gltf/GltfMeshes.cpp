@@ -343,6 +343,9 @@ std::vector<std::uint32_t> triangleList(int mode, const std::vector<std::uint32_
 std::size_t morphTargetCount(const Context& ctx, int meshIndex) {
     const tinygltf::Mesh& mesh = ctx.model().meshes[static_cast<std::size_t>(meshIndex)];
     const std::size_t count = mesh.primitives.empty() ? 0 : mesh.primitives[0].targets.size();
+    if (count > kMaxMorphTargets)
+        ctx.fail(elem("meshes", static_cast<std::size_t>(meshIndex)),
+                 cat("absurd morph target count ", count, " (limit ", kMaxMorphTargets, ")"));
     // One weight per target drives every primitive at once (spec 3.7.2.2).
     for (std::size_t p = 1; p < mesh.primitives.size(); ++p)
         if (mesh.primitives[p].targets.size() != count)

@@ -95,11 +95,6 @@ bool floats(const std::vector<double>& values, std::size_t n, float* out) {
     return true;
 }
 
-/// The morph target count of `node`'s mesh; 0 without a (valid) mesh.
-std::size_t nodeTargetCount(const Context& ctx, const tinygltf::Node& node) {
-    return Context::inRange(ctx.model().meshes, node.mesh) ? morphTargetCount(ctx, node.mesh) : 0;
-}
-
 /// scene.nodes[i] from the file's nodes[i]. Nodes the scene places already passed
 /// localTransform's checks (array sizes, finite doubles; zero rotations warned about there);
 /// the rest are repaired here with a warning, as are values a float cannot hold.
@@ -141,11 +136,12 @@ Node convertNode(const Context& ctx, std::size_t index, int parent, bool placed)
 }
 
 /// node.weights, when they fit the mesh's targets (else the mesh's weights apply).
-std::vector<float> nodeWeights(const Context& ctx, std::size_t index) {
+std::vector<float> nodeWeights(const Context& ctx, std::size_t index,
+                               MorphTargetCounts& targetCounts) {
     const tinygltf::Node& src = ctx.model().nodes[index];
     if (src.weights.empty()) return {};
     const std::string element = elem("nodes", index);
-    const std::size_t targets = nodeTargetCount(ctx, src);
+    const std::size_t targets = targetCounts(src.mesh);
     if (src.weights.size() != targets) {
         ctx.warn(element, cat("weights has ", src.weights.size(), " values but its mesh has ",
                               targets, " morph targets; the mesh's weights used"));
@@ -177,11 +173,12 @@ std::vector<Node> convertNodes(const Context& ctx, const std::vector<PlacedNode>
             parents[static_cast<std::size_t>(child)] = static_cast<int>(i);
     std::vector<char> isPlaced(model.nodes.size(), 0);
     for (const PlacedNode& p : placed) isPlaced[static_cast<std::size_t>(p.node)] = 1;
+    MorphTargetCounts targetCounts(ctx);
     std::vector<Node> nodes;
     nodes.reserve(model.nodes.size());
     for (std::size_t i = 0; i < model.nodes.size(); ++i) {
         nodes.push_back(convertNode(ctx, i, parents[i], isPlaced[i] != 0));
-        nodes.back().weights = nodeWeights(ctx, i);
+        nodes.back().weights = nodeWeights(ctx, i, targetCounts);
     }
     return nodes;
 }
@@ -221,6 +218,7 @@ void linkSkins(const Context& ctx, Scene& scene) {
     const auto& model = ctx.model();
     std::map<int, int> converted; // file skin -> index into scene.skins
     std::vector<char> skinned(scene.meshes.size(), 0);
+    std::map<int, std::optional<std::uint32_t>> maxJoint; // mesh -> its highest joint index
     for (Instance& inst : scene.instances) {
         const auto nodeIndex = static_cast<std::size_t>(inst.node);
         const tinygltf::Node& node = model.nodes[nodeIndex];
@@ -248,12 +246,15 @@ void linkSkins(const Context& ctx, Scene& scene) {
         }
         const std::size_t jointCount =
             scene.skins[static_cast<std::size_t>(it->second)].joints.size();
-        for (const glm::uvec4& j : mesh.joints)
-            for (int k = 0; k < 4; ++k)
-                if (j[k] >= jointCount)
-                    ctx.fail(element,
-                             cat(meshElement, " JOINTS_0: joint index ", j[k], " out of range (",
-                                 skinElement, " has ", jointCount, " joints)"));
+        auto& highest = maxJoint[inst.mesh]; // once per mesh: instances can be many
+        if (!highest) {
+            highest = 0u;
+            for (const glm::uvec4& j : mesh.joints)
+                highest = std::max({*highest, j.x, j.y, j.z, j.w});
+        }
+        if (*highest >= jointCount)
+            ctx.fail(element, cat(meshElement, " JOINTS_0: joint index ", *highest,
+                                  " out of range (", skinElement, " has ", jointCount, " joints)"));
         inst.skin = it->second;
         skinned[static_cast<std::size_t>(inst.mesh)] = 1;
     }
