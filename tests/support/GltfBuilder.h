@@ -15,7 +15,7 @@ namespace fl::test {
 
 using json = nlohmann::json;
 
-inline constexpr int kU8 = 5121, kU16 = 5123, kU32 = 5125, kFloat = 5126;
+inline constexpr int kI8 = 5120, kU8 = 5121, kI16 = 5122, kU16 = 5123, kU32 = 5125, kFloat = 5126;
 inline constexpr int kLines = 1, kTriangles = 4, kStrip = 5, kFan = 6;
 
 /// Standard base64 (with padding), for data: URIs.
@@ -50,6 +50,25 @@ struct Gltf {
     template <class T>
     int indices(const std::vector<T>& v, int componentType) {
         return accessor(view(v), componentType, "SCALAR", v.size());
+    }
+    /// FLOAT accessor of `type` (SCALAR, VEC3, VEC4, MAT4) over `v`, `type`'s width per element.
+    int floats(const std::vector<float>& v, const std::string& type) {
+        return accessor(view(v), kFloat, type, v.size() / components(type));
+    }
+    /// Integer accessor of `type` over `v` (element type matching `componentType`).
+    template <class T>
+    int ints(const std::vector<T>& v, int componentType, const std::string& type,
+             bool normalized = false) {
+        const int a = accessor(view(v), componentType, type, v.size() / components(type));
+        if (normalized) accessorAt(a)["normalized"] = true;
+        return a;
+    }
+    static std::size_t components(const std::string& type) {
+        return type == "SCALAR" ? 1
+               : type == "VEC2" ? 2
+               : type == "VEC3" ? 3
+               : type == "VEC4" ? 4
+                                : 16;
     }
     int push(const std::string& array, json value) {
         doc[array].push_back(std::move(value));
@@ -88,6 +107,21 @@ inline const std::vector<glm::vec3> kTriangle = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}
 
 /// One indexed (u16) triangle with normals, placed by node 0 of scene 0.
 Gltf triangle();
+
+/// A bar of two quads along +y (rows at y = 0, 1, 2) skinned (skins[0]) to two joints: root
+/// (nodes[1]) at the origin and its child tip (nodes[2]) at y = 1; the bar is nodes[0]. The
+/// bottom row follows the root, the top the tip, the middle both. animations[0] ("bend") drives
+/// the root's translation (samplers[0], LINEAR), the tip's rotation (samplers[1], STEP) and the
+/// tip's scale (samplers[2], CUBICSPLINE), each over keys at 0, 1, 2 s.
+Gltf skinnedBar(bool withNormals = true);
+
+/// triangle() with one morph target (POSITION and NORMAL deltas), mesh weights {0.5} and node
+/// weights {0.25}.
+Gltf morphTriangle();
+
+/// Adds an animation with one sampler (input, output, interpolation) and one channel.
+void animate(Gltf& g, int input, int output, int node, const std::string& path,
+             const std::string& interpolation = "LINEAR");
 
 /// A loaded scene and the warnings the loader gave.
 struct Loaded {

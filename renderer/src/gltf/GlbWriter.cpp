@@ -1,5 +1,7 @@
 // Binary glTF 2.0 output of a Scene: what loadGltf reads back to the same scene. The bytes depend
 // only on the scene (sorted JSON keys, fixed layout), so the same scene gives the same file.
+// Animation data (Scene::nodes, skins, animations, skinning and morph targets) is written when
+// the scene has it; a scene without nodes is written as before, one root node per instance.
 
 #include <renderer/scene/SceneGenerator.h>
 
@@ -96,16 +98,75 @@ void validateMesh(const Scene& scene, std::size_t i) {
         invalid(where + "material index out of range");
 }
 
+template <class T>
+bool inRange(const std::vector<T>& v, int i) {
+    return i >= 0 && static_cast<std::size_t>(i) < v.size();
+}
+
+/// Skinning and morph data: per-vertex arrays of the right size (the loader's promises).
+void validateRigging(const Mesh& m, const std::string& where) {
+    if (m.joints.size() != m.weights.size() ||
+        (!m.joints.empty() && m.joints.size() != m.positions.size()))
+        invalid(where + "joint or weight count differs from position count");
+    for (const glm::uvec4& j : m.joints)
+        if (glm::any(glm::greaterThan(j, glm::uvec4(65535))))
+            invalid(where + "joint index above 65535");
+    if (m.morphWeights.size() != m.targets.size())
+        invalid(where + "morph weight count differs from target count");
+    for (const Mesh::MorphTarget& t : m.targets)
+        if ((!t.positions.empty() && t.positions.size() != m.positions.size()) ||
+            (!t.normals.empty() && t.normals.size() != m.positions.size()))
+            invalid(where + "morph target size differs from position count");
+}
+
+/// Nodes, skins and animations index what exists.
+void validateAnimation(const Scene& scene) {
+    for (std::size_t i = 0; i < scene.nodes.size(); ++i) {
+        const int parent = scene.nodes[i].parent;
+        if (parent != -1 && (!inRange(scene.nodes, parent) || parent == static_cast<int>(i)))
+            invalid("nodes[" + std::to_string(i) + "]: parent out of range");
+    }
+    for (std::size_t i = 0; i < scene.skins.size(); ++i) {
+        const Skin& skin = scene.skins[i];
+        if (skin.joints.empty() || skin.inverseBind.size() != skin.joints.size())
+            invalid("skins[" + std::to_string(i) + "]: no joints or inverse bind count differs");
+        for (int j : skin.joints)
+            if (!inRange(scene.nodes, j))
+                invalid("skins[" + std::to_string(i) + "]: joint out of range");
+    }
+    for (std::size_t i = 0; i < scene.animations.size(); ++i) {
+        const Animation& a = scene.animations[i];
+        const std::string where = "animations[" + std::to_string(i) + "]: ";
+        for (const Animation::Channel& c : a.channels)
+            if (!inRange(scene.nodes, c.node) || !inRange(a.samplers, c.sampler))
+                invalid(where + "channel node or sampler out of range");
+        for (const Animation::Sampler& s : a.samplers) {
+            const std::size_t perKey =
+                s.interpolation == Animation::Interpolation::CubicSpline ? 3 : 1;
+            if (s.times.empty() || s.width <= 0 ||
+                s.values.size() != s.times.size() * perKey * static_cast<std::size_t>(s.width))
+                invalid(where + "sampler values do not match its times");
+        }
+    }
+}
+
 /// Rejects what would make an invalid file (or NaNs that JSON cannot hold), naming the element.
 void validate(const Scene& scene) {
-    for (std::size_t i = 0; i < scene.meshes.size(); ++i) validateMesh(scene, i);
+    for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
+        validateMesh(scene, i);
+        validateRigging(scene.meshes[i], "meshes[" + std::to_string(i) + "]: ");
+    }
     for (std::size_t i = 0; i < scene.instances.size(); ++i) {
         const Instance& inst = scene.instances[i];
         if (inst.mesh < 0 || inst.mesh >= static_cast<int>(scene.meshes.size()))
             invalid("instances[" + std::to_string(i) + "]: mesh index out of range");
         if (!finiteMatrix(inst.world))
             invalid("instances[" + std::to_string(i) + "]: non-finite transform");
+        if ((inst.node != -1 && !inRange(scene.nodes, inst.node)) ||
+            (inst.skin != -1 && !inRange(scene.skins, inst.skin)))
+            invalid("instances[" + std::to_string(i) + "]: node or skin index out of range");
     }
+    validateAnimation(scene);
     for (std::size_t i = 0; i < scene.cameras.size(); ++i) {
         const Camera& cam = scene.cameras[i];
         if (!finiteMatrix(cam.view) || !(cam.yfov > 0.0f) || !(cam.znear > 0.0f))
@@ -185,6 +246,26 @@ class Document {
         for (const glm::vec4& p : v) bin.f32(p.x), bin.f32(p.y), bin.f32(p.z), bin.f32(p.w);
         return accessor(endView(offset, kArrayBuffer), kFloat, v.size(), "VEC4");
     }
+    /// `values` as one FLOAT accessor of `type` (`components` floats per element).
+    int floats(const std::vector<float>& values, const char* type, std::size_t components) {
+        const std::size_t offset = beginView();
+        for (float v : values) bin.f32(v);
+        return accessor(endView(offset, std::nullopt), kFloat, values.size() / components, type);
+    }
+    int mat4s(const std::vector<glm::mat4>& v) {
+        const std::size_t offset = beginView();
+        for (const glm::mat4& m : v)
+            for (int c = 0; c < 4; ++c)
+                for (int r = 0; r < 4; ++r) bin.f32(m[c][r]); // column-major
+        return accessor(endView(offset, std::nullopt), kFloat, v.size(), "MAT4");
+    }
+    /// JOINTS_0 as UNSIGNED_SHORT (indices above 65535 cannot be written; validate() refuses).
+    int joints(const std::vector<glm::uvec4>& v) {
+        const std::size_t offset = beginView();
+        for (const glm::uvec4& j : v)
+            for (int k = 0; k < 4; ++k) bin.u16(static_cast<std::uint16_t>(j[k]));
+        return accessor(endView(offset, kArrayBuffer), kUnsignedShort, v.size(), "VEC4");
+    }
     /// u16 when every index fits below the primitive-restart value 65535, else u32.
     int indices(const std::vector<std::uint32_t>& idx, std::size_t vertexCount) {
         const bool small = vertexCount <= 65535;
@@ -207,18 +288,35 @@ class Document {
     }
 };
 
-void writeMeshes(Document& doc, const Scene& scene) {
+/// One glTF mesh per Mesh (meshes[i] is scene.meshes[i]); returns each one's primitive, which
+/// writeAnimatedNodes combines for nodes that place several.
+std::vector<json> writeMeshes(Document& doc, const Scene& scene) {
+    std::vector<json> primitives;
     for (const Mesh& m : scene.meshes) {
         json attributes = {{"POSITION", doc.positions(m.positions)}};
         if (!m.normals.empty()) attributes["NORMAL"] = doc.vec3s(m.normals);
         if (!m.texcoords.empty()) attributes["TEXCOORD_0"] = doc.vec2s(m.texcoords);
         if (!m.colors.empty()) attributes["COLOR_0"] = doc.vec4s(m.colors);
+        if (!m.joints.empty()) {
+            attributes["JOINTS_0"] = doc.joints(m.joints);
+            attributes["WEIGHTS_0"] = doc.vec4s(m.weights);
+        }
         json primitive = {{"attributes", std::move(attributes)},
                           {"indices", doc.indices(m.indices, m.positions.size())},
                           {"mode", 4}};
         if (m.material >= 0) primitive["material"] = m.material;
-        doc.push("meshes", {{"name", m.name}, {"primitives", json::array({std::move(primitive)})}});
+        for (const Mesh::MorphTarget& t : m.targets) {
+            json target = json::object();
+            if (!t.positions.empty()) target["POSITION"] = doc.vec3s(t.positions);
+            if (!t.normals.empty()) target["NORMAL"] = doc.vec3s(t.normals);
+            primitive["targets"].push_back(std::move(target));
+        }
+        json mesh = {{"name", m.name}, {"primitives", json::array({primitive})}};
+        if (!m.morphWeights.empty()) mesh["weights"] = m.morphWeights;
+        doc.push("meshes", std::move(mesh));
+        primitives.push_back(std::move(primitive));
     }
+    return primitives;
 }
 
 void writeMaterials(Document& doc, const Scene& scene) {
@@ -271,12 +369,103 @@ glm::mat4 lightMatrix(const Light& light) {
                      glm::vec4(light.position, 1.0f));
 }
 
-void writeNodes(Document& doc, const Scene& scene) {
-    json roots = json::array();
+/// Scene::nodes as nodes[0..n) (so that skins and channels keep their indices) with the meshes
+/// their instances place: a node placing one Mesh gets its glTF mesh, a node placing several (a
+/// multi-primitive mesh of the source file) a new glTF mesh holding their primitives. Appends the
+/// root nodes to `roots`.
+void writeNodeTree(Document& doc, const Scene& scene, const std::vector<json>& primitives,
+                   json& roots) {
+    std::vector<std::vector<const Instance*>> placed(scene.nodes.size());
     for (const Instance& inst : scene.instances)
-        roots.push_back(doc.push(
-            "nodes",
-            {{"name", inst.nodeName}, {"mesh", inst.mesh}, {"matrix", matrixJson(inst.world)}}));
+        if (inst.node >= 0) placed[static_cast<std::size_t>(inst.node)].push_back(&inst);
+    std::vector<json> children(scene.nodes.size(), json::array());
+    for (std::size_t i = 0; i < scene.nodes.size(); ++i) {
+        const int parent = scene.nodes[i].parent;
+        (parent >= 0 ? children[static_cast<std::size_t>(parent)] : roots).push_back(i);
+    }
+    for (std::size_t i = 0; i < scene.nodes.size(); ++i) {
+        const Node& n = scene.nodes[i];
+        json node = {{"name", n.name}};
+        if (n.matrix) {
+            node["matrix"] = matrixJson(*n.matrix);
+        } else {
+            const glm::vec4 q(n.rotation.x, n.rotation.y, n.rotation.z, n.rotation.w);
+            node["translation"] = vecJson(&n.translation.x, 3);
+            node["rotation"] = vecJson(&q.x, 4); // glTF order x, y, z, w
+            node["scale"] = vecJson(&n.scale.x, 3);
+        }
+        if (!children[i].empty()) node["children"] = std::move(children[i]);
+        if (!n.weights.empty()) node["weights"] = n.weights;
+        const std::vector<const Instance*>& insts = placed[i];
+        if (insts.size() == 1) {
+            node["mesh"] = insts[0]->mesh;
+        } else if (insts.size() > 1) {
+            json mesh = {{"name", n.name}, {"primitives", json::array()}};
+            for (const Instance* inst : insts)
+                mesh["primitives"].push_back(primitives[static_cast<std::size_t>(inst->mesh)]);
+            const Mesh& first = scene.meshes[static_cast<std::size_t>(insts[0]->mesh)];
+            if (!first.morphWeights.empty()) mesh["weights"] = first.morphWeights;
+            node["mesh"] = doc.push("meshes", std::move(mesh));
+        }
+        for (const Instance* inst : insts)
+            if (inst->skin >= 0) node["skin"] = inst->skin;
+        doc.push("nodes", std::move(node));
+    }
+}
+
+void writeSkins(Document& doc, const Scene& scene) {
+    for (const Skin& skin : scene.skins)
+        doc.push("skins", {{"name", skin.name},
+                           {"joints", skin.joints},
+                           {"inverseBindMatrices", doc.mat4s(skin.inverseBind)}});
+}
+
+void writeAnimations(Document& doc, const Scene& scene) {
+    static constexpr const char* kPaths[] = {"translation", "rotation", "scale", "weights"};
+    static constexpr const char* kInterpolations[] = {"LINEAR", "STEP", "CUBICSPLINE"};
+    for (const Animation& a : scene.animations) {
+        // A sampler's output type follows the channel that reads it: VEC3 for translation and
+        // scale, VEC4 for rotation, SCALAR for weights (and for a sampler no channel reads).
+        std::vector<Animation::Path> paths(a.samplers.size(), Animation::Path::Weights);
+        for (auto it = a.channels.rbegin(); it != a.channels.rend(); ++it)
+            paths[static_cast<std::size_t>(it->sampler)] = it->path;
+        json samplers = json::array(), channels = json::array();
+        for (std::size_t i = 0; i < a.samplers.size(); ++i) {
+            const Animation::Sampler& sm = a.samplers[i];
+            const Animation::Path path = paths[i];
+            const char* type = path == Animation::Path::Rotation  ? "VEC4"
+                               : path == Animation::Path::Weights ? "SCALAR"
+                                                                  : "VEC3";
+            const std::size_t components = path == Animation::Path::Rotation  ? 4
+                                           : path == Animation::Path::Weights ? 1
+                                                                              : 3;
+            samplers.push_back(
+                {{"input", doc.floats(sm.times, "SCALAR", 1)},
+                 {"output", doc.floats(sm.values, type, components)},
+                 {"interpolation", kInterpolations[static_cast<int>(sm.interpolation)]}});
+        }
+        for (const Animation::Channel& c : a.channels)
+            channels.push_back(
+                {{"sampler", c.sampler},
+                 {"target", {{"node", c.node}, {"path", kPaths[static_cast<int>(c.path)]}}}});
+        doc.push("animations", {{"name", a.name},
+                                {"samplers", std::move(samplers)},
+                                {"channels", std::move(channels)}});
+    }
+}
+
+void writeNodes(Document& doc, const Scene& scene, const std::vector<json>& primitives) {
+    json roots = json::array();
+    writeNodeTree(doc, scene, primitives, roots);
+    writeSkins(doc, scene);
+    writeAnimations(doc, scene);
+    for (const Instance& inst : scene.instances) {
+        if (inst.node >= 0) continue;
+        json node = {
+            {"name", inst.nodeName}, {"mesh", inst.mesh}, {"matrix", matrixJson(inst.world)}};
+        if (inst.skin >= 0) node["skin"] = inst.skin;
+        roots.push_back(doc.push("nodes", std::move(node)));
+    }
     for (std::size_t i = 0; i < scene.cameras.size(); ++i) {
         const Camera& cam = scene.cameras[i];
         json perspective = {{"yfov", static_cast<double>(cam.yfov)},
@@ -305,9 +494,9 @@ void writeNodes(Document& doc, const Scene& scene) {
 std::vector<std::uint8_t> glbBytes(const Scene& scene) {
     Document doc;
     doc.root["asset"] = {{"version", "2.0"}, {"generator", "Floodlight"}};
-    writeMeshes(doc, scene);
+    const std::vector<json> primitives = writeMeshes(doc, scene);
     writeMaterials(doc, scene);
-    writeNodes(doc, scene);
+    writeNodes(doc, scene, primitives);
     doc.bin.pad(0);
     if (!doc.bin.data.empty())
         doc.root["buffers"] = json::array({{{"byteLength", doc.bin.data.size()}}});

@@ -349,6 +349,62 @@ std::vector<glm::vec4> readColors(const Context& ctx, int index, std::string_vie
     return out;
 }
 
+std::vector<glm::vec3> readTargetPositionVec3(const Context& ctx, int index,
+                                              std::string_view usage) {
+    // KHR_mesh_quantization lets position deltas be signed integers, normalized or not.
+    const bool quantized = usesExtension(ctx, "KHR_mesh_quantization");
+    return vec3s(ctx, quantized ? viewAccessor(ctx, index, usage, TINYGLTF_TYPE_VEC3,
+                                               {kFloat, kByte, kShort})
+                                : viewAccessor(ctx, index, usage, TINYGLTF_TYPE_VEC3, {kFloat}));
+}
+
+std::vector<glm::uvec4> readJoints(const Context& ctx, int index, std::string_view usage) {
+    const AccessorView view =
+        viewAccessor(ctx, index, usage, TINYGLTF_TYPE_VEC4, {kUByte, kUShort});
+    const int type = view.accessor->componentType;
+    const std::size_t size = componentSize(type);
+    std::vector<glm::uvec4> out(view.count, glm::uvec4(0));
+    // Read as integers: joint indices are indices even if a file marks them normalized.
+    auto readElement = [&](std::size_t i, const std::uint8_t* p) {
+        for (int c = 0; c < 4; ++c)
+            out[i][c] = readIndexComponent(p + static_cast<std::size_t>(c) * size, type);
+    };
+    if (view.data)
+        for (std::size_t i = 0; i < view.count; ++i) readElement(i, view.data + i * view.stride);
+    if (view.accessor->sparse.isSparse) applySparse(ctx, view, 4 * size, readElement);
+    return out;
+}
+
+std::vector<glm::vec4> readWeights(const Context& ctx, int index, std::string_view usage) {
+    const AccessorView view =
+        viewAccessor(ctx, index, usage, TINYGLTF_TYPE_VEC4, {kFloat, kUByte, kUShort});
+    requireNormalized(ctx, view, usage, "core glTF, 3.7.3.3");
+    const std::vector<float> f = readFloats(ctx, view);
+    std::vector<glm::vec4> out(view.count);
+    for (std::size_t i = 0; i < view.count; ++i)
+        out[i] = {f[4 * i], f[4 * i + 1], f[4 * i + 2], f[4 * i + 3]};
+    return out;
+}
+
+std::vector<glm::mat4> readMat4(const Context& ctx, int index, std::string_view usage) {
+    const std::vector<float> f =
+        readFloats(ctx, viewAccessor(ctx, index, usage, TINYGLTF_TYPE_MAT4, {kFloat}));
+    std::vector<glm::mat4> out(f.size() / 16);
+    for (std::size_t i = 0; i < out.size(); ++i)
+        std::memcpy(&out[i][0][0], &f[16 * i], 16 * sizeof(float)); // both column-major
+    return out;
+}
+
+std::vector<float> readAnimationFloats(const Context& ctx, int index, std::string_view usage,
+                                       int type, bool normalizedIntegers) {
+    if (!normalizedIntegers)
+        return readFloats(ctx, viewAccessor(ctx, index, usage, type, {kFloat}));
+    const AccessorView view =
+        viewAccessor(ctx, index, usage, type, {kFloat, kByte, kUByte, kShort, kUShort});
+    requireNormalized(ctx, view, usage, "core glTF, 3.11");
+    return readFloats(ctx, view);
+}
+
 std::vector<std::uint32_t> readIndices(const Context& ctx, int index, std::string_view usage) {
     const AccessorView view =
         viewAccessor(ctx, index, usage, TINYGLTF_TYPE_SCALAR,

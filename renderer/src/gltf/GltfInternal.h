@@ -5,6 +5,8 @@
 //   GltfMeshes.cpp     triangle primitives -> fl::Mesh (modes, indices, normals, texcoords)
 //   GltfNodes.cpp      node graph checks, transforms, scene traversal, cameras, the light
 //   GltfMaterials.cpp  materials, textures and image decoding
+//   GltfSkins.cpp      skinning attributes, morph targets, skins and the node list
+//   GltfAnimation.cpp  animations (samplers and channels)
 // tinygltf accepts much malformed content, so every step validates what it reads and reports
 // through Context::fail (reject) or Context::warn (repair).
 
@@ -43,6 +45,8 @@ inline bool inWorld(const glm::vec3& p) {
 inline constexpr std::size_t kMaxAccessorCount = std::size_t{1} << 24; // elements per accessor
 inline constexpr std::size_t kMaxDecodedValues = std::size_t{1} << 28; // all accessors: 1 GiB
 inline constexpr std::size_t kMaxNodes = std::size_t{1} << 20;
+// Morph targets cost memory even when they name no accessor; real files have a few hundred.
+inline constexpr std::size_t kMaxMorphTargets = std::size_t{1} << 16;
 inline constexpr int kMaxImageSide = 16384; // GL_MAX_TEXTURE_SIZE of common desktop drivers
 inline constexpr long long kMaxImagePixels = 1LL << 26; // 256 MiB of RGBA8
 
@@ -122,12 +126,49 @@ std::vector<glm::vec2> readTexcoords(const Context& ctx, int index, std::string_
 std::vector<glm::vec4> readColors(const Context& ctx, int index, std::string_view usage);
 /// SCALAR UNSIGNED_BYTE / UNSIGNED_SHORT / UNSIGNED_INT (primitive indices).
 std::vector<std::uint32_t> readIndices(const Context& ctx, int index, std::string_view usage);
+/// VEC3 FLOAT; with KHR_mesh_quantization also BYTE and SHORT, normalized or not (morph
+/// target POSITION deltas; NORMAL deltas read as readNormalVec3).
+std::vector<glm::vec3> readTargetPositionVec3(const Context& ctx, int index,
+                                              std::string_view usage);
+/// VEC4 UNSIGNED_BYTE / UNSIGNED_SHORT as integers (JOINTS_0).
+std::vector<glm::uvec4> readJoints(const Context& ctx, int index, std::string_view usage);
+/// VEC4 FLOAT or normalized UNSIGNED_BYTE / UNSIGNED_SHORT (WEIGHTS_0).
+std::vector<glm::vec4> readWeights(const Context& ctx, int index, std::string_view usage);
+/// MAT4 FLOAT (skin inverse bind matrices).
+std::vector<glm::mat4> readMat4(const Context& ctx, int index, std::string_view usage);
+/// All components of a `type` accessor as floats: FLOAT, or with `normalizedIntegers` also
+/// normalized BYTE / UNSIGNED_BYTE / SHORT / UNSIGNED_SHORT (animation sampler data, 3.11).
+std::vector<float> readAnimationFloats(const Context& ctx, int index, std::string_view usage,
+                                       int type, bool normalizedIntegers);
 
 // --- meshes (GltfMeshes.cpp) ----------------------------------------------------------------
 
 /// Converts the triangle primitives of meshes[meshIndex] (one fl::Mesh each) and appends them
 /// to `out`; skipped primitives (points, lines, empty) are reported through ctx.warn.
 void convertMesh(const Context& ctx, int meshIndex, std::vector<Mesh>& out);
+
+/// The number of morph targets of meshes[meshIndex] (every primitive must have the same).
+std::size_t morphTargetCount(const Context& ctx, int meshIndex);
+
+/// morphTargetCount of each mesh, computed once: nodes and channels ask per node, and a file can
+/// have a million nodes over one mesh of many primitives.
+class MorphTargetCounts {
+  public:
+    explicit MorphTargetCounts(const Context& ctx)
+        : ctx_(ctx), counts_(ctx.model().meshes.size(), kUnknown) {}
+    /// Target count of meshes[mesh]; 0 for an index that is not a mesh.
+    std::size_t operator()(int mesh) {
+        if (!Context::inRange(counts_, mesh)) return 0;
+        std::size_t& count = counts_[static_cast<std::size_t>(mesh)];
+        if (count == kUnknown) count = morphTargetCount(ctx_, mesh);
+        return count;
+    }
+
+  private:
+    static constexpr std::size_t kUnknown = ~std::size_t{0};
+    const Context& ctx_;
+    std::vector<std::size_t> counts_;
+};
 
 /// glTF primitive modes TRIANGLES / TRIANGLE_STRIP / TRIANGLE_FAN as a triangle list (spec
 /// 3.7.2.1 vertex order); a list's trailing partial triangle is dropped.
@@ -152,6 +193,30 @@ std::vector<Camera> convertCameras(const Context& ctx, const std::vector<PlacedN
 /// The first KHR_lights_punctual light placed by a node, if any.
 std::optional<Light> convertLight(const Context& ctx, const std::vector<PlacedNode>& placed,
                                   const geom::Aabb& bounds);
+
+// --- skins and morph targets (GltfSkins.cpp) ------------------------------------------------
+// `element` names the primitive, e.g. "meshes[0].primitives[1]".
+
+/// JOINTS_0 / WEIGHTS_0 of a primitive into mesh.joints / mesh.weights (weights repaired to sum
+/// to 1); joint indices are checked per instance, against its skin (linkSkins).
+void attachSkinning(const Context& ctx, const tinygltf::Primitive& prim, const std::string& element,
+                    Mesh& mesh);
+/// The primitive's morph targets' POSITION and NORMAL deltas into mesh.targets.
+void attachMorphTargets(const Context& ctx, const tinygltf::Primitive& prim,
+                        const std::string& element, Mesh& mesh);
+/// meshes[meshIndex].weights checked against `targets` (zeros with a warning when unusable).
+std::vector<float> defaultMorphWeights(const Context& ctx, int meshIndex, std::size_t targets);
+
+/// Fills scene.skins, each instance's skin and, when the file has skins, morph targets or
+/// animations, scene.nodes and scene.animations (else every Instance::node becomes -1).
+/// Instance::node must hold the placing node; `placed` are the nodes the scene places.
+void convertRigging(const Context& ctx, const std::vector<PlacedNode>& placed, Scene& scene);
+
+// --- animations (GltfAnimation.cpp) ---------------------------------------------------------
+
+/// Every animation's channels that drive T, R, S or morph weights of `nodes`, with the samplers
+/// they use; a matrix node a channel drives is turned into TRS.
+std::vector<Animation> convertAnimations(const Context& ctx, std::vector<Node>& nodes);
 
 // --- materials (GltfMaterials.cpp) ----------------------------------------------------------
 

@@ -20,6 +20,13 @@
 // - KHR_draco_mesh_compression and EXT_meshopt_compression: decoded (libdraco, libmeshoptimizer)
 //   into ordinary buffers before the meshes are converted, so decoded data gets every check
 //   above; corrupt or inconsistent compressed data is rejected (GltfCompressed.h).
+// - Skins, morph targets and animations (GltfSkins.cpp, GltfAnimation.cpp) are read into the
+//   scene's nodes, skins and animations with the same rules; the instances keep their rest pose.
+//   Spec violations a renderer can live with are repaired with a warning: weights that do not
+//   sum to 1, skinning data without a skin (drawn unskinned), channels with unknown paths or
+//   no node (skipped), animated matrix nodes (turned into TRS). Data that would make skinning or
+//   sampling meaningless is rejected: joint indices past the skin, non-finite or unordered
+//   keys, output counts that do not match the keys.
 // - The base colour texture's coordinate set (texCoord) and KHR_texture_transform are applied
 //   to the mesh's texture coordinates at load (GltfMeshes.cpp).
 
@@ -238,8 +245,13 @@ tinygltf::Model parse(const std::filesystem::path& file, const std::string& name
         throw SceneError(
             cat(name, ": ", message.empty() ? "tinygltf could not parse it" : message));
     }
+    // tinygltf 2.7 reports a skin without inverseBindMatrices, which the spec allows (identity
+    // matrices, 3.7.3.2), as a missing required property: not a problem worth a warning.
+    constexpr std::string_view kOptionalMatrices =
+        "'inverseBindMatrices' property is missing in Skin.";
     if (options.warn)
-        for (const std::string& line : lines(warn + err)) options.warn(cat(name, ": ", line));
+        for (const std::string& line : lines(warn + err))
+            if (line != kOptionalMatrices) options.warn(cat(name, ": ", line));
     return model;
 }
 
@@ -278,8 +290,8 @@ void placeInstances(const gltf::Context& ctx, const std::vector<gltf::PlacedNode
         if (!finite(p.world)) ctx.fail(element, "world transform is not finite");
         const std::uint32_t id = nextId++;
         for (std::size_t m = first; m < end; ++m)
-            scene.instances.push_back(
-                {static_cast<int>(m), p.world, id, node.name.empty() ? element : node.name});
+            scene.instances.push_back({static_cast<int>(m), p.world, id,
+                                       node.name.empty() ? element : node.name, p.node});
     }
 }
 
@@ -298,6 +310,7 @@ Scene convert(const gltf::Context& ctx, tinygltf::Model& model, const std::files
     gltf::decodeCompressed(ctx, model, placed);
     placeInstances(ctx, placed, scene);
     if (scene.instances.empty()) ctx.fail("scene", "no triangle primitives");
+    gltf::convertRigging(ctx, placed, scene);
     scene.computeBounds();
     if (!scene.bounds.valid() || !inWorld(scene.bounds))
         ctx.fail("scene", cat("world-space bounds are not finite or reach beyond ",

@@ -137,30 +137,39 @@ void repairNormals(const Context& ctx, const Primitive& prim, Mesh& mesh) {
     ctx.warn(prim.element, cat(bad.size(), " zero or non-finite normal(s) regenerated"));
 }
 
+/// `v` with one element per index: the per-vertex data of unshared triangle vertices.
+template <class T>
+void unshare(std::vector<T>& v, const std::vector<std::uint32_t>& indices) {
+    if (v.empty()) return;
+    std::vector<T> out;
+    out.reserve(indices.size());
+    for (std::uint32_t i : indices) out.push_back(v[i]);
+    v = std::move(out);
+}
+
 /// Flat normals, which glTF requires when NORMAL is absent (spec 3.7.2.1): every triangle gets
-/// its own three vertices.
+/// its own three vertices, and every per-vertex array (skinning and morph deltas included)
+/// follows.
 void generateFlatNormals(Mesh& mesh) {
-    std::vector<glm::vec3> positions, normals;
-    std::vector<glm::vec2> texcoords;
-    std::vector<glm::vec4> colors;
-    positions.reserve(mesh.indices.size());
+    std::vector<glm::vec3> normals;
     normals.reserve(mesh.indices.size());
     for (std::size_t t = 0; t < mesh.indices.size(); t += 3) {
         const std::uint32_t* tri = &mesh.indices[t];
         const glm::vec3 n =
             unit(faceNormal(mesh.positions[tri[0]], mesh.positions[tri[1]], mesh.positions[tri[2]]))
                 .value_or(kFallbackNormal);
-        for (int k = 0; k < 3; ++k) {
-            positions.push_back(mesh.positions[tri[k]]);
-            normals.push_back(n);
-            if (!mesh.texcoords.empty()) texcoords.push_back(mesh.texcoords[tri[k]]);
-            if (!mesh.colors.empty()) colors.push_back(mesh.colors[tri[k]]);
-        }
+        normals.insert(normals.end(), {n, n, n});
     }
-    mesh.positions = std::move(positions);
+    unshare(mesh.positions, mesh.indices);
+    unshare(mesh.texcoords, mesh.indices);
+    unshare(mesh.colors, mesh.indices);
+    unshare(mesh.joints, mesh.indices);
+    unshare(mesh.weights, mesh.indices);
+    for (Mesh::MorphTarget& target : mesh.targets) {
+        unshare(target.positions, mesh.indices);
+        unshare(target.normals, mesh.indices); // empty: no NORMAL, no NORMAL deltas (GltfSkins)
+    }
     mesh.normals = std::move(normals);
-    mesh.texcoords = std::move(texcoords);
-    mesh.colors = std::move(colors);
     std::iota(mesh.indices.begin(), mesh.indices.end(), 0u);
 }
 
@@ -299,6 +308,8 @@ std::optional<Mesh> convertPrimitive(const Context& ctx, const Primitive& prim) 
     }
     attachTexcoords(ctx, prim, mesh);
     attachColors(ctx, prim, mesh);
+    attachSkinning(ctx, prim.gltf, prim.element, mesh);
+    attachMorphTargets(ctx, prim.gltf, prim.element, mesh);
     if (const int normals = prim.attribute("NORMAL"); normals >= 0) {
         mesh.normals = readNormalVec3(ctx, normals, prim.usage("NORMAL"));
         checkCount(ctx, prim, "NORMAL", mesh.normals.size(), mesh.positions.size());
@@ -329,13 +340,32 @@ std::vector<std::uint32_t> triangleList(int mode, const std::vector<std::uint32_
     return out;
 }
 
+std::size_t morphTargetCount(const Context& ctx, int meshIndex) {
+    const tinygltf::Mesh& mesh = ctx.model().meshes[static_cast<std::size_t>(meshIndex)];
+    const std::size_t count = mesh.primitives.empty() ? 0 : mesh.primitives[0].targets.size();
+    if (count > kMaxMorphTargets)
+        ctx.fail(elem("meshes", static_cast<std::size_t>(meshIndex)),
+                 cat("absurd morph target count ", count, " (limit ", kMaxMorphTargets, ")"));
+    // One weight per target drives every primitive at once (spec 3.7.2.2).
+    for (std::size_t p = 1; p < mesh.primitives.size(); ++p)
+        if (mesh.primitives[p].targets.size() != count)
+            ctx.fail(
+                cat(elem("meshes", static_cast<std::size_t>(meshIndex)), elem(".primitives", p)),
+                cat(mesh.primitives[p].targets.size(), " morph targets but primitives[0] has ",
+                    count));
+    return count;
+}
+
 void convertMesh(const Context& ctx, int meshIndex, std::vector<Mesh>& out) {
     const tinygltf::Mesh& mesh = ctx.model().meshes[static_cast<std::size_t>(meshIndex)];
     const std::string element = elem("meshes", static_cast<std::size_t>(meshIndex));
+    const std::vector<float> weights =
+        defaultMorphWeights(ctx, meshIndex, morphTargetCount(ctx, meshIndex));
     for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
         const Primitive prim{mesh.primitives[p], element + elem(".primitives", p)};
         std::optional<Mesh> converted = convertPrimitive(ctx, prim);
         if (!converted) continue;
+        converted->morphWeights = weights;
         converted->name = mesh.name.empty() ? element : mesh.name;
         if (mesh.primitives.size() > 1) converted->name += elem(".primitives", p);
         out.push_back(std::move(*converted));
