@@ -6,6 +6,8 @@
 
 #include "GltfBuilder.h"
 
+#include <renderer/scene/Pose.h>
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -224,6 +226,16 @@ TEST(GltfAnimationValidation, TargetPositionCountMismatch) {
     expectRejected(g, "target_count.gltf",
                    {"meshes[0].primitives[0]", "targets[0].POSITION has 2 elements but POSITION "
                                                "has 3"});
+}
+
+TEST(GltfAnimationValidation, TargetsBeyondTheVertexStagesLimitAreDroppedWithAWarning) {
+    Gltf g = morphTriangle();
+    const json target = g.prim()["targets"][0];
+    for (std::size_t i = 1; i < kMaxMorphTargets + 3; ++i) g.prim()["targets"].push_back(target);
+    const Loaded l = load(g.write("too_many_targets.gltf"));
+    EXPECT_EQ(l.scene.meshes[0].targets.size(), kMaxMorphTargets);
+    EXPECT_EQ(l.scene.meshes[0].morphWeights.size(), kMaxMorphTargets);
+    EXPECT_TRUE(l.warned("meshes[0]: 35 morph targets: the first 32 are drawn"));
 }
 
 TEST(GltfAnimationValidation, TargetNormalCountMismatch) {

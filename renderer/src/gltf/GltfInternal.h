@@ -13,6 +13,7 @@
 #include <base/Numbers.h>
 #include <base/Text.h>
 #include <renderer/gltf/GltfLoader.h>
+#include <renderer/scene/Pose.h>
 #include <renderer/scene/Scene.h>
 
 #include <tiny_gltf.h>
@@ -46,7 +47,8 @@ inline constexpr std::size_t kMaxAccessorCount = std::size_t{1} << 24; // elemen
 inline constexpr std::size_t kMaxDecodedValues = std::size_t{1} << 28; // all accessors: 1 GiB
 inline constexpr std::size_t kMaxNodes = std::size_t{1} << 20;
 // Morph targets cost memory even when they name no accessor; real files have a few hundred.
-inline constexpr std::size_t kMaxMorphTargets = std::size_t{1} << 16;
+// (Of those, the first fl::kMaxMorphTargets are drawn: renderer/scene/Pose.h.)
+inline constexpr std::size_t kMaxFileMorphTargets = std::size_t{1} << 16;
 inline constexpr int kMaxImageSide = 16384; // GL_MAX_TEXTURE_SIZE of common desktop drivers
 inline constexpr long long kMaxImagePixels = 1LL << 26; // 256 MiB of RGBA8
 

@@ -343,9 +343,13 @@ std::vector<std::uint32_t> triangleList(int mode, const std::vector<std::uint32_
 std::size_t morphTargetCount(const Context& ctx, int meshIndex) {
     const tinygltf::Mesh& mesh = ctx.model().meshes[static_cast<std::size_t>(meshIndex)];
     const std::size_t count = mesh.primitives.empty() ? 0 : mesh.primitives[0].targets.size();
-    if (count > kMaxMorphTargets)
+    if (count > kMaxFileMorphTargets)
         ctx.fail(elem("meshes", static_cast<std::size_t>(meshIndex)),
-                 cat("absurd morph target count ", count, " (limit ", kMaxMorphTargets, ")"));
+                 cat("absurd morph target count ", count, " (limit ", kMaxFileMorphTargets, ")"));
+    if (count > fl::kMaxMorphTargets)
+        ctx.warn(elem("meshes", static_cast<std::size_t>(meshIndex)),
+                 cat(count, " morph targets: the first ", fl::kMaxMorphTargets,
+                     " are drawn (the vertex stage's limit), the rest ignored"));
     // One weight per target drives every primitive at once (spec 3.7.2.2).
     for (std::size_t p = 1; p < mesh.primitives.size(); ++p)
         if (mesh.primitives[p].targets.size() != count)
@@ -359,8 +363,9 @@ std::size_t morphTargetCount(const Context& ctx, int meshIndex) {
 void convertMesh(const Context& ctx, int meshIndex, std::vector<Mesh>& out) {
     const tinygltf::Mesh& mesh = ctx.model().meshes[static_cast<std::size_t>(meshIndex)];
     const std::string element = elem("meshes", static_cast<std::size_t>(meshIndex));
-    const std::vector<float> weights =
+    std::vector<float> weights =
         defaultMorphWeights(ctx, meshIndex, morphTargetCount(ctx, meshIndex));
+    if (weights.size() > fl::kMaxMorphTargets) weights.resize(fl::kMaxMorphTargets);
     for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
         const Primitive prim{mesh.primitives[p], element + elem(".primitives", p)};
         std::optional<Mesh> converted = convertPrimitive(ctx, prim);

@@ -291,7 +291,8 @@ void attachSkinning(const Context& ctx, const tinygltf::Primitive& prim, const s
 void attachMorphTargets(const Context& ctx, const tinygltf::Primitive& prim,
                         const std::string& element, Mesh& mesh) {
     const bool hasNormals = attribute(prim, "NORMAL") >= 0;
-    for (std::size_t i = 0; i < prim.targets.size(); ++i) {
+    // Beyond fl::kMaxMorphTargets the vertex stage applies none (morphTargetCount warned).
+    for (std::size_t i = 0; i < prim.targets.size() && i < fl::kMaxMorphTargets; ++i) {
         // Only POSITION and NORMAL deltas matter: TANGENT, TEXCOORD_n and COLOR_n deltas
         // change nothing Floodlight draws.
         const auto& attributes = prim.targets[i];
