@@ -199,6 +199,10 @@ TEST(CaptureScript, EveryMalformedFieldIsNamed) {
         {script("", R"([{"method": "pcf", "colour": 3}])"), "methods[0].colour"},
         {script("", R"(["hard", "hard"])"), "methods[1]"},
         {script("", R"([42])"), "methods[0]"},
+        {script(R"(, "animation": {"start": -1})"), "animation.start"},
+        {script(R"(, "animation": {"fps": "fast"})"), "animation.fps"},
+        {script(R"(, "animation": {"name": [1]})"), "animation.name"},
+        {script(R"(, "animation": {"speed": 2})"), "animation.speed"},
     };
     for (const Bad& c : cases) {
         try {
@@ -211,6 +215,19 @@ TEST(CaptureScript, EveryMalformedFieldIsNamed) {
                 << "expected '" << c.field << "' in: " << msg;
         }
     }
+}
+
+TEST(CaptureScript, AnimationClip) {
+    const CaptureScript plain = parse(script());
+    EXPECT_EQ(plain.animation.name, "all");
+    EXPECT_EQ(plain.animation.start, 0.0);
+    EXPECT_EQ(plain.animation.fps, 0.0);
+    const CaptureScript s =
+        parse(script(R"(, "animation": {"name": "walk", "start": 1.5, "fps": 24})"));
+    EXPECT_EQ(s.animation.name, "walk");
+    EXPECT_EQ(s.animation.start, 1.5);
+    EXPECT_EQ(s.animation.fps, 24.0);
+    EXPECT_EQ(parse(script(R"(, "animation": {"name": 2})")).animation.name, "2");
 }
 
 TEST(CaptureScript, MissingFileIsNamed) {

@@ -102,6 +102,19 @@ struct CaptureSetup {
     fs::path dir;
 };
 
+// The script's time axis: its animations (checked against the scene), frame i at start + i / fps.
+FramePlan::Clip timeAxis(const CaptureScript& script, const Scene& scene) {
+    FramePlan::Clip clip;
+    try {
+        clip.animations = chooseAnimations(scene, script.animation.name);
+    } catch (const std::invalid_argument& e) {
+        throw CaptureScriptError(script.file.string() + ": animation.name: " + e.what());
+    }
+    clip.start = script.animation.start;
+    clip.step = script.animation.fps > 0.0 ? 1.0 / script.animation.fps : 0.0;
+    return clip;
+}
+
 // The metrics of one resolution's runs, frame by frame: each method against the ground truth,
 // its added flicker since the previous frame, its worst frame, and a JFA run's |dI| buckets
 // against its standard-flooding counterpart.
@@ -303,7 +316,8 @@ int captureSize(const CaptureSetup& c, const SizeRun& at, FrameRunner& runner,
         .lightKeys = script.lightKeys,
         // A resumed run's first frame would carry the start-up (shader compilation, first
         // allocations) that only frame 0 carries in a run without a break: one frame unrecorded.
-        .warmup = firstFrame > 0 ? 1 : 0};
+        .warmup = firstFrame > 0 ? 1 : 0,
+        .clip = timeAxis(script, c.scene)};
     if (rendered > 0)
         runner.run(plan, lanes, [&](int i, std::vector<FrameImages>& laneImages) {
             const FrameImages& ref = laneImages[0];

@@ -192,7 +192,7 @@ CaptureScript parseCaptureScript(const std::string& text, const std::filesystem:
     try {
         checkKeys(j, "script",
                   {"scene", "camera", "light", "resolutions", "shadowMap", "jfaPasses", "reference",
-                   "methods", "saveFrames", "ground", "comment"});
+                   "methods", "saveFrames", "ground", "animation", "comment"});
         if (j.contains("scene")) {
             if (!j["scene"].is_string()) fail("scene", "expected \"default\" or a file name");
             if (j["scene"] != "default") s.scene = dir / j["scene"].get<std::string>();
@@ -287,6 +287,24 @@ CaptureScript parseCaptureScript(const std::string& text, const std::filesystem:
                 fail("ground", "expected \"" + names + "\"");
             }
             s.ground = g.get<std::string>();
+        }
+        if (j.contains("animation")) {
+            const Json& a = j["animation"];
+            checkKeys(a, "animation", {"name", "start", "fps"});
+            if (a.contains("name")) {
+                const Json& n = a["name"];
+                if (n.is_number_integer() && n.get<long long>() >= 0)
+                    s.animation.name = std::to_string(n.get<long long>());
+                else if (n.is_string())
+                    s.animation.name = n.get<std::string>();
+                else
+                    fail("animation.name", "expected \"all\", \"none\", a name or an index");
+            }
+            if (a.contains("start"))
+                s.animation.start =
+                    readNumber(a["start"], "animation.start", 0.0, kMaxAnimationTime, false);
+            if (a.contains("fps"))
+                s.animation.fps = readNumber(a["fps"], "animation.fps", 0.0, 1000.0, false);
         }
         if (j.contains("saveFrames")) {
             if (!j["saveFrames"].is_boolean()) fail("saveFrames", "expected true or false");

@@ -21,6 +21,9 @@
 //                                                          // keys: the method's options in the
 //                                                          // method table ("name:V" sets its
 //                                                          first)
+//    "animation": {"name": "all" | "none" | NAME | INDEX,  // the time axis: frame i is posed
+//                  "start": S, "fps": F},                  // at S + i / F s (F 0 or absent:
+//                                                          // all at S); default: all at 0
 //    "saveFrames": true,                                   // PNG + EXR per frame x method
 //    "ground": "auto" | "on" | "off"}                      // as --ground (default auto)
 // Every problem is reported as "FILE: FIELD: problem".
@@ -77,6 +80,12 @@ struct CaptureScript {
     std::vector<MethodSpec> methods;
     bool saveFrames = true;
     std::string ground = "auto"; // --ground: auto | on | off (renderer/scene/Ground.h)
+    /// The time axis (renderer/scene/Pose.h): which animations play, from when, how fast.
+    struct Clip {
+        std::string name = "all";
+        double start = 0.0;
+        double fps = 0.0; // 0: every frame at `start`
+    } animation;
 };
 
 /// Parses a script's JSON text; `file` names it in messages and anchors relative paths.

@@ -269,7 +269,7 @@ void applyAnimation(Renderer& renderer, const Scene& scene, const SceneOptions& 
     try { // checked for every scene: a name the scene does not have is a usage error
         chosen = chooseAnimations(scene, o.animation);
     } catch (const std::invalid_argument& e) {
-        throw UsageError(e.what());
+        throw UsageError(std::string("--") + e.what());
     }
     if (!isAnimated(scene)) return;
     renderer.setAnimations(std::move(chosen));

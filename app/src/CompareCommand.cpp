@@ -30,6 +30,7 @@ struct CompareRequest {
     std::string out = "captures/compare";
     int frames = 60;
     int width = 512, height = 512;
+    double animationFps = 0.0; // --animation-fps: frame i posed at --time + i / fps (0: still)
 };
 
 // frames.csv: per frame the |dI| statistics, then each lane's time per phase (the phases either
@@ -115,11 +116,20 @@ int runCompare(const CompareRequest& r) {
     double worstScore = -1.0;
     FrameImages worstMethod, worstReference;
     FrameRunner runner(r.frames);
+    FramePlan::Clip clip;
+    try {
+        clip.animations = chooseAnimations(scene, r.scene.animation);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(std::string("--") + e.what());
+    }
+    clip.start = r.scene.time;
+    clip.step = r.animationFps > 0.0 ? 1.0 / r.animationFps : 0.0;
     runner.run({.scene = &scene,
                 .camera = std::move(path),
                 .frames = r.frames,
                 .width = r.width,
-                .height = r.height},
+                .height = r.height,
+                .clip = clip},
                lanes, [&](int i, std::vector<FrameImages>& images) {
                    const SoftStats s =
                        compareSoftShadows(images[0].visibility, images[1].visibility);
@@ -234,6 +244,11 @@ Runner addCompareCommand(CLI::App& app) {
         ->capture_default_str();
     cmd->add_option("--frames", s->frames, "Frames along the path")
         ->check(integer(1, 100000))
+        ->capture_default_str();
+    cmd->add_option("--animation-fps", s->animationFps,
+                    "Frames per second of scene time: frame i is posed at --time + i / FPS "
+                    "(0: every frame at --time)")
+        ->check(number(0.0, 1000.0))
         ->capture_default_str();
     addOutOption(*cmd, s->out, "Output folder");
     return [s] {

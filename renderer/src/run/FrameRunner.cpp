@@ -96,6 +96,10 @@ void FrameRunner::run(const FramePlan& plan, std::vector<Lane>& lanes, const OnF
     const float aspect = static_cast<float>(plan.width) / static_cast<float>(plan.height);
     std::vector<FrameImages> images(lanes.size());
     const int end = plan.last < 0 ? plan.frames : std::min(plan.last + 1, plan.frames);
+    if (plan.clip)
+        for (Lane& lane : lanes)
+            if (lane.renderer->animations() != plan.clip->animations)
+                lane.renderer->setAnimations(plan.clip->animations);
     for (int k = plan.first - plan.warmup; k < end; ++k) {
         const int i = std::max(k, plan.first);
         if (!plan.lightKeys.empty()) {
@@ -114,6 +118,7 @@ void FrameRunner::run(const FramePlan& plan, std::vector<Lane>& lanes, const OnF
             path && i > 0 ? path->frame(i - 1, plan.frames, scene.bounds, aspect) : cam;
         for (std::size_t l = 0; l < lanes.size(); ++l) {
             Renderer& r = *lanes[l].renderer;
+            if (plan.clip) r.setTime(plan.clip->timeOf(i), plan.clip->timeOf(std::max(i - 1, 0)));
             r.render(cam, previous);
             if (k < plan.first) continue;
             if (plan.readBack) {

@@ -122,9 +122,9 @@ std::vector<int> chooseAnimations(const Scene& scene, const std::string& choice)
     std::string names;
     for (std::size_t i = 0; i < scene.animations.size(); ++i)
         names += cat(names.empty() ? "" : ", ", i, " '", scene.animations[i].name, "'");
-    throw std::invalid_argument(
-        cat("--animation ", choice, ": not all, none, or one of the scene's ",
-            scene.animations.size(), " animation(s)", names.empty() ? "" : ": ", names));
+    throw std::invalid_argument(cat("animation ", choice, ": not all, none, or one of the scene's ",
+                                    scene.animations.size(), " animation(s)",
+                                    names.empty() ? "" : ": ", names));
 }
 
 double animationDuration(const Scene& scene, std::span<const int> animations) {

@@ -106,6 +106,15 @@ struct FramePlan {
     int warmup = 0;
     /// false: frames are timed only, nothing is read back (onFrame gets empty images).
     bool readBack = true;
+    /// The time axis (renderer/scene/Pose.h): when set, every lane plays these animations and
+    /// frame i is posed at start + i * step seconds (step 0: every frame at `start`), with frame
+    /// i - 1's time as the motion target's previous one.
+    struct Clip {
+        std::vector<int> animations;
+        double start = 0.0, step = 0.0;
+        [[nodiscard]] double timeOf(int frame) const { return start + frame * step; }
+    };
+    std::optional<Clip> clip;
 };
 
 /// Drives lanes through one or more plans, with one progress bar over all of them.
