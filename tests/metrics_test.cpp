@@ -147,10 +147,16 @@ TEST(Metrics, SurfaceFlickerFollowsThePointNotThePixel) {
     EXPECT_EQ(r.pixels(), static_cast<std::size_t>((w - 1) * h)) << "column 0 came from outside";
     EXPECT_DOUBLE_EQ(r.meanAbsoluteChange(before, after), 0.0);
     EXPECT_GT(meanAbsoluteChange(before, after), 0.1);
-    // A half-pixel shift samples the previous image between two pixels (bilinear).
+    // A half-pixel shift samples the previous image between two pixels: at the edge the point
+    // held something between 0 and 1, so the edge's value now (either) is no change.
     const Reprojection half(shiftedMotion(w, h, 0.5f, 5.0f), depthOf(motion), {}, {});
-    EXPECT_DOUBLE_EQ(half.meanAbsoluteChange(before, before),
-                     h * 0.5 / static_cast<double>(half.pixels()));
+    EXPECT_DOUBLE_EQ(half.meanAbsoluteChange(before, before), 0.0);
+    // A change beyond that range counts: here the edge moved 2 pixels on screen where the
+    // surface moved half a pixel, so the surface's edge moved 1.5 pixels; one pixel per row
+    // lies beyond what its previous texels held.
+    const FloatImage moved = image(w, h, [](int x, int) { return x < 6 ? 0.0f : 1.0f; });
+    EXPECT_DOUBLE_EQ(half.meanAbsoluteChange(before, moved),
+                     h * 1.0 / static_cast<double>(half.pixels()));
     // The method flickers on one pixel the reference does not.
     FloatImage method = after;
     method.data[6] = 0.0f;

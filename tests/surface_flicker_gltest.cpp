@@ -102,13 +102,15 @@ TEST_F(SurfaceFlickerTest, StillShadowWithMovingCameraAddsNoFlickerForHardShadow
     // The camera's motion moves the box's hard shadow across the screen: the same-pixel change
     // is large. On the surface it stays put: only resampling at its edge remains.
     const double hardSurface = r.meanAbsoluteChange(hard[0].visibility, hard[1].visibility);
-    // Measured: same pixel 0.0132, same point 0.0020 (edge resampling); added: -0.0053 and
-    // -0.0006.
+    // Measured: hard alone, same pixel 0.0132; added (minus the truth's), same pixel -0.0053,
+    // same point -0.00002. On the same point only what lies beyond the resampled range of the
+    // previous texels counts (Metrics.h, Reprojection), so a shadow that stays put adds nothing.
     RecordProperty("sameSurfaceAddedFlicker", std::to_string(surface));
     RecordProperty("samePixelAddedFlicker", std::to_string(screen));
+    RecordProperty("hardSameSurfaceChange", std::to_string(hardSurface));
     EXPECT_GT(hardScreen, 0.005);
-    EXPECT_LT(std::abs(surface), 0.2 * hardScreen);
-    EXPECT_LT(hardSurface, 0.2 * hardScreen);
+    EXPECT_LT(std::abs(surface), 0.05 * hardScreen);
+    EXPECT_LT(hardSurface, 0.05 * hardScreen);
 }
 
 } // namespace

@@ -114,8 +114,9 @@ nlohmann::json resultsSummary(const CaptureResults& r) {
         {"rmsePenumbra", "pooled over the reference's penumbra pixels of all frames"},
         {"width", "median over receivers with 0.1 <= v <= 0.9 of 0.8 / |grad v|, pixels"},
         {"addedFlicker", "mean |v_t(p) - v_t-1(reproject(p))| over the receivers whose surface "
-                         "point was a receiver at the same depth in the previous frame (bilinear "
-                         "there), of the method minus that of the reference"},
+                         "point was a receiver at the same depth in the previous frame, where "
+                         "v_t-1 there is the range its pixels around the point held (a change "
+                         "within it is resampling), of the method minus that of the reference"},
         {"addedFlickerScreen", "mean |v_t - v_t-1| on the same pixel over receivers in both "
                                "frames, of the method minus that of the reference (camera "
                                "motion counts too)"}};

@@ -85,8 +85,9 @@ class Reprojection {
     /// channels.
     Reprojection(const FloatImage& motion, const FloatImage& previousDepth,
                  const FloatImage& receivers, const FloatImage& previousReceivers);
-    /// Mean |current(p) - previous(reproject(p))| over the pixels that take part (bilinear in
-    /// the previous image); 0 when none does.
+    /// Mean |current(p) - previous(reproject(p))| over the pixels that take part, where the
+    /// previous value is the range the previous image holds at the texels around the point (a
+    /// change within it is resampling, not flicker); 0 when no pixel takes part.
     [[nodiscard]] double meanAbsoluteChange(const FloatImage& previous,
                                             const FloatImage& current) const;
     /// How many pixels take part.
