@@ -22,12 +22,7 @@ constexpr float kMargin = 0.1f; // points this close to a shadow edge are not co
 
 /// The card and its shadow seen from above.
 CameraView overheadCamera(const Scene& scene) {
-    CameraSpec spec;
-    spec.kind = CameraSpec::Kind::LookAt;
-    spec.eye = {0.8f, 8.0f, 0.31f};
-    spec.target = {0.8f, 0.0f, 0.3f};
-    spec.yfovDegrees = 35.0f;
-    return makeCameraView(scene, spec, 1.0f);
+    return lookAtCamera(scene, {0.8f, 8.0f, 0.31f}, {0.8f, 0.0f, 0.3f}, 35.0f);
 }
 
 /// Settings that keep every method small enough for llvmpipe: few reference maps and rays.

@@ -97,12 +97,7 @@ Scene baked(const Scene& s, const Pose& pose) {
 }
 
 CameraView overhead(const Scene& scene) {
-    CameraSpec spec;
-    spec.kind = CameraSpec::Kind::LookAt;
-    spec.eye = {0.5f, 9.0f, 0.01f};
-    spec.target = {0.5f, 0.0f, 0.0f};
-    spec.yfovDegrees = 40.0f;
-    return makeCameraView(scene, spec, 1.0f);
+    return lookAtCamera(scene, {0.5f, 9.0f, 0.01f}, {0.5f, 0.0f, 0.0f}, 40.0f);
 }
 
 TEST_F(PoseTest, GpuPoseCastsTheShadowOfTheCpuPose) {

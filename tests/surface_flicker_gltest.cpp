@@ -20,12 +20,7 @@ namespace {
 class SurfaceFlickerTest : public GlTest {};
 
 CameraView cameraAt(const Scene& scene, glm::vec3 eye) {
-    CameraSpec spec;
-    spec.kind = CameraSpec::Kind::LookAt;
-    spec.eye = eye;
-    spec.target = {0.0f, 0.0f, 0.0f};
-    spec.yfovDegrees = 50.0f;
-    return makeCameraView(scene, spec, 1.0f);
+    return lookAtCamera(scene, eye, glm::vec3(0.0f), 50.0f);
 }
 
 // Two frames of `method` from two cameras, the second knowing the first.

@@ -122,6 +122,15 @@ Scene checkerCardOverGround(AlphaMode mode, int cells) {
     return s;
 }
 
+CameraView lookAtCamera(const Scene& scene, glm::vec3 eye, glm::vec3 target, float fovDegrees) {
+    CameraSpec spec;
+    spec.kind = CameraSpec::Kind::LookAt;
+    spec.eye = eye;
+    spec.target = target;
+    spec.yfovDegrees = fovDegrees;
+    return makeCameraView(scene, spec, 1.0f);
+}
+
 SceneView spotLitBox() {
     Scene scene = groundAndBox(3.0f, {-0.5f, 0.0f, -0.5f}, {0.5f, 1.0f, 0.5f}, {0.3f, -1, 0.2f});
     scene.light->type = Light::Type::Spot;

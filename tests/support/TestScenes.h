@@ -25,6 +25,9 @@ struct SceneView {
     CameraView camera;
 };
 
+/// A square camera at `eye` looking at `target` with a vertical field of view of `fovDegrees`.
+CameraView lookAtCamera(const Scene& scene, glm::vec3 eye, glm::vec3 target, float fovDegrees);
+
 /// groundAndBox's unit box under a spot light of radius 2 above and to the side of it, seen from
 /// above the other side: inner and outer penumbrae on the ground, self-shadowing on the box.
 SceneView spotLitBox();
