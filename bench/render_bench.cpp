@@ -1,18 +1,23 @@
 // Frame and per-pass times of the renderer on a scene, with peak memory: hard shadows by default,
 // any shadow method with --method (e.g. the JFA-L / JFA-E flood time against the scene size,
 // thesis Fig. 5.10). Prints min and median over --frames frames after --warmup frames, all in
-// one process/context.
+// one process/context. Animated scenes play --animation from --time, advanced by 1/--animate
+// seconds each frame (the cost of skinning); --static bakes that pose into plain meshes first
+// (the same picture with no skinning at all, the baseline it is compared with).
 
 #include <base/Stats.h>
 #include <renderer/Renderer.h>
 #include <renderer/context/EglContext.h>
 #include <renderer/gltf/GltfLoader.h>
 #include <renderer/run/FrameRunner.h>
+#include <renderer/scene/Pose.h>
 #include <renderer/scene/SceneGenerator.h>
 
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -29,6 +34,43 @@ long peakRssKiB() {
     return u.ru_maxrss; // KiB on Linux
 }
 
+/// `scene` frozen in `pose`: every posed instance (skinned or morphed) gets a mesh of its own
+/// with its vertices in world space, and the skins, morph targets, nodes and animations go. The
+/// GL passes then draw it as any static scene (uniform branches, no joints, no uploads).
+fl::Scene baked(const fl::Scene& scene, const fl::Pose& pose) {
+    fl::Scene out = scene;
+    for (std::size_t i = 0; i < out.instances.size(); ++i) {
+        fl::Instance& inst = out.instances[i];
+        const fl::Mesh& mesh = scene.meshes.at(static_cast<std::size_t>(inst.mesh));
+        if (fl::isSkinned(inst, mesh) || !mesh.targets.empty()) {
+            fl::Mesh m = mesh;
+            fl::posedVertices(scene, pose, i, m.positions, &m.normals);
+            m.joints.clear();
+            m.weights.clear();
+            m.targets.clear();
+            m.morphWeights.clear();
+            inst.mesh = static_cast<int>(out.meshes.size());
+            inst.world = glm::mat4(1.0f);
+            out.meshes.push_back(std::move(m));
+        } else {
+            inst.world = pose.instanceWorld.at(i);
+        }
+        inst.node = -1;
+        inst.skin = -1;
+    }
+    for (fl::Mesh& m : out.meshes) { // meshes only the baked instances used keep no rig either
+        m.joints.clear();
+        m.weights.clear();
+        m.targets.clear();
+        m.morphWeights.clear();
+    }
+    out.nodes.clear();
+    out.skins.clear();
+    out.animations.clear();
+    out.computeBounds();
+    return out;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -40,6 +82,9 @@ int main(int argc, char** argv) {
     std::string method = "hard";
     std::optional<float> lightRadius;
     std::string shaderDir;
+    std::string animation = "all";
+    double time = 0.0, fps = 0.0;
+    bool bake = false;
     app.add_option("--scene", scenePath, "glTF scene (default: generated, see --triangles)");
     app.add_option("--triangles", triangles,
                    "Generate the default-style scene with this many triangles");
@@ -65,6 +110,19 @@ int main(int argc, char** argv) {
             app.add_option(flag, optionText[flag],
                            help + " (default " + std::string(o->defaultValue) + ")");
     }
+    app.add_option("--animation", animation,
+                   "Animations that play: all, none, or one by name or index")
+        ->capture_default_str();
+    app.add_option("--time", time, "Seconds into the animations at the first frame")
+        ->check(CLI::Range(0.0, fl::kMaxAnimationTime))
+        ->capture_default_str();
+    app.add_option("--animate", fps,
+                   "Advance the time by 1/FPS seconds each frame, looping over the longest "
+                   "animation (0: every frame at --time)")
+        ->check(CLI::Range(0.0, 10000.0))
+        ->capture_default_str();
+    app.add_flag("--static", bake,
+                 "Bake the pose at --time into plain meshes and render that static scene");
     app.add_option("--shader-dir", shaderDir,
                    "Load shaders from this folder instead of the binary (to time shader edits)");
     CLI11_PARSE(app, argc, argv);
@@ -81,6 +139,11 @@ int main(int argc, char** argv) {
         else
             scene = fl::generateScene({triangles ? triangles : 6320, 1});
         if (lightRadius && scene.light) scene.light->radius = *lightRadius;
+        std::vector<int> playing = fl::chooseAnimations(scene, animation);
+        if (bake) {
+            scene = baked(scene, fl::evaluatePose(scene, playing, time));
+            playing.clear(); // the baked scene has no animations left
+        }
         const long rssScene = peakRssKiB();
         auto ctx = fl::EglContext::create(false);
         const fl::gl::ShaderLibrary shaders(
@@ -96,6 +159,28 @@ int main(int argc, char** argv) {
             if (settings.options.has(o->flag)) (void)settings.options.text(*o); // validates
         fl::Renderer renderer(shaders, scene, settings);
         renderer.resize(width, height);
+        const bool animated = fl::isAnimated(scene);
+        const double duration = fl::animationDuration(scene, playing);
+        // Frame k's time: --time + k / --animate, wrapped into the longest clip as the viewer
+        // plays it.
+        const auto timeAt = [&](int k) {
+            double t = time + (fps > 0.0 ? k / fps : 0.0);
+            if (duration > 0.0 && t > duration) t = std::fmod(t, duration);
+            return t;
+        };
+        std::vector<double> poseMs; // CPU: evaluating the pose and uploading its joints
+        const auto pose = [&](int k) {
+            if (!animated) return;
+            const auto start = std::chrono::steady_clock::now();
+            renderer.setTime(timeAt(k), timeAt(std::max(k - 1, 0)));
+            poseMs.push_back(
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                    .count());
+        };
+        if (animated) {
+            renderer.setAnimations(playing);
+            pose(0);
+        }
         // The frame loop of capture/compare (renderer/run/FrameRunner.h): one camera held,
         // timed only (no read-back between frames).
         std::vector<fl::Lane> lanes{{method, &renderer, {}}};
@@ -108,7 +193,7 @@ int main(int argc, char** argv) {
                     .height = height,
                     .warmup = warmup,
                     .readBack = false},
-                   lanes);
+                   lanes, [&](int frame, std::vector<fl::FrameImages>&) { pose(frame + 1); });
         runner.finish();
         const fl::PhaseTimes& times = lanes.front().times;
         std::set<int> passCounts;
@@ -122,6 +207,19 @@ int main(int argc, char** argv) {
                   << "scene: " << scene.source << ", " << scene.triangleCount() << " triangles\n"
                   << "method: " << method << ", light radius "
                   << (scene.light ? scene.light->radius : 0.0f) << "\n";
+        if (animated) {
+            std::string names;
+            for (int a : playing)
+                names += (names.empty() ? "" : ", ") +
+                         scene.animations[static_cast<std::size_t>(a)].name;
+            std::cout << "animation: " << (names.empty() ? "none (rest pose, skinned)" : names)
+                      << ", from t " << time << " s"
+                      << (fps > 0.0 ? ", " + std::to_string(fps) + " frames per second"
+                                    : std::string(", held"))
+                      << "\n";
+        } else if (bake) {
+            std::cout << "animation: baked at t " << time << " s (static)\n";
+        }
         for (const auto& [flag, value] : settings.options.values())
             std::cout << "  " << flag << " " << value << "\n";
         if (!passCounts.empty()) {
@@ -146,6 +244,7 @@ int main(int argc, char** argv) {
         std::sort(names.begin(), names.end());
         for (const std::string& name : names) row(name, times.phaseSeries(name));
         row("frame", times.frameMs());
+        if (!poseMs.empty()) row("pose (CPU)", poseMs);
         std::cout << "peak RSS: " << peakRssKiB() / 1024
                   << " MiB (after loading the scene: " << rssScene / 1024 << " MiB)\n";
     } catch (const std::exception& e) {

@@ -387,7 +387,12 @@ TEST(GlbWriter, WritesAWellFormedGlb) {
     EXPECT_EQ(doc["asset"]["version"], "2.0");
     EXPECT_EQ(doc["asset"]["generator"], "Floodlight");
     EXPECT_EQ(doc["buffers"][0]["byteLength"], binLen);
-    EXPECT_EQ(doc["nodes"].size(), s.instances.size() + 2); // + camera + light
+    // One node per instance, the characters' skeletons (Scene::nodes, written first), camera
+    // and light.
+    EXPECT_EQ(s.nodes.size(), 4u * 8u); // four characters: a root and seven joints each
+    EXPECT_EQ(doc["nodes"].size(), s.nodes.size() + s.instances.size() + 2);
+    EXPECT_EQ(doc["skins"].size(), 4u);
+    EXPECT_EQ(doc["animations"].size(), 2u); // walk, wave
     EXPECT_EQ(doc["meshes"].size(), s.meshes.size());
     EXPECT_EQ(doc["materials"].size(), s.materials.size());
     EXPECT_EQ(doc["extensionsUsed"][0], "KHR_lights_punctual");

@@ -3,6 +3,7 @@
 // before tessellation in a fixed order, so an object looks the same at every detail level.
 
 #include "SceneGenObjects.h"
+#include "SceneGenRig.h"
 
 #include <algorithm>
 #include <cmath>
@@ -314,37 +315,45 @@ void buildFlower(const ObjectDesign& d, int detail, MeshBuilder& green, MeshBuil
 
 // ---- character --------------------------------------------------------------------------------
 
-void buildCharacter(const ObjectDesign& d, int detail, MeshBuilder& b) {
-    Rng rng(d.seed);
-    const float s = d.scale;
-    const float hip = 0.8f * s;
-    const float armSwing[2] = {rng.uniform(0.1f, 0.45f), rng.uniform(0.1f, 0.45f)};
-    const bool waving = rng.unit() < 0.5f;
-    const float legSplay = rng.uniform(0.02f, 0.12f);
+/// The character at its rest pose; `rig` (if given) learns which vertices each joint carries.
+void buildCharacter(const ObjectDesign& d, int detail, MeshBuilder& b, std::vector<RigPart>* rig) {
+    const CharacterDesign c = designCharacter(d);
+    const float s = c.s;
+    const float hip = c.hip;
+    // Records the vertices the shape just emitted as carried by `joint`.
+    std::uint32_t first = b.vertexCount();
+    const auto part = [&](int joint) {
+        if (rig) rig->push_back({first, b.vertexCount(), joint});
+        first = b.vertexCount();
+    };
 
     const int limbSegs = 3 + detail / 2;
     const int limbRings = detail == 0 ? 0 : 1 + detail / 4;
     for (float side : {-1.0f, 1.0f}) { // legs, from the feet up to the hip
-        const glm::vec3 foot(side * (0.1f * s + legSplay * hip), -kSink, 0.0f);
+        const glm::vec3 foot(side * (0.1f * s + c.legSplay * hip), -kSink, 0.0f);
         const glm::vec3 hipJoint(side * 0.1f * s, hip, 0.0f);
         const glm::vec3 leg = hipJoint - foot;
         addCapsule(b, frameAlong(foot, normalized(leg)), 0.075f * s, std::sqrt(glm::dot(leg, leg)),
                    limbSegs, limbRings);
+        part(side < 0.0f ? kLegL : kLegR);
     }
 
     const glm::mat4 torsoXf =
         translate({0.0f, hip - 0.08f * s, 0.0f}) * scaleMat(glm::vec3(1.0f, 1.0f, 0.7f));
     addCapsule(b, torsoXf, 0.2f * s, 0.72f * s, 4 + detail / 2, 1 + detail / 4);
+    part(kSpine);
     addSphere(b, translate({0.0f, 1.6f * s, 0.0f}) * scaleMat(glm::vec3(0.12f * s)), 4 + detail,
               2 + detail / 2);
+    part(kHead);
 
     for (int i = 0; i < 2; ++i) { // arms hang from the shoulders; one may wave
         const float side = i == 0 ? -1.0f : 1.0f;
         const glm::vec3 shoulder(side * 0.24f * s, 1.4f * s, 0.0f);
-        const float swing = (waving && i == 1) ? 2.6f : armSwing[i];
+        const float swing = (c.waving && i == 1) ? 2.6f : c.armSwing[i];
         const glm::vec3 dir(side * std::sin(swing), -std::cos(swing), 0.15f);
         addCapsule(b, frameAlong(shoulder, normalized(dir)), 0.055f * s, 0.65f * s, limbSegs,
                    limbRings);
+        part(i == 0 ? kArmL : kArmR);
     }
 }
 
@@ -451,7 +460,7 @@ void placeOnTerrain(ObjectDesign& design, const Terrain& terrain) {
 }
 
 void buildObject(const ObjectDesign& design, const Terrain& terrain, int detail,
-                 std::array<MeshBuilder, 2>& parts) {
+                 std::array<MeshBuilder, 2>& parts, std::vector<RigPart>* rig) {
     switch (design.kind) {
     case Kind::Tree:
         buildTree(design, detail, parts[0], parts[1]);
@@ -469,7 +478,7 @@ void buildObject(const ObjectDesign& design, const Terrain& terrain, int detail,
         buildFlower(design, detail, parts[0], parts[1]);
         break;
     case Kind::Character:
-        buildCharacter(design, detail, parts[0]);
+        buildCharacter(design, detail, parts[0], rig);
         break;
     }
 }

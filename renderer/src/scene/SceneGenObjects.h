@@ -9,6 +9,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace fl::gen {
 
@@ -89,10 +90,13 @@ struct ObjectDesign {
 /// Sets design.origin: on the lowest ground under the object's base.
 void placeOnTerrain(ObjectDesign& design, const Terrain& terrain);
 
+struct RigPart; // SceneGenRig.h
+
 /// Tessellates the object at `detail` >= 0 into parts[0] (and parts[1] for two-part kinds),
-/// in the object's local frame (origin on the ground, +Y up).
+/// in the object's local frame (origin on the ground, +Y up). A character also lists in `rig`
+/// (if given) which of its vertices each joint of its skeleton carries.
 void buildObject(const ObjectDesign& design, const Terrain& terrain, int detail,
-                 std::array<MeshBuilder, 2>& parts);
+                 std::array<MeshBuilder, 2>& parts, std::vector<RigPart>* rig = nullptr);
 
 /// Triangles buildObject produces at `detail` (a count-only run).
 [[nodiscard]] std::size_t objectTriangles(const ObjectDesign& design, const Terrain& terrain,

@@ -1,9 +1,11 @@
 // The default scene: layout after the thesis' fantasy scene, a triangle budget shared among the
-// objects, the exact count settled by the terrain, and the light and camera.
+// objects, the exact count settled by the terrain, the characters' skeletons and walk / wave
+// cycles (SceneGenRig.h; they add no triangles), and the light and camera.
 
 #include <renderer/scene/SceneGenerator.h>
 
 #include "SceneGenObjects.h"
+#include "SceneGenRig.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -251,17 +253,23 @@ Scene generateScene(const SceneGenParams& params) {
     gen::MeshBuilder ground;
     terrain.build(ground);
     addObject(scene, "terrain", ground, glm::vec4(0.22f, 0.36f, 0.12f, 1.0f), glm::mat4(1.0f));
+    gen::CharacterAnimations animations;
     for (std::size_t i = 0; i < objects.size(); ++i) {
         const ObjectDesign& o = objects[i];
         std::array<gen::MeshBuilder, 2> parts;
-        gen::buildObject(o, terrain, detail[i], parts);
+        std::vector<gen::RigPart> rig;
+        gen::buildObject(o, terrain, detail[i], parts, &rig);
         const glm::mat4 world = gen::placeYaw(o.origin, o.yaw);
         for (int p = 0; p < gen::partCount(o.kind); ++p) {
             const glm::vec4 color = gen::partColor(o.kind, p, o.variant, colorRng);
             addObject(scene, o.name + gen::partSuffix(o.kind, p),
                       parts[static_cast<std::size_t>(p)], color, world);
         }
+        // A character is one part: the instance just added.
+        if (o.kind == Kind::Character)
+            gen::rigCharacter(scene, o, scene.instances.size() - 1, rig, animations);
     }
+    gen::addCharacterAnimations(scene, animations);
     scene.cameras.push_back(makeCamera(terrain));
     scene.light = makeLight();
     scene.computeBounds();

@@ -28,7 +28,9 @@ struct NamedSize {
 const std::vector<NamedSize>& thesisSceneSizes();
 
 /// Builds the scene: terrain, tree, pergola, mushrooms, rock, flower, characters, and a light.
-/// Throws std::invalid_argument if params.triangles < kMinTriangles.
+/// Each character is skinned to a skeleton and either walks in place (animation "walk") or waves
+/// its raised arm ("wave"), both looping every second; time 0 of both is the rest pose. Throws
+/// std::invalid_argument if params.triangles < kMinTriangles.
 Scene generateScene(const SceneGenParams& params);
 
 /// Writes a scene as binary glTF (.glb) that loadGltf reads back to the same scene.
