@@ -48,7 +48,8 @@ class RayScene {
   public:
     /// Builds the BVH. Throws std::invalid_argument naming the vertex or triangle for a
     /// non-finite or too large coordinate or an index out of range, or for cut-out flags that are
-    /// not one per triangle or come without `transmits`; std::runtime_error for an Embree failure. Degenerate triangles (zero area) block nothing and are kept.
+    /// not one per triangle or come without `transmits`; std::runtime_error for an Embree failure.
+    /// Degenerate triangles (zero area) block nothing and are kept.
     explicit RayScene(const Triangles& triangles);
     ~RayScene();
     RayScene(RayScene&&) noexcept;
