@@ -75,6 +75,22 @@ TEST(AnimationCli, MorphCubeChangesShapeOverTime) {
     EXPECT_GT(changed(a.red, b.red), 0.005);
 }
 
+TEST(AnimationCli, CompareAdvancesTheClipPerFrame) {
+    if (!fs::exists(kSimpleSkin)) GTEST_SKIP() << kSimpleSkin << " (assimp-testmodels) missing";
+    const fs::path dir = outputDir("animation_cli") / "compare";
+    const Outcome o =
+        runCommand(std::string(FLOODLIGHT_BINARY) + " compare --scene " + kSimpleSkin.string() +
+                   " --method jfa-l --frames 3 --animation-fps 2 --width 64 "
+                   "--height 64 --shadow-map-size 256 --out " +
+                   dir.string());
+    ASSERT_EQ(o.code, 0) << o.output;
+    EXPECT_TRUE(fs::exists(dir / "frames.csv"));
+    const Outcome bad =
+        runCommand(std::string(FLOODLIGHT_BINARY) + " compare --scene " + kSimpleSkin.string() +
+                   " --frames 2 --animation-fps -1 --out " + dir.string());
+    EXPECT_EQ(bad.code, 2) << bad.output;
+}
+
 TEST(AnimationCli, BadTimeOrUnknownAnimationIsAUsageError) {
     if (!fs::exists(kSimpleSkin)) GTEST_SKIP() << kSimpleSkin << " (assimp-testmodels) missing";
     for (const char* time : {"-1", "nan", "inf", "2e6"}) {
