@@ -128,6 +128,7 @@ void Renderer::setLight(const Light& light) {
 void Renderer::setAnimations(std::vector<int> animations) {
     animations_ = std::move(animations);
     sceneBounds_ = animatedBounds(scene_.source(), animations_);
+    posedAt_.reset(); // another clip: the same times pose differently
     setLight(light_); // refits the light to the new bounds
     setTime(0.0);
 }
@@ -138,6 +139,10 @@ void Renderer::setTime(double time, double previousTime) {
                                     std::to_string(time));
     time_ = time;
     if (!isAnimated(scene_.source())) return;
+    // A paused window, a still capture clip and every lane of a capture ask for the pose they
+    // already have: evaluate and upload only what changed.
+    if (posedAt_ == std::make_pair(time, previousTime)) return;
+    posedAt_ = std::make_pair(time, previousTime);
     const Scene& s = scene_.source();
     scene_.setPose(evaluatePose(s, animations_, time), evaluatePose(s, animations_, previousTime));
 }

@@ -155,6 +155,7 @@ class Renderer {
     geom::Aabb sceneBounds_; // the scene's, or every pose its animations take
     std::vector<int> animations_;
     double time_ = 0.0;
+    std::optional<std::pair<double, double>> posedAt_; // (time, previous) the scene is posed at
     DiskLight disk_;
     geom::ViewVolume lightVolume_;
     ShadowMapPass shadowPass_;

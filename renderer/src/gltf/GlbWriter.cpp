@@ -421,8 +421,6 @@ void writeSkins(Document& doc, const Scene& scene) {
 }
 
 void writeAnimations(Document& doc, const Scene& scene) {
-    static constexpr const char* kPaths[] = {"translation", "rotation", "scale", "weights"};
-    static constexpr const char* kInterpolations[] = {"LINEAR", "STEP", "CUBICSPLINE"};
     for (const Animation& a : scene.animations) {
         // A sampler's output type follows the channel that reads it: VEC3 for translation and
         // scale, VEC4 for rotation, SCALAR for weights (and for a sampler no channel reads).
@@ -442,12 +440,17 @@ void writeAnimations(Document& doc, const Scene& scene) {
             samplers.push_back(
                 {{"input", doc.floats(sm.times, "SCALAR", 1)},
                  {"output", doc.floats(sm.values, type, components)},
-                 {"interpolation", kInterpolations[static_cast<int>(sm.interpolation)]}});
+                 {"interpolation",
+                  std::string(Animation::kInterpolationNames[static_cast<std::size_t>(
+                      sm.interpolation)])}});
         }
         for (const Animation::Channel& c : a.channels)
             channels.push_back(
                 {{"sampler", c.sampler},
-                 {"target", {{"node", c.node}, {"path", kPaths[static_cast<int>(c.path)]}}}});
+                 {"target",
+                  {{"node", c.node},
+                   {"path",
+                    std::string(Animation::kPathNames[static_cast<std::size_t>(c.path)])}}}});
         doc.push("animations", {{"name", a.name},
                                 {"samplers", std::move(samplers)},
                                 {"channels", std::move(channels)}});

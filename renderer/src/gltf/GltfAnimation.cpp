@@ -21,24 +21,13 @@ using Path = Animation::Path;
 using Interpolation = Animation::Interpolation;
 
 std::optional<Path> parsePath(const std::string& path) {
-    if (path == "translation") return Path::Translation;
-    if (path == "rotation") return Path::Rotation;
-    if (path == "scale") return Path::Scale;
-    if (path == "weights") return Path::Weights;
+    for (std::size_t i = 0; i < Animation::kPathNames.size(); ++i)
+        if (path == Animation::kPathNames[i]) return static_cast<Path>(i);
     return std::nullopt;
 }
 
 std::string_view pathName(Path path) {
-    switch (path) {
-    case Path::Translation:
-        return "translation";
-    case Path::Rotation:
-        return "rotation";
-    case Path::Scale:
-        return "scale";
-    default:
-        return "weights";
-    }
+    return Animation::kPathNames[static_cast<std::size_t>(path)];
 }
 
 /// The output layout a channel reads: translation and scale share one (VEC3 FLOAT).
@@ -61,9 +50,8 @@ Layout layoutOf(Path path, std::size_t targets) {
 
 Interpolation interpolation(const Context& ctx, const std::string& element,
                             const std::string& name) {
-    if (name == "LINEAR") return Interpolation::Linear;
-    if (name == "STEP") return Interpolation::Step;
-    if (name == "CUBICSPLINE") return Interpolation::CubicSpline;
+    for (std::size_t i = 0; i < Animation::kInterpolationNames.size(); ++i)
+        if (name == Animation::kInterpolationNames[i]) return static_cast<Interpolation>(i);
     ctx.warn(element, cat("unknown interpolation '", name, "'; LINEAR used"));
     return Interpolation::Linear;
 }

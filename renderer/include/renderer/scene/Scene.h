@@ -7,9 +7,11 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace fl {
@@ -88,6 +90,11 @@ struct Skin {
 struct Animation {
     enum class Interpolation { Linear, Step, CubicSpline };
     enum class Path { Translation, Rotation, Scale, Weights };
+    /// glTF's names of both, in enum order: the loader reads and GlbWriter writes these.
+    static constexpr std::array<std::string_view, 3> kInterpolationNames = {"LINEAR", "STEP",
+                                                                            "CUBICSPLINE"};
+    static constexpr std::array<std::string_view, 4> kPathNames = {"translation", "rotation",
+                                                                   "scale", "weights"};
     struct Sampler {
         Interpolation interpolation = Interpolation::Linear;
         std::vector<float> times;  // seconds, increasing
