@@ -1,6 +1,7 @@
 // `floodlight view` driven by --script under Xvfb (ctest runs this through xvfb-run): every
 // shadow method and every overlay reached from the keyboard and compared with goldens, the HUD
-// drawn, minimise / resize to 0x0 and back, a bad dropped file, and --record's camera path.
+// drawn, minimise / resize to 0x0 and back, a bad dropped file, --record's camera path, and the
+// animation playback keys.
 
 #include "ImageCompare.h"
 #include "TestPaths.h"
@@ -33,18 +34,20 @@ struct ViewRun {
 // Small sizes keep the session within seconds on llvmpipe (flood-l is 63 passes; the reference
 // method is given 16 point lights instead of its default). The default scene's characters walk
 // and wave, and the viewer plays them: `--animation none` holds them at rest, so that frames
-// taken at different ticks compare equal and the goldens stay the rest pose.
-ViewRun runView(const fs::path& dir, const std::string& script, const std::string& extra = {}) {
+// taken at different ticks compare equal and the goldens stay the rest pose (`animation` plays
+// them, for the playback test).
+ViewRun runView(const fs::path& dir, const std::string& script, const std::string& extra = {},
+                const std::string& animation = "none") {
     fs::remove_all(dir);
     fs::create_directories(dir);
     const fs::path scriptFile = dir / "session.script", log = dir / "output.txt";
     std::ofstream(scriptFile) << script;
-    const std::string cmd =
-        std::string(FLOODLIGHT_BINARY) +
-        " view --width 256 --height 192 --shadow-map-size 512 "
-        "--reference-samples 16 --no-hud --stats-every 0 --animation none --script '" +
-        scriptFile.string() + "' --screenshot-dir '" + dir.string() + "' " + extra + " > '" +
-        log.string() + "' 2>&1";
+    const std::string cmd = std::string(FLOODLIGHT_BINARY) +
+                            " view --width 256 --height 192 --shadow-map-size 512 "
+                            "--reference-samples 16 --no-hud --stats-every 0 --animation " +
+                            animation + " --script '" + scriptFile.string() +
+                            "' --screenshot-dir '" + dir.string() + "' " + extra + " > '" +
+                            log.string() + "' 2>&1";
     ViewRun r;
     const int status = std::system(cmd.c_str());
     r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -241,6 +244,49 @@ TEST(ViewScript, ScreenshotThenQuitWritesTheScreenshot) {
     EXPECT_EQ(m.code, 1) << m.output;
     EXPECT_NE(m.output.find("screenshot lost not written"), std::string::npos) << m.output;
     EXPECT_FALSE(fs::exists(dir / "lost.png"));
+}
+
+// The playback keys on the default scene's walking and waving characters. A script advances the
+// clock by exactly 1/30 s a frame, so every frame below has a known time: playing frames move,
+// Space freezes the pose, K steps 1/30 s forward and J as far back, and 0 doubles the speed.
+TEST(ViewScript, PlaybackKeysPlayPauseStepAndChangeSpeed) {
+    const fs::path dir = outputDir("view_script") / "playback";
+    const std::string script = "wait 2\nscreenshot play-a\nwait 3\nscreenshot play-b\nwait 1\n"
+                               "key SPACE\nscreenshot paused-a\nwait 3\nscreenshot paused-b\n"
+                               "wait 1\nkey K\nkey K\nscreenshot forward\nwait 1\n"
+                               "key J\nkey J\nscreenshot back\nwait 1\n"
+                               "key 0\nkey SPACE\nscreenshot double\nwait 1\n"
+                               "key SPACE\nwait 1\nquit\n";
+    // Close to a walking character (the third of make-scene's default scene).
+    const ViewRun r = runView(dir, script, "--eye 2.3,1.3,1.8 --target 2.3,0.6,-1.4", "all");
+    ASSERT_EQ(r.code, 0) << r.output;
+    const auto frame = [&](const char* name) {
+        return readPng(dir / (std::string(name) + ".png"));
+    };
+    // "Moved": more than 0.05% of the pixels (25) differ by more than 16 steps; K K (2/30 s of
+    // the walk) moves the legs and their shadow over about 0.2%, three played frames over 1.6%.
+    // "Same pose": at most 0.01% (5 pixels) differ by more than 16, with a mean under 0.02 steps.
+    // Both frames are drawn in one process, and the two ways to reach a time round it differently
+    // in the last bits (1/30 s in float against double), so a pixel on an edge may flip.
+    const Tolerance moved{255, 1.5, 16, 0.05};
+    const Tolerance samePose{255, 0.02, 16, 0.01};
+    const auto expectMoved = [&](const char* a, const char* b) {
+        const CompareResult c = compareImages(frame(a), frame(b), moved);
+        EXPECT_FALSE(c.pass) << a << " against " << b << ": " << c.report;
+    };
+    const auto expectSamePose = [&](const char* a, const char* b) {
+        const CompareResult c = compareImages(frame(a), frame(b), samePose);
+        EXPECT_TRUE(c.pass) << a << " against " << b << ": " << c.report;
+    };
+    expectMoved("play-a", "play-b");
+    // Space stops the clock before the next frame renders: that frame has the time of the last
+    // one played, and three frames later it is still the same picture, bit for bit.
+    EXPECT_TRUE(frame("play-b").data == frame("paused-a").data);
+    EXPECT_TRUE(frame("paused-a").data == frame("paused-b").data);
+    expectMoved("paused-a", "forward");
+    expectSamePose("paused-a", "back");
+    // Twice the speed, one frame of play: 2/30 s, where K K went.
+    expectSamePose("forward", "double");
 }
 
 TEST(ViewScript, RecordWritesTheWalkedPath) {
