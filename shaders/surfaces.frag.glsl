@@ -9,14 +9,18 @@ in vec3 vWorld;
 in vec3 vNormal;
 in vec2 vTexcoord;
 in vec4 vColor;
+#ifdef FL_MOTION
 in vec4 vPreviousClip;
+#endif
 
 layout(location = 0) out vec4 oPosition;   // xyz world, w = 1 (0 background)
 layout(location = 1) out vec4 oNormal;     // xyz shading normal facing the eye, w object id
 layout(location = 2) out vec4 oPlane;      // xyz geometric normal (the triangle's plane)
 layout(location = 3) out vec4 oBaseColor;  // material base colour (texture applied)
 layout(location = 4) out float oReceiver;  // 1 where the surface faces the light
-layout(location = 5) out vec4 oMotion;     // previous pixel xy, previous clip w, clip w
+#ifdef FL_MOTION
+layout(location = 5) out vec4 oMotion; // previous pixel xy, previous clip w, clip w
+#endif
 
 uniform int uObjectId;
 uniform vec2 uViewport; // the targets' size in pixels
@@ -40,10 +44,13 @@ void main() {
     // Lambert > 0: the pixels whose visibility changes the image; the error metrics count only
     // these (renderer/metrics/Metrics.h).
     oReceiver = dot(n, toLight(vWorld)) > 0.0 ? 1.0 : 0.0;
+#ifdef FL_MOTION
     // Where this point was a frame ago: window coordinates (as gl_FragCoord.xy) and depth. A
-    // point behind the previous camera gets a position off every frame.
+    // point behind the previous camera gets a position off every frame. Only the frames whose
+    // flicker is scored write it (SurfacesPass::Inputs::previousCamera).
     vec2 previous = vPreviousClip.w > 0.0
                         ? (vPreviousClip.xy / vPreviousClip.w * 0.5 + 0.5) * uViewport
                         : vec2(-1.0e9);
     oMotion = vec4(previous, vPreviousClip.w, 1.0 / gl_FragCoord.w);
+#endif
 }

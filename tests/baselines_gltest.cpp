@@ -73,7 +73,7 @@ void compareFilterWithCpu(ShadowMapProvider provider, bool pcss) {
     const int size = 128;
     SurfacesPass surfacesPass(shaders);
     surfacesPass.resize(size, size);
-    const SurfacesPass::Outputs surfaces = surfacesPass.execute({gpu, camera, light, camera});
+    const SurfacesPass::Outputs surfaces = surfacesPass.execute({gpu, camera, light});
     FilteredShadowPass pass(shaders);
     const FilteredShadowPass::Inputs in{surfaces, shadow, volume, disk, fs, pcss};
     const FilteredShadowPass::Outputs out = pass.execute(in);
@@ -155,7 +155,7 @@ struct Surfaces {
     Surfaces(const gl::ShaderLibrary& shaders, const GpuScene& gpu, const BoxScene& b, int size)
         : pass(shaders) {
         pass.resize(size, size);
-        (void)pass.execute({gpu, b.camera, sceneLight(b.scene), b.camera});
+        (void)pass.execute({gpu, b.camera, sceneLight(b.scene)});
     }
     SurfacesPass pass;
     [[nodiscard]] const gl::Texture& positions() const { return pass.outputs().position; }

@@ -317,7 +317,9 @@ int captureSize(const CaptureSetup& c, const SizeRun& at, FrameRunner& runner,
         // A resumed run's first frame would carry the start-up (shader compilation, first
         // allocations) that only frame 0 carries in a run without a break: one frame unrecorded.
         .warmup = firstFrame > 0 ? 1 : 0,
-        .clip = timeAxis(script, c.scene)};
+        .clip = timeAxis(script, c.scene),
+        // The reference's motion reprojects every method's flicker (FrameScorer::score).
+        .motionLane = 0};
     if (rendered > 0)
         runner.run(plan, lanes, [&](int i, std::vector<FrameImages>& laneImages) {
             const FrameImages& ref = laneImages[0];

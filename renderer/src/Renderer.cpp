@@ -160,7 +160,7 @@ void Renderer::resize(int width, int height) {
     height_ = height;
 }
 
-void Renderer::render(const CameraView& camera, const CameraView& previous) {
+void Renderer::renderFrame(const CameraView& camera, const CameraView* previous) {
     if (width_ == 0) throw std::logic_error("Renderer::render before resize");
     const MethodDescriptor& method = *method_;
     ShadowMethod& impl = currentMethod();

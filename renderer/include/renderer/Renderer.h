@@ -86,10 +86,13 @@ class Renderer {
     /// Sets the output size in pixels (both > 0).
     void resize(int width, int height);
     /// Renders one frame into color()/visibility(); throws fl::gl::GlError on any GL error.
-    /// `previous` is the camera of the frame before, for the motion target (motion()); the
-    /// one-argument form treats the frame as the first (no motion).
-    void render(const CameraView& camera, const CameraView& previous);
-    void render(const CameraView& camera) { render(camera, camera); }
+    /// `previous` is the camera of the frame before (the same camera for a first frame): the
+    /// frame also writes the motion target (motion()), which scoring flicker on the same surface
+    /// point needs. The one-argument form writes none, and costs a sixth less of step 2.
+    void render(const CameraView& camera, const CameraView& previous) {
+        renderFrame(camera, &previous);
+    }
+    void render(const CameraView& camera) { renderFrame(camera, nullptr); }
     /// Draws the last frame to the default framebuffer (windows).
     void present(int framebufferWidth, int framebufferHeight);
 
@@ -98,8 +101,9 @@ class Renderer {
     /// R8 mask of the last frame: 1 where the visible surface faces the light (its visibility
     /// changes the image), 0 on back-facing surfaces and background.
     [[nodiscard]] const gl::Texture& receivers() const { return surfacesPass_.outputs().receivers; }
-    /// The last frame's motion target (SurfacesPass::Outputs::motion).
-    [[nodiscard]] const gl::Texture& motion() const { return surfacesPass_.outputs().motion; }
+    /// The last frame's motion target (SurfacesPass::Outputs::motion); nullptr when the frame
+    /// was rendered without a previous camera.
+    [[nodiscard]] const gl::Texture* motion() const { return surfacesPass_.outputs().motion; }
     /// Step 2's targets of the last frame.
     [[nodiscard]] SurfacesPass::Outputs surfaces() const { return surfacesPass_.outputs(); }
     /// The disk light the soft methods use.
@@ -140,6 +144,8 @@ class Renderer {
     [[nodiscard]] int height() const { return height_; }
 
   private:
+    /// Steps 1-4 of a frame; `previous` null: no motion target.
+    void renderFrame(const CameraView& camera, const CameraView* previous);
     /// The current method's instance, built on first use.
     ShadowMethod& currentMethod();
     /// The instance slot of the current method (methods_ follows the table's order).

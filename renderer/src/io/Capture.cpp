@@ -6,7 +6,8 @@
 namespace fl {
 
 FrameImages readFrame(const Renderer& renderer) {
-    FloatImage motion = readTexture(renderer.motion(), 4);
+    FloatImage motion; // empty when the frame wrote no motion target
+    if (renderer.motion()) motion = readTexture(*renderer.motion(), 4);
     // The target holds GL window coordinates (y up from the bottom edge); the images here have
     // row 0 at the top.
     for (std::size_t i = 1; i < motion.data.size(); i += 4)

@@ -119,7 +119,10 @@ void FrameRunner::run(const FramePlan& plan, std::vector<Lane>& lanes, const OnF
         for (std::size_t l = 0; l < lanes.size(); ++l) {
             Renderer& r = *lanes[l].renderer;
             if (plan.clip) r.setTime(plan.clip->timeOf(i), plan.clip->timeOf(std::max(i - 1, 0)));
-            r.render(cam, previous);
+            if (static_cast<int>(l) == plan.motionLane)
+                r.render(cam, previous);
+            else
+                r.render(cam);
             if (k < plan.first) continue;
             if (plan.readBack) {
                 images[l] = readFrame(r);

@@ -21,7 +21,8 @@ struct FrameImages {
     FloatImage visibility; // 1 channel
     FloatImage receivers;  // 1 channel: 1 where a visible surface faces the light, else 0
     /// 4 channels: each pixel's surface point in the previous frame, pixel x, y (row 0 at the
-    /// top, as here), depth there; and its depth now (SurfacesPass's motion target).
+    /// top, as here), depth there; and its depth now (SurfacesPass's motion target); empty when the
+    /// frame wrote none (Renderer::render).
     FloatImage motion;
 };
 FrameImages readFrame(const Renderer& renderer);

@@ -29,8 +29,10 @@ class SurfacesPass {
         const CameraView& camera;
         const Light& light; // for the receiver mask (the surface faces the light)
         /// The camera of the frame before (the same camera for a first frame): the motion
-        /// target says where each pixel's surface point lay in it.
-        const CameraView& previousCamera;
+        /// target says where each pixel's surface point lay in it. nullptr: no motion target
+        /// is written (what only flicker on the same surface point reads costs a sixth
+        /// RGBA32F target and the previous pose of every vertex).
+        const CameraView* previousCamera = nullptr;
     };
     /// The visible surface of each pixel; background keeps the clear values noted.
     struct Outputs {
@@ -42,8 +44,9 @@ class SurfacesPass {
         const gl::Texture& depth;     // DEPTH32F: window depth (1 background)
         /// RGBA32F: xy = the surface point's pixel position in the previous frame (GL window
         /// coordinates), z = its depth (clip w) there, w = its depth (clip w) in this frame; what
-        /// flicker on the same surface point needs (Metrics.h, Reprojection).
-        const gl::Texture& motion;
+        /// flicker on the same surface point needs (Metrics.h, Reprojection). nullptr when the
+        /// frame was drawn without a previous camera.
+        const gl::Texture* motion;
         int width, height;
     };
     /// Draws the scene once from the camera into the targets.
@@ -52,9 +55,11 @@ class SurfacesPass {
     [[nodiscard]] Outputs outputs() const;
 
   private:
-    gl::Program program_;
+    // [0] without the motion target, [1] with it (FL_MOTION).
+    gl::Program programs_[2];
     gl::Texture position_, normal_, plane_, baseColor_, receivers_, motion_, depth_;
-    gl::Framebuffer fbo_;
+    gl::Framebuffer fbos_[2];
+    bool motionWritten_ = false;
 };
 
 } // namespace fl

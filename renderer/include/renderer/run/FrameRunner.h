@@ -115,6 +115,10 @@ struct FramePlan {
         [[nodiscard]] double timeOf(int frame) const { return start + frame * step; }
     };
     std::optional<Clip> clip;
+    /// The lane whose frames write the motion target (Renderer::render with the frame before's
+    /// camera), for flicker on the same surface point; -1: none. The other lanes' surfaces pass
+    /// skips it, so their times carry no cost that only scoring adds.
+    int motionLane = -1;
 };
 
 /// Drives lanes through one or more plans, with one progress bar over all of them.
