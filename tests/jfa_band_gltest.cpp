@@ -76,6 +76,38 @@ TEST_P(JfaBandGlTest, EmptySeedsAndStaleTexturesStayEmpty) {
     EXPECT_EQ(kernel.activeShare(), 0.0);
 }
 
+// Named after the risk of clearing only the last band: a band run clears what the run before
+// wrote over that run's tile list alone. One kernel, frame after frame, sites moving, the
+// region switched to full and back and plans whose stages change size (a half-resolution stage
+// 0, then a full-resolution one): every result equals the CPU's full flood.
+TEST_P(JfaBandGlTest, ClearingOnlyTheLastBandLeavesNoStaleCells) {
+    const gl::ShaderLibrary shaders;
+    GlFloodKernel<NearestSite> kernel(shaders, GetParam());
+    const NearestSite crit{true};
+    const int w = 150, h = 110;
+    struct Frame {
+        const char* plan;
+        FloodRegion region;
+        int sites;
+    };
+    const Frame frames[] = {
+        {"flood:6", FloodRegion::Band, 6},       {"flood:6", FloodRegion::Band, 3},
+        {"flood:9", FloodRegion::Band, 9},       {"flood:6", FloodRegion::Full, 4},
+        {"flood:6", FloodRegion::Band, 2},       {"half:flood:5", FloodRegion::Band, 5},
+        {"flood:4", FloodRegion::Band, 7},       {"half:flood:3", FloodRegion::Band, 1},
+        {"flood:5", FloodRegion::Band, 0},       {"flood:5", FloodRegion::Band, 8},
+        {"half:flood:7", FloodRegion::Band, 12}, {"flood:2", FloodRegion::Band, 1},
+        {"half:flood:7", FloodRegion::Band, 1}};
+    std::uint64_t seed = 11;
+    for (const Frame& f : frames) {
+        kernel.setRegion(f.region, 16);
+        const Grid sites = randomSites(w, h, f.sites, ++seed);
+        const Plan plan = parsePlan(f.plan, w, h);
+        EXPECT_EQ(kernel.run(plan, sites, crit), flood(plan, sites, crit))
+            << f.plan << ", " << f.sites << " sites, frame seed " << seed;
+    }
+}
+
 TEST_P(JfaBandGlTest, BadTilesAreRefused) {
     const gl::ShaderLibrary shaders;
     GlFloodKernel<NearestSite> kernel(shaders, GetParam());

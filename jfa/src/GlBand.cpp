@@ -51,6 +51,7 @@ void GlFloodKernelBase::buildBandPrograms() {
     markProgram_ = gl::Program::build(shaders_, {{GL_COMPUTE_SHADER, "jfa_band_mark.comp.glsl"}});
     compactProgram_ =
         gl::Program::build(shaders_, {{GL_COMPUTE_SHADER, "jfa_band_compact.comp.glsl"}});
+    clearProgram_ = gl::Program::build(shaders_, {{GL_COMPUTE_SHADER, "jfa_band_clear.comp.glsl"}});
     for (bool expand : {false, true}) {
         std::vector<std::string> defines{"JFA_BAND"};
         if (expand) defines.emplace_back("JFA_EXPAND");
@@ -149,6 +150,19 @@ bool GlFloodKernelBase::buildBand(const Plan& plan, const gl::Texture& seeds) {
         const glm::ivec2 size(stages[s].width, stages[s].height);
         const glm::ivec2 stageTiles = (size + tile_ - 1) / tile_;
         StageBand& band = stageBands_[s];
+        // The stage's ping-pong pair starts empty, since texels outside the band are never
+        // written: what the last band run of this stage wrote is cleared over its tile list
+        // before the list is rebuilt, anything else over the whole texture.
+        (void)otherTexture(size.x, size.y, nullptr); // allocates the pair
+        const int stage = static_cast<int>(s);
+        for (auto& [key, pair] : pairs_) {
+            for (int i = 0; i < 2; ++i) {
+                if (key == std::pair{size.x, size.y})
+                    emptyTexture(pair, i, stage);
+                else if (pair.dirt[i] == stage) // its list is about to describe another size
+                    pair.dirt[i] = kDirtWhole;
+            }
+        }
         ensureBuffer(band.tiles, std::size_t(stageTiles.x) * std::size_t(stageTiles.y));
         if (!band.commands) band.commands = gl::Buffer(4 * sizeof(GLuint), nullptr, kStorage);
         const auto blocks = static_cast<GLuint>((tile_ / 8) * (tile_ / 8));
@@ -161,11 +175,6 @@ bool GlFloodKernelBase::buildBand(const Plan& plan, const gl::Texture& seeds) {
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, band.commands.id());
         glUseProgram(compactProgram_.id());
         glDispatchCompute(groups(stageTiles.x), groups(stageTiles.y), 1);
-        // The stage's ping-pong pair starts empty: texels outside the band are never written.
-        (void)otherTexture(size.x, size.y, nullptr);               // allocates the pair
-        const std::array<float, 4> empty{0.0f, 0.0f, -1.0f, 0.0f}; // kEmptyCell
-        for (const gl::Texture& t : pairs_.at({size.x, size.y}).tex)
-            glClearTexImage(t.id(), 0, GL_RGBA, GL_FLOAT, empty.data());
     }
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
     glUseProgram(0);
@@ -173,6 +182,28 @@ bool GlFloodKernelBase::buildBand(const Plan& plan, const gl::Texture& seeds) {
     bandStages_ = static_cast<int>(stages.size());
     bandArea_ = double(w) * double(h);
     return true;
+}
+
+void GlFloodKernelBase::emptyTexture(Pair& pair, int i, int stage) {
+    const gl::Texture& t = pair.tex[i];
+    if (pair.dirt[i] == stage && stageBands_[stage].commands) {
+        clearProgram_.set("uSize", glm::ivec2(t.width(), t.height()));
+        clearProgram_.set("uTile", tile_);
+        glBindImageTexture(0, t.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, stageBands_[stage].tiles.id());
+        glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, stageBands_[stage].commands.id());
+        glUseProgram(clearProgram_.id());
+        glDispatchComputeIndirect(0);
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
+                        GL_SHADER_STORAGE_BARRIER_BIT);
+        glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+        glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+        glUseProgram(0);
+    } else if (pair.dirt[i] != kDirtClean) {
+        const std::array<float, 4> empty{0.0f, 0.0f, -1.0f, 0.0f}; // kEmptyCell
+        glClearTexImage(t.id(), 0, GL_RGBA, GL_FLOAT, empty.data());
+    }
+    pair.dirt[i] = kDirtClean;
 }
 
 double GlFloodKernelBase::activeShare() const {

@@ -77,6 +77,11 @@ const gl::Texture& GlFloodKernelBase::otherTexture(int width, int height,
     return current == &pair.tex[0] ? pair.tex[1] : pair.tex[0];
 }
 
+void GlFloodKernelBase::noteWritten(const gl::Texture& dst, int bandStage) {
+    Pair& pair = pairs_.at({dst.width(), dst.height()});
+    pair.dirt[&dst == &pair.tex[0] ? 0 : 1] = bandStage >= 0 ? bandStage : kDirtWhole;
+}
+
 void GlFloodKernelBase::dispatch(const gl::Texture& src, const gl::Texture& seeds,
                                  const gl::Texture& dst, GlDispatch what, int step, int scale,
                                  bool countChanges, int bandStage) {
@@ -126,6 +131,7 @@ void GlFloodKernelBase::dispatch(const gl::Texture& src, const gl::Texture& seed
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glMemoryBarrier(GL_ATOMIC_COUNTER_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
     }
+    noteWritten(dst, banded ? bandStage : -1);
     glUseProgram(0);
     glBindTextureUnit(0, 0);
     glBindTextureUnit(1, 0);
@@ -207,6 +213,7 @@ const gl::Texture& GlFloodKernelBase::runPlan(const Plan& plan, const gl::Textur
         const gl::Texture& dst = otherTexture(seeds.width(), seeds.height(), nullptr);
         glCopyImageSubData(seeds.id(), GL_TEXTURE_2D, 0, 0, 0, 0, dst.id(), GL_TEXTURE_2D, 0, 0, 0,
                            0, seeds.width(), seeds.height(), 1);
+        noteWritten(dst, -1);
         current = &dst;
     }
     gl::throwIfErrors("jfa flood");

@@ -110,6 +110,7 @@ class GlFloodKernelBase {
     gl::Program seedsProgram_;                                // band step A0: the seed list
     gl::Program reachProgram_, markProgram_, compactProgram_; // band steps A, B, C
     gl::Program bandPassProgram_, bandExpandProgram_;         // passes over a tile list
+    gl::Program clearProgram_; // the empty cell over a tile list (jfa_band_clear.comp.glsl)
     gl::Buffer tileReach_, maxReach_, flags_, seedList_;
     struct StageBand {
         gl::Buffer tiles;    // packed tile coordinates (x | y << 16)
@@ -133,10 +134,22 @@ class GlFloodKernelBase {
     double bandArea_ = 0.0; // its full-resolution texels
     gl::VertexArray emptyVao_;
     gl::Buffer changedCounter_;
+    // What a ping-pong texture may hold besides the empty cell, so that a band run clears only
+    // what an earlier run wrote: kDirtWhole (anything: a new texture, a full-grid pass, the
+    // downsample), kDirtClean (nothing), or a stage index s: only the tiles of
+    // stageBands_[s]'s current list (the band passes wrote nothing else).
+    static constexpr int kDirtWhole = -2, kDirtClean = -1;
     struct Pair {
         gl::Texture tex[2];
         gl::Framebuffer fbo[2];
+        int dirt[2] = {kDirtWhole, kDirtWhole};
     };
+    /// Leaves pair texture `i` holding the empty cell everywhere, by the cheapest means its
+    /// dirt allows; `stage` is the band stage about to be rebuilt for it.
+    void emptyTexture(Pair& pair, int i, int stage);
+    /// Notes what writing `dst` (a pair texture) left in it: band stage `bandStage` or, for -1,
+    /// the whole texture.
+    void noteWritten(const gl::Texture& dst, int bandStage);
     std::map<std::pair<int, int>, Pair> pairs_;
     int passesRun_ = 0;
 };
