@@ -5,12 +5,13 @@
 // the band on JFA-L's 1024^2 map went there. uMode 1 (one invocation) turns the count into
 // step A's indirect dispatch.
 
+#include "jfa_seed_list.glsl"
+
 layout(local_size_x = 8, local_size_y = 8) in;
 
 bool jfaEmpty(vec4 c);
 
 layout(binding = 1) uniform sampler2D uSeeds;
-layout(std430, binding = 6) buffer SeedList { uint seedCount; uint dispatch[3]; uint seeds[]; };
 uniform ivec2 uSize;
 uniform int uMode;
 
@@ -23,5 +24,5 @@ void main() {
     }
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(p, uSize)) || jfaEmpty(texelFetch(uSeeds, p, 0))) return;
-    seeds[atomicAdd(seedCount, 1u)] = uint(p.x) | (uint(p.y) << 16);
+    jfaListSeed(p);
 }

@@ -5,12 +5,16 @@
 // pixel becomes a seed: its occluder's position, and w = its pixel index + 1 (the midpoint
 // check needs to know where an occluder entered the flood; its object id is read there too).
 // Same as fl::eyeBoundarySeeds on the CPU.
+#include "jfa_seed_list.glsl"
+
 layout(binding = 0) uniform sampler2D uEyePoints;
 layout(binding = 1) uniform sampler2D uEyeOccluders;
 uniform vec3 uEye;
 // A neighbour at squared distance d2 counts when d2 < uAbsolute2 + uRelative2 * |p - eye|^2.
 uniform float uAbsolute2;
 uniform float uRelative2;
+
+uniform int uListSeeds; // append each seed to the band's seed list (jfa_seed_list.glsl)
 
 layout(location = 0) out vec4 oSeed;
 
@@ -34,5 +38,7 @@ void main() {
     }
     vec3 o = texelFetch(uEyeOccluders, t, 0).xyz;
     float index = float(t.y * size.x + t.x + 1);
-    oSeed = self.w == 1.0 && boundary ? vec4(o, index) : vec4(0.0, 0.0, -1.0, 0.0);
+    bool seed = self.w == 1.0 && boundary;
+    oSeed = seed ? vec4(o, index) : vec4(0.0, 0.0, -1.0, 0.0);
+    if (seed && uListSeeds != 0) jfaListSeed(t);
 }

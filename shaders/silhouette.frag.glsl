@@ -5,9 +5,11 @@
 // fl::silhouetteSeeds on the CPU.
 #include "disk_light.glsl"
 #include "occluder_edge.glsl"
+#include "jfa_seed_list.glsl"
 
 layout(binding = 0) uniform sampler2D uReceivers;
 uniform float uSilhouetteThreshold;
+uniform int uListSeeds; // append each seed to the band's seed list (jfa_seed_list.glsl)
 
 layout(location = 0) out vec4 oSeed;
 
@@ -25,5 +27,7 @@ void main() {
             silhouette = silhouette || (inside && (i != 0 || j != 0) && edge);
         }
     }
-    oSeed = self.w != 0.0 && silhouette ? vec4(self.xyz, 1.0) : vec4(0.0, 0.0, -1.0, 0.0);
+    bool seed = self.w != 0.0 && silhouette;
+    oSeed = seed ? vec4(self.xyz, 1.0) : vec4(0.0, 0.0, -1.0, 0.0);
+    if (seed && uListSeeds != 0) jfaListSeed(t);
 }

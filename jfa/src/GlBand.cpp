@@ -85,16 +85,18 @@ void GlFloodKernelBase::measureReach(const gl::Texture& seeds) {
                            emptyRect.data());
     clearBuffer(maxReach_);
     // Step A0: the seed texels in a list, and step A's indirect dispatch over it.
-    ensureBuffer(seedList_, 4 + std::size_t(seeds.width()) * std::size_t(seeds.height()));
-    const GLuint zero = 0;
-    glClearNamedBufferSubData(seedList_.id(), GL_R32UI, 0, sizeof(GLuint), GL_RED_INTEGER,
-                              GL_UNSIGNED_INT, &zero);
+    // A producer that listed the seeds as it wrote them (beginSeedList) saves the sweep.
+    const bool listed = listedSeeds_ == seeds.id();
+    listedSeeds_ = 0;
+    if (!listed) beginSeedList(seeds.width(), seeds.height());
     seedsProgram_.set("uSize", glm::ivec2(seeds.width(), seeds.height()));
     glBindTextureUnit(1, seeds.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, seedList_.id());
     glUseProgram(seedsProgram_.id());
-    seedsProgram_.set("uMode", 0);
-    glDispatchCompute(groups(seeds.width()), groups(seeds.height()), 1);
+    if (!listed) {
+        seedsProgram_.set("uMode", 0);
+        glDispatchCompute(groups(seeds.width()), groups(seeds.height()), 1);
+    }
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     seedsProgram_.set("uMode", 1);
     glDispatchCompute(1, 1, 1);
@@ -115,6 +117,20 @@ void GlFloodKernelBase::measureReach(const gl::Texture& seeds) {
     glUseProgram(0);
     glBindTextureUnit(1, 0);
     measuredSeeds_ = seeds.id();
+}
+
+void GlFloodKernelBase::beginSeedList(int width, int height) {
+    ensureBuffer(seedList_, 4 + std::size_t(width) * std::size_t(height));
+    const GLuint zero = 0;
+    glClearNamedBufferSubData(seedList_.id(), GL_R32UI, 0, sizeof(GLuint), GL_RED_INTEGER,
+                              GL_UNSIGNED_INT, &zero);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, seedList_.id());
+    listedSeeds_ = 0;
+}
+
+void GlFloodKernelBase::seedsListed(const gl::Texture& seeds) {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, 0);
+    listedSeeds_ = seeds.id();
 }
 
 long long GlFloodKernelBase::readMaxReach() const {

@@ -165,6 +165,7 @@ const gl::Texture& GlFloodKernelBase::runPlan(const Plan& plan, const gl::Textur
     // Steps A-C are consumed: the next frame's seeds may reuse the texture.
     measuredSeeds_ = 0;
     preparedSeeds_ = 0;
+    listedSeeds_ = 0;
     const gl::Texture* current = &seeds;
     if (halfRes) {
         const Stage& s0 = stages.front();

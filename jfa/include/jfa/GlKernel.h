@@ -65,6 +65,14 @@ class GlFloodKernelBase {
     /// False when the last run flooded the full grid: the region is Full, or the plan alone
     /// reaches every texel and the criterion bounds nothing (nothing to save; callers say so).
     [[nodiscard]] bool lastRunBanded() const { return lastRunBanded_; }
+    /// For a pass that writes the seeds texture over the whole grid (width x height): binds the
+    /// band's seed list, emptied, at binding 6 (shaders/jfa_seed_list.glsl), for the pass to
+    /// append every seed it writes with jfaListSeed. Then seedsListed() says which texture the
+    /// list describes, and step A0 does not sweep that grid again. Optional.
+    void beginSeedList(int width, int height);
+    /// The list begun by beginSeedList() holds exactly the seeds of `seeds` (unbinds it).
+    void seedsListed(const gl::Texture& seeds);
+
     /// Share of the full-resolution grid the last run's passes computed: 1 after a full run.
     /// Reads one counter back from the GPU (a sync point): call it after the frame, not in it.
     [[nodiscard]] double activeShare() const;
@@ -118,6 +126,7 @@ class GlFloodKernelBase {
     };
     StageBand stageBands_[2];  // per stage of a (at most two-stage) plan
     GLuint measuredSeeds_ = 0; // seeds texture step A last ran on (0: none pending)
+    GLuint listedSeeds_ = 0;   // seeds texture whose seeds a producer listed (seedsListed)
     GLuint preparedSeeds_ = 0; // seeds texture prepareBand() built the band for
     bool preparedBanded_ = false;
 

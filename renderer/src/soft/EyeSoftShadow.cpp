@@ -225,9 +225,14 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::Pass
         boundary_.set("uEye", in.camera.eye);
         boundary_.set("uAbsolute2", th.absolute2);
         boundary_.set("uRelative2", th.relative2);
+        // A banded flood lists its seeds here rather than sweeping the frame for them again.
+        const bool listSeeds = in.region == jfa::FloodRegion::Band;
+        boundary_.set("uListSeeds", listSeeds ? 1 : 0);
+        if (listSeeds) kernel_.beginSeedList(in.width, in.height);
         glBindTextureUnit(0, points_.id());
         glBindTextureUnit(1, occluders_.id());
         gl::drawFullscreenTriangle(boundary_, emptyVao_);
+        if (listSeeds) kernel_.seedsListed(seeds_);
         glBindTextureUnit(0, 0);
         glBindTextureUnit(1, 0);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);

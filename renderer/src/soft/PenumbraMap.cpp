@@ -73,9 +73,15 @@ PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, gl::PassTime
     glDisable(GL_DEPTH_TEST);
     setDiskLightUniforms(silhouette_, in.light);
     silhouette_.set("uSilhouetteThreshold", in.threshold);
+    // A banded flood lists its seeds here, in the pass that finds them, rather than sweeping
+    // the map for them again (GlFloodKernelBase::beginSeedList).
+    const bool listSeeds = in.settings.region == jfa::FloodRegion::Band;
+    silhouette_.set("uListSeeds", listSeeds ? 1 : 0);
+    if (listSeeds) kernel_.beginSeedList(size, size);
     glBindTextureUnit(0, in.receivers.id());
     gl::drawFullscreenTriangle(silhouette_, emptyVao_);
     glBindTextureUnit(0, 0);
+    if (listSeeds) kernel_.seedsListed(seeds_);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (timer) timer->end();
     // Phase 3: flood the occluders through the penumbra region; its band (jfa/Band.h) and,
