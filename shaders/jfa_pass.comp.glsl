@@ -19,17 +19,12 @@ uniform int uCountChanges;
 layout(binding = 0, offset = 0) uniform atomic_uint uChanged;
 
 #ifdef JFA_BAND
-layout(std430, binding = 4) readonly buffer TileList { uint tiles[]; };
-uniform int uTile;
+#include "jfa_band_tiles.glsl"
 #endif
 
 void main() {
 #ifdef JFA_BAND
-    uint entry = tiles[gl_WorkGroupID.x];
-    int blocks = uTile / 8;
-    ivec2 block = ivec2(int(gl_WorkGroupID.y) % blocks, int(gl_WorkGroupID.y) / blocks);
-    ivec2 t = ivec2(int(entry & 0xffffu), int(entry >> 16)) * uTile + block * 8 +
-              ivec2(gl_LocalInvocationID.xy);
+    ivec2 t = jfaBandTexel();
 #else
     ivec2 t = ivec2(gl_GlobalInvocationID.xy);
 #endif

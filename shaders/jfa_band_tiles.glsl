@@ -1,0 +1,15 @@
+// A stage's band as a tile list (jfa_band_compact.comp.glsl: packed tile coordinates
+// x | y << 16) run by an indirect dispatch: group x = the list entry, group y = the 8x8 block
+// within the tile. Shared by the band passes (jfa_pass.comp.glsl) and the band clear.
+
+layout(std430, binding = 4) readonly buffer TileList { uint tiles[]; };
+uniform int uTile;
+
+/// The texel this invocation stands for (it may lie beyond the grid at its right or top edge).
+ivec2 jfaBandTexel() {
+    uint entry = tiles[gl_WorkGroupID.x];
+    int blocks = uTile / 8;
+    ivec2 block = ivec2(int(gl_WorkGroupID.y) % blocks, int(gl_WorkGroupID.y) / blocks);
+    return ivec2(int(entry & 0xffffu), int(entry >> 16)) * uTile + block * 8 +
+           ivec2(gl_LocalInvocationID.xy);
+}
