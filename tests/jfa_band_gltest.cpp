@@ -78,8 +78,9 @@ TEST_P(JfaBandGlTest, EmptySeedsAndStaleTexturesStayEmpty) {
 
 // Named after the risk of clearing only the last band: a band run clears what the run before
 // wrote over that run's tile list alone. One kernel, frame after frame, sites moving, the
-// region switched to full and back and plans whose stages change size (a half-resolution stage
-// 0, then a full-resolution one): every result equals the CPU's full flood.
+// region switched to full and back, plans whose stages change size (a half-resolution stage
+// 0, then a full-resolution one) and tiles that change size: every result equals the CPU's full
+// flood.
 TEST_P(JfaBandGlTest, ClearingOnlyTheLastBandLeavesNoStaleCells) {
     const gl::ShaderLibrary shaders;
     GlFloodKernel<NearestSite> kernel(shaders, GetParam());
@@ -89,6 +90,7 @@ TEST_P(JfaBandGlTest, ClearingOnlyTheLastBandLeavesNoStaleCells) {
         const char* plan;
         FloodRegion region;
         int sites;
+        int tile = 16;
     };
     const Frame frames[] = {
         {"flood:6", FloodRegion::Band, 6},       {"flood:6", FloodRegion::Band, 3},
@@ -97,10 +99,12 @@ TEST_P(JfaBandGlTest, ClearingOnlyTheLastBandLeavesNoStaleCells) {
         {"flood:4", FloodRegion::Band, 7},       {"half:flood:3", FloodRegion::Band, 1},
         {"flood:5", FloodRegion::Band, 0},       {"flood:5", FloodRegion::Band, 8},
         {"half:flood:7", FloodRegion::Band, 12}, {"flood:2", FloodRegion::Band, 1},
-        {"half:flood:7", FloodRegion::Band, 1}};
+        {"half:flood:7", FloodRegion::Band, 1},  {"flood:6", FloodRegion::Band, 12, 16},
+        {"flood:6", FloodRegion::Band, 1, 32},   {"flood:6", FloodRegion::Band, 12, 8},
+        {"flood:6", FloodRegion::Band, 1, 16}};
     std::uint64_t seed = 11;
     for (const Frame& f : frames) {
-        kernel.setRegion(f.region, 16);
+        kernel.setRegion(f.region, f.tile);
         const Grid sites = randomSites(w, h, f.sites, ++seed);
         const Plan plan = parsePlan(f.plan, w, h);
         EXPECT_EQ(kernel.run(plan, sites, crit), flood(plan, sites, crit))

@@ -39,6 +39,10 @@ void GlFloodKernelBase::setRegion(FloodRegion region, int tile) {
     if (const std::string bad = checkBandTile(tile); !bad.empty())
         throw std::invalid_argument("jfa: " + bad);
     region_ = region;
+    // The stages' tile lists are in tiles of the old size: what they describe cannot be cleared
+    // through them at the new one.
+    if (tile != tile_)
+        for (auto& entry : pairs_) entry.second.dirt[0] = entry.second.dirt[1] = kDirtWhole;
     tile_ = tile;
 }
 
