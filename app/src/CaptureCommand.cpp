@@ -104,15 +104,12 @@ struct CaptureSetup {
 
 // The script's time axis: its animations (checked against the scene), frame i at start + i / fps.
 FramePlan::Clip timeAxis(const CaptureScript& script, const Scene& scene) {
-    FramePlan::Clip clip;
     try {
-        clip.animations = chooseAnimations(scene, script.animation.name);
+        return FramePlan::Clip::of(scene, script.animation.name, script.animation.start,
+                                   script.animation.fps);
     } catch (const std::invalid_argument& e) {
         throw CaptureScriptError(script.file.string() + ": animation.name: " + e.what());
     }
-    clip.start = script.animation.start;
-    clip.step = script.animation.fps > 0.0 ? 1.0 / script.animation.fps : 0.0;
-    return clip;
 }
 
 // The metrics of one resolution's runs, frame by frame: each method against the ground truth,

@@ -118,12 +118,10 @@ int runCompare(const CompareRequest& r) {
     FrameRunner runner(r.frames);
     FramePlan::Clip clip;
     try {
-        clip.animations = chooseAnimations(scene, r.scene.animation);
+        clip = FramePlan::Clip::of(scene, r.scene.animation, r.scene.time, r.animationFps);
     } catch (const std::invalid_argument& e) {
         throw UsageError(std::string("--") + e.what());
     }
-    clip.start = r.scene.time;
-    clip.step = r.animationFps > 0.0 ? 1.0 / r.animationFps : 0.0;
     runner.run({.scene = &scene,
                 .camera = std::move(path),
                 .frames = r.frames,

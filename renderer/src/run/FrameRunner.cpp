@@ -2,6 +2,7 @@
 
 #include <base/Stats.h>
 #include <renderer/io/ImageIO.h>
+#include <renderer/scene/Pose.h>
 
 #include <glm/geometric.hpp>
 
@@ -90,6 +91,11 @@ std::vector<std::string> phaseNames(const std::vector<const PhaseTimes*>& times)
 
 FrameRunner::FrameRunner(int totalFrames, int done)
     : total_(totalFrames), done_(done), doneBefore_(done), tty_(::isatty(STDOUT_FILENO) != 0) {}
+
+FramePlan::Clip FramePlan::Clip::of(const Scene& scene, const std::string& animation, double start,
+                                    double fps) {
+    return {chooseAnimations(scene, animation), start, fps > 0.0 ? 1.0 / fps : 0.0};
+}
 
 void FrameRunner::run(const FramePlan& plan, std::vector<Lane>& lanes, const OnFrame& onFrame) {
     const Scene& scene = *plan.scene;

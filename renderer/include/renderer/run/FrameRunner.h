@@ -113,6 +113,10 @@ struct FramePlan {
         std::vector<int> animations;
         double start = 0.0, step = 0.0;
         [[nodiscard]] double timeOf(int frame) const { return start + frame * step; }
+        /// The clip of `animation` (all | none | NAME | INDEX: chooseAnimations) on `scene`
+        /// from `start` at `fps` frames per second (0: every frame at `start`). Throws
+        /// std::invalid_argument for an animation the scene does not have.
+        static Clip of(const Scene& scene, const std::string& animation, double start, double fps);
     };
     std::optional<Clip> clip;
     /// The lane whose frames write the motion target (Renderer::render with the frame before's
