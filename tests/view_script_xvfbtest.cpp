@@ -274,15 +274,27 @@ TEST(ViewScript, PlaybackKeysPlayPauseStepAndChangeSpeed) {
         const CompareResult c = compareImages(frame(a), frame(b), moved);
         EXPECT_FALSE(c.pass) << a << " against " << b << ": " << c.report;
     };
+    // A failed "same" comparison writes A-vs-B.diff.png beside the screenshots.
+    const auto diffOf = [&](const char* a, const char* b, const Tolerance& tol) {
+        const fs::path file = dir / (std::string(a) + "-vs-" + b + ".diff.png");
+        writeImageDiff(frame(a), frame(b), tol, file);
+        return "wrote " + file.string();
+    };
     const auto expectSamePose = [&](const char* a, const char* b) {
         const CompareResult c = compareImages(frame(a), frame(b), samePose);
-        EXPECT_TRUE(c.pass) << a << " against " << b << ": " << c.report;
+        EXPECT_TRUE(c.pass) << a << " against " << b << ": " << c.report
+                            << (c.pass ? std::string() : "; " + diffOf(a, b, samePose));
+    };
+    const auto expectIdentical = [&](const char* a, const char* b) {
+        const bool same = frame(a).data == frame(b).data;
+        EXPECT_TRUE(same) << a << " differs from " << b
+                          << (same ? std::string() : "; " + diffOf(a, b, Tolerance{255, 0, 0, 0}));
     };
     expectMoved("play-a", "play-b");
     // Space stops the clock before the next frame renders: that frame has the time of the last
     // one played, and three frames later it is still the same picture, bit for bit.
-    EXPECT_TRUE(frame("play-b").data == frame("paused-a").data);
-    EXPECT_TRUE(frame("paused-a").data == frame("paused-b").data);
+    expectIdentical("play-b", "paused-a");
+    expectIdentical("paused-a", "paused-b");
     expectMoved("paused-a", "forward");
     expectSamePose("paused-a", "back");
     // Twice the speed, one frame of play: 2/30 s, where K K went.

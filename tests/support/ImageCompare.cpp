@@ -72,24 +72,26 @@ CompareResult compareWithGolden(const ByteImage& actual, const std::string& name
     if (r.pass) return r;
     const std::filesystem::path dir = outputDir("golden");
     writePng(dir / (name + ".actual.png"), actual);
-    if (r.sizeMatches) {
-        ByteImage diff{actual.width, actual.height, 4,
-                       std::vector<std::uint8_t>(actual.data.size())};
-        for (size_t i = 0; i < actual.data.size() / 4; ++i) {
-            int worst = 0;
-            for (size_t c = 0; c < 3; ++c) {
-                const int d = std::abs(int(actual.data[i * 4 + c]) - int(expected.data[i * 4 + c]));
-                worst = std::max(worst, d);
-                diff.data[i * 4 + c] = static_cast<std::uint8_t>(std::min(255, d * 4));
-            }
-            if (worst > tol.pixelThreshold) diff.data[i * 4 + 0] = 255;
-            diff.data[i * 4 + 3] = 255;
-        }
-        writePng(dir / (name + ".diff.png"), diff);
-    }
+    if (r.sizeMatches) writeImageDiff(actual, expected, tol, dir / (name + ".diff.png"));
     r.report += "\n  wrote " + (dir / (name + ".actual.png")).string() + " and " +
                 (dir / (name + ".diff.png")).string();
     return r;
+}
+
+void writeImageDiff(const ByteImage& a, const ByteImage& b, const Tolerance& tol,
+                    const std::filesystem::path& file) {
+    ByteImage diff{a.width, a.height, 4, std::vector<std::uint8_t>(a.data.size())};
+    for (size_t i = 0; i < a.data.size() / 4 && i < b.data.size() / 4; ++i) {
+        int worst = 0;
+        for (size_t c = 0; c < 3; ++c) {
+            const int d = std::abs(int(a.data[i * 4 + c]) - int(b.data[i * 4 + c]));
+            worst = std::max(worst, d);
+            diff.data[i * 4 + c] = static_cast<std::uint8_t>(std::min(255, d * 4));
+        }
+        if (worst > tol.pixelThreshold) diff.data[i * 4 + 0] = 255;
+        diff.data[i * 4 + 3] = 255;
+    }
+    writePng(file, diff);
 }
 
 std::string writeVisibilityDiff(const FloatImage& a, const FloatImage& b, const std::string& name) {

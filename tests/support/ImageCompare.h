@@ -38,6 +38,11 @@ CompareResult compareImages(const ByteImage& actual, const ByteImage& golden, co
 CompareResult compareWithGolden(const ByteImage& actual, const std::string& name,
                                 const Tolerance& tol);
 
+/// Writes FILE: |a - b| x4 per RGB channel, red where a pixel differs by more than
+/// tol.pixelThreshold (the diff of compareWithGolden).
+void writeImageDiff(const ByteImage& a, const ByteImage& b, const Tolerance& tol,
+                    const std::filesystem::path& file);
+
 /// For a failed comparison of two visibility images of one frame (e.g. a method against an
 /// exact answer): writes NAME.a.png, NAME.b.png (grey) and NAME.diff.png (|a - b| x4, grey) to
 /// the test output folder and returns a line naming them.
