@@ -18,12 +18,26 @@ uniform int uMode;
 uniform float uValidMin; // a receiver has w >= uValidMin
 uniform ivec2 uDstSize;
 uniform ivec2 uSrcSize;
+// With REACH_REGION (--flood-region view): receivers outside the seed region's tiles (one uint
+// per tile of side uRegionTile, a multiple of 8, so a block lies in one tile) do not count.
+#ifdef REACH_REGION
+uniform int uRegionTile;
+uniform int uRegionTilesX;
+layout(std430, binding = 7) readonly buffer SeedRegion { uint seedRegion[]; };
+#endif
 
 void main() {
     ivec2 t = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(t, uDstSize))) return;
     vec4 lo = vec4(1e30), hi = vec4(-1e30);
-    if (uMode == 0) {
+    bool counted = true;
+#ifdef REACH_REGION
+    ivec2 region = t * 8 / uRegionTile;
+    counted = uMode != 0 || seedRegion[region.y * uRegionTilesX + region.x] != 0u;
+#endif
+    if (!counted) {
+        // no receiver of this block counts
+    } else if (uMode == 0) {
         for (int j = 0; j < 8; ++j)
             for (int i = 0; i < 8; ++i) {
                 ivec2 q = t * 8 + ivec2(i, j);

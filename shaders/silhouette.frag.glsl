@@ -10,11 +10,28 @@
 layout(binding = 0) uniform sampler2D uReceivers;
 uniform float uSilhouetteThreshold;
 uniform int uListSeeds; // append each seed to the band's seed list (jfa_seed_list.glsl)
+// With SILHOUETTE_REGION (--flood-region view): only the tiles of the seed region (one uint per
+// tile) can hold seeds (PenumbraMapPass::Inputs::viewSeedReach). The pass then draws only its
+// rows' spans (tile_rows.vert.glsl), since llvmpipe runs a fragment's whole shader whatever it
+// branches on: the texels outside are cleared beforehand, those in a span but not the region are
+// emptied here. A define, not a uniform, so that the whole-map pass reads no buffer.
+#ifdef SILHOUETTE_REGION
+uniform int uRegionTile;
+uniform int uRegionTilesX;
+layout(std430, binding = 7) readonly buffer SeedRegion { uint seedRegion[]; };
+#endif
 
 layout(location = 0) out vec4 oSeed;
 
 void main() {
     ivec2 t = ivec2(gl_FragCoord.xy);
+#ifdef SILHOUETTE_REGION
+    ivec2 r = t / uRegionTile;
+    if (seedRegion[r.y * uRegionTilesX + r.x] == 0u) {
+        oSeed = vec4(0.0, 0.0, -1.0, 0.0);
+        return;
+    }
+#endif
     ivec2 size = textureSize(uReceivers, 0);
     vec4 self = texelFetch(uReceivers, t, 0);
     bool silhouette = false;

@@ -112,6 +112,71 @@ TEST_P(JfaBandGlTest, ClearingOnlyTheLastBandLeavesNoStaleCells) {
     }
 }
 
+// The view limit (FloodRegion::View, jfa/Band.h) on the GPU computes the tiles the CPU's does:
+// the whole grid, view or not, equals the CPU's view-limited flood texel for texel (the texels
+// beyond the view's reach hold the same partial flood), its share is the CPU's, and band runs in
+// between, on the same kernel, still equal the full flood.
+TEST_P(JfaBandGlTest, ViewLimitEqualsTheCpusTexelForTexel) {
+    const gl::ShaderLibrary shaders;
+    GlFloodKernel<NearestSite> kernel(shaders, GetParam());
+    const NearestSite crit{true};
+    const int w = 203, h = 150, tile = 8;
+    const int tiles = ((w + tile - 1) / tile) * ((h + tile - 1) / tile);
+    std::uint64_t seed = 40;
+    bool limited = false;
+    for (const char* spec : {"flood:6", "flood:11", "half:flood:5", "flood:6", "jfa", "flood:3"}) {
+        for (FloodRegion region : {FloodRegion::View, FloodRegion::Band}) {
+            const Grid sites = randomSites(w, h, 9, ++seed);
+            std::vector<std::uint8_t> view(std::size_t(tiles), 0);
+            std::uint64_t s = seed;
+            for (int i = 0; i < 3; ++i) {
+                s = s * 6364136223846793005ull + 1442695040888963407ull;
+                view[(s >> 33) % view.size()] = 1;
+            }
+            const std::vector<GLuint> flags(view.begin(), view.end());
+            const gl::Buffer buffer(GLsizeiptr(flags.size() * sizeof(GLuint)), flags.data(), 0);
+            kernel.setRegion(region, tile);
+            kernel.setViewTiles(&buffer);
+            const Plan plan = parsePlan(spec, w, h);
+            const Grid gpu = kernel.run(plan, sites, crit);
+            kernel.setViewTiles(nullptr);
+            FloodOptions o;
+            o.region = region;
+            o.bandTile = tile;
+            o.viewTiles = &view;
+            const FloodResult cpu = floodWithStats(plan, sites, crit, o);
+            // At a half-resolution stage the GPU computes whole stage tiles, the CPU the texels
+            // whose grid point is in the band: beyond the view's reach their partial floods
+            // differ, so there the view's texels are compared, with the full flood.
+            if (plan.stages().size() == 1) {
+                EXPECT_EQ(gpu, cpu.grid) << spec << " " << floodRegionName(region);
+            } else {
+                const Grid full = flood(plan, sites, crit);
+                const int tilesX = (w + tile - 1) / tile;
+                std::size_t differ = 0, viewTexels = 0;
+                for (int y = 0; y < h; ++y)
+                    for (int x = 0; x < w; ++x)
+                        if (view[std::size_t(y / tile * tilesX + x / tile)] != 0) {
+                            ++viewTexels;
+                            differ += !(gpu.at(x, y) == full.at(x, y));
+                        }
+                EXPECT_EQ(differ, 0u) << spec << " " << floodRegionName(region);
+                EXPECT_GT(viewTexels, 0u);
+            }
+            if (kernel.lastRunBanded()) {
+                EXPECT_DOUBLE_EQ(kernel.activeShare(), cpu.activeShare) << spec;
+                limited =
+                    limited || (region == FloodRegion::View &&
+                                cpu.activeShare < floodBand(plan, sites, crit, tile).activeShare());
+            }
+            if (region == FloodRegion::Band) {
+                EXPECT_EQ(gpu, flood(plan, sites, crit)) << spec;
+            }
+        }
+    }
+    EXPECT_TRUE(limited) << "no run left band tiles out";
+}
+
 TEST_P(JfaBandGlTest, BadTilesAreRefused) {
     const gl::ShaderLibrary shaders;
     GlFloodKernel<NearestSite> kernel(shaders, GetParam());

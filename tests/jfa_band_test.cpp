@@ -77,6 +77,87 @@ TEST(JfaBand, BandEqualsFullForEveryPlanTileAndGrid) {
     }
 }
 
+// A few random view tiles (the tiles a reader reads), one flag per tile of side `tile`.
+std::vector<std::uint8_t> randomView(int w, int h, int tile, int count, std::uint64_t seed) {
+    const int tx = (w + tile - 1) / tile, ty = (h + tile - 1) / tile;
+    std::vector<std::uint8_t> v(std::size_t(tx) * std::size_t(ty), 0);
+    std::uint64_t s = seed;
+    for (int i = 0; i < count; ++i) {
+        s = s * 6364136223846793005ull + 1442695040888963407ull;
+        v[(s >> 33) % v.size()] = 1;
+    }
+    return v;
+}
+
+// The view limit (jfa/Band.h): every texel of a view tile holds what the full flood leaves
+// there, for every plan, criterion, tile and grid, with seeds and views scattered at random;
+// and where the plan's reach is short against the grid, it computes less than the band.
+TEST(JfaBand, ViewLimitIsExactAtTheViewForEveryPlanTileAndGrid) {
+    bool savedWork = false;
+    for (auto [w, h] : {std::pair{1, 1}, {7, 3}, {64, 64}, {200, 150}, {513, 7}}) {
+        for (std::uint64_t trial = 0; trial < 3; ++trial) {
+            const Grid seeds = randomSeeds(w, h, 12, 5 + trial, 9);
+            for (const char* spec : kPlans) {
+                const Plan plan = parsePlan(spec, w, h);
+                for (int tile : {8, 16}) {
+                    const std::vector<std::uint8_t> view = randomView(w, h, tile, 2, 7 + trial);
+                    FloodOptions o;
+                    o.region = FloodRegion::View;
+                    o.bandTile = tile;
+                    o.viewTiles = &view;
+                    const auto check = [&](const auto& criterion) {
+                        const FloodResult v = floodWithStats(plan, seeds, criterion, o);
+                        const Grid f = flood(plan, seeds, criterion);
+                        FloodOptions b = o;
+                        b.region = FloodRegion::Band;
+                        const double bandShare =
+                            floodWithStats(plan, seeds, criterion, b).activeShare;
+                        EXPECT_LE(v.activeShare, bandShare) << spec;
+                        savedWork = savedWork || v.activeShare < bandShare;
+                        const int tilesX = (w + tile - 1) / tile;
+                        for (int y = 0; y < h; ++y)
+                            for (int x = 0; x < w; ++x)
+                                if (view[std::size_t(y / tile * tilesX + x / tile)] != 0) {
+                                    ASSERT_EQ(v.grid.at(x, y), f.at(x, y))
+                                        << spec << " " << w << "x" << h << " tile " << tile
+                                        << " at " << x << "," << y;
+                                }
+                        // Until-unchanged plans are not limited: the whole grid is exact.
+                        if (plan.untilUnchanged()) {
+                            EXPECT_EQ(v.grid, f) << spec;
+                        }
+                    };
+                    check(NearestSite{true});
+                    check(NearestWithin{});
+                }
+            }
+        }
+    }
+    EXPECT_TRUE(savedWork);
+}
+
+TEST(JfaBand, ViewTileReachIsThePlansReachPlusATexelInTiles) {
+    // jfa on 256^2: steps 128 .. 1, reach 255 (+1 texel) = 32 tiles of 8: wider than the limit.
+    EXPECT_EQ(viewTileReach(parsePlan("jfa", 256, 256), 8), -1);
+    // flood:7 reaches 7 texels, +1 = 8: one tile of 8, one of 16.
+    EXPECT_EQ(viewTileReach(parsePlan("flood:7", 256, 256), 8), 1);
+    EXPECT_EQ(viewTileReach(parsePlan("flood:8", 256, 256), 8), 2);
+    EXPECT_EQ(viewTileReach(parsePlan("flood:7", 256, 256), 16), 1);
+    EXPECT_EQ(viewTileReach(parsePlan("flood", 256, 256), 8), -1); // until unchanged
+    // limitToView keeps the band tiles within the reach of a view tile, and says when the band
+    // is whole; a view of the wrong size is refused.
+    Band b = markTiles(64, 16, 8, std::vector<ReachRect>(16, ReachRect{0, 0, 63, 15}));
+    ASSERT_TRUE(b.full);
+    std::vector<std::uint8_t> view(16, 0);
+    view[3] = 1; // tile (3, 0)
+    limitToView(b, view, 1);
+    EXPECT_FALSE(b.full);
+    EXPECT_EQ(b.activeTexels(), 6 * 64); // tiles 2..4 of both rows
+    EXPECT_TRUE(b.covers(16, 15));
+    EXPECT_FALSE(b.covers(40, 0));
+    EXPECT_THROW(limitToView(b, std::vector<std::uint8_t>(15, 1), 1), std::invalid_argument);
+}
+
 TEST(JfaBand, EmptySeedsGiveAnEmptyBandAndAnEmptyGrid) {
     const Grid seeds(100, 60);
     FloodOptions band;
@@ -130,6 +211,10 @@ TEST(JfaBand, TileLogic) {
     EXPECT_NE(checkBandTile(512), "");
     EXPECT_EQ(parseFloodRegion("band"), FloodRegion::Band);
     EXPECT_EQ(parseFloodRegion("full"), FloodRegion::Full);
+    EXPECT_EQ(parseFloodRegion("view"), FloodRegion::View);
+    EXPECT_EQ(floodRegionName(FloodRegion::View), "view");
+    EXPECT_TRUE(banded(FloodRegion::View));
+    EXPECT_FALSE(banded(FloodRegion::Full));
     EXPECT_FALSE(parseFloodRegion("half").has_value());
     const ReachRect r = clipRect({-50, 3, 500, 9}, 10, 5, 4, 100, 100);
     EXPECT_EQ(r.x0, 6);

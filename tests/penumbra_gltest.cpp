@@ -9,14 +9,22 @@
 #include <renderer/Renderer.h>
 #include <renderer/gltf/GltfLoader.h>
 #include <renderer/io/Capture.h>
+#include <renderer/scene/Pose.h>
 #include <renderer/soft/PenumbraMap.h>
 #include <renderer/soft/PenumbraReach.h>
 
 #include <jfa/CpuKernel.h>
 #include <jfa/GlKernel.h>
 
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <optional>
+#include <tuple>
 
 namespace fl::test {
 namespace {
@@ -141,46 +149,65 @@ TEST_F(PenumbraTest, BoundsPyramidMatchesTheCpu) {
     const gl::ShaderLibrary shaders;
     const gl::Texture texture = jfa::uploadGrid(positions);
     ReceiverBoundsPyramid pyramid(shaders);
-    PenumbraReach reach;
-    pyramid.build(texture, 0.5f, light, reach);
-    ASSERT_EQ(reach.boundsLevels, 4);
-    glm::ivec2 size((w + 7) / 8, (h + 7) / 8);
-    int compared = 0, empty = 0;
-    for (int level = 0; level < reach.boundsLevels; ++level) {
-        std::vector<glm::vec4> lo(std::size_t(size.x) * size.y), hi(lo.size());
-        const auto bytes = static_cast<GLsizei>(lo.size() * sizeof(glm::vec4));
-        glGetTextureImage(reach.boundsLo, level, GL_RGBA, GL_FLOAT, bytes, lo.data());
-        glGetTextureImage(reach.boundsHi, level, GL_RGBA, GL_FLOAT, bytes, hi.data());
-        const int side = 8 << level;
-        for (int cy = 0; cy < size.y; ++cy)
-            for (int cx = 0; cx < size.x; ++cx) {
-                // The cell's texels; the last cell of a level runs to the grid's edge.
-                const int x1 = cx == size.x - 1 ? w : (cx + 1) * side;
-                const int y1 = cy == size.y - 1 ? h : (cy + 1) * side;
-                glm::vec4 cpuLo(1e30f), cpuHi(-1e30f);
-                for (int y = cy * side; y < y1; ++y)
-                    for (int x = cx * side; x < x1; ++x) {
-                        const jfa::Cell& c = positions.cells[std::size_t(y) * w + std::size_t(x)];
-                        if (c.w < 0.5f) continue;
-                        const glm::vec3 p(c.x, c.y, c.z);
-                        const glm::vec4 v(p, std::abs(glm::dot(p - light.center, light.normal)));
-                        cpuLo = glm::min(cpuLo, v);
-                        cpuHi = glm::max(cpuHi, v);
-                    }
-                const std::size_t i = std::size_t(cy) * size.x + std::size_t(cx);
-                SCOPED_TRACE("level " + std::to_string(level) + " cell " + std::to_string(cx) +
-                             "," + std::to_string(cy));
-                EXPECT_EQ(glm::vec3(lo[i]), glm::vec3(cpuLo));
-                EXPECT_EQ(glm::vec3(hi[i]), glm::vec3(cpuHi));
-                EXPECT_NEAR(lo[i].w, cpuLo.w, 1e-6f * std::abs(cpuLo.w));
-                EXPECT_NEAR(hi[i].w, cpuHi.w, 1e-6f * std::abs(cpuHi.w));
-                ++compared;
-                empty += cpuLo.x > cpuHi.x;
-            }
-        size = glm::max(size / 2, glm::ivec2(1));
+    // Then with a region (--flood-region view's seed region): tiles of 16 in a checker; the
+    // receivers of the other tiles do not count.
+    const int tile = 16, tilesX = (w + tile - 1) / tile, tilesY = (h + tile - 1) / tile;
+    std::vector<GLuint> flags(std::size_t(tilesX * tilesY));
+    for (int ty = 0; ty < tilesY; ++ty)
+        for (int tx = 0; tx < tilesX; ++tx) flags[std::size_t(ty * tilesX + tx)] = (tx + ty) % 2;
+    const gl::Buffer regionBuffer(GLsizeiptr(flags.size() * sizeof(GLuint)), flags.data());
+    for (bool withRegion : {false, true}) {
+        SCOPED_TRACE(withRegion ? "with a region" : "whole grid");
+        const auto counts = [&](int x, int y) {
+            return !withRegion || flags[std::size_t(y / tile * tilesX + x / tile)] != 0;
+        };
+        PenumbraReach reach;
+        pyramid.build(texture, 0.5f, light, reach, withRegion ? &regionBuffer : nullptr, tile);
+        ASSERT_EQ(reach.boundsLevels, 4);
+        glm::ivec2 size((w + 7) / 8, (h + 7) / 8);
+        int compared = 0, empty = 0;
+        for (int level = 0; level < reach.boundsLevels; ++level) {
+            std::vector<glm::vec4> lo(std::size_t(size.x) * size.y), hi(lo.size());
+            const auto bytes = static_cast<GLsizei>(lo.size() * sizeof(glm::vec4));
+            glGetTextureImage(reach.boundsLo, level, GL_RGBA, GL_FLOAT, bytes, lo.data());
+            glGetTextureImage(reach.boundsHi, level, GL_RGBA, GL_FLOAT, bytes, hi.data());
+            const int side = 8 << level;
+            for (int cy = 0; cy < size.y; ++cy)
+                for (int cx = 0; cx < size.x; ++cx) {
+                    // The cell's texels; the last cell of a level runs to the grid's edge.
+                    const int x1 = cx == size.x - 1 ? w : (cx + 1) * side;
+                    const int y1 = cy == size.y - 1 ? h : (cy + 1) * side;
+                    glm::vec4 cpuLo(1e30f), cpuHi(-1e30f);
+                    for (int y = cy * side; y < y1; ++y)
+                        for (int x = cx * side; x < x1; ++x) {
+                            const jfa::Cell& c =
+                                positions.cells[std::size_t(y) * w + std::size_t(x)];
+                            if (c.w < 0.5f || !counts(x, y)) continue;
+                            const glm::vec3 p(c.x, c.y, c.z);
+                            const glm::vec4 v(p,
+                                              std::abs(glm::dot(p - light.center, light.normal)));
+                            cpuLo = glm::min(cpuLo, v);
+                            cpuHi = glm::max(cpuHi, v);
+                        }
+                    const std::size_t i = std::size_t(cy) * size.x + std::size_t(cx);
+                    SCOPED_TRACE("level " + std::to_string(level) + " cell " + std::to_string(cx) +
+                                 "," + std::to_string(cy));
+                    EXPECT_EQ(glm::vec3(lo[i]), glm::vec3(cpuLo));
+                    EXPECT_EQ(glm::vec3(hi[i]), glm::vec3(cpuHi));
+                    EXPECT_NEAR(lo[i].w, cpuLo.w, 1e-6f * std::abs(cpuLo.w));
+                    EXPECT_NEAR(hi[i].w, cpuHi.w, 1e-6f * std::abs(cpuHi.w));
+                    ++compared;
+                    empty += cpuLo.x > cpuHi.x;
+                }
+            size = glm::max(size / 2, glm::ivec2(1));
+        }
+        EXPECT_EQ(compared, 60 + 15 + 2 + 1);
+        if (withRegion) {
+            EXPECT_GT(empty, 20) << "half the level-0 blocks lie outside the region";
+        } else {
+            EXPECT_EQ(empty, 1) << "block (2, 1) holds no receiver";
+        }
     }
-    EXPECT_EQ(compared, 60 + 15 + 2 + 1);
-    EXPECT_EQ(empty, 1) << "block (2, 1) holds no receiver";
 }
 
 // Band-limited flooding equals the full grid on the default scene at 256² and 512² maps, where
@@ -206,6 +233,169 @@ TEST_F(PenumbraTest, BandEqualsFullOnTheDefaultScene) {
                 EXPECT_LT(runs[0].activeShare, 1.0);
                 EXPECT_GT(nonEmpty(runs[1].grid), 100u) << "the map must have penumbrae";
             }
+}
+
+// --flood-region view (jfa/Band.h, the view limit): the penumbra map is flooded only where the
+// eye's pixels read it, silhouettes and receivers count only within the seed region around them,
+// and the picture is the full flood's, bit for bit, at the pass count view chose, for both
+// methods, both providers, fixed and auto passes. With auto, view counts only the penumbrae that
+// can reach the view, so it never chooses more passes than band. (How far beyond the view the
+// flood must run is tested on the kernels, jfa_band_test and jfa_band_gltest: here a limit two
+// tiles too narrow still gives the same pictures, since many silhouette texels make the same
+// occluder for a texel.)
+TEST_F(PenumbraTest, ViewLimitGivesTheFullFloodsPicture) {
+    Scene scene = loadGltf(defaultAsset());
+    scene.light->radius = kTestRadius;
+    const gl::ShaderLibrary shaders;
+    const auto camera = makeCameraView(scene, {}, 1.0f);
+    // One renderer for every frame (the settings change between them), so that each program is
+    // compiled once.
+    Renderer r(shaders, scene, RenderSettings{});
+    r.resize(128, 96);
+    for (ShadowMapProvider provider : {ShadowMapProvider::Uniform, ShadowMapProvider::Tsm})
+        for (const char* method : {"jfa-l", "flood-l"})
+            for (const char* passes : {"4", "auto"}) {
+                SCOPED_TRACE(std::string(method) + ", passes " + passes + ", " +
+                             std::string(providerName(provider)));
+                const auto render = [&](const std::string& region, const std::string& count) {
+                    RenderSettings settings;
+                    settings.shadow.size = 256;
+                    settings.shadow.provider = provider;
+                    settings.method = method;
+                    settings.options.set(floodPassesOption().flag, count);
+                    settings.options.set(floodRegionOption().flag, region);
+                    r.setSettings(settings);
+                    r.render(camera);
+                    return std::tuple{readFrame(r), r.flood()->passes,
+                                      r.flood()->kernel->activeShare(),
+                                      jfa::readGrid(*r.flood()->flooded)};
+                };
+                const auto [view, viewPasses, viewShare, viewMap] = render("view", passes);
+                EXPECT_EQ(r.flood()->region, jfa::FloodRegion::View);
+                const auto [band, bandPasses, bandShare, bandMap] = render("band", passes);
+                EXPECT_LE(viewPasses, bandPasses);
+                const std::string same = std::to_string(viewPasses);
+                const auto [full, fullPasses, fullShare, fullMap] = render("full", same);
+                EXPECT_TRUE(view.color.data == full.color.data);
+                EXPECT_TRUE(view.visibility.data == full.visibility.data);
+                EXPECT_NE(viewMap, fullMap) << "the view limit left nothing out";
+                const auto [bandSame, p2, bandSameShare, bandSameMap] = render("band", same);
+                EXPECT_EQ(bandSameMap, fullMap);
+                EXPECT_LT(viewShare, bandSameShare);
+            }
+}
+
+// The view limit's parts against their CPU references, on the default scene's frame: the tiles
+// the lookup reads (penumbra_view.comp.glsl), the seed region around them (tile_dilate.comp.glsl,
+// jfa::viewRegion) and the silhouettes found only there (silhouette.frag.glsl over the region's
+// row spans, tile_rows.vert.glsl).
+TEST_F(PenumbraTest, ViewLimitPartsMatchTheCpu) {
+    Scene scene = loadGltf(defaultAsset());
+    scene.light->radius = kTestRadius;
+    const gl::ShaderLibrary shaders;
+    const int size = 256, tile = jfa::kDefaultBandTile;
+    RenderSettings settings;
+    settings.shadow.size = size;
+    settings.method = "jfa-l";
+    Renderer r(shaders, scene, settings);
+    r.resize(128, 96);
+    r.render(makeCameraView(scene, {}, 1.0f));
+    const ShadowMapPass::Outputs& sm = *r.shadow();
+    const PenumbraView view{r.surfaces().position, sm.lightViewProj, sm.warp};
+    const ReceiverGrid receivers = readReceivers(*sm.receivers);
+    const std::vector<std::uint8_t> cpuView = penumbraViewTiles(
+        readReceivers(r.surfaces().position), sm.lightViewProj, sm.warp, size, tile);
+    const float threshold = 0.001f * scene.bounds.radius();
+    PenumbraMapPass pass(shaders);
+    for (long long seedReach : {-1LL, 16LL, 40LL}) {
+        SCOPED_TRACE("seed reach " + std::to_string(seedReach));
+        PenumbraSettings ps;
+        ps.passes = 4;
+        ps.region = jfa::FloodRegion::View;
+        PenumbraMapPass::Inputs in{*sm.receivers, r.disk(), ps, threshold, r.flood()->reach, &view};
+        in.viewSeedReach = seedReach;
+        const PenumbraMapPass::Outputs out = pass.execute(in);
+        EXPECT_EQ(pass.viewTiles(), cpuView);
+        const auto marked = std::count(cpuView.begin(), cpuView.end(), std::uint8_t(1));
+        EXPECT_GT(marked, 10);
+        EXPECT_LT(std::size_t(marked), cpuView.size() / 2);
+        std::optional<jfa::Band> region;
+        if (seedReach >= 0) {
+            region = jfa::viewRegion(size, size, tile, cpuView, int((seedReach + tile - 1) / tile));
+            EXPECT_EQ(pass.seedRegion(), region->active);
+            EXPECT_LT(region->activeShare(), 0.9);
+        } else {
+            EXPECT_TRUE(pass.seedRegion().empty());
+        }
+        const jfa::Grid cpuSeeds =
+            silhouetteSeeds(receivers, r.disk(), threshold, region ? &*region : nullptr);
+        EXPECT_EQ(jfa::readGrid(out.seeds), cpuSeeds);
+        EXPECT_GT(nonEmpty(cpuSeeds), 50u);
+        if (region) {
+            EXPECT_LT(nonEmpty(cpuSeeds),
+                      nonEmpty(silhouetteSeeds(receivers, r.disk(), threshold)));
+        }
+    }
+}
+
+// widestPenumbraTexels bounds every occluder's rect (the CPU's PenumbraReach rect with the
+// scene's deepest receiver, which holds the GPU's), for a spot light and a point light at three
+// radii; it has no answer for a TSM-warped or orthographic volume.
+TEST_F(PenumbraTest, WidestPenumbraBoundsEverySeedsRect) {
+    SceneView sv = spotLitBox();
+    const gl::ShaderLibrary shaders;
+    const int size = 256;
+    for (Light::Type type : {Light::Type::Spot, Light::Type::Point})
+        for (float radius : {0.5f, 2.0f}) {
+            SCOPED_TRACE(std::to_string(int(type)) + " radius " + std::to_string(radius));
+            Scene scene = sv.scene;
+            scene.light->type = type;
+            scene.light->radius = radius;
+            RenderSettings settings;
+            settings.shadow.size = size;
+            settings.method = "jfa-l";
+            Renderer r(shaders, scene, settings);
+            r.resize(64, 64);
+            r.render(sv.camera);
+            const geom::ViewVolume volume = lightVolume(scene, *scene.light);
+            ASSERT_EQ(volume.viewProj(), r.shadow()->lightViewProj);
+            const glm::vec3 axis = -glm::normalize(glm::vec3(glm::inverse(volume.view)[2]));
+            const glm::vec2 nearest =
+                nearestLightDepths(scene, evaluatePose(scene, {}, 0.0), r.disk(), axis);
+            const PenumbraReach reach =
+                penumbraReach(r.disk(), r.shadow()->mapViewProj(), {size, size}, scene.bounds);
+            const std::optional<long long> widest =
+                widestPenumbraTexels(r.disk(), volume, size, nearest, reach.farDepth);
+            ASSERT_TRUE(widest.has_value());
+            const jfa::Grid seeds = silhouetteSeeds(readReceivers(*r.shadow()->receivers), r.disk(),
+                                                    0.001f * scene.bounds.radius());
+            long long most = -1;
+            for (int y = 0; y < size; ++y)
+                for (int x = 0; x < size; ++x) {
+                    const jfa::Cell& c = seeds.at(x, y);
+                    if (c.w == 0.0f) continue;
+                    const jfa::ReachRect rect =
+                        penumbraReachRect(r.disk(), reach, glm::vec3(c.x, c.y, c.z));
+                    most = std::max(
+                        most,
+                        jfa::rectReach(jfa::clipRect(rect, x, y, jfa::kUnboundedReach, size, size),
+                                       x, y));
+                }
+            EXPECT_GT(most, 0);
+            EXPECT_LE(most, *widest);
+            std::printf("widest rect %lld texels, bound %lld\n", most, *widest);
+        }
+    // Orthographic (a directional light's volume), or an eye away from the disk: no bound.
+    const DiskLight disk{{0.0f, 6.0f, 0.0f}, {0.0f, -1.0f, 0.0f}, 1.0f};
+    geom::ViewVolume ortho;
+    ortho.view = glm::lookAt(glm::vec3(0, 6, 0), glm::vec3(0), glm::vec3(0, 0, 1));
+    ortho.proj = glm::ortho(-3.0f, 3.0f, -3.0f, 3.0f, 1.0f, 10.0f);
+    EXPECT_FALSE(widestPenumbraTexels(disk, ortho, size, {5.0f, 5.0f}, 6.0f).has_value());
+    geom::ViewVolume moved = ortho;
+    moved.proj = glm::perspective(1.0f, 1.0f, 1.0f, 10.0f);
+    EXPECT_TRUE(widestPenumbraTexels(disk, moved, size, {5.0f, 5.0f}, 6.0f).has_value());
+    moved.view = glm::lookAt(glm::vec3(0.5f, 6, 0), glm::vec3(0), glm::vec3(0, 0, 1));
+    EXPECT_FALSE(widestPenumbraTexels(disk, moved, size, {5.0f, 5.0f}, 6.0f).has_value());
 }
 
 TEST_F(PenumbraTest, ZeroLightRadiusGivesExactlyTheHardShadows) {

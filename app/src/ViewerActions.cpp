@@ -67,6 +67,12 @@ void Viewer::act(Action a) {
                                 ? ShadowMapProvider::Tsm
                                 : ShadowMapProvider::Uniform;
         break;
+    case Action::NextFloodRegion: {
+        const std::vector<std::string> regions = optionChoices(floodRegionOption());
+        s.options.set(floodRegionOption().flag, cycle(std::span<const std::string>(regions),
+                                                      s.options.text(floodRegionOption()), 1));
+        break;
+    }
     case Action::ShadowMapSmaller:
         s.shadow.size = std::max(256, s.shadow.size / 2);
         if (s.options.integer(floodPassesOption()) != kAutoPasses) // auto adapts by itself
@@ -273,8 +279,10 @@ std::vector<std::string> Viewer::hudLines(const std::vector<std::string>& overla
                                                    : s.options.text(floodPassesOption()));
     if (flood && autoPasses) passes += " (auto)";
     if (flood && flood->kernel && flood->kernel->lastRunBanded())
-        passes += "   band " + std::to_string(int(flood->kernel->activeShare() * 100.0 + 0.5)) +
-                  "% of texels";
+        passes += "   " + std::string(jfa::floodRegionName(flood->region)) + " " +
+                  std::to_string(int(flood->kernel->activeShare() * 100.0 + 0.5)) + "% of texels";
+    else if (flood)
+        passes += "   full grid";
     lines.push_back("method " + s.method + " (" +
                     std::to_string(indexOf(std::span<const std::string>(methods), s.method) + 1) +
                     "/" + std::to_string(methods.size()) + ")   shadow map " +

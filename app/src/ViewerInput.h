@@ -20,6 +20,7 @@ enum class Action {
     ShadowMapLarger,
     FewerPasses,
     MorePasses,
+    NextFloodRegion,
     NextVariant,
     NextOverlay,
     PrevOverlay,

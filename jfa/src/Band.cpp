@@ -2,16 +2,73 @@
 
 #include <base/Text.h>
 
+#include <algorithm>
+#include <stdexcept>
+
 namespace fl::jfa {
 
 std::string_view floodRegionName(FloodRegion region) {
-    return region == FloodRegion::Band ? "band" : "full";
+    switch (region) {
+    case FloodRegion::Band:
+        return "band";
+    case FloodRegion::View:
+        return "view";
+    case FloodRegion::Full:
+        break;
+    }
+    return "full";
 }
 
 std::optional<FloodRegion> parseFloodRegion(std::string_view text) {
-    if (text == "band") return FloodRegion::Band;
-    if (text == "full") return FloodRegion::Full;
+    for (FloodRegion r : {FloodRegion::Band, FloodRegion::Full, FloodRegion::View})
+        if (text == floodRegionName(r)) return r;
     return std::nullopt;
+}
+
+int viewTileReach(const Plan& plan, int tile) {
+    if (plan.untilUnchanged() || tile <= 0) return -1;
+    const long long reach = planBandReach(plan) + 1;
+    const long long tiles = (reach + tile - 1) / tile;
+    return tiles > kMaxViewTileReach ? -1 : static_cast<int>(tiles);
+}
+
+Band viewRegion(int width, int height, int tile, const std::vector<std::uint8_t>& view,
+                int tileReach) {
+    Band b;
+    b.width = width;
+    b.height = height;
+    b.tile = tile;
+    b.tilesX = (width + tile - 1) / tile;
+    b.tilesY = (height + tile - 1) / tile;
+    if (view.size() != std::size_t(b.tilesX) * std::size_t(b.tilesY))
+        throw std::invalid_argument(
+            cat("jfa: the view has ", view.size(), " tiles, the grid ", b.tilesX * b.tilesY));
+    // Separably, as the GPU does it: along x, then along y.
+    std::vector<std::uint8_t> rows(view.size(), 0);
+    b.active.assign(view.size(), 0);
+    const auto at = [&](int x, int y) {
+        return std::size_t(y) * std::size_t(b.tilesX) + std::size_t(x);
+    };
+    for (int y = 0; y < b.tilesY; ++y)
+        for (int x = 0; x < b.tilesX; ++x)
+            for (int k = std::max(0, x - tileReach); k <= std::min(b.tilesX - 1, x + tileReach);
+                 ++k)
+                if (view[at(k, y)] != 0) rows[at(x, y)] = 1;
+    for (int y = 0; y < b.tilesY; ++y)
+        for (int x = 0; x < b.tilesX; ++x)
+            for (int k = std::max(0, y - tileReach); k <= std::min(b.tilesY - 1, y + tileReach);
+                 ++k)
+                if (rows[at(x, k)] != 0) b.active[at(x, y)] = 1;
+    b.full = std::all_of(b.active.begin(), b.active.end(), [](std::uint8_t a) { return a != 0; });
+    return b;
+}
+
+void limitToView(Band& band, const std::vector<std::uint8_t>& view, int tileReach) {
+    const Band near = viewRegion(band.width, band.height, band.tile, view, tileReach);
+    for (std::size_t i = 0; i < band.active.size(); ++i)
+        band.active[i] = band.active[i] != 0 && near.active[i] != 0 ? 1 : 0;
+    band.full =
+        std::all_of(band.active.begin(), band.active.end(), [](std::uint8_t a) { return a != 0; });
 }
 
 std::string checkBandTile(int tile) {

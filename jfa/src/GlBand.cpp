@@ -56,6 +56,7 @@ void GlFloodKernelBase::buildBandPrograms() {
     compactProgram_ =
         gl::Program::build(shaders_, {{GL_COMPUTE_SHADER, "jfa_band_compact.comp.glsl"}});
     clearProgram_ = gl::Program::build(shaders_, {{GL_COMPUTE_SHADER, "jfa_band_clear.comp.glsl"}});
+    viewProgram_ = gl::Program::build(shaders_, {{GL_COMPUTE_SHADER, "jfa_band_view.comp.glsl"}});
     for (bool expand : {false, true}) {
         std::vector<std::string> defines{"JFA_BAND"};
         if (expand) defines.emplace_back("JFA_EXPAND");
@@ -162,6 +163,20 @@ bool GlFloodKernelBase::buildBand(const Plan& plan, const gl::Texture& seeds) {
     glUseProgram(markProgram_.id());
     glDispatchCompute(groups(tiles.x), groups(tiles.y), 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    // The view limit: off the tiles no view texel depends on.
+    if (const int reach = viewTileReach(plan, tile_);
+        region_ == FloodRegion::View && viewTiles_ != nullptr && reach >= 0) {
+        if (viewTiles_->size() < GLsizeiptr(sizeof(GLuint)) * tiles.x * tiles.y)
+            throw std::invalid_argument("jfa: the view tiles buffer is smaller than the band's " +
+                                        std::to_string(tiles.x * tiles.y) + " tiles");
+        viewProgram_.set("uTiles", tiles);
+        viewProgram_.set("uTileReach", reach);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, viewTiles_->id());
+        glUseProgram(viewProgram_.id());
+        glDispatchCompute(groups(tiles.x), groups(tiles.y), 1);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, 0);
+    }
     // Step C: per stage, the tiles holding a band texel's grid point, and the commands.
     const std::vector<Stage>& stages = plan.stages();
     compactProgram_.set("uTiles", tiles);

@@ -161,7 +161,7 @@ const gl::Texture& GlFloodKernelBase::runPlan(const Plan& plan, const gl::Textur
     if (preparedSeeds_ == seeds.id())
         lastRunBanded_ = preparedBanded_; // prepareBand() built it for this plan and seeds
     else
-        lastRunBanded_ = region_ == FloodRegion::Band && buildBand(plan, seeds);
+        lastRunBanded_ = banded(region_) && buildBand(plan, seeds);
     // Steps A-C are consumed: the next frame's seeds may reuse the texture.
     measuredSeeds_ = 0;
     preparedSeeds_ = 0;

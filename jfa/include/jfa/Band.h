@@ -14,6 +14,16 @@
 // By induction the result equals the full flood texel for texel, for every plan and criterion.
 // Computing more than the band is harmless, so stage grids at half resolution use the tiles that
 // cover any band texel's grid point.
+//
+// The view limit (FloodRegion::View). A caller that reads the result at some texels only (JFA-L's
+// lookup reads one penumbra-map texel per eye pixel) needs it exact there only. After a plan, a
+// texel's cell depends only on what the texels within the plan's reach of it (planBandReach) held
+// before: information moves at most that far. So a run that computes, at every pass, the band
+// less the tiles farther than that reach from every view tile leaves each view texel as the full
+// flood leaves it, by the same induction run backwards from the view: each texel it computes that
+// a view texel depends on reads only texels that are computed too, or truly empty. Texels beyond
+// the view's reach may hold anything a partial flood leaves there. Plans that stop "until
+// unchanged" are not limited: their stopping reads the whole grid.
 
 #include <jfa/Grid.h>
 #include <jfa/Plan.h>
@@ -29,12 +39,17 @@
 
 namespace fl::jfa {
 
-/// Where a flood runs: only over the band its seeds can reach, or over the whole grid.
-enum class FloodRegion { Band, Full };
-/// "band" or "full".
+/// Where a flood runs: only over the band its seeds can reach, over the whole grid, or over the
+/// band less what a view cannot read (exact at the view's texels only; see above).
+enum class FloodRegion { Band, Full, View };
+/// "band", "full" or "view".
 std::string_view floodRegionName(FloodRegion region);
-/// Parses "band" or "full"; nullopt otherwise.
+/// Parses "band", "full" or "view"; nullopt otherwise.
 std::optional<FloodRegion> parseFloodRegion(std::string_view text);
+/// Whether the region floods a band (Band, or View, which is a band further limited).
+constexpr bool banded(FloodRegion region) {
+    return region != FloodRegion::Full;
+}
 
 /// Tile side in texels: 8 measured fastest on llvmpipe for JFA-L (frame 99 ms against 109 at 16
 /// and ~145 at 32; docs/BENCHMARKS.md "Band-limited flooding"). Tiles must be a multiple of 8
@@ -148,6 +163,25 @@ long long maxSeedReach(const Grid& seeds, const C& criterion) {
         }
     return best;
 }
+
+/// The widest view limit, in tiles: farther, the per-tile search of the view step costs more
+/// than the passes it could save, and the band is left whole.
+inline constexpr int kMaxViewTileReach = 16;
+/// How many tiles (per axis) from a view tile a band tile may lie and still be computed under
+/// the view limit, for `plan` on tiles of side `tile`: the plan's reach plus one texel (the GPU
+/// finds the view's texels in a pass of its own, whose rounding may differ from the reader's by a
+/// texel). -1 when the plan cannot be limited: an until-unchanged stage, or more than
+/// kMaxViewTileReach tiles.
+int viewTileReach(const Plan& plan, int tile);
+/// The tiles of a width x height grid within `tileReach` tiles (per axis) of a view tile (`view`:
+/// one flag per tile of side `tile`, row-major): where a view-limited run computes at most.
+/// Throws std::invalid_argument when `view` has another size.
+Band viewRegion(int width, int height, int tile, const std::vector<std::uint8_t>& view,
+                int tileReach);
+/// Removes from `band` the tiles farther than `tileReach` tiles (per axis) from every view tile.
+/// `view` holds one flag per tile of the band's grid, row-major (nonzero: the reader reads a
+/// texel there). Throws std::invalid_argument when its size is not the band's tile count.
+void limitToView(Band& band, const std::vector<std::uint8_t>& view, int tileReach);
 
 /// The fewest halving JFA passes (steps 2^(k-1) .. 1, reach 2^k - 1) that cover `reach` texels,
 /// clamped to [1, maxPasses]; maxPasses for an unbounded reach, 1 without seeds (reach < 0).

@@ -77,6 +77,10 @@ struct FloodOptions {
     /// Band: compute only the texels the seeds can reach (jfa/Band.h); Full: every texel.
     FloodRegion region = FloodRegion::Full;
     int bandTile = kDefaultBandTile;
+    /// With FloodRegion::View: one flag per band tile (row-major; nonzero where the caller reads
+    /// the result). The run is then exact at those tiles' texels only (jfa/Band.h, limitToView).
+    /// Without it, View floods the band.
+    const std::vector<std::uint8_t>* viewTiles = nullptr;
 };
 
 /// What one executed pass did.
@@ -258,10 +262,13 @@ FloodResult floodWithStats(const Plan& plan, const Grid& fullResSeeds, const C& 
     resolveThreads(options.threads); // validates
     FloodResult result;
     std::optional<Band> band;
-    if (options.region == FloodRegion::Band) {
+    if (banded(options.region)) {
         if (const std::string bad = checkBandTile(options.bandTile); !bad.empty())
             throw std::invalid_argument("flood: " + bad);
         band = floodBand(plan, fullResSeeds, criterion, options.bandTile);
+        if (options.region == FloodRegion::View && options.viewTiles != nullptr)
+            if (const int reach = viewTileReach(plan, options.bandTile); reach >= 0)
+                limitToView(*band, *options.viewTiles, reach);
         result.activeShare = band->activeShare();
         if (band->full) band.reset();
     }

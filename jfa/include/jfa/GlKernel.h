@@ -56,9 +56,15 @@ class GlFloodKernelBase {
     [[nodiscard]] int passesRun() const { return passesRun_; }
     [[nodiscard]] GlKernelKind kind() const { return kind_; }
 
-    /// Where the next runs flood: the band (tiles of side `tile`, a multiple of 8) or the full
-    /// grid. Throws std::invalid_argument for a bad tile. Full by default.
+    /// Where the next runs flood: the band (tiles of side `tile`, a multiple of 8), the band
+    /// less what a view cannot read (setViewTiles), or the full grid. Throws
+    /// std::invalid_argument for a bad tile. Full by default.
     void setRegion(FloodRegion region, int tile = kDefaultBandTile);
+    /// With FloodRegion::View: the tiles the reader of the result reads (one uint per band tile
+    /// of the seeds' grid, row-major, nonzero where it reads a texel); the runs are then exact at
+    /// those tiles only (jfa/Band.h). The caller keeps the buffer alive while it is set.
+    /// nullptr (the default): View floods the band.
+    void setViewTiles(const gl::Buffer* tiles) { viewTiles_ = tiles; }
     [[nodiscard]] FloodRegion region() const { return region_; }
     /// The band's tile side (setRegion).
     [[nodiscard]] int bandTile() const { return tile_; }
@@ -119,6 +125,8 @@ class GlFloodKernelBase {
     gl::Program reachProgram_, markProgram_, compactProgram_; // band steps A, B, C
     gl::Program bandPassProgram_, bandExpandProgram_;         // passes over a tile list
     gl::Program clearProgram_; // the empty cell over a tile list (jfa_band_clear.comp.glsl)
+    gl::Program viewProgram_;  // the view limit (jfa_band_view.comp.glsl)
+    const gl::Buffer* viewTiles_ = nullptr;
     gl::Buffer tileReach_, maxReach_, flags_, seedList_;
     struct StageBand {
         gl::Buffer tiles;    // packed tile coordinates (x | y << 16)
@@ -133,7 +141,7 @@ class GlFloodKernelBase {
   protected:
     /// prepareBand()'s work once the criterion's uniforms are set.
     void prepare(const Plan& plan, const gl::Texture& seeds) {
-        preparedBanded_ = region_ == FloodRegion::Band && buildBand(plan, seeds);
+        preparedBanded_ = banded(region_) && buildBand(plan, seeds);
         preparedSeeds_ = seeds.id();
     }
 
@@ -196,7 +204,7 @@ class GlFloodKernel : public GlFloodKernelBase {
     /// Builds the band for `plan` on `seeds` now (steps A-C, no read-back), so that it can be
     /// timed apart from the passes; the next run() with the same seeds uses it. Optional.
     void prepareBand(const Plan& plan, const gl::Texture& seeds, const C& criterion) {
-        for (const gl::Program* p : criterionPrograms(region() == FloodRegion::Band))
+        for (const gl::Program* p : criterionPrograms(banded(region())))
             setCriterionUniforms(*p, criterion);
         prepare(plan, seeds);
     }
@@ -206,7 +214,7 @@ class GlFloodKernel : public GlFloodKernelBase {
     /// is given, each pass is timed as "jfa step K", K the jump length (and "downsample").
     const gl::Texture& run(const Plan& plan, const gl::Texture& seeds, const C& criterion,
                            gl::PassTimer* timer = nullptr, const PassCallback& callback = {}) {
-        for (const gl::Program* p : criterionPrograms(region() == FloodRegion::Band))
+        for (const gl::Program* p : criterionPrograms(banded(region())))
             setCriterionUniforms(*p, criterion);
         return runPlan(plan, seeds, timer, callback);
     }

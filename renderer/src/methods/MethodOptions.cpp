@@ -41,19 +41,26 @@ std::string checkOptionValue(const MethodOption& o, std::string_view value) {
             return cat("must be true or false, got '", value, "'");
         return {};
     case OptionKind::Choice: {
-        std::string_view rest = o.choices;
-        while (!rest.empty()) {
-            const std::size_t bar = rest.find('|');
-            if (rest.substr(0, bar) == value) return {};
-            rest = bar == std::string_view::npos ? std::string_view{} : rest.substr(bar + 1);
+        std::string list;
+        for (const std::string& c : optionChoices(o)) {
+            if (c == value) return {};
+            list += (list.empty() ? "" : ",") + c;
         }
-        std::string list(o.choices);
-        for (char& c : list)
-            if (c == '|') c = ',';
         return cat("must be one of ", list, ", got '", value, "'");
     }
     }
     return "unknown option kind";
+}
+
+std::vector<std::string> optionChoices(const MethodOption& o) {
+    std::vector<std::string> out;
+    std::string_view rest = o.choices;
+    while (!rest.empty()) {
+        const std::size_t bar = rest.find('|');
+        out.emplace_back(rest.substr(0, bar));
+        rest = bar == std::string_view::npos ? std::string_view{} : rest.substr(bar + 1);
+    }
+    return out;
 }
 
 void MethodOptions::set(std::string_view flag, float value) {

@@ -50,10 +50,13 @@ constexpr MethodOption kFloodRegion{
     OptionKind::Choice,
     "band",
     "band: flood only the tiles the occluders' penumbrae can reach (the same result, texel for "
-    "texel); full: every texel of the grid",
+    "texel); full: every texel of the grid; view: jfa-l, flood-l find silhouettes and flood "
+    "only around what the eye's pixels read (the picture of full at the same passes, pixel for "
+    "pixel; the penumbra map is exact only there; auto counts only the penumbrae that can reach "
+    "the view, so it may take fewer passes than band); jfa-e, flood-e flood the band",
     0,
     0,
-    "band|full"};
+    "band|full|view"};
 constexpr MethodOption kFullJfa{
     "--full-jfa", "fullJfa", OptionKind::Flag, "false",
     "Full JFA: as many passes as the grid allows (log2 of the shadow-map size for -l, of the "
@@ -184,7 +187,7 @@ constexpr const MethodOption* kRayTraceOptions[] = {&kRaySamples, &kRayGrid};
 // --- Timed phases (step 3's parts, as PassTimer names them) ------------------------------------
 
 constexpr std::string_view kHardPhases[] = {"hard shadows"};
-constexpr std::string_view kLightFloodPhases[] = {"silhouettes", "band", "flood",
+constexpr std::string_view kLightFloodPhases[] = {"view", "silhouettes", "band", "flood",
                                                   "penumbra lookup"};
 constexpr std::string_view kEyeFloodPhases[] = {
     "occluder ids", "eye hard shadows", "boundaries", "band", "flood", "composite"};

@@ -7,6 +7,7 @@
 #include <renderer/soft/PenumbraMap.h>
 
 #include <algorithm>
+#include <optional>
 
 namespace fl {
 
@@ -33,8 +34,13 @@ class PenumbraMethod final : public ShadowMethod {
         // A silhouette needs a depth step of a thousandth of the scene: smaller steps are the
         // receiver's own slope, not an occluder's edge.
         const float threshold = silhouetteThreshold(in.sceneBounds.radius());
-        const PenumbraMapPass::Outputs pm =
-            pass_.execute({*in.shadow.receivers, in.disk, ps, threshold, reach}, in.timer);
+        // --flood-region view: the lookup below reads one texel per eye pixel, so the flood
+        // need be exact there only (jfa/Band.h, the view limit), and only seeds within the
+        // flood's reach of those texels, or (auto) within the widest penumbra's, count.
+        const PenumbraView view{in.surfaces.position, in.shadow.lightViewProj, in.shadow.warp};
+        PenumbraMapPass::Inputs pi{*in.shadow.receivers, in.disk, ps, threshold, reach, &view};
+        if (ps.region == jfa::FloodRegion::View) pi.viewSeedReach = viewSeedReach(in, ps, size);
+        const PenumbraMapPass::Outputs pm = pass_.execute(pi, in.timer);
         flood_ = {&pm.seeds,
                   &pm.penumbraMap,
                   in.shadow.receivers,
@@ -55,6 +61,38 @@ class PenumbraMethod final : public ShadowMethod {
     [[nodiscard]] const FloodFrame* flood() const override { return &flood_; }
 
   private:
+    /// How far from the view's texels seeds and receivers count: the plan's reach plus a texel
+    /// (jfa::viewTileReach) for a fixed pass count; with auto, the widest penumbra any occluder
+    /// can cast plus a texel (widestPenumbraTexels: the uniform map of a point or spot light),
+    /// so that every penumbra that reaches the view counts. -1 (the whole map) when nothing
+    /// bounds it.
+    long long viewSeedReach(const FrameInputs& in, const PenumbraSettings& ps, int size) {
+        if (ps.passes != kAutoPasses) return 1LL << ps.passes;
+        if (in.shadowSettings.provider != ShadowMapProvider::Uniform) return -1;
+        // The occluders' nearest depths, from the posed vertices: once per pose and light.
+        const glm::vec3 axis = -glm::normalize(glm::vec3(glm::inverse(in.lightVolume.view)[2]));
+        const NearestKey key{in.scene.poseVersion(), in.disk.center, in.disk.normal, axis};
+        if (!nearestKey_ || !(*nearestKey_ == key)) {
+            const Scene& scene = in.scene.source();
+            const Pose rest = in.scene.pose() ? Pose{} : evaluatePose(scene, {}, 0.0);
+            nearest_ =
+                nearestLightDepths(scene, in.scene.pose() ? *in.scene.pose() : rest, in.disk, axis);
+            nearestKey_ = key;
+        }
+        const std::optional<long long> widest =
+            widestPenumbraTexels(in.disk, in.lightVolume, size, nearest_,
+                                 farthestLightDepth(in.disk, in.sceneBounds) * 1.001f + 1e-4f);
+        if (!widest) return -1;
+        return *widest + 1; // PenumbraMapPass widens it to the passes auto then chooses
+    }
+    struct NearestKey {
+        std::uint64_t pose;
+        glm::vec3 center, normal, axis;
+        bool operator==(const NearestKey&) const = default;
+    };
+    std::optional<NearestKey> nearestKey_;
+    glm::vec2 nearest_{0.0f};
+
     bool standardFlooding_;
     PenumbraMapPass pass_;
     LightLookup lookup_;

@@ -226,7 +226,7 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::Pass
         boundary_.set("uAbsolute2", th.absolute2);
         boundary_.set("uRelative2", th.relative2);
         // A banded flood lists its seeds here rather than sweeping the frame for them again.
-        const bool listSeeds = in.region == jfa::FloodRegion::Band;
+        const bool listSeeds = jfa::banded(in.region);
         boundary_.set("uListSeeds", listSeeds ? 1 : 0);
         if (listSeeds) kernel_.beginSeedList(in.width, in.height);
         glBindTextureUnit(0, points_.id());

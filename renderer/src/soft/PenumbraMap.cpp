@@ -3,6 +3,7 @@
 
 #include <jfa/CpuKernel.h>
 
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -32,12 +33,13 @@ jfa::Plan penumbraPlan(const PenumbraSettings& settings, int size) {
     return jfa::Plan("JFA " + std::to_string(settings.passes) + " passes", {stage});
 }
 
-jfa::Grid silhouetteSeeds(const ReceiverGrid& r, const DiskLight& light, float threshold) {
+jfa::Grid silhouetteSeeds(const ReceiverGrid& r, const DiskLight& light, float threshold,
+                          const jfa::Band* region) {
     jfa::Grid out(r.width, r.height, jfa::kEmptyCell);
     for (int y = 0; y < r.height; ++y)
         for (int x = 0; x < r.width; ++x) {
             const glm::vec4& self = r.at(x, y);
-            if (self.w == 0.0f) continue;
+            if (self.w == 0.0f || (region != nullptr && !region->covers(x, y))) continue;
             bool silhouette = false;
             for (int j = -1; j <= 1; ++j)
                 for (int i = -1; i <= 1; ++i) {
@@ -52,11 +54,39 @@ jfa::Grid silhouetteSeeds(const ReceiverGrid& r, const DiskLight& light, float t
     return out;
 }
 
+std::vector<std::uint8_t> penumbraViewTiles(const ReceiverGrid& eyePositions,
+                                            const glm::mat4& lightViewProj, const glm::mat4& warp,
+                                            int mapSize, int tile) {
+    const int tiles = (mapSize + tile - 1) / tile;
+    std::vector<std::uint8_t> out(std::size_t(tiles) * std::size_t(tiles), 0);
+    for (const glm::vec4& p : eyePositions.points) {
+        if (p.w == 0.0f) continue;
+        const glm::vec4 light = lightViewProj * glm::vec4(glm::vec3(p), 1.0f);
+        const glm::vec4 map = warp * light;
+        if (light.w <= 0.0f || map.w <= 0.0f) continue;
+        const glm::vec3 uvz = glm::vec3(glm::vec2(map) / map.w, light.z / light.w) * 0.5f + 0.5f;
+        constexpr float kMargin = 1e-4f;
+        if (glm::any(glm::lessThan(uvz, glm::vec3(-kMargin))) ||
+            glm::any(glm::greaterThan(uvz, glm::vec3(1.0f + kMargin))))
+            continue;
+        const glm::ivec2 t = glm::clamp(glm::ivec2(glm::vec2(uvz) * float(mapSize)), glm::ivec2(0),
+                                        glm::ivec2(mapSize - 1));
+        out[std::size_t(t.y / tile) * std::size_t(tiles) + std::size_t(t.x / tile)] = 1;
+    }
+    return out;
+}
+
 PenumbraMapPass::PenumbraMapPass(const gl::ShaderLibrary& shaders)
     : silhouette_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
                                                {GL_FRAGMENT_SHADER, "silhouette.frag.glsl"}})),
       emptyVao_(gl::VertexArray::create()), kernel_(shaders, jfa::GlKernelKind::Fragment),
-      bounds_(shaders) {}
+      bounds_(shaders),
+      viewProgram_(gl::Program::build(shaders, {{GL_COMPUTE_SHADER, "penumbra_view.comp.glsl"}})),
+      dilateProgram_(gl::Program::build(shaders, {{GL_COMPUTE_SHADER, "tile_dilate.comp.glsl"}})),
+      silhouetteRows_(gl::Program::build(
+          shaders,
+          {{GL_VERTEX_SHADER, "tile_rows.vert.glsl"}, {GL_FRAGMENT_SHADER, "silhouette.frag.glsl"}},
+          {"SILHOUETTE_REGION 1"})) {}
 
 PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, gl::PassTimer* timer) {
     const int size = in.receivers.width();
@@ -66,23 +96,22 @@ PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, gl::PassTime
         seeds_ = gl::Texture(GL_RGBA32F, size, size);
         fbo_ = gl::Framebuffer::forColor(seeds_, "silhouette seeds");
     }
+    // --flood-region view: the tiles the lookup reads, and the region around them where seeds
+    // and receivers count (seedRegion_; jfa/Band.h, the view limit).
+    const bool limited = in.settings.region == jfa::FloodRegion::View && in.view != nullptr;
+    const int tile = in.settings.bandTile;
+    long long regionReach = limited ? in.viewSeedReach : -1;
+    bool region = false;
+    viewTileCount_ = 0;
+    if (limited) {
+        if (timer) timer->begin("view");
+        markView(*in.view, size, tile);
+        region = regionReach >= 0 && markSeedRegion(size, tile, regionReach);
+        if (timer) timer->end();
+    }
     // Phase 2 (thesis; within frame step 3): silhouettes.
     if (timer) timer->begin("silhouettes");
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-    glViewport(0, 0, size, size);
-    glDisable(GL_DEPTH_TEST);
-    setDiskLightUniforms(silhouette_, in.light);
-    silhouette_.set("uSilhouetteThreshold", in.threshold);
-    // A banded flood lists its seeds here, in the pass that finds them, rather than sweeping
-    // the map for them again (GlFloodKernelBase::beginSeedList).
-    const bool listSeeds = in.settings.region == jfa::FloodRegion::Band;
-    silhouette_.set("uListSeeds", listSeeds ? 1 : 0);
-    if (listSeeds) kernel_.beginSeedList(size, size);
-    glBindTextureUnit(0, in.receivers.id());
-    gl::drawFullscreenTriangle(silhouette_, emptyVao_);
-    glBindTextureUnit(0, 0);
-    if (listSeeds) kernel_.seedsListed(seeds_);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    findSeeds(in, region);
     if (timer) timer->end();
     // Phase 3: flood the occluders through the penumbra region; its band (jfa/Band.h) and,
     // with auto, its pass count first, timed apart.
@@ -91,13 +120,26 @@ PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, gl::PassTime
     criterion.light = in.light;
     criterion.receiverTexture = in.receivers.id();
     criterion.reachBound = in.reach;
-    if (criterion.reachBound.enabled) // receivers are the texels with w = 1
-        bounds_.build(in.receivers, 0.5f, in.light, criterion.reachBound);
-    kernel_.setRegion(in.settings.region, in.settings.bandTile);
+    kernel_.setRegion(in.settings.region, tile);
+    kernel_.setViewTiles(limited ? &viewTiles_ : nullptr);
     PenumbraSettings settings = in.settings;
-    if (settings.passes == 0) // auto: one value read back, since the plan is recorded on the CPU
-        settings.passes =
-            jfa::passesForReach(kernel_.maxSeedReach(seeds_, criterion), penumbraMaxPasses(size));
+    for (;;) {
+        if (criterion.reachBound.enabled) // receivers are the texels with w = 1
+            bounds_.build(in.receivers, 0.5f, in.light, criterion.reachBound,
+                          region ? &seedRegion_ : nullptr, tile);
+        if (settings.passes == 0) // auto: one value read back (the plan is recorded on the CPU)
+            settings.passes = jfa::passesForReach(kernel_.maxSeedReach(seeds_, criterion),
+                                                  penumbraMaxPasses(size));
+        // Auto may choose more passes than the region covers (it covers the widest penumbra,
+        // rounded up to tiles, not the passes that rounds up to): then once more over the
+        // flood's cone, seeds and receivers included (timed within "band").
+        if (!region || in.settings.passes != 0 || (1LL << settings.passes) <= regionReach) break;
+        regionReach = 1LL << settings.passes;
+        settings.passes = 0;
+        region = markSeedRegion(size, tile, regionReach);
+        findSeeds(in, region);
+    }
+    seedRegionCount_ = region ? viewTileCount_ : 0;
     const jfa::Plan plan = penumbraPlan(settings, size);
     kernel_.prepareBand(plan, seeds_, criterion);
     if (timer) timer->end();
@@ -106,7 +148,123 @@ PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, gl::PassTime
     glBindTextureUnit(2, 0);
     unbindPenumbraReach();
     if (timer) timer->end();
+    kernel_.setViewTiles(nullptr);
     return {seeds_, map, kernel_.passesRun(), settings.passes};
+}
+
+void PenumbraMapPass::findSeeds(const Inputs& in, bool region) {
+    const int size = in.receivers.width();
+    const int tile = in.settings.bandTile;
+    const gl::Program& program = region ? silhouetteRows_ : silhouette_;
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    glViewport(0, 0, size, size);
+    glDisable(GL_DEPTH_TEST);
+    setDiskLightUniforms(program, in.light);
+    program.set("uSilhouetteThreshold", in.threshold);
+    // A banded flood lists its seeds here, in the pass that finds them, rather than sweeping
+    // the map for them again (GlFloodKernelBase::beginSeedList).
+    const bool listSeeds = jfa::banded(in.settings.region);
+    program.set("uListSeeds", listSeeds ? 1 : 0);
+    if (listSeeds) kernel_.beginSeedList(size, size);
+    glBindTextureUnit(0, in.receivers.id());
+    if (region) {
+        // The texels off the region's rows' spans stay empty; the spans are drawn.
+        const std::array<float, 4> empty{0.0f, 0.0f, -1.0f, 0.0f}; // jfa::kEmptyCell
+        glClearTexImage(seeds_.id(), 0, GL_RGBA, GL_FLOAT, empty.data());
+        const int tiles = (size + tile - 1) / tile;
+        program.set("uRegionTile", tile);
+        program.set("uRegionTilesX", tiles);
+        program.set("uTile", tile);
+        program.set("uSize", glm::ivec2(size));
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, seedRegion_.id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 9, rowSpans_.id());
+        glUseProgram(program.id());
+        glBindVertexArray(emptyVao_.id());
+        glDrawArraysInstanced(GL_TRIANGLES, 0, 6, tiles);
+        glBindVertexArray(0);
+        glUseProgram(0);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, 0);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 9, 0);
+    } else {
+        gl::drawFullscreenTriangle(program, emptyVao_);
+    }
+    glBindTextureUnit(0, 0);
+    if (listSeeds) kernel_.seedsListed(seeds_);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+bool PenumbraMapPass::markSeedRegion(int size, int tile, long long reach) {
+    const int tiles = (size + tile - 1) / tile;
+    const long long tileReach = (reach + tile - 1) / tile;
+    if (tileReach >= tiles - 1) return false; // the whole map
+    const auto bytes = GLsizeiptr(sizeof(GLuint)) * tiles * tiles;
+    for (gl::Buffer* b : {&seedRegion_, &regionRows_})
+        if (!*b || b->size() < bytes) *b = gl::Buffer(bytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
+    // Each row's first and last tile, found by the second half (tile_rows.vert.glsl draws them).
+    if (!rowSpans_ || rowSpans_.size() < bytes / tiles * 2)
+        rowSpans_ = gl::Buffer(bytes / tiles * 2, nullptr, GL_DYNAMIC_STORAGE_BIT);
+    const std::array<GLint, 2> noSpan{tiles, -1};
+    glClearNamedBufferData(rowSpans_.id(), GL_RG32I, GL_RG_INTEGER, GL_INT, noSpan.data());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 9, rowSpans_.id());
+    // Separably (jfa::viewRegion on the CPU): along x into regionRows_, then along y.
+    glUseProgram(dilateProgram_.id());
+    dilateProgram_.set("uTiles", glm::ivec2(tiles));
+    dilateProgram_.set("uReach", int(tileReach));
+    const std::pair<const gl::Buffer*, const gl::Buffer*> steps[] = {{&viewTiles_, &regionRows_},
+                                                                     {&regionRows_, &seedRegion_}};
+    for (int axis = 0; axis < 2; ++axis) {
+        dilateProgram_.set("uAxis", axis);
+        dilateProgram_.set("uSpans", axis);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, steps[axis].first->id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, steps[axis].second->id());
+        glDispatchCompute(GLuint((tiles + 7) / 8), GLuint((tiles + 7) / 8), 1);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    }
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, 0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, 0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 9, 0);
+    glUseProgram(0);
+    return true;
+}
+
+void PenumbraMapPass::markView(const PenumbraView& view, int size, int tile) {
+    const int tiles = (size + tile - 1) / tile;
+    const auto bytes = GLsizeiptr(sizeof(GLuint)) * tiles * tiles;
+    if (!viewTiles_ || viewTiles_.size() < bytes)
+        viewTiles_ = gl::Buffer(bytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
+    viewTileCount_ = tiles * tiles;
+    const GLuint zero = 0;
+    glClearNamedBufferData(viewTiles_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    glUseProgram(viewProgram_.id());
+    viewProgram_.set("uLightViewProj", view.lightViewProj);
+    viewProgram_.set("uShadowWarp", view.warp);
+    viewProgram_.set("uMapSize", size);
+    viewProgram_.set("uTile", tile);
+    glBindTextureUnit(2, view.positions.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, viewTiles_.id());
+    glDispatchCompute(GLuint((view.positions.width() + 7) / 8),
+                      GLuint((view.positions.height() + 7) / 8), 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, 0);
+    glBindTextureUnit(2, 0);
+    glUseProgram(0);
+}
+
+namespace {
+std::vector<std::uint8_t> readFlags(const gl::Buffer& b, int count) {
+    std::vector<GLuint> flags(static_cast<std::size_t>(count));
+    if (!flags.empty())
+        glGetNamedBufferSubData(b.id(), 0, GLsizeiptr(flags.size() * sizeof(GLuint)), flags.data());
+    return {flags.begin(), flags.end()};
+}
+} // namespace
+
+std::vector<std::uint8_t> PenumbraMapPass::viewTiles() const {
+    return readFlags(viewTiles_, viewTileCount_);
+}
+
+std::vector<std::uint8_t> PenumbraMapPass::seedRegion() const {
+    return readFlags(seedRegion_, seedRegionCount_);
 }
 
 } // namespace fl

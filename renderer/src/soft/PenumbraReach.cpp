@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace fl {
 
@@ -50,6 +51,54 @@ jfa::ReachRect penumbraReachRect(const DiskLight& light, const PenumbraReach& re
         static_cast<long long>(std::floor(hi.x)) + 2, static_cast<long long>(std::floor(hi.y)) + 2};
 }
 
+glm::vec2 nearestLightDepths(const Scene& scene, const Pose& pose, const DiskLight& light,
+                             glm::vec3 axis) {
+    glm::vec2 nearest(std::numeric_limits<float>::max());
+    std::vector<glm::vec3> positions;
+    for (std::size_t i = 0; i < scene.instances.size(); ++i) {
+        posedVertices(scene, pose, i, positions);
+        for (const glm::vec3& v : positions)
+            nearest = glm::min(nearest, glm::vec2(glm::dot(v - light.center, light.normal),
+                                                  glm::dot(v - light.center, axis)));
+    }
+    return nearest;
+}
+
+std::optional<long long> widestPenumbraTexels(const DiskLight& light,
+                                              const geom::ViewVolume& lightVolume, int size,
+                                              glm::vec2 nearest, float farDepth) {
+    const glm::mat4& p = lightVolume.proj;
+    // A perspective projection has w_clip = -z_view (column 2, row 3 is -1; column 3, row 3 0).
+    if (p[2][3] != -1.0f || p[3][3] != 0.0f || !(p[0][0] > 0.0f) || !(p[1][1] > 0.0f)) return {};
+    const glm::mat4 toWorld = glm::inverse(lightVolume.view);
+    const glm::vec3 eye(toWorld[3]);
+    const glm::vec3 ex = glm::normalize(glm::vec3(toWorld[0]));
+    const glm::vec3 ey = glm::normalize(glm::vec3(toWorld[1]));
+    const glm::vec3 axis = -glm::normalize(glm::vec3(toWorld[2])); // the view direction
+    const float scale = std::max(farDepth, 1e-3f);
+    if (glm::length(eye - light.center) > 1e-5f * scale) return {};
+    if (!(nearest.x > 1e-6f * scale) || !(nearest.y > 1e-6f * scale)) return {};
+    // The cap's corner vectors, as disk_light.glsl's penumbraRect builds them (unit length).
+    const glm::vec3 n = glm::normalize(light.normal);
+    const glm::vec3 a = std::abs(n.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+    const glm::vec3 u = glm::normalize(glm::cross(n, a));
+    const glm::vec3 v = glm::cross(n, u);
+    const auto across = [&](glm::vec3 e) {
+        return std::abs(glm::dot(u, e)) + std::abs(glm::dot(v, e));
+    };
+    const float lateral = std::max(across(ex), across(ey)), deep = across(axis);
+    const float t = std::max((farDepth - nearest.x) / nearest.x, 0.0f) * 1.01f + 1e-3f;
+    // The cap's half-side over the capCentre's view depth, at most.
+    const float capOverDepth = 1.01f * light.radius * t / ((1.0f + t) * nearest.y);
+    const float tanHalf = 1.0f / std::min(p[0][0], p[1][1]);
+    const float shrink = 1.0f - capOverDepth * deep; // (z - |dz|) / z
+    if (!(shrink > 0.5f)) return {};
+    const double ndc =
+        double(std::max(p[0][0], p[1][1])) * capOverDepth * (lateral + tanHalf * deep) / shrink;
+    if (!(ndc < 4.0)) return {};
+    return static_cast<long long>(std::ceil(ndc * 0.5 * size)) + 6;
+}
+
 void setPenumbraReachUniforms(const gl::Program& program, const PenumbraReach& reach) {
     program.set("uReachEnabled", reach.enabled ? 1 : 0);
     program.set("uReachMatrix", reach.worldToClip);
@@ -66,10 +115,13 @@ void unbindPenumbraReach() {
 }
 
 ReceiverBoundsPyramid::ReceiverBoundsPyramid(const gl::ShaderLibrary& shaders)
-    : program_(gl::Program::build(shaders, {{GL_COMPUTE_SHADER, "reach_bounds.comp.glsl"}})) {}
+    : program_(gl::Program::build(shaders, {{GL_COMPUTE_SHADER, "reach_bounds.comp.glsl"}})),
+      regionProgram_(gl::Program::build(shaders, {{GL_COMPUTE_SHADER, "reach_bounds.comp.glsl"}},
+                                        {"REACH_REGION 1"})) {}
 
 void ReceiverBoundsPyramid::build(const gl::Texture& positions, float validMin,
-                                  const DiskLight& light, PenumbraReach& reach) {
+                                  const DiskLight& light, PenumbraReach& reach,
+                                  const gl::Buffer* region, int regionTile) {
     const int w0 = (positions.width() + 7) / 8, h0 = (positions.height() + 7) / 8;
     if (!lo_ || lo_.width() != w0 || lo_.height() != h0) {
         levels_ = 1; // GL's mip chain: sizes halve rounding down, to 1 x 1
@@ -78,15 +130,19 @@ void ReceiverBoundsPyramid::build(const gl::Texture& positions, float validMin,
         lo_ = gl::Texture(GL_RGBA32F, w0, h0, levels_);
         hi_ = gl::Texture(GL_RGBA32F, w0, h0, levels_);
     }
-    glUseProgram(program_.id());
-    setDiskLightUniforms(program_, light);
-    program_.set("uValidMin", validMin);
+    const gl::Program& program = region != nullptr ? regionProgram_ : program_;
+    glUseProgram(program.id());
+    setDiskLightUniforms(program, light);
+    program.set("uValidMin", validMin);
+    program.set("uRegionTile", regionTile);
+    program.set("uRegionTilesX", (positions.width() + regionTile - 1) / regionTile);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, region != nullptr ? region->id() : 0);
     glBindTextureUnit(0, positions.id());
     int w = w0, h = h0, sw = positions.width(), sh = positions.height();
     for (int level = 0; level < levels_; ++level) {
-        program_.set("uMode", level == 0 ? 0 : 1);
-        program_.set("uDstSize", glm::ivec2(w, h));
-        program_.set("uSrcSize", glm::ivec2(sw, sh));
+        program.set("uMode", level == 0 ? 0 : 1);
+        program.set("uDstSize", glm::ivec2(w, h));
+        program.set("uSrcSize", glm::ivec2(sw, sh));
         glBindImageTexture(0, lo_.id(), level, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
         glBindImageTexture(1, hi_.id(), level, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
         if (level > 0) {
@@ -103,6 +159,7 @@ void ReceiverBoundsPyramid::build(const gl::Texture& positions, float validMin,
     for (GLuint unit = 0; unit < 4; ++unit)
         glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
     glBindTextureUnit(0, 0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, 0);
     glUseProgram(0);
     reach.boundsLo = lo_.id();
     reach.boundsHi = hi_.id();

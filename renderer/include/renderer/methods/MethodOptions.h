@@ -6,6 +6,7 @@
 #include <map>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace fl {
 
@@ -23,6 +24,9 @@ struct MethodOption {
                                    // reads it as 0
     int multipleOf = 0;            // Int: the value must be a multiple of this (0: any)
 };
+
+/// A Choice option's values, in the order `choices` lists them.
+std::vector<std::string> optionChoices(const MethodOption& o);
 
 /// "" when `value` is valid for `o`, else the problem in words ("must be an integer in
 /// [1, 13], got 'abc'"), for messages that add the flag or the script field.

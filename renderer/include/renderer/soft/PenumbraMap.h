@@ -21,7 +21,8 @@ struct PenumbraSettings {
     int passes = 6;
     /// The standard-flooding reference: 2^passes - 1 passes of step 1 (same reach).
     bool standardFlooding = false;
-    /// Band-limited (jfa/Band.h; identical result) or full-grid flooding.
+    /// Band-limited (jfa/Band.h; identical result), full-grid flooding, or the band less what
+    /// the view does not read (PenumbraMapPass::Inputs::view; the same picture).
     jfa::FloodRegion region = jfa::FloodRegion::Band;
     int bandTile = jfa::kDefaultBandTile;
 };
@@ -33,8 +34,26 @@ int penumbraMaxPasses(int size);
 /// outside [1, log2(size)] (the message names the valid range).
 jfa::Plan penumbraPlan(const PenumbraSettings& settings, int size);
 
-/// CPU reference of the silhouette pass (shaders/silhouette.frag.glsl).
-jfa::Grid silhouetteSeeds(const ReceiverGrid& receivers, const DiskLight& light, float threshold);
+/// CPU reference of the silhouette pass (shaders/silhouette.frag.glsl); with `region`, only the
+/// texels of its tiles can be seeds.
+jfa::Grid silhouetteSeeds(const ReceiverGrid& receivers, const DiskLight& light, float threshold,
+                          const jfa::Band* region = nullptr);
+
+/// What reads the penumbra map (--flood-region view): the lookup (soft_penumbra.glsl), one texel
+/// per eye pixel, where the pixel's surface point projects.
+struct PenumbraView {
+    const gl::Texture& positions; // SurfacesPass::Outputs::position (w = 0: background)
+    glm::mat4 lightViewProj;      // ShadowMapPass::Outputs
+    glm::mat4 warp;
+};
+
+/// CPU reference of shaders/penumbra_view.comp.glsl: one flag per tile (side `tile`) of a
+/// mapSize^2 penumbra map, row-major, 1 where the lookup may read a texel for one of
+/// `eyePositions`' points (w != 0). The test of the map's extent has a margin of 1e-4 of the map
+/// (the lookup's own rounding may differ from this pass's); jfa::viewTileReach adds one texel.
+std::vector<std::uint8_t> penumbraViewTiles(const ReceiverGrid& eyePositions,
+                                            const glm::mat4& lightViewProj, const glm::mat4& warp,
+                                            int mapSize, int tile);
 
 /// The technique: silhouettes, then the flood.
 class PenumbraMapPass {
@@ -45,8 +64,14 @@ class PenumbraMapPass {
         const gl::Texture& receivers; // ShadowMapPass::Outputs::receivers
         const DiskLight& light;
         const PenumbraSettings& settings;
-        float threshold;            // resolved silhouette threshold (world units)
-        const PenumbraReach& reach; // the map's penumbra bound (band and auto passes)
+        float threshold;                    // resolved silhouette threshold (world units)
+        const PenumbraReach& reach;         // the map's penumbra bound (band and auto passes)
+        const PenumbraView* view = nullptr; // with FloodRegion::View: who reads the map
+        /// With a view: how far (texels) from the view's tiles seeds and receivers count at all
+        /// (the flood's reach, and with auto passes the widest penumbra too,
+        /// widestPenumbraTexels); silhouettes and the bounds pyramid skip the tiles beyond.
+        /// -1: the whole map.
+        long long viewSeedReach = -1;
     };
     struct Outputs {
         const gl::Texture& seeds;       // RGBA32F silhouette seeds (w = 1) or empty cells
@@ -59,14 +84,37 @@ class PenumbraMapPass {
     Outputs execute(const Inputs& in, gl::PassTimer* timer = nullptr);
 
   private:
+    /// Phase 2: the silhouette seeds into seeds_ (listed for a band), only within seedRegion_
+    /// with `region`.
+    void findSeeds(const Inputs& in, bool region);
+    /// Fills viewTiles_ from `view` (penumbra_view.comp.glsl).
+    void markView(const PenumbraView& view, int size, int tile);
+    /// Fills seedRegion_: the view's tiles widened by `reach` texels (tile_dilate.comp.glsl);
+    /// false when that is the whole map.
+    bool markSeedRegion(int size, int tile, long long reach);
+
     gl::Program silhouette_;
     gl::VertexArray emptyVao_;
     gl::Texture seeds_;
     gl::Framebuffer fbo_;
     jfa::GlFloodKernel<PenumbraCriterion> kernel_;
-    ReceiverBoundsPyramid bounds_; // tightens the band's bound (PenumbraReach)
+    ReceiverBoundsPyramid bounds_;       // tightens the band's bound (PenumbraReach)
+    gl::Program viewProgram_;            // penumbra_view.comp.glsl
+    gl::Buffer viewTiles_;               // its flags, one uint per band tile
+    int viewTileCount_ = 0;              // of the last run with a view (0: none)
+    gl::Program dilateProgram_;          // tile_dilate.comp.glsl
+    gl::Buffer seedRegion_, regionRows_; // the seed region, and its first (x) half
+    int seedRegionCount_ = 0;            // tiles of the last run's seed region (0: none)
+    gl::Buffer rowSpans_;                // the seed region's first and last tile per row
+    gl::Program silhouetteRows_;         // phase 2 over the region's rows' spans
 
   public:
+    /// The view tiles of the last run with a view (penumbra_view.comp.glsl), read back: one
+    /// flag per band tile; empty when it had none.
+    [[nodiscard]] std::vector<std::uint8_t> viewTiles() const;
+    /// The seed region of the last run (Inputs::viewSeedReach), read back the same way; empty
+    /// when it had none (the whole map).
+    [[nodiscard]] std::vector<std::uint8_t> seedRegion() const;
     /// The flood's kernel (its region and the last run's active share).
     [[nodiscard]] const jfa::GlFloodKernelBase& kernel() const { return kernel_; }
 };

@@ -29,6 +29,8 @@
 // 10.7% instead of 12.5% and a slower flood; 4 x 4 first cells instead of 8 x 8 gave the same
 // JFA-L band (6.1%) and a wider JFA-E one (58%).
 
+#include <renderer/scene/Pose.h>
+#include <renderer/scene/Scene.h>
 #include <renderer/soft/DiskLight.h>
 
 #include <gpu/Program.h>
@@ -36,8 +38,11 @@
 #include <jfa/Band.h>
 
 #include <geometry/Aabb.h>
+#include <geometry/Framing.h>
 
 #include <glm/glm.hpp>
+
+#include <optional>
 
 namespace fl {
 
@@ -65,12 +70,13 @@ class ReceiverBoundsPyramid {
   public:
     explicit ReceiverBoundsPyramid(const gl::ShaderLibrary& shaders);
     /// Builds it from receiver positions (texels with w >= validMin are receivers) and stores
-    /// it in `reach` (boundsLo, boundsHi, boundsLevels).
+    /// it in `reach` (boundsLo, boundsHi, boundsLevels). With `region` (one uint per tile of
+    /// side `regionTile`, a multiple of 8, row-major), receivers outside its tiles do not count.
     void build(const gl::Texture& positions, float validMin, const DiskLight& light,
-               PenumbraReach& reach);
+               PenumbraReach& reach, const gl::Buffer* region = nullptr, int regionTile = 8);
 
   private:
-    gl::Program program_;
+    gl::Program program_, regionProgram_; // the latter with REACH_REGION (a seed region)
     gl::Texture lo_, hi_; // min and max: xyz world position, w distance from the light's plane
     int levels_ = 0;
 };
@@ -86,6 +92,33 @@ PenumbraReach penumbraReach(const DiskLight& light, const glm::mat4& worldToClip
 /// it. shaders/disk_light.glsl's penumbraRect() computes the same in float; both are
 /// conservative and need not agree to the texel.
 jfa::ReachRect penumbraReachRect(const DiskLight& light, const PenumbraReach& reach, glm::vec3 o);
+
+/// The nearest the scene's surfaces come to the light in `pose`: along the disk's normal from
+/// its plane (.x), and along `axis` from its centre (.y). Every vertex's, since a surface point is
+/// a convex combination of its triangle's vertices and both depths are linear.
+glm::vec2 nearestLightDepths(const Scene& scene, const Pose& pose, const DiskLight& light,
+                             glm::vec3 axis);
+
+/// A bound, in texels per axis, on how far from its seed's texel an occluder can cast a penumbra
+/// on a size^2 map made through `lightVolume` (PenumbraReach's rects, the CPU's and the GPU's,
+/// never reach farther), given the occluders' nearest depths (nearestLightDepths) and the
+/// receivers' farthest (farthestLightDepth): what --flood-region view needs to know which seeds
+/// can shade what the view sees without finding every seed. Only for a perspective volume whose
+/// eye is the disk's centre (a point or spot light's uniform map; not TSM's warp, nor a
+/// directional light's orthographic volume) with the occluders in front of the light's plane;
+/// nullopt otherwise, or when the disk is too wide for the bound to mean anything.
+///
+/// Why it holds: the rect is the texel box of o and of the corners capCentre +- u +- v, where
+/// capCentre = o + t (o - c) lies on o's ray from the eye c (o's texel) at view depth (1 + t) z_o,
+/// t = 1.01 (D - d_o) / d_o + 0.001, and the corners lie within 1.01 t r along the map's axes
+/// and the view axis, per vector (|u.e| + |v.e| for unit vectors u, v and axis e). Moving a
+/// point at view depth z by (dx, dz) moves its projection by at most P00 (|dx| + tanHalf |dz|) /
+/// (z - |dz|), since |x / z| <= tanHalf inside the map; t / (1 + t) grows as d_o shrinks, so the
+/// nearest depths give the widest rect. 6 texels cover the rects' 2-texel margins, their
+/// rounding and the seed's own texel.
+std::optional<long long> widestPenumbraTexels(const DiskLight& light,
+                                              const geom::ViewVolume& lightVolume, int size,
+                                              glm::vec2 nearest, float farDepth);
 
 /// Sets the uReach* uniforms of shaders/disk_light.glsl.
 void setPenumbraReachUniforms(const gl::Program& program, const PenumbraReach& reach);

@@ -1,0 +1,30 @@
+#version 450 core
+// JFA-L's view limit (--flood-region view; jfa/Band.h): the penumbra-map tiles the lookup
+// (soft_penumbra.glsl) may read, one invocation per eye pixel: the tile of the texel its surface
+// point projects to. The map's extent is tested with a margin of 1e-4 of the map, since the
+// lookup's own rounding may differ from this pass's. Same as fl::penumbraViewTiles on the CPU.
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(binding = 2) uniform sampler2D uPosition; // SurfacesPass's world positions (w = 0: none)
+layout(std430, binding = 7) writeonly buffer ViewTiles { uint viewTiles[]; };
+uniform mat4 uLightViewProj;
+uniform mat4 uShadowWarp;
+uniform int uMapSize;
+uniform int uTile;
+
+void main() {
+    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(p, textureSize(uPosition, 0)))) return;
+    vec4 world = texelFetch(uPosition, p, 0);
+    if (world.w == 0.0) return;
+    vec4 light = uLightViewProj * vec4(world.xyz, 1.0);
+    vec4 map = uShadowWarp * light;
+    if (light.w <= 0.0 || map.w <= 0.0) return;
+    vec3 uvz = vec3(map.xy / map.w, light.z / light.w) * 0.5 + 0.5;
+    const float kMargin = 1e-4;
+    if (any(lessThan(uvz, vec3(-kMargin))) || any(greaterThan(uvz, vec3(1.0 + kMargin)))) return;
+    ivec2 t = clamp(ivec2(uvz.xy * float(uMapSize)), ivec2(0), ivec2(uMapSize - 1));
+    int tiles = (uMapSize + uTile - 1) / uTile;
+    viewTiles[(t.y / uTile) * tiles + t.x / uTile] = 1u;
+}

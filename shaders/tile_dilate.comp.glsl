@@ -1,0 +1,34 @@
+#version 450 core
+// One half of widening a set of tiles by uReach tiles per axis (a square), along axis uAxis
+// (0: x, 1: y): a tile is set when a source tile within uReach along the axis is. Run along x,
+// then along y. JFA-L's seed region around the view (PenumbraMapPass); fl::jfa::viewRegion on
+// the CPU.
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(std430, binding = 7) readonly buffer Source { uint source[]; };
+layout(std430, binding = 8) writeonly buffer Widened { uint widened[]; };
+// With uSpans: each row's first and last set tile (tile_rows.vert.glsl), from (tiles, -1).
+layout(std430, binding = 9) buffer RowSpans { int rowSpans[]; };
+uniform int uSpans;
+uniform ivec2 uTiles;
+uniform int uReach;
+uniform int uAxis;
+
+void main() {
+    ivec2 t = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(t, uTiles))) return;
+    ivec2 step = uAxis == 0 ? ivec2(1, 0) : ivec2(0, 1);
+    int at = uAxis == 0 ? t.x : t.y;
+    int last = (uAxis == 0 ? uTiles.x : uTiles.y) - 1;
+    uint set = 0u;
+    for (int k = max(at - uReach, 0); k <= min(at + uReach, last); ++k) {
+        ivec2 q = t + step * (k - at);
+        set |= source[q.y * uTiles.x + q.x];
+    }
+    widened[t.y * uTiles.x + t.x] = set != 0u ? 1u : 0u;
+    if (set != 0u && uSpans != 0) {
+        atomicMin(rowSpans[2 * t.y], t.x);
+        atomicMax(rowSpans[2 * t.y + 1], t.x);
+    }
+}
