@@ -286,7 +286,7 @@ TEST_F(PenumbraTest, ViewLimitGivesTheFullFloodsPicture) {
 }
 
 // The view limit's parts against their CPU references, on the default scene's frame: the tiles
-// the lookup reads (penumbra_view.comp.glsl), the seed region around them (tile_dilate.comp.glsl,
+// the lookup reads (penumbra_view.frag.glsl), the seed region around them (tile_dilate.comp.glsl,
 // jfa::viewRegion) and the silhouettes found only there (silhouette.frag.glsl over the region's
 // row spans, tile_rows.vert.glsl).
 TEST_F(PenumbraTest, ViewLimitPartsMatchTheCpu) {

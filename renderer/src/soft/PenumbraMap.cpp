@@ -81,7 +81,9 @@ PenumbraMapPass::PenumbraMapPass(const gl::ShaderLibrary& shaders)
                                                {GL_FRAGMENT_SHADER, "silhouette.frag.glsl"}})),
       emptyVao_(gl::VertexArray::create()), kernel_(shaders, jfa::GlKernelKind::Fragment),
       bounds_(shaders),
-      viewProgram_(gl::Program::build(shaders, {{GL_COMPUTE_SHADER, "penumbra_view.comp.glsl"}})),
+      viewProgram_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
+                                                {GL_FRAGMENT_SHADER, "penumbra_view.frag.glsl"}})),
+      viewFbo_(gl::Framebuffer::create()),
       dilateProgram_(gl::Program::build(shaders, {{GL_COMPUTE_SHADER, "tile_dilate.comp.glsl"}})),
       silhouetteRows_(gl::Program::build(
           shaders,
@@ -170,7 +172,7 @@ void PenumbraMapPass::findSeeds(const Inputs& in, bool region) {
     if (region) {
         // The texels off the region's rows' spans stay empty; the spans are drawn.
         const std::array<float, 4> empty{0.0f, 0.0f, -1.0f, 0.0f}; // jfa::kEmptyCell
-        glClearTexImage(seeds_.id(), 0, GL_RGBA, GL_FLOAT, empty.data());
+        glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, empty.data());
         const int tiles = (size + tile - 1) / tile;
         program.set("uRegionTile", tile);
         program.set("uRegionTilesX", tiles);
@@ -235,19 +237,24 @@ void PenumbraMapPass::markView(const PenumbraView& view, int size, int tile) {
     viewTileCount_ = tiles * tiles;
     const GLuint zero = 0;
     glClearNamedBufferData(viewTiles_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-    glUseProgram(viewProgram_.id());
     viewProgram_.set("uLightViewProj", view.lightViewProj);
     viewProgram_.set("uShadowWarp", view.warp);
     viewProgram_.set("uMapSize", size);
     viewProgram_.set("uTile", tile);
+    // One fragment per eye pixel, into a framebuffer without attachments.
+    const int w = view.positions.width(), h = view.positions.height();
+    glNamedFramebufferParameteri(viewFbo_.id(), GL_FRAMEBUFFER_DEFAULT_WIDTH, w);
+    glNamedFramebufferParameteri(viewFbo_.id(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, h);
+    glBindFramebuffer(GL_FRAMEBUFFER, viewFbo_.id());
+    glViewport(0, 0, w, h);
+    glDisable(GL_DEPTH_TEST);
     glBindTextureUnit(2, view.positions.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, viewTiles_.id());
-    glDispatchCompute(GLuint((view.positions.width() + 7) / 8),
-                      GLuint((view.positions.height() + 7) / 8), 1);
+    gl::drawFullscreenTriangle(viewProgram_, emptyVao_);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, 0);
     glBindTextureUnit(2, 0);
-    glUseProgram(0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
 namespace {

@@ -47,7 +47,7 @@ struct PenumbraView {
     glm::mat4 warp;
 };
 
-/// CPU reference of shaders/penumbra_view.comp.glsl: one flag per tile (side `tile`) of a
+/// CPU reference of shaders/penumbra_view.frag.glsl: one flag per tile (side `tile`) of a
 /// mapSize^2 penumbra map, row-major, 1 where the lookup may read a texel for one of
 /// `eyePositions`' points (w != 0). The test of the map's extent has a margin of 1e-4 of the map
 /// (the lookup's own rounding may differ from this pass's); jfa::viewTileReach adds one texel.
@@ -87,7 +87,7 @@ class PenumbraMapPass {
     /// Phase 2: the silhouette seeds into seeds_ (listed for a band), only within seedRegion_
     /// with `region`.
     void findSeeds(const Inputs& in, bool region);
-    /// Fills viewTiles_ from `view` (penumbra_view.comp.glsl).
+    /// Fills viewTiles_ from `view` (penumbra_view.frag.glsl).
     void markView(const PenumbraView& view, int size, int tile);
     /// Fills seedRegion_: the view's tiles widened by `reach` texels (tile_dilate.comp.glsl);
     /// false when that is the whole map.
@@ -99,7 +99,8 @@ class PenumbraMapPass {
     gl::Framebuffer fbo_;
     jfa::GlFloodKernel<PenumbraCriterion> kernel_;
     ReceiverBoundsPyramid bounds_;       // tightens the band's bound (PenumbraReach)
-    gl::Program viewProgram_;            // penumbra_view.comp.glsl
+    gl::Program viewProgram_;            // penumbra_view.frag.glsl
+    gl::Framebuffer viewFbo_;            // its framebuffer, without attachments
     gl::Buffer viewTiles_;               // its flags, one uint per band tile
     int viewTileCount_ = 0;              // of the last run with a view (0: none)
     gl::Program dilateProgram_;          // tile_dilate.comp.glsl
@@ -109,7 +110,7 @@ class PenumbraMapPass {
     gl::Program silhouetteRows_;         // phase 2 over the region's rows' spans
 
   public:
-    /// The view tiles of the last run with a view (penumbra_view.comp.glsl), read back: one
+    /// The view tiles of the last run with a view (penumbra_view.frag.glsl), read back: one
     /// flag per band tile; empty when it had none.
     [[nodiscard]] std::vector<std::uint8_t> viewTiles() const;
     /// The seed region of the last run (Inputs::viewSeedReach), read back the same way; empty
