@@ -105,9 +105,9 @@ bool coneMayHold(vec3 o, vec3 a, float sinHalf, float cosHalf, vec4 lo, vec4 hi)
     return true;
 }
 
-// Pyramid cells per axis a seed's rect is first split into (at most 8 x 8 tested, then two
-// finer levels below the cells that pass).
-const int kReachCells = 8;
+// Pyramid cells per axis a seed's rect is first split into (at most uReachCells^2 tested, then
+// two finer levels below the cells that pass): PenumbraReach::firstCells.
+uniform int uReachCells;
 
 // Whether cell q of `level` may hold a receiver that takes o (coneMayHold on its bounds).
 bool cellMayHold(vec3 o, vec3 a, float sinHalf, float cosHalf, ivec2 q, int level) {
@@ -163,10 +163,10 @@ ivec4 penumbraRect(vec3 o) {
     vec3 a = normalize(oc);
     ivec2 lo = max(r.xy, ivec2(0)), hi = min(r.zw, uReachSize - 1);
     if (lo.x > hi.x || lo.y > hi.y) return ivec4(1, 1, 0, 0); // off the grid: no receiver
-    // The level whose cells are wide enough that the rect spans at most kReachCells of them.
+    // The level whose cells are wide enough that the rect spans at most uReachCells of them.
     int level = 0;
     while (level + 1 < uReachLevels &&
-           any(greaterThan(hi / (8 << level) - lo / (8 << level), ivec2(kReachCells - 1))))
+           any(greaterThan(hi / (8 << level) - lo / (8 << level), ivec2(uReachCells - 1))))
         ++level;
     // Level sizes from the grid, not textureSize(lod): llvmpipe (Mesa 22.3) answers that with the
     // next level's size, which clamped the query to half the cells and cut cones short (band !=

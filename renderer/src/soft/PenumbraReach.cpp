@@ -105,6 +105,7 @@ void setPenumbraReachUniforms(const gl::Program& program, const PenumbraReach& r
     program.set("uReachSize", reach.size);
     program.set("uReachFarDepth", reach.farDepth);
     program.set("uReachLevels", reach.boundsLo != 0 ? reach.boundsLevels : 0);
+    program.set("uReachCells", reach.firstCells);
     glBindTextureUnit(4, reach.boundsLo);
     glBindTextureUnit(5, reach.boundsHi);
 }

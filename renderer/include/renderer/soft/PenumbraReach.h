@@ -56,6 +56,10 @@ struct PenumbraReach {
     /// level count; 0 = none). The shaders keep only the cells whose receivers the cone can hold.
     GLuint boundsLo = 0, boundsHi = 0;
     int boundsLevels = 0;
+    /// Pyramid cells per axis a rect is first split into (then two finer levels under the cells
+    /// kept): more cut the rects closer and cost more per seed. JFA-L takes 4, JFA-E 8
+    /// (docs/BENCHMARKS.md, "Band-limited flooding, fourth part").
+    int firstCells = 8;
 };
 
 /// The receivers' bounds pyramid of the GPU bound (shaders/reach_bounds.comp.glsl): per 8x8
