@@ -8,8 +8,10 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(std430, binding = 7) readonly buffer Source { uint source[]; };
 layout(std430, binding = 8) writeonly buffer Widened { uint widened[]; };
-// With uSpans: each row's first and last set tile (tile_rows.vert.glsl), from (tiles, -1).
+// With uSpans: each row's first and last set tile (tile_rows.vert.glsl) widen both span lists
+// (each starts from (tiles, -1), or from spans of before).
 layout(std430, binding = 9) buffer RowSpans { int rowSpans[]; };
+layout(std430, binding = 10) buffer OwnSpans { int ownSpans[]; };
 uniform int uSpans;
 uniform ivec2 uTiles;
 uniform int uReach;
@@ -30,5 +32,7 @@ void main() {
     if (set != 0u && uSpans != 0) {
         atomicMin(rowSpans[2 * t.y], t.x);
         atomicMax(rowSpans[2 * t.y + 1], t.x);
+        atomicMin(ownSpans[2 * t.y], t.x);
+        atomicMax(ownSpans[2 * t.y + 1], t.x);
     }
 }

@@ -307,7 +307,10 @@ TEST_F(PenumbraTest, ViewLimitPartsMatchTheCpu) {
         readReceivers(r.surfaces().position), sm.lightViewProj, sm.warp, size, tile);
     const float threshold = 0.001f * scene.bounds.radius();
     PenumbraMapPass pass(shaders);
-    for (long long seedReach : {-1LL, 16LL, 40LL}) {
+    // One pass, frame after frame: the seeds off the drawn spans are cleared only when the last
+    // frame left more than its spans (the whole map), so a region after a wider one, a narrower
+    // one, and one after a whole-map frame must each leave exactly their own seeds.
+    for (long long seedReach : {-1LL, 40LL, 16LL, 40LL, -1LL, 16LL}) {
         SCOPED_TRACE("seed reach " + std::to_string(seedReach));
         PenumbraSettings ps;
         ps.passes = 4;

@@ -96,6 +96,7 @@ PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, gl::PassTime
         (void)penumbraPlan(in.settings, size); // validates before any GL work
     if (!seeds_ || seeds_.width() != size) {
         seeds_ = gl::Texture(GL_RGBA32F, size, size);
+        seedsOffSpansEmpty_ = false;
         fbo_ = gl::Framebuffer::forColor(seeds_, "silhouette seeds");
     }
     // --flood-region view: the tiles the lookup reads, and the region around them where seeds
@@ -170,9 +171,13 @@ void PenumbraMapPass::findSeeds(const Inputs& in, bool region) {
     if (listSeeds) kernel_.beginSeedList(size, size);
     glBindTextureUnit(0, in.receivers.id());
     if (region) {
-        // The texels off the region's rows' spans stay empty; the spans are drawn.
-        const std::array<float, 4> empty{0.0f, 0.0f, -1.0f, 0.0f}; // jfa::kEmptyCell
-        glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, empty.data());
+        // The spans drawn are this region's and the last one's (markSeedRegion), so every texel
+        // off them was off the last spans too, and empty since: cleared only when the texture
+        // held more (a new one, a pass over the whole map, another tile size).
+        if (!seedsOffSpansEmpty_) {
+            const std::array<float, 4> empty{0.0f, 0.0f, -1.0f, 0.0f}; // jfa::kEmptyCell
+            glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, empty.data());
+        }
         const int tiles = (size + tile - 1) / tile;
         program.set("uRegionTile", tile);
         program.set("uRegionTilesX", tiles);
@@ -187,8 +192,11 @@ void PenumbraMapPass::findSeeds(const Inputs& in, bool region) {
         glUseProgram(0);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, 0);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 9, 0);
+        seedsOffSpansEmpty_ = true;
+        spansTile_ = tile;
     } else {
         gl::drawFullscreenTriangle(program, emptyVao_);
+        seedsOffSpansEmpty_ = false;
     }
     glBindTextureUnit(0, 0);
     if (listSeeds) kernel_.seedsListed(seeds_);
@@ -203,11 +211,20 @@ bool PenumbraMapPass::markSeedRegion(int size, int tile, long long reach) {
     for (gl::Buffer* b : {&seedRegion_, &regionRows_})
         if (!*b || b->size() < bytes) *b = gl::Buffer(bytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
     // Each row's first and last tile, found by the second half (tile_rows.vert.glsl draws them).
-    if (!rowSpans_ || rowSpans_.size() < bytes / tiles * 2)
-        rowSpans_ = gl::Buffer(bytes / tiles * 2, nullptr, GL_DYNAMIC_STORAGE_BIT);
+    // rowSpans_ (drawn) starts from the last region's own spans, lastSpans_ from none.
+    const GLsizeiptr spanBytes = bytes / tiles * 2;
+    for (gl::Buffer* b : {&rowSpans_, &lastSpans_})
+        if (!*b || b->size() < spanBytes)
+            *b = gl::Buffer(spanBytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
     const std::array<GLint, 2> noSpan{tiles, -1};
-    glClearNamedBufferData(rowSpans_.id(), GL_RG32I, GL_RG_INTEGER, GL_INT, noSpan.data());
+    if (seedsOffSpansEmpty_ && spansTile_ == tile)
+        glCopyNamedBufferSubData(lastSpans_.id(), rowSpans_.id(), 0, 0, spanBytes);
+    else
+        glClearNamedBufferData(rowSpans_.id(), GL_RG32I, GL_RG_INTEGER, GL_INT, noSpan.data());
+    if (spansTile_ != tile) seedsOffSpansEmpty_ = false;
+    glClearNamedBufferData(lastSpans_.id(), GL_RG32I, GL_RG_INTEGER, GL_INT, noSpan.data());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 9, rowSpans_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 10, lastSpans_.id());
     // Separably (jfa::viewRegion on the CPU): along x into regionRows_, then along y.
     glUseProgram(dilateProgram_.id());
     dilateProgram_.set("uTiles", glm::ivec2(tiles));
@@ -225,6 +242,7 @@ bool PenumbraMapPass::markSeedRegion(int size, int tile, long long reach) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, 0);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, 0);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 9, 0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 10, 0);
     glUseProgram(0);
     return true;
 }

@@ -106,8 +106,11 @@ class PenumbraMapPass {
     gl::Program dilateProgram_;          // tile_dilate.comp.glsl
     gl::Buffer seedRegion_, regionRows_; // the seed region, and its first (x) half
     int seedRegionCount_ = 0;            // tiles of the last run's seed region (0: none)
-    gl::Buffer rowSpans_;                // the seed region's first and last tile per row
-    gl::Program silhouetteRows_;         // phase 2 over the region's rows' spans
+    gl::Buffer rowSpans_;  // first and last tile per row drawn: this region's and the last's
+    gl::Buffer lastSpans_; // this region's alone, for the next one
+    bool seedsOffSpansEmpty_ = false; // seeds_ holds nothing off lastSpans_ (tiles of spansTile_)
+    int spansTile_ = 0;
+    gl::Program silhouetteRows_; // phase 2 over the region's rows' spans
 
   public:
     /// The view tiles of the last run with a view (penumbra_view.frag.glsl), read back: one
