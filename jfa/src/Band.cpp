@@ -7,6 +7,27 @@
 
 namespace fl::jfa {
 
+namespace {
+
+/// A band over a width x height grid with no tile active.
+Band noTiles(int width, int height, int tile) {
+    Band b;
+    b.width = width;
+    b.height = height;
+    b.tile = tile;
+    b.tilesX = (width + tile - 1) / tile;
+    b.tilesY = (height + tile - 1) / tile;
+    b.active.assign(std::size_t(b.tilesX) * std::size_t(b.tilesY), 0);
+    return b;
+}
+
+/// Sets b.full from its tiles.
+void noteFull(Band& b) {
+    b.full = std::all_of(b.active.begin(), b.active.end(), [](std::uint8_t a) { return a != 0; });
+}
+
+} // namespace
+
 std::string_view floodRegionName(FloodRegion region) {
     switch (region) {
     case FloodRegion::Band:
@@ -34,18 +55,12 @@ int viewTileReach(const Plan& plan, int tile) {
 
 Band viewRegion(int width, int height, int tile, const std::vector<std::uint8_t>& view,
                 int tileReach) {
-    Band b;
-    b.width = width;
-    b.height = height;
-    b.tile = tile;
-    b.tilesX = (width + tile - 1) / tile;
-    b.tilesY = (height + tile - 1) / tile;
+    Band b = noTiles(width, height, tile);
     if (view.size() != std::size_t(b.tilesX) * std::size_t(b.tilesY))
         throw std::invalid_argument(
             cat("jfa: the view has ", view.size(), " tiles, the grid ", b.tilesX * b.tilesY));
     // Separably, as the GPU does it: along x, then along y.
     std::vector<std::uint8_t> rows(view.size(), 0);
-    b.active.assign(view.size(), 0);
     const auto at = [&](int x, int y) {
         return std::size_t(y) * std::size_t(b.tilesX) + std::size_t(x);
     };
@@ -59,7 +74,7 @@ Band viewRegion(int width, int height, int tile, const std::vector<std::uint8_t>
             for (int k = std::max(0, y - tileReach); k <= std::min(b.tilesY - 1, y + tileReach);
                  ++k)
                 if (rows[at(x, k)] != 0) b.active[at(x, y)] = 1;
-    b.full = std::all_of(b.active.begin(), b.active.end(), [](std::uint8_t a) { return a != 0; });
+    noteFull(b);
     return b;
 }
 
@@ -67,8 +82,7 @@ void limitToView(Band& band, const std::vector<std::uint8_t>& view, int tileReac
     const Band near = viewRegion(band.width, band.height, band.tile, view, tileReach);
     for (std::size_t i = 0; i < band.active.size(); ++i)
         band.active[i] = band.active[i] != 0 && near.active[i] != 0 ? 1 : 0;
-    band.full =
-        std::all_of(band.active.begin(), band.active.end(), [](std::uint8_t a) { return a != 0; });
+    noteFull(band);
 }
 
 std::string checkBandTile(int tile) {
@@ -114,13 +128,7 @@ long long rectReach(const ReachRect& r, int px, int py) {
 
 Band markTiles(int width, int height, int tile, const std::vector<ReachRect>& tileRects,
                long long planReach) {
-    Band b;
-    b.width = width;
-    b.height = height;
-    b.tile = tile;
-    b.tilesX = (width + tile - 1) / tile;
-    b.tilesY = (height + tile - 1) / tile;
-    b.active.assign(std::size_t(b.tilesX) * std::size_t(b.tilesY), 0);
+    Band b = noTiles(width, height, tile);
     for (int ty = 0; ty < b.tilesY; ++ty)
         for (int tx = 0; tx < b.tilesX; ++tx) {
             const ReachRect& u =
@@ -136,7 +144,7 @@ Band markTiles(int width, int height, int tile, const std::vector<ReachRect>& ti
                 for (long long x = r.x0 / tile; x <= r.x1 / tile; ++x)
                     b.active[std::size_t(y) * std::size_t(b.tilesX) + std::size_t(x)] = 1;
         }
-    b.full = std::all_of(b.active.begin(), b.active.end(), [](std::uint8_t a) { return a != 0; });
+    noteFull(b);
     return b;
 }
 
