@@ -310,10 +310,15 @@ TEST_F(PenumbraTest, ViewLimitPartsMatchTheCpu) {
     // One pass, frame after frame: the seeds off the drawn spans are cleared only when the last
     // frame left more than its spans (the whole map), so a region after a wider one, a narrower
     // one, and one after a whole-map frame must each leave exactly their own seeds.
-    for (long long seedReach : {-1LL, 40LL, 16LL, 40LL, -1LL, 16LL}) {
-        SCOPED_TRACE("seed reach " + std::to_string(seedReach));
+    // The last frame is auto with a region narrower than the passes auto then chooses: the
+    // region is widened to the flood's cone (2^passes texels) and the seeds found again.
+    const std::pair<long long, int> frames[] = {{-1, 4}, {40, 4}, {16, 4},         {40, 4},
+                                                {-1, 4}, {16, 4}, {4, kAutoPasses}};
+    for (auto [seedReach, passes] : frames) {
+        SCOPED_TRACE("seed reach " + std::to_string(seedReach) + ", passes " +
+                     std::to_string(passes));
         PenumbraSettings ps;
-        ps.passes = 4;
+        ps.passes = passes;
         ps.region = jfa::FloodRegion::View;
         PenumbraMapPass::Inputs in{*sm.receivers, r.disk(), ps, threshold, r.flood()->reach, &view};
         in.viewSeedReach = seedReach;
@@ -323,6 +328,10 @@ TEST_F(PenumbraTest, ViewLimitPartsMatchTheCpu) {
         EXPECT_GT(marked, 10);
         EXPECT_LT(std::size_t(marked), cpuView.size() / 2);
         std::optional<jfa::Band> region;
+        if (passes == kAutoPasses) {
+            ASSERT_GT(1LL << out.jfaPasses, seedReach) << "the frame must widen its region";
+            seedReach = 1LL << out.jfaPasses;
+        }
         if (seedReach >= 0) {
             region = jfa::viewRegion(size, size, tile, cpuView, int((seedReach + tile - 1) / tile));
             EXPECT_EQ(pass.seedRegion(), region->active);
