@@ -1,15 +1,15 @@
 #version 450 core
 // One half of widening a set of tiles by uReach tiles per axis (a square), along axis uAxis
 // (0: x, 1: y): a tile is set when a source tile within uReach along the axis is. Run along x,
-// then along y. JFA-L's seed region around the view (PenumbraMapPass); fl::jfa::viewRegion on
-// the CPU.
+// then along y (fl::jfa::GlTileDilation; fl::jfa::viewRegion on the CPU): the view limit's
+// region around the tiles a reader reads.
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(std430, binding = 7) readonly buffer Source { uint source[]; };
 layout(std430, binding = 8) writeonly buffer Widened { uint widened[]; };
-// With uSpans: each row's first and last set tile (tile_rows.vert.glsl) widen both span lists
-// (each starts from (tiles, -1), or from spans of before).
+// uSpans (0 to 2) span lists, two ints per row, each starting from (tiles, -1) or from spans of
+// before, widened to each row's first and last set tile (JFA-L draws them: tile_rows.vert.glsl).
 layout(std430, binding = 9) buffer RowSpans { int rowSpans[]; };
 layout(std430, binding = 10) buffer OwnSpans { int ownSpans[]; };
 uniform int uSpans;
@@ -29,9 +29,11 @@ void main() {
         set |= source[q.y * uTiles.x + q.x];
     }
     widened[t.y * uTiles.x + t.x] = set != 0u ? 1u : 0u;
-    if (set != 0u && uSpans != 0) {
+    if (set != 0u && uSpans > 0) {
         atomicMin(rowSpans[2 * t.y], t.x);
         atomicMax(rowSpans[2 * t.y + 1], t.x);
+    }
+    if (set != 0u && uSpans > 1) {
         atomicMin(ownSpans[2 * t.y], t.x);
         atomicMax(ownSpans[2 * t.y + 1], t.x);
     }

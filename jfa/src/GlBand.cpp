@@ -57,6 +57,7 @@ void GlFloodKernelBase::buildBandPrograms() {
         gl::Program::build(shaders_, {{GL_COMPUTE_SHADER, "jfa_band_compact.comp.glsl"}});
     clearProgram_ = gl::Program::build(shaders_, {{GL_COMPUTE_SHADER, "jfa_band_clear.comp.glsl"}});
     viewProgram_ = gl::Program::build(shaders_, {{GL_COMPUTE_SHADER, "jfa_band_view.comp.glsl"}});
+    dilation_ = std::make_unique<GlTileDilation>(shaders_);
     for (bool expand : {false, true}) {
         std::vector<std::string> defines{"JFA_BAND"};
         if (expand) defines.emplace_back("JFA_EXPAND");
@@ -169,9 +170,11 @@ bool GlFloodKernelBase::buildBand(const Plan& plan, const gl::Texture& seeds) {
         if (viewTiles_->size() < GLsizeiptr(sizeof(GLuint)) * tiles.x * tiles.y)
             throw std::invalid_argument("jfa: the view tiles buffer is smaller than the band's " +
                                         std::to_string(tiles.x * tiles.y) + " tiles");
+        ensureBuffer(viewNear_, std::size_t(tiles.x) * std::size_t(tiles.y));
+        dilation_->run(*viewTiles_, viewNear_, tiles, reach);
         viewProgram_.set("uTiles", tiles);
-        viewProgram_.set("uTileReach", reach);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, viewTiles_->id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, flags_.id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, viewNear_.id());
         glUseProgram(viewProgram_.id());
         glDispatchCompute(groups(tiles.x), groups(tiles.y), 1);
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
@@ -239,6 +242,34 @@ void GlFloodKernelBase::emptyTexture(Pair& pair, int i, int stage) {
         glClearTexImage(t.id(), 0, GL_RGBA, GL_FLOAT, empty.data());
     }
     pair.dirt[i] = kDirtClean;
+}
+
+GlTileDilation::GlTileDilation(const gl::ShaderLibrary& shaders)
+    : program_(gl::Program::build(shaders, {{GL_COMPUTE_SHADER, "tile_dilate.comp.glsl"}})) {}
+
+void GlTileDilation::run(const gl::Buffer& in, const gl::Buffer& out, glm::ivec2 tiles, int reach,
+                         std::initializer_list<const gl::Buffer*> spanLists) {
+    if (spanLists.size() > 2)
+        throw std::invalid_argument("jfa: a tile dilation widens at most two span lists");
+    ensureBuffer(rows_, std::size_t(tiles.x) * std::size_t(tiles.y));
+    glUseProgram(program_.id());
+    program_.set("uTiles", tiles);
+    program_.set("uReach", reach);
+    GLuint binding = 9;
+    for (const gl::Buffer* spans : spanLists)
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding++, spans->id());
+    const std::pair<const gl::Buffer*, const gl::Buffer*> halves[] = {{&in, &rows_},
+                                                                      {&rows_, &out}};
+    for (int axis = 0; axis < 2; ++axis) {
+        program_.set("uAxis", axis);
+        program_.set("uSpans", axis == 1 ? int(spanLists.size()) : 0);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, halves[axis].first->id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, halves[axis].second->id());
+        glDispatchCompute(groups(tiles.x), groups(tiles.y), 1);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    }
+    for (GLuint b = 7; b <= 10; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, 0);
+    glUseProgram(0);
 }
 
 double GlFloodKernelBase::activeShare() const {

@@ -19,7 +19,9 @@
 #include <gpu/Program.h>
 
 #include <functional>
+#include <initializer_list>
 #include <map>
+#include <memory>
 #include <string>
 #include <utility>
 
@@ -36,6 +38,24 @@ void setCriterionUniforms(const gl::Program& program, const NearestSite& criteri
 gl::Texture uploadGrid(const Grid& grid);
 /// Reads an RGBA32F texture back into a grid.
 Grid readGrid(const gl::Texture& texture);
+
+/// Widens a set of tiles by `reach` tiles per axis, a square, on the GPU: one uint per tile of a
+/// tiles.x x tiles.y grid, row-major, nonzero where set (shaders/tile_dilate.comp.glsl, along x
+/// then along y; fl::jfa::viewRegion on the CPU). The view limit's region around the tiles a
+/// reader reads: the band kernels' (GlFloodKernelBase::setViewTiles) and JFA-L's seed region.
+class GlTileDilation {
+  public:
+    explicit GlTileDilation(const gl::ShaderLibrary& shaders);
+    /// `out` = `in` widened. Each span list given (two ints per row, each starting from
+    /// (tiles.x, -1) or from spans of before; at most two) is widened to hold each row's first
+    /// and last set tile of `out`.
+    void run(const gl::Buffer& in, const gl::Buffer& out, glm::ivec2 tiles, int reach,
+             std::initializer_list<const gl::Buffer*> spanLists = {});
+
+  private:
+    gl::Program program_;
+    gl::Buffer rows_; // the x half
+};
 
 /// What one dispatch of the kernel programs does: the jfa_pass shaders' uMode, so the values are
 /// fixed by the GLSL.
@@ -126,7 +146,9 @@ class GlFloodKernelBase {
     gl::Program bandPassProgram_, bandExpandProgram_;         // passes over a tile list
     gl::Program clearProgram_; // the empty cell over a tile list (jfa_band_clear.comp.glsl)
     gl::Program viewProgram_;  // the view limit (jfa_band_view.comp.glsl)
+    std::unique_ptr<GlTileDilation> dilation_; // the view tiles widened into viewNear_
     const gl::Buffer* viewTiles_ = nullptr;
+    gl::Buffer viewNear_;
     gl::Buffer tileReach_, maxReach_, flags_, seedList_;
     struct StageBand {
         gl::Buffer tiles;    // packed tile coordinates (x | y << 16)

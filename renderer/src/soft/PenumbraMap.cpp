@@ -83,8 +83,7 @@ PenumbraMapPass::PenumbraMapPass(const gl::ShaderLibrary& shaders)
       bounds_(shaders),
       viewProgram_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
                                                 {GL_FRAGMENT_SHADER, "penumbra_view.frag.glsl"}})),
-      viewFbo_(gl::Framebuffer::create()),
-      dilateProgram_(gl::Program::build(shaders, {{GL_COMPUTE_SHADER, "tile_dilate.comp.glsl"}})),
+      viewFbo_(gl::Framebuffer::create()), dilation_(shaders),
       silhouetteRows_(gl::Program::build(
           shaders,
           {{GL_VERTEX_SHADER, "tile_rows.vert.glsl"}, {GL_FRAGMENT_SHADER, "silhouette.frag.glsl"}},
@@ -208,8 +207,8 @@ bool PenumbraMapPass::markSeedRegion(int size, int tile, long long reach) {
     const long long tileReach = (reach + tile - 1) / tile;
     if (tileReach >= tiles - 1) return false; // the whole map
     const auto bytes = GLsizeiptr(sizeof(GLuint)) * tiles * tiles;
-    for (gl::Buffer* b : {&seedRegion_, &regionRows_})
-        if (!*b || b->size() < bytes) *b = gl::Buffer(bytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
+    if (!seedRegion_ || seedRegion_.size() < bytes)
+        seedRegion_ = gl::Buffer(bytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
     // Each row's first and last tile, found by the second half (tile_rows.vert.glsl draws them).
     // rowSpans_ (drawn) starts from the last region's own spans, lastSpans_ from none.
     const GLsizeiptr spanBytes = bytes / tiles * 2;
@@ -223,27 +222,8 @@ bool PenumbraMapPass::markSeedRegion(int size, int tile, long long reach) {
         glClearNamedBufferData(rowSpans_.id(), GL_RG32I, GL_RG_INTEGER, GL_INT, noSpan.data());
     if (spansTile_ != tile) seedsOffSpansEmpty_ = false;
     glClearNamedBufferData(lastSpans_.id(), GL_RG32I, GL_RG_INTEGER, GL_INT, noSpan.data());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 9, rowSpans_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 10, lastSpans_.id());
-    // Separably (jfa::viewRegion on the CPU): along x into regionRows_, then along y.
-    glUseProgram(dilateProgram_.id());
-    dilateProgram_.set("uTiles", glm::ivec2(tiles));
-    dilateProgram_.set("uReach", int(tileReach));
-    const std::pair<const gl::Buffer*, const gl::Buffer*> steps[] = {{&viewTiles_, &regionRows_},
-                                                                     {&regionRows_, &seedRegion_}};
-    for (int axis = 0; axis < 2; ++axis) {
-        dilateProgram_.set("uAxis", axis);
-        dilateProgram_.set("uSpans", axis);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, steps[axis].first->id());
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, steps[axis].second->id());
-        glDispatchCompute(GLuint((tiles + 7) / 8), GLuint((tiles + 7) / 8), 1);
-        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-    }
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, 0);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, 0);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 9, 0);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 10, 0);
-    glUseProgram(0);
+    dilation_.run(viewTiles_, seedRegion_, glm::ivec2(tiles), int(tileReach),
+                  {&rowSpans_, &lastSpans_});
     return true;
 }
 

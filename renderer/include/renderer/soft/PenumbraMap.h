@@ -89,7 +89,7 @@ class PenumbraMapPass {
     void findSeeds(const Inputs& in, bool region);
     /// Fills viewTiles_ from `view` (penumbra_view.frag.glsl).
     void markView(const PenumbraView& view, int size, int tile);
-    /// Fills seedRegion_: the view's tiles widened by `reach` texels (tile_dilate.comp.glsl);
+    /// Fills seedRegion_: the view's tiles widened by `reach` texels (jfa::GlTileDilation);
     /// false when that is the whole map.
     bool markSeedRegion(int size, int tile, long long reach);
 
@@ -98,16 +98,16 @@ class PenumbraMapPass {
     gl::Texture seeds_;
     gl::Framebuffer fbo_;
     jfa::GlFloodKernel<PenumbraCriterion> kernel_;
-    ReceiverBoundsPyramid bounds_;       // tightens the band's bound (PenumbraReach)
-    gl::Program viewProgram_;            // penumbra_view.frag.glsl
-    gl::Framebuffer viewFbo_;            // its framebuffer, without attachments
-    gl::Buffer viewTiles_;               // its flags, one uint per band tile
-    int viewTileCount_ = 0;              // of the last run with a view (0: none)
-    gl::Program dilateProgram_;          // tile_dilate.comp.glsl
-    gl::Buffer seedRegion_, regionRows_; // the seed region, and its first (x) half
-    int seedRegionCount_ = 0;            // tiles of the last run's seed region (0: none)
-    gl::Buffer rowSpans_;  // first and last tile per row drawn: this region's and the last's
-    gl::Buffer lastSpans_; // this region's alone, for the next one
+    ReceiverBoundsPyramid bounds_; // tightens the band's bound (PenumbraReach)
+    gl::Program viewProgram_;      // penumbra_view.frag.glsl
+    gl::Framebuffer viewFbo_;      // its framebuffer, without attachments
+    gl::Buffer viewTiles_;         // its flags, one uint per band tile
+    int viewTileCount_ = 0;        // of the last run with a view (0: none)
+    jfa::GlTileDilation dilation_; // widens the view's tiles into the seed region
+    gl::Buffer seedRegion_;
+    int seedRegionCount_ = 0; // tiles of the last run's seed region (0: none)
+    gl::Buffer rowSpans_;     // first and last tile per row drawn: this region's and the last's
+    gl::Buffer lastSpans_;    // this region's alone, for the next one
     bool seedsOffSpansEmpty_ = false; // seeds_ holds nothing off lastSpans_ (tiles of spansTile_)
     int spansTile_ = 0;
     gl::Program silhouetteRows_; // phase 2 over the region's rows' spans
