@@ -164,8 +164,8 @@ long long maxSeedReach(const Grid& seeds, const C& criterion) {
     return best;
 }
 
-/// The widest view limit, in tiles: farther, the per-tile search of the view step costs more
-/// than the passes it could save, and the band is left whole.
+/// The widest view limit, in tiles: a plan that reaches farther (full JFA, long standard
+/// floods) is left to its band, since its cone around the view is most of any band it has.
 inline constexpr int kMaxViewTileReach = 16;
 /// How many tiles (per axis) from a view tile a band tile may lie and still be computed under
 /// the view limit, for `plan` on tiles of side `tile`: the plan's reach plus one texel (the GPU
