@@ -20,6 +20,19 @@ layout(binding = 3) uniform sampler2D uEyeOccluders;
 uniform int uObjectIdFix;
 uniform int uMidpointFix;
 
+// The pixel cell c was seeded at (w = y * width + x + 1), without an integer division: a SIMD
+// rasteriser (llvmpipe) divides lane by lane, which cost 6-9% of the flood. The float quotient
+// is within one row of y (the index is exact in a float below 2^24, y is below a texture's
+// height, and GLSL's division is good to 2.5 ulp), and the integer checks correct it.
+ivec2 seedPixelOf(vec4 c) {
+    int width = textureSize(uEyePoints, 0).x;
+    int index = int(c.w) - 1;
+    int y = int(float(index) / float(width));
+    y -= y * width > index ? 1 : 0;
+    y += (y + 1) * width <= index ? 1 : 0;
+    return ivec2(index - y * width, y);
+}
+
 bool jfaEmpty(vec4 c) { return c.w == 0.0; }
 
 // Occluders are not sites at pixels: the half-resolution expansion copies them verbatim.
@@ -31,9 +44,7 @@ ivec4 jfaSeedRect(ivec2 p, vec4 c) { return penumbraRect(c.xyz); }
 
 bool jfaAccept(ivec2 p, vec4 c) {
     vec4 r = texelFetch(uEyePoints, p, 0);
-    ivec2 size = textureSize(uEyePoints, 0);
-    int index = int(c.w) - 1;
-    ivec2 s = ivec2(index % size.x, index / size.x);
+    ivec2 s = seedPixelOf(c);
     bool ok = r.w >= 0.0 && penumbraHit(r.xyz, c.xyz) >= 0.0;
     if (ok && uObjectIdFix != 0 && r.w == 1.0)
         ok = texelFetch(uEyeOccluders, p, 0).w == texelFetch(uEyeOccluders, s, 0).w;
@@ -45,16 +56,20 @@ bool jfaAccept(ivec2 p, vec4 c) {
 }
 
 // The keyed form (jfa_select.glsl): jfaAccept's tests, then penumbraHit once as the key.
-vec4 jfaContext(ivec2 p) { return texelFetch(uEyePoints, p, 0); }
+// jfaContext runs once per texel before its candidates, so p's own occluder id is fetched there
+// too, into a shader-private global, instead of once per candidate.
+float gOwnOccluderId;
+vec4 jfaContext(ivec2 p) {
+    gOwnOccluderId = texelFetch(uEyeOccluders, p, 0).w;
+    return texelFetch(uEyePoints, p, 0);
+}
 float jfaKey(ivec2 p, vec4 r, vec4 c) {
     float k = r.w >= 0.0 ? penumbraHit(r.xyz, c.xyz) : -1.0;
     bool ok = k >= 0.0;
     if (ok && (uObjectIdFix != 0 || uMidpointFix != 0)) {
-        ivec2 size = textureSize(uEyePoints, 0);
-        int index = int(c.w) - 1;
-        ivec2 s = ivec2(index % size.x, index / size.x);
+        ivec2 s = seedPixelOf(c);
         if (uObjectIdFix != 0 && r.w == 1.0)
-            ok = texelFetch(uEyeOccluders, p, 0).w == texelFetch(uEyeOccluders, s, 0).w;
+            ok = gOwnOccluderId == texelFetch(uEyeOccluders, s, 0).w;
         if (ok && uMidpointFix != 0) {
             vec4 m = texelFetch(uEyePoints, (p + s) / 2, 0);
             ok = m.w >= 0.0 && penumbraHit(m.xyz, c.xyz) >= 0.0;

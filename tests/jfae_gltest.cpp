@@ -59,20 +59,23 @@ TEST_F(JfaETest, PhasesMatchTheCpuReference) {
     const gl::ShaderLibrary shaders;
     RenderSettings hardSettings;
     hardSettings.shadow.size = 128;
-    Renderer hard(shaders, s.scene, hardSettings);
-    hard.resize(64, 64);
-    hard.render(s.camera);
-    const std::vector<float> hardVisibility = readR32F(hard.visibility());
 
     struct Case {
         std::string_view method;
         bool fixes;
-        bool edges; // --occluder-points edge (else centre)
+        bool edges;      // --occluder-points edge (else centre)
+        int width = 64;  // a width that is not a power of two checks the seed pixels the
+        int height = 64; // criterion finds from their indices without an integer division
     };
-    for (const Case& k :
-         {Case{"jfa-e", true, true}, Case{"flood-e", true, true}, Case{"jfa-e", false, false}}) {
+    for (const Case& k : {Case{"jfa-e", true, true}, Case{"flood-e", true, true},
+                          Case{"jfa-e", false, false}, Case{"jfa-e", true, true, 75, 61}}) {
         SCOPED_TRACE(std::string(k.method) + (k.fixes ? " fixes on" : " fixes off") +
-                     (k.edges ? ", edge points" : ", centre points"));
+                     (k.edges ? ", edge points" : ", centre points") + ", " +
+                     std::to_string(k.width) + "x" + std::to_string(k.height));
+        Renderer hard(shaders, s.scene, hardSettings);
+        hard.resize(k.width, k.height);
+        hard.render(s.camera);
+        const std::vector<float> hardVisibility = readR32F(hard.visibility());
         const bool standardFlooding = isStandardFlooding(methodOrThrow(k.method));
         RenderSettings settings = hardSettings;
         settings.method = std::string(k.method);
@@ -83,7 +86,7 @@ TEST_F(JfaETest, PhasesMatchTheCpuReference) {
         EyeSoftSettings eyeSettings;
         eyeSettings.objectIdFix = eyeSettings.midpointFix = k.fixes;
         Renderer r(shaders, s.scene, settings);
-        r.resize(64, 64);
+        r.resize(k.width, k.height);
         r.render(s.camera);
         ASSERT_NE(r.flood(), nullptr);
         const FloodFrame& out = *r.flood();
@@ -132,7 +135,7 @@ TEST_F(JfaETest, PhasesMatchTheCpuReference) {
         }
 
         // Phase 3: boundary seeds, exactly.
-        const BoundaryThreshold th = boundaryThreshold(eyeSettings, s.camera.proj, 64);
+        const BoundaryThreshold th = boundaryThreshold(eyeSettings, s.camera.proj, k.height);
         const jfa::Grid cpuSeeds = eyeBoundarySeeds(image, s.camera.eye, th);
         const jfa::Grid gpuSeeds = jfa::readGrid(*out.seeds);
         ASSERT_EQ(gpuSeeds, cpuSeeds) << "boundary seeds differ";
@@ -143,7 +146,7 @@ TEST_F(JfaETest, PhasesMatchTheCpuReference) {
         criterion.light = r.disk();
         criterion.image = &image;
         criterion.objectIdFix = criterion.midpointFix = k.fixes;
-        const jfa::Plan plan = eyeSoftPlan(4, standardFlooding, 64, 64);
+        const jfa::Plan plan = eyeSoftPlan(4, standardFlooding, k.width, k.height);
         const jfa::Grid cpuFlood = jfa::flood(plan, cpuSeeds, criterion);
         const jfa::Grid gpuFlood = jfa::readGrid(*out.flooded);
         std::size_t differ = 0;
