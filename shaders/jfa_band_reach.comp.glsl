@@ -14,6 +14,8 @@ ivec4 jfaSeedRect(ivec2 p, vec4 c);
 layout(binding = 1) uniform sampler2D uSeeds;
 layout(std430, binding = 1) buffer TileRects { uint tileRects[]; };
 layout(std430, binding = 2) buffer MaxReach { uint maxReach; };
+// The flood's front (jfa_band_front.comp.glsl): every seed's tile starts it.
+layout(std430, binding = 8) buffer Front { uint front[]; };
 layout(std430, binding = 6) readonly buffer SeedList { uint seedCount; uint dispatch[3]; uint seeds[]; };
 uniform ivec2 uSize;
 uniform int uTile;
@@ -24,6 +26,7 @@ void main() {
     uint entry = seeds[gl_GlobalInvocationID.x];
     ivec2 p = ivec2(int(entry & 0xffffu), int(entry >> 16));
     vec4 c = texelFetch(uSeeds, p, 0);
+    front[(p.y / uTile) * uTilesX + p.x / uTile] = 1u;
     ivec4 r = jfaSeedRect(p, c);
     r.xy = max(r.xy, ivec2(0));
     r.zw = min(r.zw, uSize - 1);

@@ -5,11 +5,16 @@
 layout(std430, binding = 4) readonly buffer TileList { uint tiles[]; };
 uniform int uTile;
 
+/// The tile this invocation's group works on (tile coordinates).
+ivec2 jfaBandTile() {
+    uint entry = tiles[gl_WorkGroupID.x];
+    return ivec2(int(entry & 0xffffu), int(entry >> 16));
+}
+
 /// The texel this invocation stands for (it may lie beyond the grid at its right or top edge).
 ivec2 jfaBandTexel() {
-    uint entry = tiles[gl_WorkGroupID.x];
     int blocks = uTile / 8;
     ivec2 block = ivec2(int(gl_WorkGroupID.y) % blocks, int(gl_WorkGroupID.y) / blocks);
-    return ivec2(int(entry & 0xffffu), int(entry >> 16)) * uTile + block * 8 +
+    return jfaBandTile() * uTile + block * 8 +
            ivec2(gl_LocalInvocationID.xy);
 }

@@ -20,6 +20,11 @@ layout(binding = 0, offset = 0) uniform atomic_uint uChanged;
 
 #ifdef JFA_BAND
 #include "jfa_band_tiles.glsl"
+// The flood's front (jfa_band_front.comp.glsl): one flag per tile that has held a non-empty
+// cell, set here for the next pass's list when uFront is 1 (one-stage plans).
+layout(std430, binding = 8) buffer Front { uint front[]; };
+uniform int uFront;
+uniform int uTilesX;
 #endif
 
 void main() {
@@ -33,4 +38,10 @@ void main() {
     vec4 result = jfaTexel(uSrc, uSeeds, t, uSize, uSrcSize, uStep, uScale, uMode, before);
     if (uCountChanges != 0 && result != before) atomicCounterIncrement(uChanged);
     imageStore(uDst, t, result);
+#ifdef JFA_BAND
+    if (uFront != 0 && !jfaEmpty(result)) {
+        ivec2 tile = jfaBandTile();
+        front[tile.y * uTilesX + tile.x] = 1u;
+    }
+#endif
 }

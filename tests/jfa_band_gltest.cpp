@@ -177,6 +177,45 @@ TEST_P(JfaBandGlTest, ViewLimitEqualsTheCpusTexelForTexel) {
     EXPECT_TRUE(limited) << "no run left band tiles out";
 }
 
+// The flood's front (jfa/Band.h) on the GPU: with long jumps from sparse sites over a band the
+// plan bounds, every pass's tile list is the CPU's (the computed shares are equal), and the result
+// is the full flood's, texel for texel; the same kernel without the front computes the band.
+TEST_P(JfaBandGlTest, TheFrontListsTheCpusTilesWithTheFullFloodsResult) {
+    const gl::ShaderLibrary shaders;
+    GlFloodKernel<NearestSite> kernel(shaders, GetParam());
+    const NearestSite crit{true};
+    for (auto [w, h] : {std::pair{300, 260}, {97, 513}}) {
+        const Grid seeds = randomSites(w, h, 2, 17);
+        Stage halving{w, h, {32, 16, 8, 4, 2, 1}}, doubling{w, h, {1, 2, 4, 8, 16, 32}};
+        for (const Plan& plan : {Plan("halving from 32", {halving}),
+                                 Plan("doubling to 32", {doubling}), parsePlan("flood:12", w, h)}) {
+            for (int tile : {8, 16}) {
+                const std::string what = plan.name() + ", " + std::to_string(w) + "x" +
+                                         std::to_string(h) + ", tile " + std::to_string(tile);
+                FloodOptions cpuBand;
+                cpuBand.region = FloodRegion::Band;
+                cpuBand.bandTile = tile;
+                const FloodResult cpu = floodWithStats(plan, seeds, crit, cpuBand);
+                ASSERT_EQ(cpu.grid, flood(plan, seeds, crit)) << what;
+                kernel.setRegion(FloodRegion::Band, tile);
+                for (bool front : {true, false}) {
+                    kernel.setFrontLimited(front);
+                    EXPECT_EQ(kernel.run(plan, seeds, crit), cpu.grid) << what << front;
+                    ASSERT_TRUE(kernel.lastRunBanded()) << what;
+                    EXPECT_DOUBLE_EQ(kernel.activeShare(), cpu.activeShare) << what;
+                    EXPECT_DOUBLE_EQ(kernel.computedShare(),
+                                     front ? cpu.computedShare : cpu.activeShare)
+                        << what << front;
+                }
+                // Step-1 passes reach the band's tiles of 16 within the first few passes.
+                if (plan.stages()[0].steps[0] > 1) {
+                    EXPECT_LT(cpu.computedShare, cpu.activeShare) << what;
+                }
+            }
+        }
+    }
+}
+
 TEST_P(JfaBandGlTest, BadTilesAreRefused) {
     const gl::ShaderLibrary shaders;
     GlFloodKernel<NearestSite> kernel(shaders, GetParam());

@@ -204,6 +204,89 @@ TEST(JfaBand, MaxSeedReachAndAutoPasses) {
     EXPECT_EQ(passesForReach(1000, 8), 8);
 }
 
+// One stage of halving steps first, first / 2, ..., 1: JFA's long jumps with a reach (2 first - 1)
+// short of the grid, so that a plan-bounded band is smaller than the grid.
+Plan halvingPlan(int first, int w, int h) {
+    Stage s{w, h, {}};
+    for (int k = first; k >= 1; k /= 2) s.steps.push_back(k);
+    return Plan("halving from " + std::to_string(first), {s});
+}
+
+// The flood's front (jfa/Band.h): with long jumps from sparse seeds, the passes compute less than
+// the band, and the result and every pass's count of changes are the full flood's, for halving,
+// doubling and step-1 plans, both criteria, two tiles and grids that are not powers of two.
+TEST(JfaBand, TheFrontComputesLessThanTheBandWithTheSameResult) {
+    for (auto [w, h] : {std::pair{300, 260}, {97, 513}}) {
+        const Grid seeds = randomSeeds(w, h, 2, 5, 60);
+        const Plan plans[] = {halvingPlan(32, w, h), halvingPlan(16, w, h),
+                              Plan("doubling to 32", {Stage{w, h, {1, 2, 4, 8, 16, 32}}}),
+                              parsePlan("flood:20", w, h)};
+        for (const Plan& plan : plans) {
+            for (int tile : {8, 16}) {
+                FloodOptions front;
+                front.region = FloodRegion::Band;
+                front.bandTile = tile;
+                FloodOptions plain = front;
+                plain.front = false;
+                // `saves`: the band is the plan's square around the seeds (NearestSite), most of
+                // it out of the first long jumps' reach. NearestWithin's band is already the
+                // seeds' small rects, which the front cannot cut by much.
+                auto check = [&](const auto& criterion, const char* name, bool saves) {
+                    const std::string what = plan.name() + ", " + name + ", " + std::to_string(w) +
+                                             "x" + std::to_string(h) + ", tile " +
+                                             std::to_string(tile);
+                    const FloodResult full = floodWithStats(plan, seeds, criterion);
+                    const FloodResult f = floodWithStats(plan, seeds, criterion, front);
+                    const FloodResult p = floodWithStats(plan, seeds, criterion, plain);
+                    EXPECT_EQ(f.grid, full.grid) << what;
+                    EXPECT_EQ(p.grid, full.grid) << what;
+                    ASSERT_EQ(f.passes.size(), full.passes.size()) << what;
+                    for (std::size_t i = 0; i < f.passes.size(); ++i)
+                        EXPECT_EQ(f.passes[i].changed, full.passes[i].changed) << what << i;
+                    ASSERT_LT(p.activeShare, 1.0) << what << ": the band must not be the grid";
+                    EXPECT_DOUBLE_EQ(p.computedShare, p.activeShare) << what;
+                    EXPECT_LE(f.computedShare, p.computedShare) << what;
+                    if (saves) {
+                        EXPECT_LT(f.computedShare, 0.9 * p.computedShare) << what;
+                    }
+                };
+                check(NearestSite{true}, "nearest site", true);
+                check(NearestWithin{}, "nearest within", false);
+            }
+        }
+    }
+}
+
+TEST(JfaBand, FrontTilesAreTheBandTilesAStepFromAFlaggedTile) {
+    // A 64 x 40 grid of 8 x 8 tiles (8 x 5), all in the band; one flagged tile (3, 2).
+    Band band = markTiles(64, 40, 8, std::vector<ReachRect>(40, ReachRect{0, 0, 63, 39}));
+    band.full = false;
+    std::vector<std::uint8_t> front(40, 0);
+    front[2 * 8 + 3] = 1;
+    auto tiles = [&](int step) {
+        std::vector<std::pair<int, int>> out;
+        const Band b = frontTiles(band, front, step);
+        for (int y = 0; y < 5; ++y)
+            for (int x = 0; x < 8; ++x)
+                if (b.active[std::size_t(y * 8 + x)] != 0) out.emplace_back(x, y);
+        return out;
+    };
+    using T = std::vector<std::pair<int, int>>;
+    // Step 8: the tile and its 8 neighbours, a whole tile away.
+    EXPECT_EQ(tiles(8),
+              (T{{2, 1}, {3, 1}, {4, 1}, {2, 2}, {3, 2}, {4, 2}, {2, 3}, {3, 3}, {4, 3}}));
+    // Step 16: two tiles away on each axis, and nothing between (tile 1 reads tiles 1 and 3 ...
+    // only at offsets 0 and +-16, i.e. tiles 1, 3 and -1, 3 +- 2 = 1 and 5 on x).
+    EXPECT_EQ(tiles(16),
+              (T{{1, 0}, {3, 0}, {5, 0}, {1, 2}, {3, 2}, {5, 2}, {1, 4}, {3, 4}, {5, 4}}));
+    // Step 4: half a tile reaches the neighbours too.
+    EXPECT_EQ(tiles(4).size(), 9u);
+    // Off the band: nothing, whatever the front.
+    band.active[2 * 8 + 3] = 0;
+    EXPECT_EQ(tiles(8).size(), 8u);
+    EXPECT_THROW((void)frontTiles(band, std::vector<std::uint8_t>(3, 0), 1), std::invalid_argument);
+}
+
 TEST(JfaBand, TileLogic) {
     EXPECT_EQ(checkBandTile(16), "");
     EXPECT_NE(checkBandTile(12), "");

@@ -148,6 +148,38 @@ Band markTiles(int width, int height, int tile, const std::vector<ReachRect>& ti
     return b;
 }
 
+Band frontTiles(const Band& band, const std::vector<std::uint8_t>& front, int step) {
+    if (front.size() != band.active.size())
+        throw std::invalid_argument("jfa: the front has " + std::to_string(front.size()) +
+                                    " tiles, the band " + std::to_string(band.active.size()));
+    Band out = noTiles(band.width, band.height, band.tile);
+    const int t = band.tile;
+    for (int ty = 0; ty < band.tilesY; ++ty)
+        for (int tx = 0; tx < band.tilesX; ++tx) {
+            const std::size_t index = std::size_t(ty) * std::size_t(band.tilesX) + std::size_t(tx);
+            if (band.active[index] == 0) continue;
+            const long long x0 = tx * 1LL * t, y0 = ty * 1LL * t;
+            const long long x1 = std::min(x0 + t, 1LL * band.width) - 1;
+            const long long y1 = std::min(y0 + t, 1LL * band.height) - 1;
+            bool live = false;
+            for (int j = -1; j <= 1 && !live; ++j)
+                for (int i = -1; i <= 1 && !live; ++i) {
+                    // The candidates' texels at this offset, clipped to the grid, and their tiles.
+                    const long long lx = std::max(x0 + i * 1LL * step, 0LL);
+                    const long long ly = std::max(y0 + j * 1LL * step, 0LL);
+                    const long long hx = std::min(x1 + i * 1LL * step, band.width - 1LL);
+                    const long long hy = std::min(y1 + j * 1LL * step, band.height - 1LL);
+                    for (long long y = ly / t; y <= hy / t && lx <= hx && ly <= hy && !live; ++y)
+                        for (long long x = lx / t; x <= hx / t && !live; ++x)
+                            live =
+                                front[std::size_t(y) * std::size_t(band.tilesX) + std::size_t(x)] !=
+                                0;
+                }
+            out.active[index] = live ? 1 : 0;
+        }
+    return out;
+}
+
 int passesForReach(long long reach, int maxPasses) {
     if (reach < 0) return 1;
     int k = 1;

@@ -57,6 +57,7 @@ void GlFloodKernelBase::buildBandPrograms() {
         gl::Program::build(shaders_, {{GL_COMPUTE_SHADER, "jfa_band_compact.comp.glsl"}});
     clearProgram_ = gl::Program::build(shaders_, {{GL_COMPUTE_SHADER, "jfa_band_clear.comp.glsl"}});
     viewProgram_ = gl::Program::build(shaders_, {{GL_COMPUTE_SHADER, "jfa_band_view.comp.glsl"}});
+    frontProgram_ = gl::Program::build(shaders_, {{GL_COMPUTE_SHADER, "jfa_band_front.comp.glsl"}});
     dilation_ = std::make_unique<GlTileDilation>(shaders_);
     for (bool expand : {false, true}) {
         std::vector<std::string> defines{"JFA_BAND"};
@@ -90,6 +91,8 @@ void GlFloodKernelBase::measureReach(const gl::Texture& seeds) {
     glClearNamedBufferData(tileReach_.id(), GL_RGBA32UI, GL_RGBA_INTEGER, GL_UNSIGNED_INT,
                            emptyRect.data());
     clearBuffer(maxReach_);
+    ensureBuffer(front_, std::size_t(tilesX) * std::size_t(tilesY));
+    clearBuffer(front_); // step A flags every seed's tile
     // Step A0: the seed texels in a list, and step A's indirect dispatch over it.
     // A producer that listed the seeds as it wrote them (beginSeedList) saves the sweep.
     const bool listed = listedSeeds_ == seeds.id();
@@ -114,12 +117,14 @@ void GlFloodKernelBase::measureReach(const gl::Texture& seeds) {
     glBindTextureUnit(1, seeds.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, tileReach_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, maxReach_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, front_.id());
     glUseProgram(reachProgram_.id());
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, seedList_.id());
     glDispatchComputeIndirect(sizeof(GLuint)); // SeedList::dispatch
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, 0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, 0);
     glUseProgram(0);
     glBindTextureUnit(1, 0);
     measuredSeeds_ = seeds.id();
@@ -187,7 +192,7 @@ bool GlFloodKernelBase::buildBand(const Plan& plan, const gl::Texture& seeds) {
     for (std::size_t s = 0; s < stages.size(); ++s) {
         const glm::ivec2 size(stages[s].width, stages[s].height);
         const glm::ivec2 stageTiles = (size + tile_ - 1) / tile_;
-        StageBand& band = stageBands_[s];
+        StageBandList& band = stageBands_[s];
         // The stage's ping-pong pair starts empty, since texels outside the band are never
         // written: what the last band run of this stage wrote is cleared over its tile list
         // before the list is rebuilt, anything else over the whole texture.
@@ -220,6 +225,28 @@ bool GlFloodKernelBase::buildBand(const Plan& plan, const gl::Texture& seeds) {
     bandStages_ = static_cast<int>(stages.size());
     bandArea_ = double(w) * double(h);
     return true;
+}
+
+void GlFloodKernelBase::listFront(glm::ivec2 size, int step) {
+    const glm::ivec2 tiles = (size + tile_ - 1) / tile_;
+    ensureBuffer(frontList_.tiles, std::size_t(tiles.x) * std::size_t(tiles.y));
+    // commands[3] sums the computed texels over the run (startFront zeroes it).
+    const auto blocks = static_cast<GLuint>((tile_ / 8) * (tile_ / 8));
+    const std::array<GLuint, 3> init{0, blocks, 1};
+    glNamedBufferSubData(frontList_.commands.id(), 0, sizeof(init), init.data());
+    frontProgram_.set("uTiles", tiles);
+    frontProgram_.set("uSize", size);
+    frontProgram_.set("uTile", tile_);
+    frontProgram_.set("uStep", step);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, flags_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, frontList_.tiles.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, frontList_.commands.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, front_.id());
+    glUseProgram(frontProgram_.id());
+    glDispatchCompute(groups(tiles.x), groups(tiles.y), 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+    glUseProgram(0);
+    for (GLuint i : {3u, 5u}) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, i, 0);
 }
 
 void GlFloodKernelBase::emptyTexture(Pair& pair, int i, int stage) {
@@ -270,6 +297,19 @@ void GlTileDilation::run(const gl::Buffer& in, const gl::Buffer& out, glm::ivec2
     }
     for (GLuint b = 7; b <= 10; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, 0);
     glUseProgram(0);
+}
+
+void GlFloodKernelBase::startFront() {
+    if (!frontList_.commands)
+        frontList_.commands = gl::Buffer(4 * sizeof(GLuint), nullptr, kStorage);
+    clearBuffer(frontList_.commands);
+}
+
+double GlFloodKernelBase::computedShare() const {
+    if (!frontRun_) return activeShare();
+    GLuint texels = 0;
+    glGetNamedBufferSubData(frontList_.commands.id(), 3 * sizeof(GLuint), sizeof(texels), &texels);
+    return passesRun_ > 0 && bandArea_ > 0.0 ? double(texels) / passesRun_ / bandArea_ : 1.0;
 }
 
 double GlFloodKernelBase::activeShare() const {

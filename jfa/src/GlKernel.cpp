@@ -99,9 +99,16 @@ void GlFloodKernelBase::dispatch(const gl::Texture& src, const gl::Texture& seed
     glBindTextureUnit(1, seeds.id());
     glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, 0, changedCounter_.id());
     if (banded) {
+        // The flood's front: of the band, the tiles this pass may change (listFront binds the
+        // list at 4 and the flags at 8, which the pass extends).
+        const bool front = frontRun_ && what == GlDispatch::Pass;
+        if (front) listFront({dst.width(), dst.height()}, step);
         p.set("uTile", tile_);
-        const StageBand& band = stageBands_[bandStage];
+        p.set("uFront", front ? 1 : 0);
+        p.set("uTilesX", (dst.width() + tile_ - 1) / tile_);
+        const StageBandList& band = front ? frontList_ : stageBands_[bandStage];
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, band.tiles.id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, front ? front_.id() : 0);
         glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, band.commands.id());
     }
     glUseProgram(p.id());
@@ -116,7 +123,7 @@ void GlFloodKernelBase::dispatch(const gl::Texture& src, const gl::Texture& seed
             glDispatchCompute(static_cast<GLuint>((dst.width() + 7) / 8),
                               static_cast<GLuint>((dst.height() + 7) / 8), 1);
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_ATOMIC_COUNTER_BARRIER_BIT |
-                        GL_BUFFER_UPDATE_BARRIER_BIT);
+                        GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
         glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     } else {
         const Pair& pair = pairs_.at({dst.width(), dst.height()});
@@ -137,6 +144,7 @@ void GlFloodKernelBase::dispatch(const gl::Texture& src, const gl::Texture& seed
     glBindTextureUnit(1, 0);
     if (banded) {
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, 0);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, 0);
         glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
     }
 }
@@ -162,6 +170,9 @@ const gl::Texture& GlFloodKernelBase::runPlan(const Plan& plan, const gl::Textur
         lastRunBanded_ = preparedBanded_; // prepareBand() built it for this plan and seeds
     else
         lastRunBanded_ = banded(region_) && buildBand(plan, seeds);
+    // The front needs one stage: a half-resolution stage's tiles are not the seeds' (step A's).
+    frontRun_ = lastRunBanded_ && !halfRes && frontEnabled_;
+    if (frontRun_) startFront();
     // Steps A-C are consumed: the next frame's seeds may reuse the texture.
     measuredSeeds_ = 0;
     preparedSeeds_ = 0;

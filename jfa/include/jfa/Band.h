@@ -24,6 +24,17 @@
 // a view texel depends on reads only texels that are computed too, or truly empty. Texels beyond
 // the view's reach may hold anything a partial flood leaves there. Plans that stop "until
 // unchanged" are not limited: their stopping reads the whole grid.
+//
+// The flood's front. Within the band, a pass of jump length k changes a texel only if one of
+// the 9 texels at (i, j) * k around it holds a non-empty cell. Keep one flag per tile that has
+// held a non-empty cell at any time so far (the seeds' tiles, then every tile a pass wrote a
+// non-empty cell in). A texel none of whose 9 candidates lies in a flagged tile takes the empty
+// cell, and it already holds it in both ping-pong grids: had it ever held another, its own tile
+// (offset 0, 0) would be flagged. So each pass computes only the band tiles with a flagged tile
+// among their candidates' tiles (frontTiles) and leaves the rest as they are, with the same
+// result for any criterion, monotone or not. One-stage plans only: a half-resolution stage's
+// tiles are not the seeds'. On JFA-E's eye grid this leaves out most of the band in the long
+// early passes, which reach from the few boundary seeds into a band of mostly empty texels.
 
 #include <jfa/Grid.h>
 #include <jfa/Plan.h>
@@ -182,6 +193,24 @@ Band viewRegion(int width, int height, int tile, const std::vector<std::uint8_t>
 /// `view` holds one flag per tile of the band's grid, row-major (nonzero: the reader reads a
 /// texel there). Throws std::invalid_argument when its size is not the band's tile count.
 void limitToView(Band& band, const std::vector<std::uint8_t>& view, int tileReach);
+
+/// The flood's front: of `band`'s tiles, those a pass of jump length `step` may change. Its
+/// texels read the cells at (i, j) * step around them; where every tile those lie in is off
+/// `front` (one flag per band tile: the tiles that have held a non-empty cell so far, seeds
+/// included), the texel stays empty. The GPU does the same (shaders/jfa_band_front.comp.glsl).
+/// Throws std::invalid_argument when `front` has another size.
+Band frontTiles(const Band& band, const std::vector<std::uint8_t>& front, int step);
+
+/// Flags in `front` (one per tile of side `tile` over `grid`) every tile where `grid` holds a
+/// non-empty cell under `criterion`.
+template <class C>
+void markFront(std::vector<std::uint8_t>& front, const Grid& grid, int tile, const C& criterion) {
+    const int tilesX = (grid.width + tile - 1) / tile;
+    for (int y = 0; y < grid.height; ++y)
+        for (int x = 0; x < grid.width; ++x)
+            if (!criterion.empty(grid.at(x, y)))
+                front[std::size_t(y / tile) * std::size_t(tilesX) + std::size_t(x / tile)] = 1;
+}
 
 /// The fewest halving JFA passes (steps 2^(k-1) .. 1, reach 2^k - 1) that cover `reach` texels,
 /// clamped to [1, maxPasses]; maxPasses for an unbounded reach, 1 without seeds (reach < 0).

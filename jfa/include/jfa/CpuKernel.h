@@ -81,6 +81,9 @@ struct FloodOptions {
     /// the result). The run is then exact at those tiles' texels only (jfa/Band.h, limitToView).
     /// Without it, View floods the band.
     const std::vector<std::uint8_t>* viewTiles = nullptr;
+    /// With a band, on one-stage plans: each pass computes only the band tiles within the
+    /// flood's front (jfa/Band.h; the same result). Off only for comparisons.
+    bool front = true;
 };
 
 /// What one executed pass did.
@@ -97,8 +100,10 @@ struct FloodResult {
     /// Number of passes actually run (less than plan.passCount() if an until-unchanged stage
     /// stopped early).
     [[nodiscard]] int passesRun() const { return static_cast<int>(passes.size()); }
-    /// Share of the full-resolution grid the passes computed (1 for FloodRegion::Full).
+    /// Share of the full-resolution grid in the band (1 for FloodRegion::Full).
     double activeShare = 1.0;
+    /// Share of the grid an average pass computed: the band's, or less within the front.
+    double computedShare = 1.0;
 };
 
 // The thread fan-out is base/Parallel.h, shared with every CPU path.
@@ -274,6 +279,13 @@ FloodResult floodWithStats(const Plan& plan, const Grid& fullResSeeds, const C& 
     }
     Grid current = downsample(fullResSeeds, stageScale(plan, 0), criterion);
     Grid next;
+    // The flood's front (jfa/Band.h), on one-stage plans: the tiles that have held a cell.
+    std::vector<std::uint8_t> front;
+    if (band && plan.stages().size() == 1 && options.front) {
+        front.assign(band->active.size(), 0);
+        markFront(front, fullResSeeds, band->tile, criterion);
+    }
+    long long computed = 0; // texels the passes computed
     int passIndex = 0;
     const std::vector<Stage>& stages = plan.stages();
     for (std::size_t s = 0; s < stages.size(); ++s) {
@@ -287,14 +299,22 @@ FloodResult floodWithStats(const Plan& plan, const Grid& fullResSeeds, const C& 
             if (skipRest) continue;
             const Pass pass{stage.steps[k], stage.width, stage.height, s > 0 && k == 0,
                             stage.untilUnchanged};
-            const std::int64_t changed = runPass(current, next, pass.step, scale, criterion,
-                                                 options.threads, band ? &*band : nullptr);
+            std::optional<Band> live;
+            if (!front.empty()) live = frontTiles(*band, front, pass.step);
+            const Band* run = live ? &*live : (band ? &*band : nullptr);
+            const std::int64_t changed =
+                runPass(current, next, pass.step, scale, criterion, options.threads, run);
+            computed += run ? run->activeTexels() : (long long)next.width * next.height;
             std::swap(current, next);
+            if (!front.empty()) markFront(front, current, band->tile, criterion);
             result.passes.push_back(PassStats{passIndex, pass, changed});
             if (options.onPass) options.onPass(passIndex, pass, current);
             if (stage.untilUnchanged && changed == 0) skipRest = true;
         }
     }
+    if (!result.passes.empty())
+        result.computedShare = double(computed) / double(result.passes.size()) /
+                               (double(plan.width()) * double(plan.height()));
     result.grid = std::move(current);
     return result;
 }

@@ -86,6 +86,9 @@ class GlFloodKernelBase {
     /// nullptr (the default): View floods the band.
     void setViewTiles(const gl::Buffer* tiles) { viewTiles_ = tiles; }
     [[nodiscard]] FloodRegion region() const { return region_; }
+    /// Whether band runs of one-stage plans compute, each pass, only the band tiles within the
+    /// flood's front (jfa/Band.h; the same result). On by default; off for comparisons.
+    void setFrontLimited(bool on) { frontEnabled_ = on; }
     /// The band's tile side (setRegion).
     [[nodiscard]] int bandTile() const { return tile_; }
     /// False when the last run flooded the full grid: the region is Full, or the plan alone
@@ -102,6 +105,9 @@ class GlFloodKernelBase {
     /// Share of the full-resolution grid the last run's passes computed: 1 after a full run.
     /// Reads one counter back from the GPU (a sync point): call it after the frame, not in it.
     [[nodiscard]] double activeShare() const;
+    /// Share of the grid an average pass of the last run computed: activeShare(), or less when
+    /// the passes ran within the flood's front (setFrontLimited). Reads back, like activeShare.
+    [[nodiscard]] double computedShare() const;
 
   protected:
     /// Builds the kernel programs with `criterionFile` (a criterion's glslFile) linked in.
@@ -146,15 +152,25 @@ class GlFloodKernelBase {
     gl::Program bandPassProgram_, bandExpandProgram_;         // passes over a tile list
     gl::Program clearProgram_; // the empty cell over a tile list (jfa_band_clear.comp.glsl)
     gl::Program viewProgram_;  // the view limit (jfa_band_view.comp.glsl)
+    gl::Program frontProgram_; // a pass's tiles within the flood's front (jfa_band_front)
     std::unique_ptr<GlTileDilation> dilation_; // the view tiles widened into viewNear_
     const gl::Buffer* viewTiles_ = nullptr;
     gl::Buffer viewNear_;
     gl::Buffer tileReach_, maxReach_, flags_, seedList_;
-    struct StageBand {
+    struct StageBandList {
         gl::Buffer tiles;    // packed tile coordinates (x | y << 16)
         gl::Buffer commands; // jfa_band_compact.comp.glsl's indirect commands
     };
-    StageBand stageBands_[2];  // per stage of a (at most two-stage) plan
+    StageBandList stageBands_[2]; // per stage of a (at most two-stage) plan
+    // The flood's front (jfa/Band.h): one flag per tile that has held a non-empty cell (the
+    // seeds' tiles, then what the passes wrote), and each pass's tile list within it.
+    gl::Buffer front_;
+    StageBandList frontList_;
+    bool frontEnabled_ = true;
+    bool frontRun_ = false; // this run's passes use the front (a one-stage plan on a band)
+    /// Lists the band tiles a pass of jump length `step` may change (frontList_).
+    void listFront(glm::ivec2 size, int step);
+    void startFront();         // zeroes the run's count of computed texels
     GLuint measuredSeeds_ = 0; // seeds texture step A last ran on (0: none pending)
     GLuint listedSeeds_ = 0;   // seeds texture whose seeds a producer listed (seedsListed)
     GLuint preparedSeeds_ = 0; // seeds texture prepareBand() built the band for
