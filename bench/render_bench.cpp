@@ -197,11 +197,12 @@ int main(int argc, char** argv) {
         runner.finish();
         const fl::PhaseTimes& times = lanes.front().times;
         std::set<int> passCounts;
-        std::vector<double> activeShare;
+        std::vector<double> activeShare, computedShare;
         for (std::size_t i = 0; i < times.frames(); ++i)
             if (const auto& f = times.flood(i)) {
                 passCounts.insert(f->passes);
                 activeShare.push_back(f->activeShare);
+                computedShare.push_back(f->computedShare);
             }
         std::cout << "context: " << ctx->description() << "\n"
                   << "scene: " << scene.source << ", " << scene.triangleCount() << " triangles\n"
@@ -227,9 +228,13 @@ int main(int argc, char** argv) {
             for (int p : passCounts) std::cout << " " << p;
             std::cout << "\n";
         }
-        if (!activeShare.empty())
+        if (!activeShare.empty()) {
             std::cout << "active share: min " << fl::minimum(activeShare) << " median "
                       << fl::median(activeShare) << "\n";
+            std::cout << "computed share per pass (within the front): min "
+                      << fl::minimum(computedShare) << " median " << fl::median(computedShare)
+                      << "\n";
+        }
         std::cout << "frame " << width << "x" << height << ", shadow map " << shadowMap << "^2, "
                   << frames << " frames after " << warmup
                   << " warm-up, timing: " << renderer.timer().modeName() << "\n"

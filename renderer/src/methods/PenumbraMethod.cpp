@@ -31,9 +31,6 @@ class PenumbraMethod final : public ShadowMethod {
         const int size = in.shadow.depth.width();
         PenumbraReach reach =
             penumbraReach(in.disk, in.shadow.mapViewProj(), {size, size}, in.sceneBounds);
-        // 4 x 4 first cells: the same band as 8 x 8 within a tenth of a percent of the map, at
-        // a smaller cost per seed (docs/BENCHMARKS.md, "Band-limited flooding, fourth part").
-        reach.firstCells = 4;
         // A silhouette needs a depth step of a thousandth of the scene: smaller steps are the
         // receiver's own slope, not an occluder's edge.
         const float threshold = silhouetteThreshold(in.sceneBounds.radius());

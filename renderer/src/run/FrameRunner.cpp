@@ -23,8 +23,9 @@ std::optional<std::string> referenceOf(const std::string& method) {
 std::optional<FloodSample> floodSample(const Renderer& renderer) {
     const FloodFrame* f = renderer.flood();
     if (!f) return std::nullopt;
-    // activeShare() reads 4 bytes back: the frame is already finished and timed here.
-    return FloodSample{f->passes, f->kernel ? f->kernel->activeShare() : 1.0};
+    // The shares read 4 bytes back each: the frame is already finished and timed here.
+    return FloodSample{f->passes, f->kernel ? f->kernel->activeShare() : 1.0,
+                       f->kernel ? f->kernel->computedShare() : 1.0};
 }
 
 void PhaseTimes::record(const gl::PassTimer& timer, std::optional<FloodSample> flood) {
@@ -40,15 +41,16 @@ void PhaseTimes::append(double frameMs, Phases phases, std::optional<FloodSample
 }
 
 std::optional<FloodSample> PhaseTimes::medianFlood() const {
-    std::vector<double> passes, share;
+    std::vector<double> passes, share, computed;
     for (const std::optional<FloodSample>& f : flood_)
         if (f) {
             passes.push_back(f->passes);
             share.push_back(f->activeShare);
+            computed.push_back(f->computedShare);
         }
     if (passes.empty()) return std::nullopt;
     return FloodSample{static_cast<int>(std::lround(fl::median(std::move(passes)))),
-                       fl::median(std::move(share))};
+                       fl::median(std::move(share)), fl::median(std::move(computed))};
 }
 
 double PhaseTimes::phaseMs(std::size_t i, const std::string& name) const {

@@ -35,6 +35,9 @@ std::optional<std::string> referenceOf(const std::string& method);
 struct FloodSample {
     int passes = 0;
     double activeShare = 1.0;
+    /// Share of the grid an average pass computed: activeShare, or less within the flood's front
+    /// (jfa/Band.h).
+    double computedShare = 1.0;
 };
 
 /// What the renderer's last frame flooded; nullopt for methods that do not flood.

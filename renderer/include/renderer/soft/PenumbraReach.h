@@ -57,9 +57,10 @@ struct PenumbraReach {
     GLuint boundsLo = 0, boundsHi = 0;
     int boundsLevels = 0;
     /// Pyramid cells per axis a rect is first split into (then two finer levels under the cells
-    /// kept): more cut the rects closer and cost more per seed. JFA-L takes 4, JFA-E 8
-    /// (docs/BENCHMARKS.md, "Band-limited flooding, fourth part").
-    int firstCells = 8;
+    /// kept): more cut the rects closer and cost more per seed. 4 was the cheapest frame for
+    /// JFA-L, and for JFA-E once its passes run within the flood's front, which absorbs the
+    /// looser band (docs/BENCHMARKS.md, "Band-limited flooding, fourth and fifth parts").
+    int firstCells = 4;
 };
 
 /// The receivers' bounds pyramid of the GPU bound (shaders/reach_bounds.comp.glsl): per 8x8
