@@ -7,9 +7,7 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(std430, binding = 3) readonly buffer Flags { uint flags[]; };
-layout(std430, binding = 4) writeonly buffer TileList { uint tiles[]; };
-// [0..2] DispatchIndirectCommand (x = tiles, y = 8x8 groups per tile, z = 1), [3] band texels.
-layout(std430, binding = 5) buffer Commands { uint commands[4]; };
+#include "jfa_band_list.glsl"
 uniform ivec2 uStageTiles; // tiles per axis of the stage grid
 uniform ivec2 uStageSize;  // the stage grid
 uniform ivec2 uTiles;      // full-resolution tiles per axis
@@ -25,9 +23,5 @@ void main() {
     bool inBand = false;
     for (int y = first.y; y <= last.y; ++y)
         for (int x = first.x; x <= last.x; ++x) inBand = inBand || flags[y * uTiles.x + x] != 0u;
-    if (!inBand) return;
-    uint index = atomicAdd(commands[0], 1u);
-    ivec2 texels = min(t * uTile + uTile, uStageSize) - t * uTile;
-    atomicAdd(commands[3], uint(texels.x * texels.y));
-    tiles[index] = uint(t.x) | (uint(t.y) << 16);
+    if (inBand) jfaAppendTile(t, min(t * uTile + uTile, uStageSize) - t * uTile);
 }

@@ -9,8 +9,7 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(std430, binding = 3) readonly buffer Flags { uint flags[]; };  // the band (step B)
-layout(std430, binding = 4) writeonly buffer TileList { uint tiles[]; };
-layout(std430, binding = 5) buffer Commands { uint commands[4]; };    // as step C's
+#include "jfa_band_list.glsl" // [3] sums the texels over the run's passes
 layout(std430, binding = 8) readonly buffer Front { uint front[]; };
 uniform ivec2 uTiles;
 uniform ivec2 uSize;
@@ -35,9 +34,5 @@ void main() {
                 for (int x = a.x; x <= b.x; ++x) live = live || front[y * uTiles.x + x] != 0u;
         }
     }
-    if (!live) return;
-    uint index = atomicAdd(commands[0], 1u);
-    ivec2 texels = last + 1 - first;
-    atomicAdd(commands[3], uint(texels.x * texels.y));
-    tiles[index] = uint(t.x) | (uint(t.y) << 16);
+    if (live) jfaAppendTile(t, last + 1 - first);
 }

@@ -206,11 +206,7 @@ bool GlFloodKernelBase::buildBand(const Plan& plan, const gl::Texture& seeds) {
                     pair.dirt[i] = kDirtWhole;
             }
         }
-        ensureBuffer(band.tiles, std::size_t(stageTiles.x) * std::size_t(stageTiles.y));
-        if (!band.commands) band.commands = gl::Buffer(4 * sizeof(GLuint), nullptr, kStorage);
-        const auto blocks = static_cast<GLuint>((tile_ / 8) * (tile_ / 8));
-        const std::array<GLuint, 4> init{0, blocks, 1, 0};
-        glNamedBufferSubData(band.commands.id(), 0, sizeof(init), init.data());
+        restartList(band, stageTiles, true);
         compactProgram_.set("uStageTiles", stageTiles);
         compactProgram_.set("uStageSize", size);
         compactProgram_.set("uScale", stageScale(plan, s));
@@ -227,23 +223,31 @@ bool GlFloodKernelBase::buildBand(const Plan& plan, const gl::Texture& seeds) {
     return true;
 }
 
-void GlFloodKernelBase::listFront(glm::ivec2 size, int step) {
-    const glm::ivec2 tiles = (size + tile_ - 1) / tile_;
-    ensureBuffer(frontList_.tiles, std::size_t(tiles.x) * std::size_t(tiles.y));
-    // commands[3] sums the computed texels over the run (startFront zeroes it).
+void GlFloodKernelBase::restartList(StageBandList& list, glm::ivec2 tiles, bool texelsToo) {
+    ensureBuffer(list.tiles, std::size_t(tiles.x) * std::size_t(tiles.y));
+    if (!list.commands) list.commands = gl::Buffer(4 * sizeof(GLuint), nullptr, kStorage);
     const auto blocks = static_cast<GLuint>((tile_ / 8) * (tile_ / 8));
-    const std::array<GLuint, 3> init{0, blocks, 1};
-    glNamedBufferSubData(frontList_.commands.id(), 0, sizeof(init), init.data());
-    frontProgram_.set("uTiles", tiles);
+    const std::array<GLuint, 4> init{0, blocks, 1, 0};
+    glNamedBufferSubData(list.commands.id(), 0, (texelsToo ? 4 : 3) * sizeof(GLuint), init.data());
+}
+
+void GlFloodKernelBase::startFront(glm::ivec2 size) {
+    frontTiles_ = (size + tile_ - 1) / tile_;
+    restartList(frontList_, frontTiles_, true); // [3] then sums the texels over the run
+    frontProgram_.set("uTiles", frontTiles_);
     frontProgram_.set("uSize", size);
     frontProgram_.set("uTile", tile_);
+}
+
+void GlFloodKernelBase::listFront(int step) {
+    restartList(frontList_, frontTiles_, false);
     frontProgram_.set("uStep", step);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, flags_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, frontList_.tiles.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, frontList_.commands.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, front_.id());
     glUseProgram(frontProgram_.id());
-    glDispatchCompute(groups(tiles.x), groups(tiles.y), 1);
+    glDispatchCompute(groups(frontTiles_.x), groups(frontTiles_.y), 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
     glUseProgram(0);
     for (GLuint i : {3u, 5u}) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, i, 0);
@@ -297,12 +301,6 @@ void GlTileDilation::run(const gl::Buffer& in, const gl::Buffer& out, glm::ivec2
     }
     for (GLuint b = 7; b <= 10; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, 0);
     glUseProgram(0);
-}
-
-void GlFloodKernelBase::startFront() {
-    if (!frontList_.commands)
-        frontList_.commands = gl::Buffer(4 * sizeof(GLuint), nullptr, kStorage);
-    clearBuffer(frontList_.commands);
 }
 
 double GlFloodKernelBase::computedShare() const {

@@ -102,7 +102,7 @@ void GlFloodKernelBase::dispatch(const gl::Texture& src, const gl::Texture& seed
         // The flood's front: of the band, the tiles this pass may change (listFront binds the
         // list at 4 and the flags at 8, which the pass extends).
         const bool front = frontRun_ && what == GlDispatch::Pass;
-        if (front) listFront({dst.width(), dst.height()}, step);
+        if (front) listFront(step);
         p.set("uTile", tile_);
         p.set("uFront", front ? 1 : 0);
         p.set("uTilesX", (dst.width() + tile_ - 1) / tile_);
@@ -172,7 +172,7 @@ const gl::Texture& GlFloodKernelBase::runPlan(const Plan& plan, const gl::Textur
         lastRunBanded_ = banded(region_) && buildBand(plan, seeds);
     // The front needs one stage: a half-resolution stage's tiles are not the seeds' (step A's).
     frontRun_ = lastRunBanded_ && !halfRes && frontEnabled_;
-    if (frontRun_) startFront();
+    if (frontRun_) startFront({plan.width(), plan.height()});
     // Steps A-C are consumed: the next frame's seeds may reuse the texture.
     measuredSeeds_ = 0;
     preparedSeeds_ = 0;

@@ -304,7 +304,8 @@ FloodResult floodWithStats(const Plan& plan, const Grid& fullResSeeds, const C& 
             const Band* run = live ? &*live : (band ? &*band : nullptr);
             const std::int64_t changed =
                 runPass(current, next, pass.step, scale, criterion, options.threads, run);
-            computed += run ? run->activeTexels() : (long long)next.width * next.height;
+            computed +=
+                run ? run->activeTexels() : static_cast<long long>(next.width) * next.height;
             std::swap(current, next);
             if (!front.empty()) markFront(front, current, band->tile, criterion);
             result.passes.push_back(PassStats{passIndex, pass, changed});

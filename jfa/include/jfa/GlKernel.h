@@ -167,10 +167,15 @@ class GlFloodKernelBase {
     gl::Buffer front_;
     StageBandList frontList_;
     bool frontEnabled_ = true;
-    bool frontRun_ = false; // this run's passes use the front (a one-stage plan on a band)
+    bool frontRun_ = false;    // this run's passes use the front (a one-stage plan on a band)
+    glm::ivec2 frontTiles_{0}; // the run's tiles per axis
+    /// Empties `list` for a grid of `tiles`: no tile, and with `texelsToo` no texel counted.
+    void restartList(StageBandList& list, glm::ivec2 tiles, bool texelsToo);
+    /// Before a run with the front, on a grid of `size`: the count of computed texels zeroed
+    /// and the list program's grid set.
+    void startFront(glm::ivec2 size);
     /// Lists the band tiles a pass of jump length `step` may change (frontList_).
-    void listFront(glm::ivec2 size, int step);
-    void startFront();         // zeroes the run's count of computed texels
+    void listFront(int step);
     GLuint measuredSeeds_ = 0; // seeds texture step A last ran on (0: none pending)
     GLuint listedSeeds_ = 0;   // seeds texture whose seeds a producer listed (seedsListed)
     GLuint preparedSeeds_ = 0; // seeds texture prepareBand() built the band for
