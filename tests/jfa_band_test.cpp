@@ -204,12 +204,10 @@ TEST(JfaBand, MaxSeedReachAndAutoPasses) {
     EXPECT_EQ(passesForReach(1000, 8), 8);
 }
 
-// One stage of halving steps first, first / 2, ..., 1: JFA's long jumps with a reach (2 first - 1)
-// short of the grid, so that a plan-bounded band is smaller than the grid.
-Plan halvingPlan(int first, int w, int h) {
-    Stage s{w, h, {}};
-    for (int k = first; k >= 1; k /= 2) s.steps.push_back(k);
-    return Plan("halving from " + std::to_string(first), {s});
+// One stage of k halving steps 2^(k-1), ..., 1 (extraPasses): JFA's long jumps with a reach
+// (2^k - 1) short of the grid, so that a plan-bounded band is smaller than the grid.
+Plan halvingPlan(int k, int w, int h) {
+    return Plan("halving from " + std::to_string(1 << (k - 1)), {Stage{w, h, extraPasses(k)}});
 }
 
 // The flood's front (jfa/Band.h): with long jumps from sparse seeds, the passes compute less than
@@ -218,7 +216,7 @@ Plan halvingPlan(int first, int w, int h) {
 TEST(JfaBand, TheFrontComputesLessThanTheBandWithTheSameResult) {
     for (auto [w, h] : {std::pair{300, 260}, {97, 513}}) {
         const Grid seeds = randomSeeds(w, h, 2, 5, 60);
-        const Plan plans[] = {halvingPlan(32, w, h), halvingPlan(16, w, h),
+        const Plan plans[] = {halvingPlan(6, w, h), halvingPlan(5, w, h),
                               Plan("doubling to 32", {Stage{w, h, {1, 2, 4, 8, 16, 32}}}),
                               parsePlan("flood:20", w, h)};
         for (const Plan& plan : plans) {
