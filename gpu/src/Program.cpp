@@ -1,6 +1,8 @@
 #include <gpu/LiveObjects.h>
 #include <gpu/Program.h>
 
+#include "ProgramPool.h"
+
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
@@ -53,20 +55,25 @@ std::string infoLog(GLuint object, bool isProgram) {
     return log;
 }
 
-Shader compile(const ShaderLibrary& library, const StageSource& s,
-               const std::vector<std::string>& defines) {
+// One stage's source as the driver sees it, and the files its #line numbers refer to.
+struct ExpandedStage {
+    const StageSource* stage;
+    std::string source;
     std::vector<std::string> files;
-    const std::string source = withDefines(library.expand(s.file, files), defines);
-    Shader shader(glCreateShader(s.stage));
+};
+
+Shader compile(const ExpandedStage& s) {
+    Shader shader(glCreateShader(s.stage->stage));
     noteCreated(ObjectKind::Shader, shader.id());
-    const char* text = source.c_str();
+    const char* text = s.source.c_str();
     glShaderSource(shader.id(), 1, &text, nullptr);
     glCompileShader(shader.id());
     GLint ok = 0;
     glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
     if (!ok) {
-        throw GlError(s.file + ": " + stageName(s.stage) + " shader failed to compile:\n" +
-                      mapInfoLog(infoLog(shader.id(), false), files));
+        throw GlError(s.stage->file + ": " + stageName(s.stage->stage) +
+                      " shader failed to compile:\n" +
+                      mapInfoLog(infoLog(shader.id(), false), s.files));
     }
     return shader;
 }
@@ -117,13 +124,25 @@ std::string mapInfoLog(const std::string& log, const std::vector<std::string>& f
 
 Program Program::build(const ShaderLibrary& library, const std::vector<StageSource>& stages,
                        const std::vector<std::string>& defines) {
-    std::vector<Shader> shaders;
-    std::string names;
+    std::vector<ExpandedStage> expanded;
+    std::string key, names;
     for (const StageSource& s : stages) {
-        shaders.push_back(compile(library, s, defines));
+        ExpandedStage e{&s, {}, {}};
+        e.source = withDefines(library.expand(s.file, e.files), defines);
+        key += std::to_string(s.stage) + '\n' + e.source + '\0';
         names += (names.empty() ? "" : " + ") + s.file;
+        expanded.push_back(std::move(e));
     }
+    const std::shared_ptr<ProgramPool>& pool = library.programPool();
     Program p;
+    if (const GLuint reused = pool->take(key)) {
+        p.handle_ = ProgramHandle(reused);
+        p.pool_ = pool;
+        p.key_ = std::move(key);
+        return p;
+    }
+    std::vector<Shader> shaders;
+    for (const ExpandedStage& e : expanded) shaders.push_back(compile(e));
     p.handle_ = ProgramHandle(glCreateProgram());
     noteCreated(ObjectKind::Program, p.id());
     for (const Shader& s : shaders) glAttachShader(p.id(), s.id());
@@ -132,7 +151,30 @@ Program Program::build(const ShaderLibrary& library, const std::vector<StageSour
     GLint ok = 0;
     glGetProgramiv(p.id(), GL_LINK_STATUS, &ok);
     if (!ok) throw GlError(names + ": program failed to link:\n" + infoLog(p.id(), true));
+    pool->remember(p.id());
+    p.pool_ = pool; // from here on the program goes back to the pool rather than being deleted
+    p.key_ = std::move(key);
     return p;
+}
+
+Program& Program::operator=(Program&& o) noexcept {
+    if (this != &o) {
+        giveBack();
+        handle_ = std::move(o.handle_);
+        pool_ = std::move(o.pool_);
+        key_ = std::move(o.key_);
+    }
+    return *this;
+}
+
+Program::~Program() { giveBack(); }
+
+void Program::giveBack() {
+    if (!handle_) return;
+    if (const std::shared_ptr<ProgramPool> pool = pool_.lock())
+        pool->giveBack(key_, handle_.release());
+    else
+        handle_.reset();
 }
 
 GLint Program::location(const char* name) const {

@@ -1,5 +1,7 @@
 #include <gpu/ShaderLibrary.h>
 
+#include "ProgramPool.h"
+
 #include <base/InputFile.h>
 
 #include <sstream>
@@ -7,7 +9,8 @@
 
 namespace fl::gl {
 
-ShaderLibrary::ShaderLibrary(std::optional<std::filesystem::path> dir) : dir_(std::move(dir)) {
+ShaderLibrary::ShaderLibrary(std::optional<std::filesystem::path> dir)
+    : dir_(std::move(dir)), pool_(std::make_shared<ProgramPool>()) {
     if (dir_ && !std::filesystem::is_directory(*dir_))
         throw std::runtime_error("--shader-dir " + dir_->string() + ": not a directory");
 }

@@ -39,6 +39,8 @@ class Handle {
     }
     [[nodiscard]] GLuint id() const { return id_; }
     explicit operator bool() const { return id_ != 0; }
+    /// Gives up ownership without deleting (a pooled program goes back to its pool).
+    [[nodiscard]] GLuint release() { return std::exchange(id_, 0); }
 
   private:
     GLuint id_ = 0;

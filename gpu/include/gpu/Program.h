@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -23,7 +24,13 @@ struct StageSource {
 class Program {
   public:
     Program() = default;
-    /// Compiles every stage (with `defines` lines inserted after #version) and links them.
+    Program(Program&&) noexcept = default;
+    Program& operator=(Program&& o) noexcept;
+    /// Returns the GL program to the library's pool (deletes it if the pool is gone).
+    ~Program();
+    /// Compiles every stage (with `defines` lines inserted after #version) and links them; or,
+    /// when the library's pool holds an idle program of the same sources and defines, takes that
+    /// one, its uniforms as just linked.
     static Program build(const ShaderLibrary& library, const std::vector<StageSource>& stages,
                          const std::vector<std::string>& defines = {});
 
@@ -39,7 +46,10 @@ class Program {
     void set(const char* name, const glm::mat4& v) const;
 
   private:
+    void giveBack();
     ProgramHandle handle_;
+    std::weak_ptr<ProgramPool> pool_; // where the program goes when this one is done with it
+    std::string key_;                 // its stages' expanded sources
 };
 
 /// Draws one triangle covering the viewport with `program` (fullscreen.vert.glsl makes its

@@ -3,12 +3,15 @@
 
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace fl::gl {
+
+class ProgramPool;
 
 /// The shaders/*.glsl files compiled into the binary, by file name.
 const std::map<std::string, std::string_view>& embeddedShaders();
@@ -30,10 +33,14 @@ class ShaderLibrary {
 
     [[nodiscard]] const std::optional<std::filesystem::path>& directory() const { return dir_; }
 
+    /// The linked programs this library and its copies keep for reuse (see Program::build).
+    [[nodiscard]] const std::shared_ptr<ProgramPool>& programPool() const { return pool_; }
+
   private:
     void expandInto(const std::string& name, std::string& out, std::vector<std::string>& files,
                     int depth) const;
     std::optional<std::filesystem::path> dir_;
+    std::shared_ptr<ProgramPool> pool_;
 };
 
 } // namespace fl::gl
