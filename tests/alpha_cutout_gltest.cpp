@@ -41,7 +41,7 @@ TEST_P(AlphaCutoutTest, CheckerCardCastsCheckerShadowWithEveryMethod) {
     scene.light->radius = 0.02f; // penumbrae well inside kMargin: the checker stays sharp
     const CameraView camera = overheadCamera(scene);
     const int size = 96;
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     const std::string mode = GetParam() == AlphaMode::Mask ? "mask" : "blend";
     Light eye;
     eye.type = Light::Type::Point;

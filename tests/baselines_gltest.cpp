@@ -32,7 +32,7 @@ FrameImages renderDefault(std::string_view method, float radius, int mapSize,
                           const MethodOptions& options = {}) {
     Scene scene = loadGltf(defaultAsset());
     scene.light->radius = radius;
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     RenderSettings settings;
     settings.shadow.size = mapSize;
     settings.method = std::string(method);
@@ -55,7 +55,7 @@ FrameImages renderDefault(std::string_view method, float radius, int mapSize,
 void compareFilterWithCpu(ShadowMapProvider provider, bool pcss) {
     Scene scene = loadGltf(defaultAsset());
     scene.light->radius = kTestRadius;
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     const GpuScene gpu(scene);
     const Light light = sceneLight(scene);
     const DiskLight disk = makeDiskLight(light, scene.bounds);
@@ -182,7 +182,7 @@ struct ReferenceSetup {
         return {gpu, surfaces.positions(), b.scene.bounds, b.disk, ss, rs};
     }
     const BoxScene b = boxScene();
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     const GpuScene gpu{b.scene};
     const ShadowMapSettings ss{};
     ReferenceShadowPass pass{shaders};

@@ -21,7 +21,7 @@ class GoldenTest : public GlTest {};
 FrameImages renderDefault(int size, int shadowMap,
                           ShadowMapProvider provider = ShadowMapProvider::Uniform) {
     const Scene scene = loadGltf(defaultAsset());
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     RenderSettings settings;
     settings.shadow.size = shadowMap;
     settings.shadow.provider = provider;

@@ -41,7 +41,7 @@ ByteImage renderOnGpu(const ByteImage& bg) {
     gl::Framebuffer fbo = gl::Framebuffer::create();
     fbo.attach(GL_COLOR_ATTACHMENT0, target);
     fbo.check("hud test");
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     HudPass hud(shaders);
     hud.draw(kLines, kW, kH, {}, fbo.id());
     const FloatImage f = readTexture(target, 4);
@@ -82,7 +82,7 @@ TEST_F(HudTest, RestoresTheCallersState) {
     glEnable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ZERO);
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     HudPass hud(shaders);
     hud.draw(kLines, kW, kH, {}, fbo.id());
     GLint viewport[4], fb = 0, src = 0, dst = 0;

@@ -31,7 +31,7 @@ Grid randomSites(int w, int h, int count, std::uint64_t seed) {
 }
 
 TEST_P(JfaBandGlTest, BandEqualsFullAndTheCpuTexelForTexel) {
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     GlFloodKernel<NearestSite> band(shaders, GetParam()), full(shaders, GetParam());
     band.setRegion(FloodRegion::Band, 16);
     const NearestSite crit{true};
@@ -62,7 +62,7 @@ TEST_P(JfaBandGlTest, BandEqualsFullAndTheCpuTexelForTexel) {
 }
 
 TEST_P(JfaBandGlTest, EmptySeedsAndStaleTexturesStayEmpty) {
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     GlFloodKernel<NearestSite> kernel(shaders, GetParam());
     kernel.setRegion(FloodRegion::Band);
     const Plan plan = parsePlan("flood:4", 96, 80);
@@ -82,7 +82,7 @@ TEST_P(JfaBandGlTest, EmptySeedsAndStaleTexturesStayEmpty) {
 // 0, then a full-resolution one) and tiles that change size: every result equals the CPU's full
 // flood.
 TEST_P(JfaBandGlTest, ClearingOnlyTheLastBandLeavesNoStaleCells) {
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     GlFloodKernel<NearestSite> kernel(shaders, GetParam());
     const NearestSite crit{true};
     const int w = 150, h = 110;
@@ -117,7 +117,7 @@ TEST_P(JfaBandGlTest, ClearingOnlyTheLastBandLeavesNoStaleCells) {
 // beyond the view's reach hold the same partial flood), its share is the CPU's, and band runs in
 // between, on the same kernel, still equal the full flood.
 TEST_P(JfaBandGlTest, ViewLimitEqualsTheCpusTexelForTexel) {
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     GlFloodKernel<NearestSite> kernel(shaders, GetParam());
     const NearestSite crit{true};
     const int w = 203, h = 150, tile = 8;
@@ -181,7 +181,7 @@ TEST_P(JfaBandGlTest, ViewLimitEqualsTheCpusTexelForTexel) {
 // plan bounds, every pass's tile list is the CPU's (the computed shares are equal), and the result
 // is the full flood's, texel for texel; the same kernel without the front computes the band.
 TEST_P(JfaBandGlTest, TheFrontListsTheCpusTilesWithTheFullFloodsResult) {
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     GlFloodKernel<NearestSite> kernel(shaders, GetParam());
     const NearestSite crit{true};
     for (auto [w, h] : {std::pair{300, 260}, {97, 513}}) {
@@ -217,7 +217,7 @@ TEST_P(JfaBandGlTest, TheFrontListsTheCpusTilesWithTheFullFloodsResult) {
 }
 
 TEST_P(JfaBandGlTest, BadTilesAreRefused) {
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     GlFloodKernel<NearestSite> kernel(shaders, GetParam());
     EXPECT_THROW(kernel.setRegion(FloodRegion::Band, 12), std::invalid_argument);
     EXPECT_THROW(kernel.setRegion(FloodRegion::Band, 0), std::invalid_argument);

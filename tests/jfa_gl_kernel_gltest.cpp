@@ -53,7 +53,7 @@ Grid randomSeeds(int w, int h, int count, std::uint64_t seed, bool integer) {
 }
 
 TEST_P(JfaGlKernelTest, OneSeedFillsAnyGrid) {
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     GlFloodKernel<NearestSite> kernel(shaders, GetParam());
     for (auto [w, h] : {std::pair{1, 1}, {2, 1}, {7, 3}, {64, 64}, {300, 200}, {513, 7}}) {
         for (const char* spec : {"jfa", "1+jfa", "half:jfa", "doubling"}) {
@@ -68,7 +68,7 @@ TEST_P(JfaGlKernelTest, OneSeedFillsAnyGrid) {
 }
 
 TEST_P(JfaGlKernelTest, FragmentAndComputeAgree) {
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     GlFloodKernel<NearestSite> kernel(shaders, GetParam());
     const GlKernelKind other =
         GetParam() == GlKernelKind::Fragment ? GlKernelKind::Compute : GlKernelKind::Fragment;
@@ -87,7 +87,7 @@ TEST_P(JfaGlKernelTest, FragmentAndComputeAgree) {
 // The reason the GL kernels exist twice: for the same plan, criterion and input the GPU result
 // equals the CPU reference kernel's in every texel (all four floats), for every variant.
 TEST_P(JfaGlKernelTest, EqualsCpuKernelTexelForTexel) {
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     GlFloodKernel<NearestSite> kernel(shaders, GetParam());
     const char* specs[] = {"jfa",      "jfa+1",    "jfa+2", "jfa2",     "1+jfa",      "1+jfa+1",
                            "doubling", "flood:12", "flood", "half:jfa", "half:jfa+2", "half:1+jfa"};
@@ -113,7 +113,7 @@ TEST_P(JfaGlKernelTest, EqualsCpuKernelTexelForTexel) {
 }
 
 TEST_P(JfaGlKernelTest, UntilUnchangedStopsWhenTheCpuKernelDoes) {
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     GlFloodKernel<NearestSite> kernel(shaders, GetParam());
     const Grid seeds = seedPoints(randomIntegerSites(30, 90, 70, 3), 90, 70, true).grid;
     const Plan plan = parsePlan("flood", 90, 70);

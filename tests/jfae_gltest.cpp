@@ -56,7 +56,7 @@ TEST_F(JfaETest, PhasesMatchTheCpuReference) {
     // A box on a ground plane under a large disk light (the JFA-L test's scene): inner and outer
     // penumbrae on the ground, self-shadowing on the box.
     const SceneView s = spotLitBox();
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     RenderSettings hardSettings;
     hardSettings.shadow.size = 128;
 
@@ -193,7 +193,7 @@ Frame renderDefault(std::string_view method, float radius = kTestRadius, bool ob
                     bool midpointFix = true, std::string_view occluderPoints = "edge") {
     Scene scene = loadGltf(defaultAsset());
     scene.light->radius = radius;
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     RenderSettings settings;
     settings.shadow.size = 512;
     settings.method = std::string(method);
@@ -220,7 +220,7 @@ Frame renderDefault(std::string_view method, float radius = kTestRadius, bool ob
 TEST_F(JfaETest, BandEqualsFullWherePyramidQueryReachesTheLastCells) {
     Scene scene = loadGltf(defaultAsset());
     scene.light->radius = kTestRadius;
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     const auto camera = makeCameraView(scene, {}, 1.0f);
     for (const char* method : {"flood-e", "jfa-e"})
         for (const char* passes : {"3", "auto"}) {
@@ -253,7 +253,7 @@ TEST_F(JfaETest, SceneWithoutCastersIsLitEverywhere) {
     Scene scene = groundAndBox(3.0f, {-0.5f, 0.0f, -0.5f}, {0.5f, 1.0f, 0.5f}, {0.3f, -1, 0.2f});
     scene.instances.erase(scene.instances.begin() + 1); // only the ground is left
     scene.light->radius = 1.0f;
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     RenderSettings settings;
     settings.shadow.size = 128;
     settings.method = "jfa-e";
@@ -363,7 +363,7 @@ TEST_F(JfaETest, Goldens) {
 TEST_F(JfaETest, DISABLED_Timing512) {
     Scene scene = loadGltf(defaultAsset());
     scene.light->radius = kTestRadius;
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     for (std::string_view m : {"hard", "jfa-l", "jfa-e", "flood-e"}) {
         RenderSettings settings;
         settings.shadow.size = 512;

@@ -46,7 +46,7 @@ std::size_t nonEmpty(const jfa::Grid& g) {
 
 TEST_F(PenumbraTest, SilhouettesAndFloodMatchTheCpuReference) {
     const SceneView s = spotLitBox(); // a box on a ground plane under a large disk light
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     // Both providers: the flood runs in shadow-map space, whichever warp made it.
     // Band-limited and full-grid floods (jfa/Band.h) must both equal the CPU's full flood.
     for (const char* region : {"band", "full"})
@@ -146,7 +146,7 @@ TEST_F(PenumbraTest, BoundsPyramidMatchesTheCpu) {
     light.center = {0.3f, 12.0f, -0.7f};
     light.normal = glm::normalize(glm::vec3(0.1f, -1.0f, 0.2f));
     light.radius = 1.0f;
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     const gl::Texture texture = jfa::uploadGrid(positions);
     ReceiverBoundsPyramid pyramid(shaders);
     // Then with a region (--flood-region view's seed region): tiles of 16 in a checker; the
@@ -216,7 +216,7 @@ TEST_F(PenumbraTest, BoundsPyramidMatchesTheCpu) {
 TEST_F(PenumbraTest, BandEqualsFullOnTheDefaultScene) {
     Scene scene = loadGltf(defaultAsset());
     scene.light->radius = kTestRadius;
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     const auto camera = makeCameraView(scene, {}, 1.0f);
     for (int mapSize : {256, 512})
         for (const char* method : {"jfa-l", "flood-l"})
@@ -246,7 +246,7 @@ TEST_F(PenumbraTest, BandEqualsFullOnTheDefaultScene) {
 TEST_F(PenumbraTest, ViewLimitGivesTheFullFloodsPicture) {
     Scene scene = loadGltf(defaultAsset());
     scene.light->radius = kTestRadius;
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     const auto camera = makeCameraView(scene, {}, 1.0f);
     // One renderer for every frame (the settings change between them), so that each program is
     // compiled once.
@@ -292,7 +292,7 @@ TEST_F(PenumbraTest, ViewLimitGivesTheFullFloodsPicture) {
 TEST_F(PenumbraTest, ViewLimitPartsMatchTheCpu) {
     Scene scene = loadGltf(defaultAsset());
     scene.light->radius = kTestRadius;
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     const int size = 256, tile = jfa::kDefaultBandTile;
     RenderSettings settings;
     settings.shadow.size = size;
@@ -355,7 +355,7 @@ TEST_F(PenumbraTest, ViewLimitPartsMatchTheCpu) {
 // radii; it has no answer for a TSM-warped or orthographic volume.
 TEST_F(PenumbraTest, WidestPenumbraBoundsEverySeedsRect) {
     SceneView sv = spotLitBox();
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     const int size = 256;
     for (Light::Type type : {Light::Type::Spot, Light::Type::Point})
         for (float radius : {0.5f, 2.0f}) {

@@ -103,7 +103,7 @@ CameraView overhead(const Scene& scene) {
 TEST_F(PoseTest, GpuPoseCastsTheShadowOfTheCpuPose) {
     const Scene scene = animatedScene();
     const CameraView camera = overhead(scene);
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     const int size = 128;
     for (double t : {0.0, 0.5, 1.0}) {
         const Scene cpu = baked(scene, evaluatePose(scene, std::vector<int>{0}, t));
@@ -162,7 +162,7 @@ TEST_F(PoseTest, MotionTargetFollowsTheAnimatedObject) {
     // motion points to where the same surface point was.
     const Scene scene = animatedScene();
     const CameraView camera = overhead(scene);
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     Renderer renderer(shaders, scene, {});
     renderer.setTime(1.0, 0.5);
     renderer.resize(128, 128);

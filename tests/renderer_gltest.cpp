@@ -19,7 +19,7 @@ TEST_F(RendererTest, HardShadowMatchesRayCastReference) {
     // A box lit from the upper left casts its shadow to the right onto the ground; a camera
     // above sees most of that shadow beside the box.
     const Scene scene = groundAndBox(4.0f, {-1, 1, -1}, {1, 2, 1}, {1, -1, 0});
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     RenderSettings settings;
     settings.shadow.size = 512;
     Renderer renderer(shaders, scene, settings);
@@ -69,7 +69,7 @@ TEST_F(RendererTest, HardShadowMatchesRayCastReference) {
 TEST_F(RendererTest, OutputsAreFiniteAndBackgroundIsLit) {
     const Scene scene =
         groundAndBox(2.0f, {-0.5f, 0.5f, -0.5f}, {0.5f, 1.0f, 0.5f}, {0.3f, -1, 0.2f});
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     Renderer renderer(shaders, scene, {});
     renderer.resize(64, 48);
     renderer.render(makeCameraView(scene, {}, 64.0f / 48.0f));
@@ -94,7 +94,7 @@ TEST_F(RendererTest, OutputsAreFiniteAndBackgroundIsLit) {
 // light: the ground seen from above is a receiver when the light shines on it from above, and
 // not when the light is below it; the sky never is.
 TEST_F(RendererTest, ReceiversAreTheVisibleSurfacesFacingTheLight) {
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     CameraSpec spec;
     spec.kind = CameraSpec::Kind::LookAt;
     spec.eye = {0.0f, 6.0f, 6.0f};
@@ -137,7 +137,7 @@ TEST_F(RendererTest, ReceiversAreTheVisibleSurfacesFacingTheLight) {
 TEST_F(RendererTest, EveryMethodDrawsTheSceneFromTheEyeOnce) {
     const Scene scene =
         loadGltf(std::filesystem::path(FLOODLIGHT_SOURCE_DIR) / "assets" / "default.glb");
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     const CameraView camera = makeCameraView(scene, {}, 1.0f);
     int methods = 0;
     for (const MethodDescriptor& m : methodTable()) {
@@ -160,7 +160,7 @@ TEST_F(RendererTest, EveryMethodDrawsTheSceneFromTheEyeOnce) {
 
 TEST_F(RendererTest, ResizeRejectsZeroSize) {
     const Scene scene = groundAndBox(2.0f, {-0.5f, 0.5f, -0.5f}, {0.5f, 1.0f, 0.5f}, {0, -1, 0});
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     Renderer renderer(shaders, scene, {});
     EXPECT_THROW(renderer.resize(0, 10), std::invalid_argument);
     EXPECT_THROW(renderer.render(CameraView{}), std::logic_error);

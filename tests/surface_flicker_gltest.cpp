@@ -26,7 +26,7 @@ CameraView cameraAt(const Scene& scene, glm::vec3 eye) {
 // Two frames of `method` from two cameras, the second knowing the first.
 std::array<FrameImages, 2> twoFrames(const Scene& scene, const std::string& method,
                                      const CameraView& first, const CameraView& second) {
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     RenderSettings s;
     s.method = method;
     s.shadow.size = 512;
@@ -85,7 +85,7 @@ TEST_F(SurfaceFlickerTest, MotionTargetOnlyWhenAskedAndTheFrameIsTheSameWithout)
         groundAndBox(3.0f, {-0.5f, 0.0f, -0.5f}, {0.5f, 1.0f, 0.5f}, {0.4f, -1, 0.3f});
     const CameraView first = cameraAt(scene, {4.0f, 4.0f, 4.0f});
     const CameraView second = cameraAt(scene, {4.6f, 3.8f, 3.3f});
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     for (const char* method : {"hard", "pcss", "jfa-e"}) {
         RenderSettings s;
         s.method = method;

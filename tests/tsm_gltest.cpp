@@ -31,7 +31,7 @@ struct Rendered {
 
 Rendered renderOnce(const Scene& scene, const CameraView& cam, ShadowMapProvider provider, int w,
                     int h, int mapSize) {
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     RenderSettings settings;
     settings.shadow.size = mapSize;
     settings.shadow.provider = provider;
@@ -136,7 +136,7 @@ TEST_F(TsmTest, FootprintMatchesCpuReferenceOnTheGround) {
     spec.yfovDegrees = 50.0f;
     const CameraView cam = makeCameraView(scene, spec, static_cast<float>(w) / h);
     for (ShadowMapProvider provider : {ShadowMapProvider::Uniform, ShadowMapProvider::Tsm}) {
-        const gl::ShaderLibrary shaders;
+        const gl::ShaderLibrary& shaders = fl::test::testShaders();
         RenderSettings settings;
         settings.shadow.size = 256;
         settings.shadow.provider = provider;
@@ -187,7 +187,7 @@ TEST_F(TsmTest, FootprintMatchesCpuReferenceOnTheGround) {
 TEST_F(TsmTest, FlickerIsZeroForUniformAndShrinksWithTheStepForTsm) {
     const Scene scene = loadGltf(defaultAsset());
     const CameraPath path = defaultWalkthrough(makeCameraView(scene, {}, 1.0f), scene.bounds);
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     for (ShadowMapProvider provider : {ShadowMapProvider::Uniform, ShadowMapProvider::Tsm}) {
         RenderSettings settings;
         settings.shadow.size = 512;

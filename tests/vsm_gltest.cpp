@@ -77,7 +77,7 @@ VsmFrame renderVsm(float radius, float blur, float bleed, std::vector<float>* de
                    glm::mat4* lightViewProj = nullptr, glm::mat4* lightView = nullptr) {
     Scene scene = loadGltf(kDefaultAsset);
     scene.light->radius = radius;
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
     RenderSettings s;
     s.shadow.size = 512;
     s.method = "vsm";

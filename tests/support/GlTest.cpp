@@ -40,6 +40,12 @@ void GlTest::TearDown() {
     }
 }
 
+const gl::ShaderLibrary& testShaders() {
+    // Destroyed at exit before the context (constructed after it), which is then still current.
+    static const gl::ShaderLibrary shaders;
+    return shaders;
+}
+
 bool project(const CameraView& cam, int w, int h, glm::vec3 p, int& x, int& y) {
     const glm::vec4 clip = cam.proj * cam.view * glm::vec4(p, 1.0f);
     if (clip.w <= 0.0f) return false;
@@ -51,7 +57,7 @@ bool project(const CameraView& cam, int w, int h, glm::vec3 p, int& x, int& y) {
 
 FrameImages renderFrame(const Scene& scene, const CameraView& camera, std::string_view method,
                         int mapSize, int size) {
-    const gl::ShaderLibrary shaders;
+    const gl::ShaderLibrary& shaders = testShaders();
     RenderSettings settings;
     settings.shadow.size = mapSize;
     settings.method = std::string(method);

@@ -37,6 +37,11 @@ class GlTest : public ::testing::Test {
     static std::unique_ptr<EglContext> context_;
 };
 
+/// The shader library of the test program's context, shared by every test in it: its pool keeps
+/// the programs a test's many renderers build (compiling is most of a GL test's time on llvmpipe).
+/// Only for GlTest's context (a program of one context is not valid in another).
+const gl::ShaderLibrary& testShaders();
+
 /// Pixel (x, y from the top) where world point p lands in a w x h frame, or false if off-screen.
 bool project(const CameraView& cam, int w, int h, glm::vec3 p, int& x, int& y);
 
