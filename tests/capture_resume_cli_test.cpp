@@ -2,6 +2,12 @@
 // gives the same CSV rows (every column but the times), summary and worst-frame pictures as a
 // run without a break, and renders only the frames it lacked; a changed script, a damaged journal
 // and a missing frame file are refused with one message naming what is wrong.
+//
+// The three tests that compare with a run without a break take 30-50 s in release: each starts
+// `floodlight` three to five times (the unbroken run, the stopped runs, the resumes), and each
+// process compiles every method's shaders (about 10 s on llvmpipe; frames are a small part).
+// The script below is already the smallest with what they check: two resolutions, a reference
+// lane and both flooding methods with their counterparts, at 32 x 32 and 48 x 32 pixels.
 
 #include "CliRun.h"
 #include "TestPaths.h"

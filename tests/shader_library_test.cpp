@@ -72,7 +72,10 @@ TEST(ShaderLibrary, InfoLogNamesFileAndLine) {
     EXPECT_EQ(gl::mapInfoLog("1:7(12): error: `x' undeclared\n", files),
               "lib.glsl:7:12: error: `x' undeclared\n");
     EXPECT_EQ(gl::mapInfoLog("0(3) : error C1008: undefined variable\n", files),
-              "main.glsl:3 : error C1008: undefined variable\n");
+              "main.glsl:3: error C1008: undefined variable\n");
+    // NVIDIA's warnings and a line with no message after the reference.
+    EXPECT_EQ(gl::mapInfoLog("1(2) : warning C7050: unused\n0(4)\n", files),
+              "lib.glsl:2: warning C7050: unused\nmain.glsl:4:\n");
     EXPECT_EQ(gl::mapInfoLog("plain line\n", files), "plain line\n");
 }
 

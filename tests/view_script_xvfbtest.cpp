@@ -2,6 +2,11 @@
 // shadow method and every overlay reached from the keyboard and compared with goldens, the HUD
 // drawn, minimise / resize to 0x0 and back, a bad dropped file, --record's camera path, and the
 // animation playback keys.
+//
+// Over 30 s (about a minute in release): ctest runs this program as one test, since every session
+// needs the X server xvfb-run starts for it, and each session is a `floodlight view` process that
+// compiles the shaders of every method it reaches. Most of the time is the soak test, which must
+// go through every method, overlay and map size three times to compare cycle 2 with cycle 3.
 
 #include "ImageCompare.h"
 #include "TestPaths.h"

@@ -95,7 +95,8 @@ bool readNumber(const std::string& s, size_t& pos, size_t& value) {
 
 std::string mapInfoLog(const std::string& log, const std::vector<std::string>& files) {
     // Mesa: "0:12(5): error: ..."; NVIDIA: "0(12) : error ...". Both start with the
-    // source-string number our #line directives assigned to a file.
+    // source-string number our #line directives assigned to a file. Both become
+    // "file:line:..." (Mesa "file:12:5: error: ...", NVIDIA "file:12: error ...").
     std::istringstream in(log);
     std::ostringstream out;
     std::string line;
@@ -114,8 +115,16 @@ std::string mapInfoLog(const std::string& log, const std::vector<std::string>& f
             source < files.size() ? files[source] : "source " + std::to_string(source);
         if (mesa)
             out << file << ":" << lineNo << ":" << column << line.substr(pos + 1) << "\n";
-        else if (nvidia)
-            out << file << ":" << lineNo << line.substr(npos + 1) << "\n";
+        else if (nvidia) {
+            // "0(12) : error C1008: ..." -> "file:12: error C1008: ...", Mesa's shape less the
+            // column (NVIDIA gives none), so that one pattern finds a line on either driver.
+            std::size_t rest = npos + 1;
+            while (rest < line.size() && line[rest] == ' ') ++rest;
+            if (rest < line.size() && line[rest] == ':') ++rest;
+            while (rest < line.size() && line[rest] == ' ') ++rest;
+            out << file << ":" << lineNo << ":" << (rest < line.size() ? " " : "")
+                << line.substr(rest) << "\n";
+        }
         else if (!line.empty())
             out << line << "\n";
     }

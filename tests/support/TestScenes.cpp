@@ -93,7 +93,7 @@ float rayCastVisibility(const Scene& scene, const Light& light, glm::vec3 p, flo
     return 1.0f;
 }
 
-Scene checkerCardOverGround(AlphaMode mode, int cells) {
+Scene checkerCardOverGround(AlphaMode mode, int cells, int texelsPerCell) {
     Scene s = groundAndBox(3.0f, {-0.5f, 0.0f, -0.5f}, {0.5f, 1.0f, 0.5f}, {1.2f, -1, 0.3f});
     // A point light: every method and the ray caster agree on where its hard shadow falls (a
     // directional light's disk stands at a finite distance for the soft methods).
@@ -108,10 +108,10 @@ Scene checkerCardOverGround(AlphaMode mode, int cells) {
     s.meshes[1] = card;
     Image checker;
     checker.name = "checker";
-    checker.width = checker.height = cells;
-    for (int y = 0; y < cells; ++y)
-        for (int x = 0; x < cells; ++x) {
-            const bool solid = (x + y) % 2 == 0;
+    checker.width = checker.height = cells * texelsPerCell;
+    for (int y = 0; y < checker.height; ++y)
+        for (int x = 0; x < checker.width; ++x) {
+            const bool solid = (x / texelsPerCell + y / texelsPerCell) % 2 == 0;
             for (std::uint8_t c : {std::uint8_t{200}, std::uint8_t{120}, std::uint8_t{40},
                                    static_cast<std::uint8_t>(solid ? 255 : 0)})
                 checker.rgba.push_back(c);

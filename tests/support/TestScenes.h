@@ -14,10 +14,10 @@ Mesh box(glm::vec3 lo, glm::vec3 hi);
 Scene groundAndBox(float half, glm::vec3 lo, glm::vec3 hi, glm::vec3 lightDir);
 
 /// groundAndBox's ground under a horizontal double-sided 2 x 2 card at height 1 whose base-colour
-/// texture is a cells x cells checker of alpha 1 and 0 (material `mode`, cutoff 0.5), under a
-/// point light at (-3.6, 4, -0.9): the card's shadow, a checker, falls mostly beside it (over
-/// x in [-0.13, 2.53], z in [-1.03, 1.63]).
-Scene checkerCardOverGround(AlphaMode mode, int cells);
+/// texture is a cells x cells checker of alpha 1 and 0 (material `mode`, cutoff 0.5), each cell
+/// texelsPerCell texels wide, under a point light at (-3.6, 4, -0.9): the card's shadow, a
+/// checker, falls mostly beside it (over x in [-0.13, 2.53], z in [-1.03, 1.63]), magnified 4/3.
+Scene checkerCardOverGround(AlphaMode mode, int cells, int texelsPerCell = 1);
 
 /// A scene and the camera that views it.
 struct SceneView {
