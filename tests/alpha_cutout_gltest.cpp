@@ -82,8 +82,8 @@ TEST_P(AlphaCutoutTest, CheckerCardCastsCheckerShadowWithEveryMethod) {
                 // The card's own border is an alpha edge too: GL's default wrap (repeat) mixes
                 // the opposite border's texels into the last half texel.
                 const glm::vec3 onCard = p + (scene.light->position - p) / scene.light->position.y;
-                skip = skip ||
-                       std::abs(std::max(std::abs(onCard.x), std::abs(onCard.z)) - 1.0f) < kEdgeTexels;
+                skip = skip || std::abs(std::max(std::abs(onCard.x), std::abs(onCard.z)) - 1.0f) <
+                                   kEdgeTexels;
                 int px = 0, py = 0;
                 if (skip || !project(camera, size, size, p, px, py)) continue;
                 const float gpu = frame.visibility.at(px, py, 0);

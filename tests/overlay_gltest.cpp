@@ -344,8 +344,8 @@ TEST_F(OverlayTest, TrapezoidLinesAreTheFitsCorners) {
     // The line colour within one level: 0.9 x 255 = 229.5, which GL may round either way.
     const Rgb yellow = overlay::toBytes({1.0f, 0.9f, 0.1f});
     const auto isYellow = [&](const Rgb& c) {
-        return glm::all(glm::lessThanEqual(glm::abs(glm::ivec3(c) - glm::ivec3(yellow)),
-                                           glm::ivec3(1)));
+        return glm::all(
+            glm::lessThanEqual(glm::abs(glm::ivec3(c) - glm::ivec3(yellow)), glm::ivec3(1)));
     };
     int sampled = 0, found = 0;
     for (std::size_t i = 0; i < 4; ++i)

@@ -124,8 +124,7 @@ std::string mapInfoLog(const std::string& log, const std::vector<std::string>& f
             while (rest < line.size() && line[rest] == ' ') ++rest;
             out << file << ":" << lineNo << ":" << (rest < line.size() ? " " : "")
                 << line.substr(rest) << "\n";
-        }
-        else if (!line.empty())
+        } else if (!line.empty())
             out << line << "\n";
     }
     return out.str();
@@ -176,7 +175,9 @@ Program& Program::operator=(Program&& o) noexcept {
     return *this;
 }
 
-Program::~Program() { giveBack(); }
+Program::~Program() {
+    giveBack();
+}
 
 void Program::giveBack() {
     if (!handle_) return;

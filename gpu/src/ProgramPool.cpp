@@ -16,32 +16,53 @@ struct Shape {
 
 Shape shapeOf(GLenum type) {
     switch (type) {
-    case GL_FLOAT: return {Scalar::Float, 1, 1};
-    case GL_FLOAT_VEC2: return {Scalar::Float, 1, 2};
-    case GL_FLOAT_VEC3: return {Scalar::Float, 1, 3};
-    case GL_FLOAT_VEC4: return {Scalar::Float, 1, 4};
-    case GL_FLOAT_MAT2: return {Scalar::Float, 2, 2};
-    case GL_FLOAT_MAT3: return {Scalar::Float, 3, 3};
-    case GL_FLOAT_MAT4: return {Scalar::Float, 4, 4};
-    case GL_FLOAT_MAT2x3: return {Scalar::Float, 2, 3};
-    case GL_FLOAT_MAT2x4: return {Scalar::Float, 2, 4};
-    case GL_FLOAT_MAT3x2: return {Scalar::Float, 3, 2};
-    case GL_FLOAT_MAT3x4: return {Scalar::Float, 3, 4};
-    case GL_FLOAT_MAT4x2: return {Scalar::Float, 4, 2};
-    case GL_FLOAT_MAT4x3: return {Scalar::Float, 4, 3};
+    case GL_FLOAT:
+        return {Scalar::Float, 1, 1};
+    case GL_FLOAT_VEC2:
+        return {Scalar::Float, 1, 2};
+    case GL_FLOAT_VEC3:
+        return {Scalar::Float, 1, 3};
+    case GL_FLOAT_VEC4:
+        return {Scalar::Float, 1, 4};
+    case GL_FLOAT_MAT2:
+        return {Scalar::Float, 2, 2};
+    case GL_FLOAT_MAT3:
+        return {Scalar::Float, 3, 3};
+    case GL_FLOAT_MAT4:
+        return {Scalar::Float, 4, 4};
+    case GL_FLOAT_MAT2x3:
+        return {Scalar::Float, 2, 3};
+    case GL_FLOAT_MAT2x4:
+        return {Scalar::Float, 2, 4};
+    case GL_FLOAT_MAT3x2:
+        return {Scalar::Float, 3, 2};
+    case GL_FLOAT_MAT3x4:
+        return {Scalar::Float, 3, 4};
+    case GL_FLOAT_MAT4x2:
+        return {Scalar::Float, 4, 2};
+    case GL_FLOAT_MAT4x3:
+        return {Scalar::Float, 4, 3};
     case GL_INT_VEC2:
-    case GL_BOOL_VEC2: return {Scalar::Int, 1, 2};
+    case GL_BOOL_VEC2:
+        return {Scalar::Int, 1, 2};
     case GL_INT_VEC3:
-    case GL_BOOL_VEC3: return {Scalar::Int, 1, 3};
+    case GL_BOOL_VEC3:
+        return {Scalar::Int, 1, 3};
     case GL_INT_VEC4:
-    case GL_BOOL_VEC4: return {Scalar::Int, 1, 4};
-    case GL_UNSIGNED_INT: return {Scalar::Uint, 1, 1};
-    case GL_UNSIGNED_INT_VEC2: return {Scalar::Uint, 1, 2};
-    case GL_UNSIGNED_INT_VEC3: return {Scalar::Uint, 1, 3};
-    case GL_UNSIGNED_INT_VEC4: return {Scalar::Uint, 1, 4};
+    case GL_BOOL_VEC4:
+        return {Scalar::Int, 1, 4};
+    case GL_UNSIGNED_INT:
+        return {Scalar::Uint, 1, 1};
+    case GL_UNSIGNED_INT_VEC2:
+        return {Scalar::Uint, 1, 2};
+    case GL_UNSIGNED_INT_VEC3:
+        return {Scalar::Uint, 1, 3};
+    case GL_UNSIGNED_INT_VEC4:
+        return {Scalar::Uint, 1, 4};
     // int, bool, samplers and images: one int. (Doubles are not used by our shaders; were one
     // added, setting it as an int is a GL error that throwIfErrors reports.)
-    default: return {Scalar::Int, 1, 1};
+    default:
+        return {Scalar::Int, 1, 1};
     }
 }
 
@@ -99,7 +120,9 @@ GLuint ProgramPool::take(const std::string& key) {
     return p;
 }
 
-void ProgramPool::remember(GLuint program) { linked_[program] = snapshot(program); }
+void ProgramPool::remember(GLuint program) {
+    linked_[program] = snapshot(program);
+}
 
 void ProgramPool::giveBack(const std::string& key, GLuint program) {
     idle_[key].push_back(program);
