@@ -76,31 +76,27 @@ void setMatrix(GLuint p, GLint at, const Shape& s, const GLfloat* v) {
     setters[s.columns - 2][s.rows - 2](p, at, 1, GL_FALSE, v);
 }
 
+// glProgramUniform{1,2,3,4}{f,i,ui}v for a vector of `width` components of type T.
+template <typename T, typename Setter>
+void setVector(Setter one, Setter two, Setter three, Setter four, GLuint p, GLint at, int width,
+               const void* bits) {
+    const Setter setters[4] = {one, two, three, four};
+    setters[width - 1](p, at, 1, static_cast<const T*>(bits));
+}
+
 void setValue(GLuint p, GLint at, GLenum type, const void* bits) {
     const Shape s = shapeOf(type);
     if (s.columns > 1) return setMatrix(p, at, s, static_cast<const GLfloat*>(bits));
-    const auto* f = static_cast<const GLfloat*>(bits);
-    const auto* i = static_cast<const GLint*>(bits);
-    const auto* u = static_cast<const GLuint*>(bits);
     switch (s.scalar) {
     case Scalar::Float:
-        (s.rows == 1   ? glProgramUniform1fv
-         : s.rows == 2 ? glProgramUniform2fv
-         : s.rows == 3 ? glProgramUniform3fv
-                       : glProgramUniform4fv)(p, at, 1, f);
-        break;
+        return setVector<GLfloat>(glProgramUniform1fv, glProgramUniform2fv, glProgramUniform3fv,
+                                  glProgramUniform4fv, p, at, s.rows, bits);
     case Scalar::Int:
-        (s.rows == 1   ? glProgramUniform1iv
-         : s.rows == 2 ? glProgramUniform2iv
-         : s.rows == 3 ? glProgramUniform3iv
-                       : glProgramUniform4iv)(p, at, 1, i);
-        break;
+        return setVector<GLint>(glProgramUniform1iv, glProgramUniform2iv, glProgramUniform3iv,
+                                glProgramUniform4iv, p, at, s.rows, bits);
     case Scalar::Uint:
-        (s.rows == 1   ? glProgramUniform1uiv
-         : s.rows == 2 ? glProgramUniform2uiv
-         : s.rows == 3 ? glProgramUniform3uiv
-                       : glProgramUniform4uiv)(p, at, 1, u);
-        break;
+        return setVector<GLuint>(glProgramUniform1uiv, glProgramUniform2uiv, glProgramUniform3uiv,
+                                 glProgramUniform4uiv, p, at, s.rows, bits);
     }
 }
 

@@ -32,7 +32,7 @@ class ProgramPool {
 
     /// An idle program linked from `key`'s sources, its uniforms as just linked; 0 if none.
     GLuint take(const std::string& key);
-    /// Records the just-linked state of `program` (linked from `key`'s sources) for later loans.
+    /// Records the uniforms of `program`, just linked, to put back before each later loan.
     void remember(GLuint program);
     /// Takes back a program a Program no longer needs.
     void giveBack(const std::string& key, GLuint program);
