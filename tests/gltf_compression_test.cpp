@@ -194,7 +194,9 @@ TEST_P(GltfDracoContainers, LoadsAsTheUncompressedMeshWithinTheQuantisationStep)
     const DracoGltf draco = dracoGltf(grid);
     const std::string name = "draco" + suffix(GetParam());
     const Loaded compressed = load(draco.gltf.write(name, GetParam()));
-    const Loaded plain = load(plainGltf(grid).write("draco_plain.gltf"));
+    // One plain file per parameter: ctest runs the two instances at once, in the same folder.
+    const Loaded plain = load(plainGltf(grid).write(
+        "draco_plain_" + std::to_string(static_cast<int>(GetParam())) + ".gltf"));
     const Mesh& a = onlyMesh(compressed);
     const Mesh& b = onlyMesh(plain);
     EXPECT_TRUE(compressed.warnings.empty()) << compressed.warnings.front();
