@@ -207,6 +207,11 @@ TEST(PointIO, MalformedTextNamesTheLine) {
         {false, "1 -1e400\n", "t:1: y '-1e400' overflows double (magnitude above 1.8e308)"},
         {false, "1 1000000000000000000000e-400\n",
          "t:1: y '1000000000000000000000e-400' underflows double (nonzero but below 4.9e-324)"},
+        // Exponents whose sum with the digit count overflowed long long (found by fuzz_points).
+        {false, "3 4e000000009223372036854775807\n",
+         "t:1: y '4e000000009223372036854775807' overflows double (magnitude above 1.8e308)"},
+        {false, "3 4e-9223372036854775807\n",
+         "t:1: y '4e-9223372036854775807' underflows double (nonzero but below 4.9e-324)"},
         {false, "1 \x01\x02\n", "t:1: y '?\?' is not a number"},
         {true, "3 2 0 0 9\n",
          "t:1: header has 5 values; expected "

@@ -144,7 +144,10 @@ bool tooLarge(std::string_view s) {
         if (ex.starts_with('-') || ex.starts_with('+')) ex.remove_prefix(1);
         long long exponent = 0;
         const auto [p, ec] = std::from_chars(ex.data(), ex.data() + ex.size(), exponent);
-        if (ec == std::errc::result_out_of_range) return !negative;
+        // An exponent beyond any count of digits decides alone; adding it to `order` could
+        // overflow (fuzz_points: 4e000000009223372036854775807).
+        constexpr long long kDecisive = 1LL << 50;
+        if (ec == std::errc::result_out_of_range || exponent > kDecisive) return !negative;
         order += negative ? -exponent : exponent;
     }
     return order > 0;
