@@ -304,6 +304,48 @@ TEST(RobustnessCli, AFailedCommandLeavesNoOutputs) {
     EXPECT_TRUE(fs::exists(d / "steps"));
 }
 
+// FLOODLIGHT_EGL_DEVICE (issue 28): a device that does not exist, or a value that is not an
+// index, is a usage error (exit 2) whose message lists the devices found with their renderers;
+// a device that exists is used and named on the context line.
+Outcome renderOnDevice(const std::string& device, const fs::path& out) {
+    return runCommand("FLOODLIGHT_EGL_DEVICE=" + device + " timeout 120 " +
+                      std::string(FLOODLIGHT_BINARY) + " render --width 16 --height 16 --out " +
+                      out.string());
+}
+
+TEST(RobustnessCli, AnEglDeviceThatDoesNotExistListsTheDevicesFound) {
+    const Outcome r = renderOnDevice("99", dir());
+    EXPECT_EQ(r.code, 2) << r.output;
+    const std::string head = "FLOODLIGHT_EGL_DEVICE=99: no such EGL device; ";
+    const std::size_t at = r.output.find(head);
+    ASSERT_NE(at, std::string::npos) << r.output;
+    const int found = std::stoi(r.output.substr(at + head.size()));
+    EXPECT_GE(found, 1) << "this machine renders headless, so EGL enumerates a device\n"
+                        << r.output;
+    for (int i = 0; i < found; ++i) // one line a device, with a renderer (or why none opens)
+        EXPECT_NE(r.output.find("\n  " + std::to_string(i) + ": "), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("GL error"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(dir() / "frame.png"));
+}
+
+TEST(RobustnessCli, AnEglDeviceThatIsNotAnIndexIsAUsageError) {
+    for (const char* bad : {"abc", "-1", "1x", "99999999999999999999"}) {
+        const Outcome r = renderOnDevice(bad, dir());
+        EXPECT_EQ(r.code, 2) << bad << "\n" << r.output;
+        EXPECT_NE(
+            r.output.find("FLOODLIGHT_EGL_DEVICE=" + std::string(bad) + ": not a device index"),
+            std::string::npos)
+            << r.output;
+    }
+}
+
+TEST(RobustnessCli, TheFirstEglDeviceIsUsedWhenNamed) {
+    const Outcome r = renderOnDevice("0", dir());
+    ASSERT_EQ(r.code, 0) << r.output;
+    EXPECT_NE(r.output.find("context: EGL device 0, OpenGL"), std::string::npos) << r.output;
+    EXPECT_TRUE(fs::exists(dir() / "frame.png")) << r.output;
+}
+
 // Messages name the input and the problem, not our functions (SvgPicture::render:,
 // randomIntegerSites:) or raw "filesystem error" text.
 TEST(RobustnessCli, MessagesNameTheInputNotTheFunction) {

@@ -4,6 +4,7 @@
 #include "Commands.h"
 
 #include <gpu/Gl.h>
+#include <renderer/context/EglContext.h>
 #include <renderer/context/GlfwWindow.h>
 
 #include <iostream>
@@ -12,7 +13,9 @@ int main(int argc, char** argv) {
     using namespace fl::app;
     CLI::App app{"Floodlight: real-time soft shadows and jump flooding (Rong 2007).\n"
                  "Without a subcommand: opens the default scene in a window when a display is\n"
-                 "available, otherwise renders it headless into captures/."};
+                 "available, otherwise renders it headless into captures/.\n"
+                 "Headless commands print the GL context they got on their first line;\n"
+                 "FLOODLIGHT_EGL_DEVICE=N makes them use EGL device N (0, 1, ...) and no other."};
     app.set_help_all_flag("--help-all", "Help for every subcommand");
     const Runner render = addRenderCommand(app);
     const Runner view = addViewCommand(app);
@@ -50,6 +53,9 @@ int main(int argc, char** argv) {
     } catch (const InputError& e) {
         std::cerr << "error: " << e.what() << "\n";
         return 1;
+    } catch (const fl::EglDeviceError& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return 2;
     } catch (const fl::gl::GlError& e) {
         std::cerr << "GL error: " << e.what() << "\n";
         return 1;

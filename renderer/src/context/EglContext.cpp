@@ -3,6 +3,9 @@
 
 #include <epoxy/egl.h>
 
+#include <algorithm>
+#include <charconv>
+#include <cstdlib>
 #include <cstring>
 #include <sstream>
 #include <vector>
@@ -30,29 +33,52 @@ struct Candidate {
     std::string platform;
 };
 
+// The enumerated EGL devices, or none (with the reason in `failures`) when the client offers no
+// device enumeration.
+std::vector<EGLDeviceEXT> eglDevices(const char* client, std::vector<std::string>& failures) {
+    if (!hasExtension(client, "EGL_EXT_platform_device") ||
+        !hasExtension(client, "EGL_EXT_device_enumeration")) {
+        failures.push_back("EGL_EXT_platform_device not offered by the EGL client");
+        return {};
+    }
+    EGLint count = 0;
+    if (!eglQueryDevicesEXT(0, nullptr, &count)) {
+        failures.push_back(eglErrorText("eglQueryDevicesEXT"));
+        return {};
+    }
+    std::vector<EGLDeviceEXT> devices(static_cast<std::size_t>(std::max(count, 0)));
+    if (count > 0 && !eglQueryDevicesEXT(count, devices.data(), &count)) {
+        failures.push_back(eglErrorText("eglQueryDevicesEXT"));
+        return {};
+    }
+    devices.resize(static_cast<std::size_t>(std::max(count, 0)));
+    return devices;
+}
+
+// Device `index`'s display as a candidate, or nothing (reason in `failures`).
+void addDevice(std::vector<Candidate>& out, EGLDeviceEXT device, std::size_t index,
+               std::vector<std::string>& failures) {
+    EGLDisplay d = eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, device, nullptr);
+    if (d != EGL_NO_DISPLAY)
+        out.push_back({d, "EGL device " + std::to_string(index)});
+    else
+        failures.push_back("EGL device " + std::to_string(index) + ": " +
+                           eglErrorText("eglGetPlatformDisplayEXT(device)"));
+}
+
 // Every display worth trying, in order of preference: each enumerated device, then surfaceless.
-std::vector<Candidate> candidateDisplays(std::vector<std::string>& failures) {
+// With a chosen device (FLOODLIGHT_EGL_DEVICE), only that one: a user who names a device wants
+// its numbers, not a silent fallback to another.
+std::vector<Candidate> candidateDisplays(std::optional<std::size_t> chosen,
+                                         std::vector<std::string>& failures) {
     std::vector<Candidate> out;
     const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
-    if (hasExtension(client, "EGL_EXT_platform_device") &&
-        hasExtension(client, "EGL_EXT_device_enumeration")) {
-        EGLint count = 0;
-        EGLDeviceEXT devices[16];
-        if (eglQueryDevicesEXT(16, devices, &count)) {
-            for (EGLint i = 0; i < count; ++i) {
-                EGLDisplay d =
-                    eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
-                if (d != EGL_NO_DISPLAY)
-                    out.push_back({d, "EGL device " + std::to_string(i)});
-                else
-                    failures.push_back(eglErrorText("eglGetPlatformDisplayEXT(device)"));
-            }
-        } else {
-            failures.push_back(eglErrorText("eglQueryDevicesEXT"));
-        }
-    } else {
-        failures.push_back("EGL_EXT_platform_device not offered by the EGL client");
+    const std::vector<EGLDeviceEXT> devices = eglDevices(client, failures);
+    if (chosen) {
+        if (*chosen < devices.size()) addDevice(out, devices[*chosen], *chosen, failures);
+        return out;
     }
+    for (std::size_t i = 0; i < devices.size(); ++i) addDevice(out, devices[i], i, failures);
     if (hasExtension(client, "EGL_MESA_platform_surfaceless")) {
         EGLDisplay d =
             eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
@@ -101,9 +127,61 @@ EGLContext createContext(EGLDisplay display, bool debug, std::string& failure) {
 
 } // namespace
 
-std::unique_ptr<EglContext> EglContext::create(bool debug) {
+std::optional<std::size_t> chosenEglDevice() {
+    const char* text = std::getenv(kEglDeviceVariable);
+    if (text == nullptr || *text == '\0') return std::nullopt;
+    std::size_t index = 0;
+    const char* end = text + std::strlen(text);
+    const auto [p, ec] = std::from_chars(text, end, index);
+    if (ec != std::errc() || p != end || index > 1024)
+        throw EglDeviceError(std::string(kEglDeviceVariable) + "=" + text +
+                             ": not a device index (0, 1, ...; unset: the first that works)");
+    return index;
+}
+
+std::vector<EglDeviceInfo> listEglDevices() {
     std::vector<std::string> failures;
-    for (const Candidate& c : candidateDisplays(failures)) {
+    const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+    const std::vector<EGLDeviceEXT> devices = eglDevices(client, failures);
+    std::vector<EglDeviceInfo> out;
+    for (std::size_t i = 0; i < devices.size(); ++i) {
+        EglDeviceInfo info{i, ""};
+        EGLDisplay d = eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
+        EGLint major = 0, minor = 0;
+        if (d == EGL_NO_DISPLAY || !eglInitialize(d, &major, &minor)) {
+            info.renderer = "(cannot be opened: " + eglErrorText("eglInitialize") + ")";
+            out.push_back(info);
+            continue;
+        }
+        std::string failure;
+        EGLContext ctx = createContext(d, false, failure);
+        if (ctx != EGL_NO_CONTEXT && eglMakeCurrent(d, EGL_NO_SURFACE, EGL_NO_SURFACE, ctx)) {
+            info.renderer = gl::rendererName();
+            eglMakeCurrent(d, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+        } else {
+            info.renderer = "(no OpenGL 4.5 core context: " +
+                            (failure.empty() ? eglErrorText("eglMakeCurrent") : failure) + ")";
+        }
+        if (ctx != EGL_NO_CONTEXT) eglDestroyContext(d, ctx);
+        eglTerminate(d);
+        out.push_back(info);
+    }
+    return out;
+}
+
+std::unique_ptr<EglContext> EglContext::create(bool debug) {
+    const std::optional<std::size_t> chosen = chosenEglDevice();
+    std::vector<std::string> failures;
+    const std::vector<Candidate> candidates = candidateDisplays(chosen, failures);
+    if (chosen && candidates.empty() && failures.empty()) {
+        const std::vector<EglDeviceInfo> found = listEglDevices();
+        std::string msg = std::string(kEglDeviceVariable) + "=" + std::to_string(*chosen) +
+                          ": no such EGL device; " + std::to_string(found.size()) + " found";
+        for (const EglDeviceInfo& d : found)
+            msg += "\n  " + std::to_string(d.index) + ": " + d.renderer;
+        throw EglDeviceError(msg);
+    }
+    for (const Candidate& c : candidates) {
         EGLint major = 0, minor = 0;
         if (!eglInitialize(c.display, &major, &minor)) {
             failures.push_back(c.platform + ": " + eglErrorText("eglInitialize"));
@@ -129,7 +207,9 @@ std::unique_ptr<EglContext> EglContext::create(bool debug) {
         out->description_ = describeCurrentGl(c.platform);
         return out;
     }
-    std::string msg = "no headless OpenGL 4.5 core context could be created:";
+    std::string msg = chosen ? std::string(kEglDeviceVariable) + "=" + std::to_string(*chosen) +
+                                   ": no OpenGL 4.5 core context on that device:"
+                             : "no headless OpenGL 4.5 core context could be created:";
     for (const std::string& f : failures) msg += "\n  " + f;
     throw gl::GlError(msg);
 }
