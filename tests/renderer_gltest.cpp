@@ -166,5 +166,35 @@ TEST_F(RendererTest, ResizeRejectsZeroSize) {
     EXPECT_THROW(renderer.render(CameraView{}), std::logic_error);
 }
 
+// A frame or shadow map beyond the driver's largest texture is one message naming both sizes,
+// with the limit read from GL (llvmpipe: 16384; other drivers differ), before any allocation.
+TEST_F(RendererTest, SizesBeyondTheDriversLargestTextureNameBothSizes) {
+    const Scene scene = groundAndBox(2.0f, {-0.5f, 0.5f, -0.5f}, {0.5f, 1.0f, 0.5f}, {0, -1, 0});
+    const int limit = gl::maxTextureSize();
+    ASSERT_GT(limit, 0);
+    const std::string max = std::to_string(limit) + "x" + std::to_string(limit);
+    Renderer renderer(fl::test::testShaders(), scene, {});
+    try {
+        renderer.resize(limit + 1, 16);
+        ADD_FAILURE() << "a frame wider than the largest texture was accepted";
+    } catch (const std::invalid_argument& e) {
+        const std::string m = e.what();
+        EXPECT_NE(m.find("frame " + std::to_string(limit + 1) + "x16"), std::string::npos) << m;
+        EXPECT_NE(m.find(max), std::string::npos) << m;
+    }
+    renderer.resize(16, 16); // the renderer is still usable
+    RenderSettings s = renderer.settings();
+    s.shadow.size = 2 * limit;
+    renderer.setSettings(s);
+    try {
+        renderer.render(makeCameraView(scene, {}, 1.0f));
+        ADD_FAILURE() << "a shadow map larger than the largest texture was accepted";
+    } catch (const std::invalid_argument& e) {
+        const std::string m = e.what();
+        EXPECT_NE(m.find("shadow map " + std::to_string(2 * limit)), std::string::npos) << m;
+        EXPECT_NE(m.find(max), std::string::npos) << m;
+    }
+}
+
 } // namespace
 } // namespace fl::test

@@ -215,9 +215,8 @@ void writeOutputs(const VoronoiOptions& o, const jfa::Grid& g, const jfa::ExactF
 constexpr int kMaxGridSide = 16384;
 
 void checkGridSize(int w, int h, const std::string& what, bool gl) {
-    GLint glMax = kMaxGridSide;
-    if (gl) glGetIntegerv(GL_MAX_TEXTURE_SIZE, &glMax);
-    const int limit = std::min(kMaxGridSide, int(glMax));
+    const int glMax = gl ? gl::maxTextureSize() : kMaxGridSide;
+    const int limit = std::min(kMaxGridSide, glMax);
     if (w < 1 || h < 1 || w > limit || h > limit)
         throw InputError(what + ": grid " + std::to_string(w) + "x" + std::to_string(h) +
                          " is outside 1.." + std::to_string(limit) + " per side" +

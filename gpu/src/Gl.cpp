@@ -3,6 +3,7 @@
 
 #include <mutex>
 #include <sstream>
+#include <stdexcept>
 #include <vector>
 
 namespace fl::gl {
@@ -183,6 +184,21 @@ void throwIfErrors(const char* where) {
 std::string rendererName() {
     const auto* s = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
     return s ? s : "unknown";
+}
+
+int maxTextureSize() {
+    GLint size = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &size);
+    return size;
+}
+
+void checkTextureSize(const std::string& what, int width, int height) {
+    const int limit = maxTextureSize();
+    if (width > limit || height > limit)
+        throw std::invalid_argument(
+            what + " " + std::to_string(width) + "x" + std::to_string(height) +
+            " is larger than this driver's largest texture, " + std::to_string(limit) + "x" +
+            std::to_string(limit) + " (GL_MAX_TEXTURE_SIZE, " + rendererName() + ")");
 }
 
 bool isSoftwareRenderer() {

@@ -151,6 +151,7 @@ void Renderer::resize(int width, int height) {
     if (width <= 0 || height <= 0)
         throw std::invalid_argument("render size must be positive, got " + std::to_string(width) +
                                     "x" + std::to_string(height));
+    gl::checkTextureSize("frame", width, height);
     surfacesPass_.resize(width, height);
     for (const std::unique_ptr<ShadowMethod>& m : methods_)
         if (m) m->resize(width, height);

@@ -165,6 +165,11 @@ void installDebugOutput();
 void throwIfErrors(const char* where);
 /// The GL_RENDERER string of the current context.
 std::string rendererName();
+/// GL_MAX_TEXTURE_SIZE of the current context: the largest side a frame or map can have here.
+int maxTextureSize();
+/// Throws std::invalid_argument naming `what`, its size and this driver's largest texture side
+/// when `width` or `height` exceeds maxTextureSize().
+void checkTextureSize(const std::string& what, int width, int height);
 /// True on Mesa's software rasterisers (timer queries unreliable for compute there).
 bool isSoftwareRenderer();
 

@@ -28,6 +28,7 @@ gl::Texture makeShadowDepthTexture(int size) {
 
 void ShadowMapPass::resize(int size) {
     if (depth_ && depth_.width() == size) return;
+    gl::checkTextureSize("shadow map", size, size);
     depth_ = makeShadowDepthTexture(size);
     fbo_ = gl::Framebuffer::withTargets({}, &depth_, "shadow map");
     receivers_ = gl::Texture(GL_RGBA32F, size, size);

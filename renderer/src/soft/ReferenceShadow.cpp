@@ -73,8 +73,7 @@ void ReferenceShadowPass::resize(int width, int height, int mapSize) {
 ReferenceShadowPass::Outputs ReferenceShadowPass::execute(const Inputs& in, gl::PassTimer* timer) {
     const std::vector<glm::vec3> samples =
         referenceDiskSamples(in.light, in.settings.samples, in.settings.pattern);
-    GLint maxSize = 0;
-    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+    const int maxSize = gl::maxTextureSize();
     if (in.settings.mapSize < 16 || in.settings.mapSize > maxSize)
         throw std::invalid_argument("reference map size " + std::to_string(in.settings.mapSize) +
                                     " is outside [16, " + std::to_string(maxSize) + "]");
