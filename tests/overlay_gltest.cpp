@@ -48,6 +48,9 @@ struct Frame {
         settings.shadow.provider = provider;
         settings.method = std::string(method);
         settings.options.set(floodPassesOption().flag, passes);
+        // As the window and `render --overlay` do for the overlays that show the whole map
+        // (the default flood region, view, is exact only where the eye's pixels read).
+        settings.wholeFlood = true;
         renderer = std::make_unique<Renderer>(shaders, scene, settings);
         renderer->resize(kSize, kSize);
         camera = makeCameraView(scene, {}, 1.0f);
@@ -219,6 +222,30 @@ TEST_F(OverlayTest, FloodPassesMatchTruncatedCpuPlan) {
         if (k == 3) expectGolden(cap.image, "overlay_256_flood-passes-3");
     }
     EXPECT_TRUE(s.overlays->lastResult().grid == jfa::readGrid(*s.flood().flooded));
+}
+
+// The default flood region, view, finds seeds and floods JFA-L's map only around what the eye's
+// pixels read; a frame for an overlay that shows the whole map (RenderSettings::wholeFlood) floods
+// the band, unless the user chose a region.
+TEST_F(OverlayTest, OverlaysOfTheWholeMapGetTheBand) {
+    for (OverlayMode m : allOverlayModes())
+        EXPECT_EQ(overlayReadsWholeFlood(m),
+                  m == OverlayMode::Seeds || m == OverlayMode::PenumbraMap ||
+                      m == OverlayMode::FloodPasses || m == OverlayMode::Voronoi ||
+                      m == OverlayMode::DistanceTransform || m == OverlayMode::JfaVsFlood)
+            << overlayName(m);
+    Frame s("jfa-l");
+    EXPECT_EQ(s.flood().region, jfa::FloodRegion::Band);
+    RenderSettings st = s.renderer->settings();
+    st.wholeFlood = false;
+    s.renderer->setSettings(st);
+    s.renderer->render(s.camera);
+    EXPECT_EQ(s.flood().region, jfa::FloodRegion::View) << "the default region";
+    st.wholeFlood = true;
+    st.options.set(floodRegionOption().flag, "view");
+    s.renderer->setSettings(st);
+    s.renderer->render(s.camera);
+    EXPECT_EQ(s.flood().region, jfa::FloodRegion::View) << "the user's choice stands";
 }
 
 // JFA vs standard flooding: the reference equals the CPU standard flood of the same seeds, and

@@ -52,6 +52,8 @@ ProviderResult renderWith(const gl::ShaderLibrary& shaders, const Scene& scene,
                           const CameraView& camera, RenderSettings settings, int width, int height,
                           const RenderRequest& request) {
     settings.diagnostics = true;
+    if (!request.overlay.empty())
+        settings.wholeFlood = overlayReadsWholeFlood(*parseOverlay(request.overlay));
     // A slow frame (the ray tracer: seconds to minutes) shows how far it is, on a terminal.
     if (::isatty(STDOUT_FILENO)) {
         const std::string name = settings.method;

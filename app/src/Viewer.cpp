@@ -289,6 +289,12 @@ void Viewer::renderFrame(glm::ivec2 size, float dt) {
     }
     const CameraView view =
         controller_->view(static_cast<float>(size.x) / static_cast<float>(size.y));
+    if (const bool whole = overlayReadsWholeFlood(overlayMode_);
+        whole != renderer_->settings().wholeFlood) {
+        RenderSettings s = renderer_->settings();
+        s.wholeFlood = whole;
+        renderer_->setSettings(s);
+    }
     const bool statsFrame =
         referenceOf(renderer_->settings().method) &&
         (statsRequested_ || (options_.statsEvery > 0 && rendered_ >= nextStatsFrame_));

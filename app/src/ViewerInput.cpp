@@ -21,7 +21,7 @@ constexpr KeyBinding kBindings[] = {
     {GLFW_KEY_RIGHT_BRACKET, false, Action::ShadowMapLarger, "[ / ]", "shadow map size / 2, x 2 (256..4096)"},
     {GLFW_KEY_MINUS, false, Action::FewerPasses, "- / =", "fewer / more JFA passes (reach 2^n - 1 texels)"},
     {GLFW_KEY_EQUAL, false, Action::MorePasses, "- / =", "fewer / more JFA passes (reach 2^n - 1 texels)"},
-    {GLFW_KEY_B, false, Action::NextFloodRegion, "B", "flooding: band -> full -> view (--flood-region; the same picture)"},
+    {GLFW_KEY_B, false, Action::NextFloodRegion, "B", "flooding: view -> band -> full (--flood-region; the same picture)"},
     {GLFW_KEY_G, false, Action::Stats, "G", "compare with standard flooding now (jfa-l, jfa-e; also every 30+ frames)"},
     {GLFW_KEY_O, false, Action::NextOverlay, "O / Shift+O", "next / previous overlay"},
     {GLFW_KEY_O, true, Action::PrevOverlay, "O / Shift+O", "next / previous overlay"},

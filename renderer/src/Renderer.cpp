@@ -180,7 +180,16 @@ void Renderer::renderFrame(const CameraView& camera, const CameraView* previous)
     const SurfacesPass::Outputs surfaces =
         surfacesPass_.execute({scene_, camera, light_, previous});
     timer_.end();
-    // 3. The shadow method: visibility per pixel (it times its own phases).
+    // 3. The shadow method: visibility per pixel (it times its own phases). A reader of the
+    //    whole flood (an overlay that shows the map) gets the band where --flood-region is
+    //    unset: the default, view, is exact only where the eye's pixels read the map.
+    MethodOptions wholeFlood;
+    const bool band = settings_.wholeFlood && !settings_.options.has(floodRegionOption().flag);
+    if (band) {
+        wholeFlood = settings_.options;
+        wholeFlood.set(floodRegionOption().flag,
+                       std::string(jfa::floodRegionName(jfa::FloodRegion::Band)));
+    }
     const FrameInputs in{scene_,
                          camera,
                          light_,
@@ -191,7 +200,7 @@ void Renderer::renderFrame(const CameraView& camera, const CameraView* previous)
                          shadow,
                          surfaces,
                          method,
-                         settings_.options,
+                         band ? wholeFlood : settings_.options,
                          &timer_,
                          settings_.progress ? &settings_.progress : nullptr};
     const gl::Texture& methodVisibility = impl.execute(in);

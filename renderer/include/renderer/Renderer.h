@@ -42,6 +42,10 @@ struct RenderSettings {
     MethodOptions options;       // the methods' options by flag; unset ones take their defaults
     gl::TimingMode timing = gl::TimingMode::Auto;
     bool diagnostics = false; // measure the shadow map after shading (ShadowDiagnosticsPass)
+    /// Something reads the flood at every texel, not only where the eye's pixels look (the
+    /// overlays that show the map: overlayReadsWholeFlood): an unset --flood-region floods the
+    /// band instead of its default, view.
+    bool wholeFlood = false;
     /// Set by a command that shows progress: slow methods (the ray tracer) call it during a
     /// frame with the share done, in [0, 1], on the rendering thread.
     std::function<void(double)> progress;

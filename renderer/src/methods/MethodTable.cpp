@@ -48,15 +48,16 @@ constexpr MethodOption kFloodRegion{
     "--flood-region",
     "floodRegion",
     OptionKind::Choice,
-    "band",
-    "band: flood only the tiles the occluders' penumbrae can reach (the same result, texel for "
-    "texel); full: every texel of the grid; view: jfa-l, flood-l find silhouettes and flood "
-    "only around what the eye's pixels read (the picture of full at the same passes, pixel for "
-    "pixel; the penumbra map is exact only there; auto counts only the penumbrae that can reach "
-    "the view, so it may take fewer passes than band); jfa-e, flood-e flood the band",
+    "view",
+    "view: jfa-l, flood-l find silhouettes and flood only around what the eye's pixels read "
+    "(the picture of full at the same passes, pixel for pixel; the penumbra map is exact only "
+    "there, so the overlays that show the map flood the band; auto counts only the penumbrae "
+    "that can reach the view, so it may take fewer passes than band); jfa-e, flood-e flood the "
+    "band; band: flood only the tiles the occluders' penumbrae can reach (the same result as "
+    "full, texel for texel); full: every texel of the grid",
     0,
     0,
-    "band|full|view"};
+    "view|band|full"};
 constexpr MethodOption kFullJfa{
     "--full-jfa", "fullJfa", OptionKind::Flag, "false",
     "Full JFA: as many passes as the grid allows (log2 of the shadow-map size for -l, of the "

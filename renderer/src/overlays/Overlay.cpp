@@ -28,6 +28,11 @@ constexpr std::array<std::string_view, kModes.size()> kNames{
     "none",    "shadow-map",         "seeds",        "penumbra-map", "flood-passes",
     "voronoi", "distance-transform", "jfa-vs-flood", "trapezoid",    "playground",
     "delaunay"};
+// The overlays that draw the frame's seeds or flood at every texel (the seeds, soft->flooded,
+// or a flood of the seeds), same order as kModes. The view region limits both seeds and flood
+// to what the eye reads, so these frames flood the band.
+constexpr std::array<bool, kModes.size()> kWholeFlood{false, false, true,  true,  true, true,
+                                                      true,  true,  false, false, false};
 // Display names of overlay::variantSpecs(), same order.
 constexpr std::array<std::string_view, 6> kVariants{"JFA",   "JFA+1", "JFA+2",
                                                     "JFA^2", "1+JFA", "half-res JFA"};
@@ -41,6 +46,9 @@ std::string_view overlayName(OverlayMode m) {
 }
 std::span<const OverlayMode> allOverlayModes() {
     return kModes;
+}
+bool overlayReadsWholeFlood(OverlayMode m) {
+    return kWholeFlood[static_cast<std::size_t>(m)];
 }
 std::optional<OverlayMode> parseOverlay(std::string_view name) {
     for (std::size_t i = 0; i < kNames.size(); ++i)

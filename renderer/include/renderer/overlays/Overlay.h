@@ -41,6 +41,11 @@ std::string_view overlayName(OverlayMode m);
 std::span<const OverlayMode> allOverlayModes();
 /// Parses an overlay name; nullopt if unknown.
 std::optional<OverlayMode> parseOverlay(std::string_view name);
+/// True for the overlays that show the frame's seeds or flood at every texel (seeds, penumbra
+/// map, flood passes, Voronoi, distance transform, JFA vs flood): the frame they draw must
+/// flood the band (RenderSettings::wholeFlood), since the default flood region, view, limits
+/// seeds and flood to where the eye's pixels read.
+bool overlayReadsWholeFlood(OverlayMode m);
 
 /// What the window's keys/mouse set for the overlays.
 struct OverlayControls {
