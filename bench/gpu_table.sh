@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The frame-cost table (issue 28; docs/BENCHMARKS.md "GPU frame costs"): for every method x scene x
-# resolution, the median whole frame and the median flood, in ms, from floodlight_bench on whatever
+# resolution, the median whole frame and the median flood, in ms, and the MB of render targets the
+# frame writes (from the formats: floodlight_bench's "written"), from floodlight_bench on whatever
 # GPU the EGL context gets. The first line names the GL renderer. Numbers from two runs differ with
 # the machine's clocks and load: compare methods within one table, not tables across runs.
 #
@@ -60,7 +61,7 @@ soft=0; grep -qiE 'llvmpipe|softpipe' <<<"$context" && soft=1
 [ -n "$frames" ] || { [ $soft = 1 ] && frames=5 || frames=20; }
 
 echo "renderer: $context"
-echo "floodlight_bench, $frames frames after 3 warm-up; cells: median frame ms (median flood ms); $(date -u +%Y-%m-%dT%H:%MZ)"
+echo "floodlight_bench, $frames frames after 3 warm-up; cells: median frame ms (median flood ms), MB of targets the frame writes; $(date -u +%Y-%m-%dT%H:%MZ)"
 
 scene_args() {
   case "$1" in
@@ -77,6 +78,12 @@ median_of() {
   awk -v n="$2" '{ line = $0; sub(/^ +/, "", line)
                    if (index(line, n " ") == 1 && $0 ~ / min +[0-9.]+ ms +median/) {
                      for (i = 1; i <= NF; ++i) if ($i == "median") { print $(i + 1); exit } } }' <<<"$1" |
+    grep . || echo "-"
+}
+# written_of OUTPUT: the MB the frame row says the frame writes ("-" when it has none).
+written_of() {
+  awk '{ line = $0; sub(/^ +/, "", line)
+         if (index(line, "frame ") == 1) for (i = 1; i <= NF; ++i) if ($i == "written") { print $(i + 1); exit } }' <<<"$1" |
     grep . || echo "-"
 }
 min_of() {
@@ -105,7 +112,7 @@ for scene in "${scene_list[@]}"; do
       if out=$(timeout "$timeout_s" "${bench[@]}" --method $m $extra --width "${wh%x*}" \
           --height "${wh#*x}" --shadow-map-size "$map" --frames "$frames" --warmup 3 2>&1); then
         fm=$(median_of "$out" frame); fl=$(median_of "$out" flood)
-        line+=" $fm ($fl) |"
+        line+=" $fm ($fl), $(written_of "$out") MB |"
         [ -z "$raw" ] || echo "$scene | $wh map $map | $m | frame $(min_of "$out" frame) $fm | flood $(min_of "$out" flood) $fl" >>"$raw"
       else
         rc=$?; [ $rc = 124 ] && line+=" timeout |" || line+=" error |"

@@ -1,6 +1,7 @@
-// Frame and per-pass times of the renderer on a scene, with peak memory: hard shadows by default,
-// any shadow method with --method (e.g. the JFA-L / JFA-E flood time against the scene size,
-// thesis Fig. 5.10). Prints min and median over --frames frames after --warmup frames, all in
+// Frame and per-pass times of the renderer on a scene, with peak memory and the bytes of render
+// targets and images each pass writes (computed from their formats: fl::writtenBytes): hard shadows
+// by default, any shadow method with --method (e.g. the JFA-L / JFA-E flood time against the scene
+// size, thesis Fig. 5.10). Prints min and median over --frames frames after --warmup frames, all in
 // one process/context. Animated scenes play --animation from --time, advanced by 1/--animate
 // seconds each frame (the cost of skinning); --static bakes that pose into plain meshes first
 // (the same picture with no skinning at all, the baseline it is compared with).
@@ -18,6 +19,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -239,17 +241,30 @@ int main(int argc, char** argv) {
                   << frames << " frames after " << warmup
                   << " warm-up, timing: " << renderer.timer().modeName() << "\n"
                   << std::fixed << std::setprecision(2);
-        const auto row = [](const std::string& name, const std::vector<double>& v) {
+        // Bytes written, from the last frame (the same every frame for a held camera).
+        const std::vector<std::pair<std::string, std::int64_t>> written =
+            fl::writtenBytes(renderer);
+        std::int64_t frameBytes = 0;
+        for (const auto& [n, b] : written) frameBytes += b;
+        const auto row = [](const std::string& name, const std::vector<double>& v,
+                            std::optional<std::int64_t> bytes) {
             std::cout << "  " << std::left << std::setw(12) << name << " min " << std::right
                       << std::setw(8) << fl::minimum(v) << " ms   median " << std::setw(8)
-                      << fl::median(v) << " ms\n";
+                      << fl::median(v) << " ms";
+            if (bytes) std::cout << "   written " << std::setw(8) << double(*bytes) / 1e6 << " MB";
+            std::cout << "\n";
+        };
+        const auto bytesOf = [&written](const std::string& name) {
+            for (const auto& [n, b] : written)
+                if (n == name) return b;
+            return std::int64_t{0};
         };
         // Phases by name (as before this bench used the runner), then the frame.
         std::vector<std::string> names = fl::phaseNames({&times});
         std::sort(names.begin(), names.end());
-        for (const std::string& name : names) row(name, times.phaseSeries(name));
-        row("frame", times.frameMs());
-        if (!poseMs.empty()) row("pose (CPU)", poseMs);
+        for (const std::string& name : names) row(name, times.phaseSeries(name), bytesOf(name));
+        row("frame", times.frameMs(), frameBytes);
+        if (!poseMs.empty()) row("pose (CPU)", poseMs, std::nullopt);
         std::cout << "peak RSS: " << peakRssKiB() / 1024
                   << " MiB (after loading the scene: " << rssScene / 1024 << " MiB)\n";
     } catch (const std::exception& e) {

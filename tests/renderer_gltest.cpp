@@ -7,8 +7,11 @@
 #include <renderer/Renderer.h>
 #include <renderer/gltf/GltfLoader.h>
 #include <renderer/io/Capture.h>
+#include <renderer/run/FrameRunner.h>
 
 #include <glm/gtc/matrix_transform.hpp>
+
+#include <map>
 
 namespace fl::test {
 namespace {
@@ -164,6 +167,52 @@ TEST_F(RendererTest, ResizeRejectsZeroSize) {
     Renderer renderer(shaders, scene, {});
     EXPECT_THROW(renderer.resize(0, 10), std::invalid_argument);
     EXPECT_THROW(renderer.render(CameraView{}), std::logic_error);
+}
+
+// The bytes each phase writes (floodlight_bench's "written", issue 28) are the formats of its
+// targets times their texels: worked out here by hand for a hard frame and for floods over the
+// whole grid with a fixed pass count, where every pass writes every cell.
+TEST_F(RendererTest, BytesWrittenAreTheTargetsFormatsTimesTheirTexels) {
+    EXPECT_EQ(gl::texelBytes(GL_RGBA32F), 16);
+    EXPECT_EQ(gl::texelBytes(GL_R8), 1);
+    EXPECT_THROW((void)gl::texelBytes(GL_RGB10_A2), std::invalid_argument);
+    const Scene scene = groundAndBox(4.0f, {-1, 1, -1}, {1, 2, 1}, {1, -1, 0});
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
+    const auto bytesOf = [](const Renderer& r) {
+        std::map<std::string, std::int64_t> m;
+        for (const auto& [name, bytes] : writtenBytes(r)) m[name] = bytes;
+        return m;
+    };
+    const std::int64_t w = 64, h = 48, map = 256, pixels = w * h, texels = map * map;
+    const CameraView camera = makeCameraView(scene, {}, float(w) / float(h));
+    RenderSettings settings;
+    settings.shadow.size = int(map);
+    {
+        Renderer r(shaders, scene, settings);
+        r.resize(int(w), int(h));
+        r.render(camera);
+        const std::map<std::string, std::int64_t> b = bytesOf(r);
+        EXPECT_EQ(b.at("shadow map"), texels * 4);              // DEPTH32F
+        EXPECT_EQ(b.at("surfaces"), pixels * (4 * 16 + 1 + 4)); // 4 x RGBA32F, R8, DEPTH32F
+        EXPECT_EQ(b.at("hard shadows"), pixels * 4);            // R32F
+        EXPECT_EQ(b.at("shading"), pixels * (8 + 4));           // RGBA16F, R32F
+        EXPECT_EQ(r.timer().frameBytes(), texels * 4 + pixels * (69 + 4 + 12));
+        r.render(camera, camera); // with the previous camera: the motion target too
+        EXPECT_EQ(bytesOf(r).at("surfaces"), pixels * (5 * 16 + 1 + 4));
+    }
+    for (const char* method : {"jfa-l", "jfa-e"}) {
+        RenderSettings s = settings;
+        s.method = method;
+        s.options.set(floodRegionOption().flag, "full");
+        s.options.set(floodPassesOption().flag, 3);
+        Renderer r(shaders, scene, s);
+        r.resize(int(w), int(h));
+        r.render(camera);
+        const std::map<std::string, std::int64_t> b = bytesOf(r);
+        const bool light = std::string(method) == "jfa-l";
+        EXPECT_EQ(b.at("shadow map"), texels * (4 + 16)) << method; // + receiver positions
+        EXPECT_EQ(b.at("flood"), 3 * (light ? texels : pixels) * 16) << method;
+    }
 }
 
 // A frame or shadow map beyond the driver's largest texture is one message naming both sizes,

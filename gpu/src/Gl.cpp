@@ -186,6 +186,38 @@ std::string rendererName() {
     return s ? s : "unknown";
 }
 
+std::int64_t texelBytes(GLenum internalFormat) {
+    switch (internalFormat) {
+    case GL_R8:
+        return 1;
+    case GL_RGBA8:
+    case GL_SRGB8_ALPHA8:
+    case GL_R32F:
+    case GL_R32UI:
+    case GL_R32I:
+    case GL_DEPTH_COMPONENT32F:
+        return 4;
+    case GL_RGBA16F:
+    case GL_RG32F:
+    case GL_RG32I:
+    case GL_RG32UI:
+        return 8;
+    case GL_RGBA32F:
+    case GL_RGBA32UI:
+    case GL_RGBA32I:
+        return 16;
+    default:
+        break;
+    }
+    std::ostringstream s;
+    s << "texelBytes: internal format 0x" << std::hex << internalFormat << " is not in the table";
+    throw std::invalid_argument(s.str());
+}
+
+std::int64_t textureBytes(const Texture& texture) {
+    return texelBytes(texture.format()) * texture.width() * texture.height();
+}
+
 int maxTextureSize() {
     GLint size = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &size);

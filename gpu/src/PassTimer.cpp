@@ -1,5 +1,7 @@
 #include <gpu/PassTimer.h>
 
+#include <stdexcept>
+
 namespace fl::gl {
 
 namespace {
@@ -24,7 +26,8 @@ void PassTimer::beginFrame() {
 }
 
 void PassTimer::begin(const char* name) {
-    results_.push_back({name, 0.0});
+    results_.push_back({name, 0.0, 0});
+    open_ = true;
     if (mode_ == TimingMode::Query) {
         if (queries_.size() < results_.size()) queries_.push_back(Query::create(GL_TIME_ELAPSED));
         glBeginQuery(GL_TIME_ELAPSED, queries_[results_.size() - 1].id());
@@ -35,12 +38,24 @@ void PassTimer::begin(const char* name) {
 }
 
 void PassTimer::end() {
+    open_ = false;
     if (mode_ == TimingMode::Query) {
         glEndQuery(GL_TIME_ELAPSED);
     } else {
         glFinish();
         results_.back().ms = msSince(passStart_);
     }
+}
+
+void PassTimer::wrote(std::int64_t bytes) {
+    if (!open_) throw std::logic_error("PassTimer::wrote outside a pass");
+    results_.back().bytes += bytes;
+}
+
+std::int64_t PassTimer::frameBytes() const {
+    std::int64_t sum = 0;
+    for (const PassTime& p : results_) sum += p.bytes;
+    return sum;
 }
 
 void PassTimer::endFrame() {

@@ -174,11 +174,14 @@ void Renderer::renderFrame(const CameraView& camera, const CameraView* previous)
     const ShadowMapPass::Outputs& shadow = shadow_.emplace(
         shadowPass_.execute({scene_, lightVolume_, settings_.shadow, camera.view, camera.proj,
                              sceneBounds_, method.shadowMapPositions}));
+    timer_.wrote(gl::textureBytes(shadow.depth) +
+                 (shadow.receivers ? gl::textureBytes(*shadow.receivers) : 0));
     timer_.end();
     // 2. Surfaces: the scene drawn once from the eye; every later step reads these targets.
     timer_.begin("surfaces");
     const SurfacesPass::Outputs surfaces =
         surfacesPass_.execute({scene_, camera, light_, previous});
+    timer_.wrote(surfaces.bytes());
     timer_.end();
     // 3. The shadow method: visibility per pixel (it times its own phases). A reader of the
     //    whole flood (an overlay that shows the map) gets the band where --flood-region is
@@ -210,11 +213,14 @@ void Renderer::renderFrame(const CameraView& camera, const CameraView* previous)
     timer_.begin("shading");
     const ShadingPass::Outputs shaded =
         shadingPass_.execute({surfaces, light_, methodVisibility, scene_, camera});
+    timer_.wrote(gl::textureBytes(shaded.color) + gl::textureBytes(shaded.visibility));
     timer_.end();
     diagnostics_ = nullptr;
     if (settings_.diagnostics) {
         timer_.begin("diagnostics");
         diagnostics_ = &diagnosticsPass_.execute({surfaces, camera, light_, shadow}).diagnostics;
+        // The pass also keeps a copy of this frame's map for the next.
+        timer_.wrote(gl::textureBytes(*diagnostics_) + gl::textureBytes(shadow.depth));
         timer_.end();
     }
     timer_.endFrame();

@@ -4,6 +4,7 @@
 
 #include <epoxy/gl.h>
 
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -165,6 +166,11 @@ void installDebugOutput();
 void throwIfErrors(const char* where);
 /// The GL_RENDERER string of the current context.
 std::string rendererName();
+/// Bytes one texel of `internalFormat` occupies (GL_RGBA32F: 16, GL_R8: 1, ...); throws
+/// std::invalid_argument for a format not in its table, so a new format cannot go uncounted.
+std::int64_t texelBytes(GLenum internalFormat);
+/// Bytes of level 0 of `texture`: what a pass that writes every texel of it writes.
+std::int64_t textureBytes(const Texture& texture);
 /// GL_MAX_TEXTURE_SIZE of the current context: the largest side a frame or map can have here.
 int maxTextureSize();
 /// Throws std::invalid_argument naming `what`, its size and this driver's largest texture side

@@ -5,6 +5,7 @@
 #include <gpu/Gl.h>
 
 #include <chrono>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,9 @@ namespace fl::gl {
 struct PassTime {
     std::string name;
     double ms = 0.0;
+    /// Bytes of render targets and images the pass said it wrote (PassTimer::wrote): computed
+    /// from the targets' formats and the texels written, not measured.
+    std::int64_t bytes = 0;
 };
 
 enum class TimingMode { Auto, Query, Finish };
@@ -26,10 +30,16 @@ class PassTimer {
     /// Brackets one pass; passes must not nest.
     void begin(const char* name);
     void end();
+    /// Adds `bytes` written (render targets, images) to the open pass; throws std::logic_error
+    /// outside begin()/end(). A pass that writes every texel of a target adds
+    /// gl::textureBytes(target).
+    void wrote(std::int64_t bytes);
     /// Waits for the GPU, resolves every pass and the frame's total wall time.
     void endFrame();
     [[nodiscard]] const std::vector<PassTime>& passes() const { return results_; }
     [[nodiscard]] double frameMs() const { return frameMs_; }
+    /// The bytes every pass of the frame wrote, summed.
+    [[nodiscard]] std::int64_t frameBytes() const;
     [[nodiscard]] TimingMode mode() const { return mode_; }
     /// "query" or "finish".
     [[nodiscard]] const char* modeName() const;
@@ -41,6 +51,7 @@ class PassTimer {
     std::vector<PassTime> results_;
     Clock::time_point frameStart_{}, passStart_{};
     double frameMs_ = 0.0;
+    bool open_ = false; // between begin() and end()
 };
 
 } // namespace fl::gl

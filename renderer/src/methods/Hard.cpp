@@ -13,6 +13,7 @@ class Hard final : public ShadowMethod {
     const gl::Texture& execute(const FrameInputs& in) override {
         if (in.timer) in.timer->begin("hard shadows");
         const gl::Texture& v = lookup_.execute(in);
+        if (in.timer) in.timer->wrote(gl::textureBytes(v));
         if (in.timer) in.timer->end();
         return v;
     }

@@ -55,6 +55,7 @@ class PenumbraMethod final : public ShadowMethod {
                   &pass_.kernel()};
         if (in.timer) in.timer->begin("penumbra lookup");
         const gl::Texture& v = lookup_.execute(in, &pm.penumbraMap);
+        if (in.timer) in.timer->wrote(gl::textureBytes(v));
         if (in.timer) in.timer->end();
         return v;
     }

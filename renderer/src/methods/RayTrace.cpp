@@ -43,6 +43,7 @@ class RayTrace final : public ShadowMethod {
         const std::vector<float> v = rt::diskVisibility(*bvh_, disk, receivers, s);
         glTextureSubImage2D(visibility_.id(), 0, 0, 0, w, h, GL_RED, GL_FLOAT, v.data());
         gl::throwIfErrors("raytrace: visibility upload");
+        if (in.timer) in.timer->wrote(gl::textureBytes(visibility_)); // the upload
         if (in.timer) in.timer->end();
         return visibility_;
     }

@@ -59,6 +59,7 @@ class Vsm final : public ShadowMethod {
         glBindSampler(0, rawDepth_.id());
         gl::drawFullscreenTriangle(moments_, emptyVao_);
         glBindSampler(0, 0);
+        if (in.timer) in.timer->wrote(gl::textureBytes(maps_[0]));
         if (in.timer) in.timer->end();
 
         // 2. Separable box blur: map 0 -> 1 horizontally, 1 -> 0 vertically.
@@ -74,6 +75,8 @@ class Vsm final : public ShadowMethod {
             }
         }
         glBindTextureUnit(0, 0);
+        if (in.timer && radius > 0)
+            in.timer->wrote(gl::textureBytes(maps_[0]) + gl::textureBytes(maps_[1]));
         if (in.timer) in.timer->end();
 
         // 3. Chebyshev's bound per pixel of the frame's surfaces.
@@ -89,6 +92,7 @@ class Vsm final : public ShadowMethod {
         gl::drawFullscreenTriangle(lookup_, emptyVao_);
         for (GLuint unit : {0u, 1u, 2u}) glBindTextureUnit(unit, 0);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        if (in.timer) in.timer->wrote(gl::textureBytes(visibility_));
         if (in.timer) in.timer->end();
         return visibility_;
     }

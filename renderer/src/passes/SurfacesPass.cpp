@@ -42,6 +42,14 @@ SurfacesPass::Outputs SurfacesPass::outputs() const {
             position_.height()};
 }
 
+std::int64_t SurfacesPass::Outputs::bytes() const {
+    std::int64_t sum = 0;
+    for (const gl::Texture* t :
+         {&position, &normal, &plane, &baseColor, &receivers, &depth, motion})
+        if (t) sum += gl::textureBytes(*t);
+    return sum;
+}
+
 SurfacesPass::Outputs SurfacesPass::execute(const Inputs& in) {
     motionWritten_ = in.previousCamera != nullptr;
     const gl::Framebuffer& fbo = fbos_[motionWritten_ ? 1 : 0];

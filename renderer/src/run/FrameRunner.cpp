@@ -28,6 +28,24 @@ std::optional<FloodSample> floodSample(const Renderer& renderer) {
                        f->kernel ? f->kernel->computedShare() : 1.0};
 }
 
+std::vector<std::pair<std::string, std::int64_t>> writtenBytes(const Renderer& renderer) {
+    std::vector<std::pair<std::string, std::int64_t>> out;
+    const auto add = [&out](const std::string& name, std::int64_t bytes) {
+        for (auto& [n, b] : out)
+            if (n == name) {
+                b += bytes;
+                return;
+            }
+        out.emplace_back(name, bytes);
+    };
+    for (const gl::PassTime& p : renderer.timer().passes()) add(p.name, p.bytes);
+    if (const FloodFrame* f = renderer.flood(); f && f->flooded) {
+        const double share = f->kernel ? f->kernel->computedShare() : 1.0;
+        add("flood", std::llround(f->passes * share * double(gl::textureBytes(*f->flooded))));
+    }
+    return out;
+}
+
 void PhaseTimes::record(const gl::PassTimer& timer, std::optional<FloodSample> flood) {
     Phases phases;
     for (const gl::PassTime& p : timer.passes()) phases.emplace_back(p.name, p.ms);

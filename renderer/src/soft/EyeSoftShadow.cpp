@@ -192,6 +192,7 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::Pass
         glDepthFunc(GL_LESS);
         glBindTextureUnit(0, 0);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        if (timer) timer->wrote(gl::textureBytes(ids_));
         if (timer) timer->end();
     }
 
@@ -213,6 +214,7 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::Pass
         for (GLuint unit : {0u, 1u, 2u, 3u}) glBindTextureUnit(unit, 0);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
     }
+    if (timer) timer->wrote(gl::textureBytes(points_) + gl::textureBytes(occluders_));
     if (timer) timer->end();
 
     // Phase 3: boundary pixels become seeds with their occluders.
@@ -237,6 +239,7 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::Pass
         glBindTextureUnit(1, 0);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
     }
+    if (timer) timer->wrote(gl::textureBytes(seeds_));
     if (timer) timer->end();
 
     // Phase 4: flood the occluders through the penumbrae, in eye space; its band (jfa/Band.h)
@@ -249,8 +252,10 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::Pass
     criterion.pointsTexture = points_.id();
     criterion.occludersTexture = occluders_.id();
     criterion.reachBound = in.reach;
-    if (criterion.reachBound.enabled) // receivers are the surface pixels (w >= 0)
+    if (criterion.reachBound.enabled) { // receivers are the surface pixels (w >= 0)
         bounds_.build(points_, -0.5f, in.light, criterion.reachBound);
+        if (timer) timer->wrote(bounds_.bytes());
+    }
     kernel_.setRegion(in.region, in.bandTile);
     if (passes == 0) // auto: one value read back, since the plan is recorded on the CPU
         passes = jfa::passesForReach(kernel_.maxSeedReach(seeds_, criterion), maxPasses);
@@ -276,6 +281,7 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::Pass
     glBindTextureUnit(0, 0);
     glBindTextureUnit(1, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (timer) timer->wrote(gl::textureBytes(visibility_));
     if (timer) timer->end();
     return {points_, occluders_, seeds_, flooded, visibility_, kernel_.passesRun(), passes};
 }

@@ -231,6 +231,7 @@ FilteredShadowPass::Outputs FilteredShadowPass::execute(const Inputs& in, gl::Pa
     glBindSampler(4, 0);
     for (GLuint unit : {0u, 1u, 4u}) glBindTextureUnit(unit, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (timer) timer->wrote(gl::textureBytes(visibility_));
     if (timer) timer->end();
     return {visibility_, in.surfaces.position, in.surfaces.plane};
 }

@@ -109,11 +109,18 @@ PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, gl::PassTime
         if (timer) timer->begin("view");
         markView(*in.view, size, tile);
         region = regionReach >= 0 && markSeedRegion(size, tile, regionReach);
+        // The view's tile flags; the seed region's flags and its two lists of row spans.
+        const std::int64_t tiles = (size + tile - 1) / tile;
+        if (timer)
+            timer->wrote(tiles * tiles * 4 + (region ? tiles * tiles * 4 + 2 * tiles * 8 : 0));
         if (timer) timer->end();
     }
     // Phase 2 (thesis; within frame step 3): silhouettes.
     if (timer) timer->begin("silhouettes");
     findSeeds(in, region);
+    // The whole map: exact without a region; with one, an upper bound (the pass draws only the
+    // region's row spans, which only the GPU knows).
+    if (timer) timer->wrote(gl::textureBytes(seeds_));
     if (timer) timer->end();
     // Phase 3: flood the occluders through the penumbra region; its band (jfa/Band.h) and,
     // with auto, its pass count first, timed apart.
@@ -126,9 +133,11 @@ PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, gl::PassTime
     kernel_.setViewTiles(limited ? &viewTiles_ : nullptr);
     PenumbraSettings settings = in.settings;
     for (;;) {
-        if (criterion.reachBound.enabled) // receivers are the texels with w = 1
+        if (criterion.reachBound.enabled) { // receivers are the texels with w = 1
             bounds_.build(in.receivers, 0.5f, in.light, criterion.reachBound,
                           region ? &seedRegion_ : nullptr, tile);
+            if (timer) timer->wrote(bounds_.bytes());
+        }
         if (settings.passes == 0) // auto: one value read back (the plan is recorded on the CPU)
             settings.passes = jfa::passesForReach(kernel_.maxSeedReach(seeds_, criterion),
                                                   penumbraMaxPasses(size));
@@ -140,6 +149,7 @@ PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, gl::PassTime
         settings.passes = 0;
         region = markSeedRegion(size, tile, regionReach);
         findSeeds(in, region);
+        if (timer) timer->wrote(gl::textureBytes(seeds_)); // as above, an upper bound
     }
     seedRegionCount_ = region ? viewTileCount_ : 0;
     const jfa::Plan plan = penumbraPlan(settings, size);

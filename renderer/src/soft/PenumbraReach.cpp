@@ -120,6 +120,14 @@ ReceiverBoundsPyramid::ReceiverBoundsPyramid(const gl::ShaderLibrary& shaders)
       regionProgram_(gl::Program::build(shaders, {{GL_COMPUTE_SHADER, "reach_bounds.comp.glsl"}},
                                         {"REACH_REGION 1"})) {}
 
+std::int64_t ReceiverBoundsPyramid::bytes() const {
+    std::int64_t texels = 0;
+    for (int l = 0, w = lo_.width(), h = lo_.height(); l < levels_;
+         ++l, w = std::max(1, w / 2), h = std::max(1, h / 2))
+        texels += std::int64_t(w) * h;
+    return 2 * texels * gl::texelBytes(GL_RGBA32F);
+}
+
 void ReceiverBoundsPyramid::build(const gl::Texture& positions, float validMin,
                                   const DiskLight& light, PenumbraReach& reach,
                                   const gl::Buffer* region, int regionTile) {

@@ -119,6 +119,10 @@ ReferenceShadowPass::Outputs ReferenceShadowPass::execute(const Inputs& in, gl::
         glBindTextureUnit(1, 0); // the next map pass draws into map_
     }
     glBlendFunc(GL_ONE, GL_ZERO); // the default
+    // Each sample writes its depth map and adds into the sum.
+    if (timer)
+        timer->wrote(static_cast<std::int64_t>(samples.size()) *
+                     (gl::textureBytes(map_) + gl::textureBytes(sum_)));
     if (timer) timer->end();
 
     if (timer) timer->begin("reference resolve");
@@ -131,6 +135,7 @@ ReferenceShadowPass::Outputs ReferenceShadowPass::execute(const Inputs& in, gl::
     glBindTextureUnit(0, 0);
     glBindTextureUnit(1, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (timer) timer->wrote(gl::textureBytes(visibility_));
     if (timer) timer->end();
     return {visibility_};
 }

@@ -48,6 +48,8 @@ class SurfacesPass {
         /// frame was drawn without a previous camera.
         const gl::Texture* motion;
         int width, height;
+        /// Bytes of every target above: what the pass writes (clear and draw together).
+        [[nodiscard]] std::int64_t bytes() const;
     };
     /// Draws the scene once from the camera into the targets.
     Outputs execute(const Inputs& in);

@@ -15,6 +15,7 @@
 
 #include <chrono>
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -42,6 +43,13 @@ struct FloodSample {
 
 /// What the renderer's last frame flooded; nullopt for methods that do not flood.
 std::optional<FloodSample> floodSample(const Renderer& renderer);
+
+/// Bytes of render targets and images the renderer's last frame wrote, per phase in the order
+/// the phases ran (a phase run more than once summed): what each pass told its timer
+/// (PassTimer::wrote), plus the flood's, added to its "flood" phase: the passes run x the cells'
+/// texture x the share of the grid an average pass computed (reads 4 bytes back, like
+/// floodSample). Computed from the targets' formats, not measured.
+std::vector<std::pair<std::string, std::int64_t>> writtenBytes(const Renderer& renderer);
 
 /// One renderer's times over a run: per frame, the frame's total and each pass its timer
 /// reported, and its flood (passes, active share) where the method floods.

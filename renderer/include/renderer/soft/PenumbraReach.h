@@ -79,6 +79,8 @@ class ReceiverBoundsPyramid {
     /// side `regionTile`, a multiple of 8, row-major), receivers outside its tiles do not count.
     void build(const gl::Texture& positions, float validMin, const DiskLight& light,
                PenumbraReach& reach, const gl::Buffer* region = nullptr, int regionTile = 8);
+    /// Bytes one build() writes: both pyramids, every level (0 before the first build).
+    [[nodiscard]] std::int64_t bytes() const;
 
   private:
     gl::Program program_, regionProgram_; // the latter with REACH_REGION (a seed region)
