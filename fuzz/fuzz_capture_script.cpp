@@ -6,6 +6,7 @@
 #include "CaptureScript.h"
 #include "FuzzInput.h"
 
+#include <geometry/Finite.h>
 #include <gpu/ShaderLibrary.h>
 #include <renderer/methods/ShadowMethod.h>
 
@@ -46,10 +47,6 @@ const std::map<std::string, std::string_view>& embeddedShaders() {
 
 namespace {
 
-bool finite(const glm::vec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
 /// What parseCaptureScript promises about a script it returns (CaptureScript.h).
 void checkScript(const fl::app::CaptureScript& s) {
     REQUIRE(s.frames >= 1 && s.frames <= fl::app::kMaxCaptureFrames);
@@ -57,11 +54,11 @@ void checkScript(const fl::app::CaptureScript& s) {
         REQUIRE(s.camera->keys().size() >= 2 && std::isfinite(s.camera->yfovDegrees()));
         for (const float t : {0.0f, 0.37f, 1.0f}) {
             const fl::CameraKey k = s.camera->keyAt(t);
-            REQUIRE(finite(k.eye) && finite(k.target));
+            REQUIRE(fl::geom::allFinite(k.eye) && fl::geom::allFinite(k.target));
         }
     }
     REQUIRE(!s.lightRadius || (std::isfinite(*s.lightRadius) && *s.lightRadius >= 0.0f));
-    for (const glm::vec3& k : s.lightKeys) REQUIRE(finite(k));
+    for (const glm::vec3& k : s.lightKeys) REQUIRE(fl::geom::allFinite(k));
     REQUIRE(!s.resolutions.empty());
     for (const auto& [w, h] : s.resolutions) REQUIRE(w >= 1 && w <= 8192 && h >= 1 && h <= 8192);
     REQUIRE(s.shadowMapProvider == "uniform" || s.shadowMapProvider == "tsm");

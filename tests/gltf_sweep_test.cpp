@@ -4,6 +4,8 @@
 
 #include <renderer/gltf/GltfLoader.h>
 
+#include <geometry/Finite.h>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -32,15 +34,11 @@ std::vector<fs::path> gltfFiles(const fs::path& root) {
     return files;
 }
 
-bool finite(const glm::vec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
 /// The invariants every pass relies on (see Scene.h).
 void checkScene(const fl::Scene& scene) {
     ASSERT_FALSE(scene.instances.empty());
     EXPECT_TRUE(scene.bounds.valid());
-    EXPECT_TRUE(finite(scene.bounds.min) && finite(scene.bounds.max));
+    EXPECT_TRUE(fl::geom::allFinite(scene.bounds.min) && fl::geom::allFinite(scene.bounds.max));
     for (const fl::Mesh& mesh : scene.meshes) {
         SCOPED_TRACE(mesh.name);
         EXPECT_EQ(mesh.normals.size(), mesh.positions.size());
@@ -49,9 +47,10 @@ void checkScene(const fl::Scene& scene) {
         EXPECT_FALSE(mesh.indices.empty());
         EXPECT_TRUE(std::all_of(mesh.indices.begin(), mesh.indices.end(),
                                 [&](std::uint32_t i) { return i < mesh.positions.size(); }));
-        EXPECT_TRUE(std::all_of(mesh.positions.begin(), mesh.positions.end(), finite));
+        EXPECT_TRUE(std::all_of(mesh.positions.begin(), mesh.positions.end(),
+                                [](const glm::vec3& p) { return fl::geom::allFinite(p); }));
         EXPECT_TRUE(std::all_of(mesh.normals.begin(), mesh.normals.end(), [](const glm::vec3& n) {
-            return finite(n) && std::abs(glm::length(n) - 1.0f) < 1e-3f;
+            return fl::geom::allFinite(n) && std::abs(glm::length(n) - 1.0f) < 1e-3f;
         }));
         EXPECT_TRUE(mesh.material >= -1 &&
                     mesh.material < static_cast<int>(scene.materials.size()));
@@ -68,7 +67,8 @@ void checkScene(const fl::Scene& scene) {
     for (const fl::Camera& c : scene.cameras)
         EXPECT_TRUE(std::isfinite(c.zfar) && c.zfar > c.znear);
     if (scene.light) {
-        EXPECT_TRUE(finite(scene.light->position) && finite(scene.light->direction));
+        EXPECT_TRUE(fl::geom::allFinite(scene.light->position) &&
+                    fl::geom::allFinite(scene.light->direction));
     }
 }
 

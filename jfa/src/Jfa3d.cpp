@@ -1,5 +1,6 @@
 #include <jfa/CpuKernel.h>
 #include <jfa/Jfa3d.h>
+#include <jfa/Sites.h>
 
 #include "LowerEnvelope.h"
 
@@ -189,25 +190,6 @@ std::vector<std::int32_t> floodProjected(const std::vector<Site3>& sites, Extent
     std::transform(flooded.cells.begin(), flooded.cells.end(), result.begin(), siteIndex);
     return result;
 }
-
-// splitmix64: a small portable PRNG (same sequence everywhere).
-struct SplitMix64 {
-    std::uint64_t state;
-    std::uint64_t next() {
-        std::uint64_t z = (state += 0x9E3779B97F4A7C15ULL);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-        return z ^ (z >> 31);
-    }
-    // Uniform in [0, n) without modulo bias.
-    std::uint64_t below(std::uint64_t n) {
-        const std::uint64_t limit = std::numeric_limits<std::uint64_t>::max() -
-                                    std::numeric_limits<std::uint64_t>::max() % n;
-        std::uint64_t r = next();
-        while (r >= limit) r = next();
-        return r % n;
-    }
-};
 
 std::string percentText(double fraction) {
     char buffer[32];

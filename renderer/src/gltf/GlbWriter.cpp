@@ -5,6 +5,7 @@
 
 #include <renderer/scene/SceneGenerator.h>
 
+#include <geometry/Finite.h>
 #include <geometry/Framing.h>
 
 #include <base/OutputFiles.h>
@@ -65,17 +66,6 @@ json matrixJson(const glm::mat4& m) {
     return a;
 }
 
-bool finite(const glm::vec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
-bool finiteMatrix(const glm::mat4& m) {
-    for (int c = 0; c < 4; ++c)
-        for (int r = 0; r < 4; ++r)
-            if (!std::isfinite(m[c][r])) return false;
-    return true;
-}
-
 [[noreturn]] void invalid(const std::string& what) {
     throw std::invalid_argument("writeGlb: " + what);
 }
@@ -93,7 +83,7 @@ void validateMesh(const Scene& scene, std::size_t i) {
         if (idx >= m.positions.size())
             invalid(where + "index " + std::to_string(idx) + " past vertex count");
     for (const glm::vec3& p : m.positions)
-        if (!finite(p)) invalid(where + "non-finite position");
+        if (!geom::allFinite(p)) invalid(where + "non-finite position");
     if (m.material >= static_cast<int>(scene.materials.size()))
         invalid(where + "material index out of range");
 }
@@ -160,7 +150,7 @@ void validate(const Scene& scene) {
         const Instance& inst = scene.instances[i];
         if (inst.mesh < 0 || inst.mesh >= static_cast<int>(scene.meshes.size()))
             invalid("instances[" + std::to_string(i) + "]: mesh index out of range");
-        if (!finiteMatrix(inst.world))
+        if (!geom::allFinite(inst.world))
             invalid("instances[" + std::to_string(i) + "]: non-finite transform");
         if ((inst.node != -1 && !inRange(scene.nodes, inst.node)) ||
             (inst.skin != -1 && !inRange(scene.skins, inst.skin)))
@@ -169,11 +159,12 @@ void validate(const Scene& scene) {
     validateAnimation(scene);
     for (std::size_t i = 0; i < scene.cameras.size(); ++i) {
         const Camera& cam = scene.cameras[i];
-        if (!finiteMatrix(cam.view) || !(cam.yfov > 0.0f) || !(cam.znear > 0.0f))
+        if (!geom::allFinite(cam.view) || !(cam.yfov > 0.0f) || !(cam.znear > 0.0f))
             invalid("cameras[" + std::to_string(i) + "]: invalid view or projection");
     }
-    if (scene.light && (!finite(scene.light->position) || !finite(scene.light->direction) ||
-                        glm::dot(scene.light->direction, scene.light->direction) == 0.0f))
+    if (scene.light &&
+        (!geom::allFinite(scene.light->position) || !geom::allFinite(scene.light->direction) ||
+         glm::dot(scene.light->direction, scene.light->direction) == 0.0f))
         invalid("light: non-finite position or zero direction");
     for (std::size_t i = 0; i < scene.materials.size(); ++i)
         if (scene.materials[i].baseColorTexture >= static_cast<int>(scene.images.size()))

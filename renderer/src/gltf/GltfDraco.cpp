@@ -18,7 +18,7 @@
 namespace fl::gltf {
 namespace {
 
-constexpr const char* kName = "KHR_draco_mesh_compression";
+constexpr const char* kDracoExtension = "KHR_draco_mesh_compression";
 
 /// Every point's value of `attr` as `components` values of type T, in point order.
 template <class T>
@@ -200,7 +200,7 @@ void decodeIndices(DracoPrimitive& d, const draco::Mesh& mesh, int index) {
 void decodeDraco(const Context& ctx, tinygltf::Model& model, std::size_t meshIndex,
                  std::size_t primitiveIndex, std::map<int, std::pair<int, int>>& decoded) {
     const tinygltf::Primitive& prim = model.meshes[meshIndex].primitives[primitiveIndex];
-    const auto it = prim.extensions.find(kName);
+    const auto it = prim.extensions.find(kDracoExtension);
     if (it == prim.extensions.end()) return;
     // Points and lines are skipped by the mesh conversion without being read.
     if (prim.mode >= TINYGLTF_MODE_POINTS && prim.mode <= TINYGLTF_MODE_LINE_STRIP) return;

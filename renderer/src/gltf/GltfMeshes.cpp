@@ -5,6 +5,8 @@
 
 #include "GltfInternal.h"
 
+#include <geometry/Finite.h>
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -31,10 +33,6 @@ std::string_view modeName(int mode) {
     default:
         return "unknown";
     }
-}
-
-bool finite(const glm::vec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
 /// Unnormalized face normal (twice the area) in double: float cross products of large but
@@ -69,7 +67,7 @@ std::vector<glm::vec3> readPositions(const Context& ctx, const Primitive& prim, 
     const std::string usage = prim.usage("POSITION");
     std::vector<glm::vec3> positions = readPositionVec3(ctx, accessor, usage);
     for (std::size_t i = 0; i < positions.size(); ++i)
-        if (!finite(positions[i]))
+        if (!geom::allFinite(positions[i]))
             ctx.fail(elem("accessors", static_cast<std::size_t>(accessor)),
                      cat(usage, ": vertex ", i, " is not finite (", positions[i].x, ", ",
                          positions[i].y, ", ", positions[i].z, ")"));

@@ -18,7 +18,7 @@
 namespace fl::gltf {
 namespace {
 
-constexpr const char* kName = "EXT_meshopt_compression";
+constexpr const char* kMeshoptExtension = "EXT_meshopt_compression";
 
 enum class Mode { Attributes, Triangles, Indices };
 enum class Filter { None, Octahedral, Quaternion, Exponential };
@@ -83,7 +83,7 @@ std::string strideProblem(Mode mode, Filter filter, std::uint64_t stride, std::u
 } // namespace
 
 bool isMeshoptFallback(const tinygltf::Buffer& buffer) {
-    const auto ext = buffer.extensions.find(kName);
+    const auto ext = buffer.extensions.find(kMeshoptExtension);
     if (ext == buffer.extensions.end() || !ext->second.IsObject() || !ext->second.Has("fallback"))
         return false;
     const tinygltf::Value& fallback = ext->second.Get("fallback");
@@ -93,7 +93,7 @@ bool isMeshoptFallback(const tinygltf::Buffer& buffer) {
 void decodeMeshoptView(const Context& ctx, tinygltf::Model& model, int index) {
     const std::string element = elem("bufferViews", static_cast<std::size_t>(index));
     tinygltf::BufferView& view = model.bufferViews[static_cast<std::size_t>(index)];
-    const auto it = view.extensions.find(kName);
+    const auto it = view.extensions.find(kMeshoptExtension);
     if (it == view.extensions.end()) {
         // Only compressed views may use a fallback buffer (spec), whose data is never loaded
         // (prepareCompressedJson replaced it with a placeholder).

@@ -6,6 +6,8 @@
 
 #include "GltfInternal.h"
 
+#include <geometry/Finite.h>
+
 #include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
@@ -23,17 +25,6 @@ constexpr float kWeightSumTolerance = 0.01f;
 int attribute(const tinygltf::Primitive& prim, const char* name) {
     const auto it = prim.attributes.find(name);
     return it == prim.attributes.end() ? -1 : it->second;
-}
-
-bool finite(const glm::vec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
-bool finite(const glm::mat4& m) {
-    for (int c = 0; c < 4; ++c)
-        for (int r = 0; r < 4; ++r)
-            if (!std::isfinite(m[c][r])) return false;
-    return true;
 }
 
 /// Makes every vertex's weights usable: negative or non-finite weights become 0 (the spec
@@ -80,7 +71,7 @@ void checkCount(const Context& ctx, const std::string& element, std::string_view
 void checkDeltas(const Context& ctx, int accessor, const std::string& usage,
                  const std::vector<glm::vec3>& deltas) {
     for (std::size_t i = 0; i < deltas.size(); ++i)
-        if (!finite(deltas[i]))
+        if (!geom::allFinite(deltas[i]))
             ctx.fail(elem("accessors", static_cast<std::size_t>(accessor)),
                      cat(usage, ": delta ", i, " is not finite"));
 }
@@ -205,7 +196,7 @@ Skin convertSkin(const Context& ctx, int index) {
         ctx.fail(element, cat("inverseBindMatrices has ", skin.inverseBind.size(),
                               " matrices but the skin has ", skin.joints.size(), " joints"));
     for (std::size_t i = 0; i < skin.inverseBind.size(); ++i)
-        if (!finite(skin.inverseBind[i]))
+        if (!geom::allFinite(skin.inverseBind[i]))
             ctx.fail(elem("accessors", static_cast<std::size_t>(src.inverseBindMatrices)),
                      cat(usage, ": matrix ", i, " is not finite"));
     return skin;

@@ -14,8 +14,6 @@ namespace fl::gen {
 
 namespace {
 
-constexpr float kPi = std::numbers::pi_v<float>;
-
 glm::mat4 translate(const glm::vec3& t) {
     glm::mat4 m(1.0f);
     m[3] = glm::vec4(t, 1.0f);

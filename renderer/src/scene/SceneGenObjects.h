@@ -8,10 +8,13 @@
 
 #include <array>
 #include <cstdint>
+#include <numbers>
 #include <string>
 #include <vector>
 
 namespace fl::gen {
+
+inline constexpr float kPi = std::numbers::pi_v<float>;
 
 /// Gentle hills: a sum of four plane waves over a square centred at the origin.
 class Terrain {

@@ -10,8 +10,6 @@ namespace fl::gen {
 
 namespace {
 
-constexpr float kPi = std::numbers::pi_v<float>;
-
 /// Keys per cycle: LINEAR keys every 1/16 of the period follow the sine closely enough that the
 /// swing shows no corners.
 constexpr int kKeys = 16;
