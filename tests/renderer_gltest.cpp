@@ -4,6 +4,7 @@
 #include "TestPaths.h"
 #include "TestScenes.h"
 
+#include <gpu/LiveObjects.h>
 #include <renderer/Renderer.h>
 #include <renderer/gltf/GltfLoader.h>
 #include <renderer/io/Capture.h>
@@ -213,6 +214,41 @@ TEST_F(RendererTest, BytesWrittenAreTheTargetsFormatsTimesTheirTexels) {
         EXPECT_EQ(b.at("shadow map"), texels * (4 + 16)) << method; // + receiver positions
         EXPECT_EQ(b.at("flood"), 3 * (light ? texels : pixels) * 16) << method;
     }
+}
+
+// Issue 28: a renderer whose frames do not ask for the shadow-map diagnostics holds no target of
+// theirs (their RGBA32F output is 16 bytes a pixel): one that asks holds exactly two textures
+// more (the output and the previous map's copy), and a resize reallocates the output at the new
+// size rather than adding one.
+TEST_F(RendererTest, DiagnosticsTargetsExistOnlyInFramesThatAskForThem) {
+    const Scene scene = groundAndBox(4.0f, {-1, 1, -1}, {1, 2, 1}, {1, -1, 0});
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
+    const CameraView camera = makeCameraView(scene, {}, 64.0f / 48.0f);
+    const auto textures = [] {
+        return gl::countLiveObjects().live[std::size_t(gl::ObjectKind::Texture)];
+    };
+    RenderSettings settings;
+    settings.shadow.size = 256;
+    int without = 0;
+    {
+        Renderer r(shaders, scene, settings);
+        r.resize(64, 48);
+        r.render(camera);
+        EXPECT_EQ(r.diagnostics(), nullptr);
+        without = textures();
+    }
+    settings.diagnostics = true;
+    Renderer r(shaders, scene, settings);
+    r.resize(64, 48);
+    r.render(camera);
+    ASSERT_NE(r.diagnostics(), nullptr);
+    EXPECT_EQ(textures(), without + 2); // the output and the copy of the map
+    r.resize(80, 40);
+    r.render(camera);
+    ASSERT_NE(r.diagnostics(), nullptr);
+    EXPECT_EQ(r.diagnostics()->width(), 80);
+    EXPECT_EQ(r.diagnostics()->height(), 40);
+    EXPECT_EQ(textures(), without + 2);
 }
 
 // A frame or shadow map beyond the driver's largest texture is one message naming both sizes,

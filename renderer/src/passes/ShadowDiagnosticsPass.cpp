@@ -8,12 +8,21 @@ ShadowDiagnosticsPass::ShadowDiagnosticsPass(const gl::ShaderLibrary& shaders)
       emptyVao_(gl::VertexArray::create()) {}
 
 void ShadowDiagnosticsPass::resize(int width, int height) {
-    if (output_ && output_.width() == width && output_.height() == height) return;
-    output_ = gl::Texture(GL_RGBA32F, width, height);
-    fbo_ = gl::Framebuffer::forColor(output_, "shadow diagnostics");
+    width_ = width;
+    height_ = height;
+    // Frames without diagnostics never allocate the output (a 16-byte-a-pixel target); one that
+    // asks makes it at this size (execute).
+    if (output_ && (output_.width() != width || output_.height() != height)) {
+        fbo_ = {};
+        output_ = {};
+    }
 }
 
 ShadowDiagnosticsPass::Outputs ShadowDiagnosticsPass::execute(const Inputs& in) {
+    if (!output_) {
+        output_ = gl::Texture(GL_RGBA32F, width_, height_);
+        fbo_ = gl::Framebuffer::forColor(output_, "shadow diagnostics");
+    }
     const int mapSize = in.shadow.depth.width();
     if (!previousMap_ || previousMap_.width() != mapSize) {
         previousMap_ = gl::Texture(GL_DEPTH_COMPONENT32F, mapSize, mapSize);

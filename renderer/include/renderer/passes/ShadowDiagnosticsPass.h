@@ -20,7 +20,8 @@ namespace fl {
 class ShadowDiagnosticsPass {
   public:
     explicit ShadowDiagnosticsPass(const gl::ShaderLibrary& shaders);
-    /// (Re)allocates the output at width x height.
+    /// Sets the output's size; the output and the map copy are allocated by the first
+    /// execute(), so a renderer that never measures holds neither.
     void resize(int width, int height);
     /// Forgets the previous frame's map (the next frame compares with itself).
     void reset() { hasPrevious_ = false; }
@@ -48,6 +49,7 @@ class ShadowDiagnosticsPass {
     gl::Framebuffer fbo_;
     glm::mat4 previousLightViewProj_{1.0f}, previousWarp_{1.0f};
     bool hasPrevious_ = false;
+    int width_ = 0, height_ = 0;
 };
 
 } // namespace fl
