@@ -73,23 +73,12 @@ scene_args() {
   esac
 }
 
-# median_of NAME OUTPUT: the median column of the bench's row NAME ("-" when it has none).
-median_of() {
-  awk -v n="$2" '{ line = $0; sub(/^ +/, "", line)
+# value_of OUTPUT ROW WORD: on the bench's timing row ROW ("frame", "flood", ...), the value after
+# WORD ("min", "median", "written"); "-" when the row or the word is missing.
+value_of() {
+  awk -v n="$2" -v w="$3" '{ line = $0; sub(/^ +/, "", line)
                    if (index(line, n " ") == 1 && $0 ~ / min +[0-9.]+ ms +median/) {
-                     for (i = 1; i <= NF; ++i) if ($i == "median") { print $(i + 1); exit } } }' <<<"$1" |
-    grep . || echo "-"
-}
-# written_of OUTPUT: the MB the frame row says the frame writes ("-" when it has none).
-written_of() {
-  awk '{ line = $0; sub(/^ +/, "", line)
-         if (index(line, "frame ") == 1) for (i = 1; i <= NF; ++i) if ($i == "written") { print $(i + 1); exit } }' <<<"$1" |
-    grep . || echo "-"
-}
-min_of() {
-  awk -v n="$2" '{ line = $0; sub(/^ +/, "", line)
-                   if (index(line, n " ") == 1 && $0 ~ / min +[0-9.]+ ms +median/) {
-                     for (i = 1; i <= NF; ++i) if ($i == "min") { print $(i + 1); exit } } }' <<<"$1" |
+                     for (i = 1; i <= NF; ++i) if ($i == w) { print $(i + 1); exit } } }' <<<"$1" |
     grep . || echo "-"
 }
 
@@ -111,9 +100,9 @@ for scene in "${scene_list[@]}"; do
       # shellcheck disable=SC2086 # the method's and the scene's arguments are word lists
       if out=$(timeout "$timeout_s" "${bench[@]}" --method $m $extra --width "${wh%x*}" \
           --height "${wh#*x}" --shadow-map-size "$map" --frames "$frames" --warmup 3 2>&1); then
-        fm=$(median_of "$out" frame); fl=$(median_of "$out" flood)
-        line+=" $fm ($fl), $(written_of "$out") MB |"
-        [ -z "$raw" ] || echo "$scene | $wh map $map | $m | frame $(min_of "$out" frame) $fm | flood $(min_of "$out" flood) $fl" >>"$raw"
+        fm=$(value_of "$out" frame median); fl=$(value_of "$out" flood median)
+        line+=" $fm ($fl), $(value_of "$out" frame written) MB |"
+        [ -z "$raw" ] || echo "$scene | $wh map $map | $m | frame $(value_of "$out" frame min) $fm | flood $(value_of "$out" flood min) $fl" >>"$raw"
       else
         rc=$?; [ $rc = 124 ] && line+=" timeout |" || line+=" error |"
         echo "gpu_table.sh: $scene $s $m failed (exit $rc): $(tail -1 <<<"$out")" >&2

@@ -10,6 +10,18 @@
 
 namespace fl {
 
+namespace {
+// Bytes of one flag (a uint) per band tile of a size^2 map: the view's and the seed region's.
+GLsizeiptr tileFlagBytes(int size, int tile) {
+    const GLsizeiptr tiles = (size + tile - 1) / tile;
+    return GLsizeiptr(sizeof(GLuint)) * tiles * tiles;
+}
+// Bytes of one list of row spans (each row's first and last tile, two ints).
+GLsizeiptr rowSpanBytes(int size, int tile) {
+    return GLsizeiptr(2 * sizeof(GLint)) * ((size + tile - 1) / tile);
+}
+} // namespace
+
 int penumbraMaxPasses(int size) {
     int maxPasses = 0;
     while ((2 << maxPasses) <= size) ++maxPasses; // largest k with 2^k <= size
@@ -110,9 +122,9 @@ PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, gl::PassTime
         markView(*in.view, size, tile);
         region = regionReach >= 0 && markSeedRegion(size, tile, regionReach);
         // The view's tile flags; the seed region's flags and its two lists of row spans.
-        const std::int64_t tiles = (size + tile - 1) / tile;
         if (timer)
-            timer->wrote(tiles * tiles * 4 + (region ? tiles * tiles * 4 + 2 * tiles * 8 : 0));
+            timer->wrote(tileFlagBytes(size, tile) +
+                         (region ? tileFlagBytes(size, tile) + 2 * rowSpanBytes(size, tile) : 0));
         if (timer) timer->end();
     }
     // Phase 2 (thesis; within frame step 3): silhouettes.
@@ -216,12 +228,12 @@ bool PenumbraMapPass::markSeedRegion(int size, int tile, long long reach) {
     const int tiles = (size + tile - 1) / tile;
     const long long tileReach = (reach + tile - 1) / tile;
     if (tileReach >= tiles - 1) return false; // the whole map
-    const auto bytes = GLsizeiptr(sizeof(GLuint)) * tiles * tiles;
+    const GLsizeiptr bytes = tileFlagBytes(size, tile);
     if (!seedRegion_ || seedRegion_.size() < bytes)
         seedRegion_ = gl::Buffer(bytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
     // Each row's first and last tile, found by the second half (tile_rows.vert.glsl draws them).
     // rowSpans_ (drawn) starts from the last region's own spans, lastSpans_ from none.
-    const GLsizeiptr spanBytes = bytes / tiles * 2;
+    const GLsizeiptr spanBytes = rowSpanBytes(size, tile);
     for (gl::Buffer* b : {&rowSpans_, &lastSpans_})
         if (!*b || b->size() < spanBytes)
             *b = gl::Buffer(spanBytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
@@ -239,7 +251,7 @@ bool PenumbraMapPass::markSeedRegion(int size, int tile, long long reach) {
 
 void PenumbraMapPass::markView(const PenumbraView& view, int size, int tile) {
     const int tiles = (size + tile - 1) / tile;
-    const auto bytes = GLsizeiptr(sizeof(GLuint)) * tiles * tiles;
+    const GLsizeiptr bytes = tileFlagBytes(size, tile);
     if (!viewTiles_ || viewTiles_.size() < bytes)
         viewTiles_ = gl::Buffer(bytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
     viewTileCount_ = tiles * tiles;

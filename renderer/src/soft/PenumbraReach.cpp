@@ -125,7 +125,8 @@ std::int64_t ReceiverBoundsPyramid::bytes() const {
     for (int l = 0, w = lo_.width(), h = lo_.height(); l < levels_;
          ++l, w = std::max(1, w / 2), h = std::max(1, h / 2))
         texels += std::int64_t(w) * h;
-    return 2 * texels * gl::texelBytes(GL_RGBA32F);
+    return levels_ == 0 ? 0
+                        : texels * (gl::texelBytes(lo_.format()) + gl::texelBytes(hi_.format()));
 }
 
 void ReceiverBoundsPyramid::build(const gl::Texture& positions, float validMin,
