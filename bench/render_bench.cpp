@@ -73,6 +73,34 @@ fl::Scene baked(const fl::Scene& scene, const fl::Pose& pose) {
     return out;
 }
 
+/// One row per phase (by name), then the frame and the CPU pose: min and median ms, and the MB
+/// the phase writes in `written` (the last frame's; the same every frame for a held camera).
+void printPhaseRows(const fl::PhaseTimes& times,
+                    const std::vector<std::pair<std::string, std::int64_t>>& written,
+                    const std::vector<double>& poseMs) {
+    const auto row = [](const std::string& name, const std::vector<double>& v,
+                        std::optional<std::int64_t> bytes) {
+        std::cout << "  " << std::left << std::setw(12) << name << " min " << std::right
+                  << std::setw(8) << fl::minimum(v) << " ms   median " << std::setw(8)
+                  << fl::median(v) << " ms";
+        if (bytes) std::cout << "   written " << std::setw(8) << double(*bytes) / 1e6 << " MB";
+        std::cout << "\n";
+    };
+    const auto bytesOf = [&written](const std::string& name) {
+        for (const auto& [n, b] : written)
+            if (n == name) return b;
+        return std::int64_t{0};
+    };
+    std::int64_t frameBytes = 0;
+    for (const auto& [n, b] : written) frameBytes += b;
+    // Phases by name (as before this bench used the runner), then the frame.
+    std::vector<std::string> names = fl::phaseNames({&times});
+    std::sort(names.begin(), names.end());
+    for (const std::string& name : names) row(name, times.phaseSeries(name), bytesOf(name));
+    row("frame", times.frameMs(), frameBytes);
+    if (!poseMs.empty()) row("pose (CPU)", poseMs, std::nullopt);
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -241,30 +269,7 @@ int main(int argc, char** argv) {
                   << frames << " frames after " << warmup
                   << " warm-up, timing: " << renderer.timer().modeName() << "\n"
                   << std::fixed << std::setprecision(2);
-        // Bytes written, from the last frame (the same every frame for a held camera).
-        const std::vector<std::pair<std::string, std::int64_t>> written =
-            fl::writtenBytes(renderer);
-        std::int64_t frameBytes = 0;
-        for (const auto& [n, b] : written) frameBytes += b;
-        const auto row = [](const std::string& name, const std::vector<double>& v,
-                            std::optional<std::int64_t> bytes) {
-            std::cout << "  " << std::left << std::setw(12) << name << " min " << std::right
-                      << std::setw(8) << fl::minimum(v) << " ms   median " << std::setw(8)
-                      << fl::median(v) << " ms";
-            if (bytes) std::cout << "   written " << std::setw(8) << double(*bytes) / 1e6 << " MB";
-            std::cout << "\n";
-        };
-        const auto bytesOf = [&written](const std::string& name) {
-            for (const auto& [n, b] : written)
-                if (n == name) return b;
-            return std::int64_t{0};
-        };
-        // Phases by name (as before this bench used the runner), then the frame.
-        std::vector<std::string> names = fl::phaseNames({&times});
-        std::sort(names.begin(), names.end());
-        for (const std::string& name : names) row(name, times.phaseSeries(name), bytesOf(name));
-        row("frame", times.frameMs(), frameBytes);
-        if (!poseMs.empty()) row("pose (CPU)", poseMs, std::nullopt);
+        printPhaseRows(times, fl::writtenBytes(renderer), poseMs);
         std::cout << "peak RSS: " << peakRssKiB() / 1024
                   << " MiB (after loading the scene: " << rssScene / 1024 << " MiB)\n";
     } catch (const std::exception& e) {
