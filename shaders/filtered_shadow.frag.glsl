@@ -3,8 +3,10 @@
 // reference fl::filteredVisibility does the same operations). Taps are points of the light's
 // unwarped NDC plane, looked up through the provider's warp, compared with the receiver-plane
 // depth along the light's ray through the tap.
-layout(binding = 0) uniform sampler2D uPosition; // SurfacesPass: world xyz, w = 0 background
-layout(binding = 1) uniform sampler2D uPlane;    // SurfacesPass: the triangle's normal
+#include "surface_decode.glsl"
+
+layout(binding = 0) uniform sampler2D uSurfaceDepth; // SurfacesPass: positions (surfacePosition)
+layout(binding = 1) uniform sampler2D uNormals; // SurfacesPass: normals (surfacePlane)
 
 layout(location = 0) out float oVisibility;
 
@@ -121,7 +123,7 @@ float filtered(vec3 world, vec3 n) {
 
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
-    vec4 world = texelFetch(uPosition, p, 0);
+    vec4 world = surfacePosition(uSurfaceDepth, p);
     // The receiver plane: the surfaces pass's geometric normal (only the plane is used).
-    oVisibility = world.w == 0.0 ? 1.0 : filtered(world.xyz, texelFetch(uPlane, p, 0).xyz);
+    oVisibility = world.w == 0.0 ? 1.0 : filtered(world.xyz, surfacePlane(uNormals, p));
 }

@@ -11,8 +11,9 @@
 #include "shadow_lookup.glsl"
 #include "disk_light.glsl"
 #include "occluder_edge.glsl"
+#include "surface_decode.glsl"
 
-layout(binding = 0) uniform sampler2D uPosition; // SurfacesPass: world xyz, w = 0 background
+layout(binding = 0) uniform sampler2D uDepth; // SurfacesPass: positions (surfacePosition)
 layout(binding = 2) uniform sampler2D uReceivers;
 layout(binding = 3) uniform sampler2D uLightObjectIds;
 uniform int uHaveObjectIds;
@@ -23,7 +24,7 @@ layout(location = 0) out vec4 oPoint;
 layout(location = 1) out vec4 oOccluder;
 
 void main() {
-    vec4 surface = texelFetch(uPosition, ivec2(gl_FragCoord.xy), 0);
+    vec4 surface = surfacePosition(uDepth, ivec2(gl_FragCoord.xy));
     oOccluder = vec4(0.0, 0.0, 0.0, -1.0);
     if (surface.w == 0.0) {
         oPoint = vec4(0.0, 0.0, 0.0, -1.0);

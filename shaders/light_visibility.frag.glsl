@@ -6,13 +6,14 @@
 #ifdef SOFT_PENUMBRA_MAP
 #include "soft_penumbra.glsl"
 #endif
+#include "surface_decode.glsl"
 
-layout(binding = 2) uniform sampler2D uPosition;
+layout(binding = 2) uniform sampler2D uDepth; // SurfacesPass: positions (surfacePosition)
 
 layout(location = 0) out float oVisibility;
 
 void main() {
-    vec4 world = texelFetch(uPosition, ivec2(gl_FragCoord.xy), 0);
+    vec4 world = surfacePosition(uDepth, ivec2(gl_FragCoord.xy));
     if (world.w == 0.0) {
         oVisibility = 1.0;
         return;

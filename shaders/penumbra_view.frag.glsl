@@ -5,8 +5,9 @@
 // 1e-4 of the map, since the lookup's own rounding may differ from this pass's. Same as
 // fl::penumbraViewTiles on the CPU. A fragment pass: llvmpipe runs it about five times faster
 // than the same work as a compute pass.
+#include "surface_decode.glsl"
 
-layout(binding = 2) uniform sampler2D uPosition; // SurfacesPass's world positions (w = 0: none)
+layout(binding = 2) uniform sampler2D uDepth; // SurfacesPass: positions (surfacePosition)
 layout(std430, binding = 7) writeonly buffer ViewTiles { uint viewTiles[]; };
 uniform mat4 uLightViewProj;
 uniform mat4 uShadowWarp;
@@ -14,7 +15,7 @@ uniform int uMapSize;
 uniform int uTile;
 
 void main() {
-    vec4 world = texelFetch(uPosition, ivec2(gl_FragCoord.xy), 0);
+    vec4 world = surfacePosition(uDepth, ivec2(gl_FragCoord.xy));
     if (world.w == 0.0) return;
     vec4 light = uLightViewProj * vec4(world.xyz, 1.0);
     vec4 map = uShadowWarp * light;

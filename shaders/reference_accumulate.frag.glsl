@@ -3,13 +3,14 @@
 // sample's depth map (the same test as every method's hardShadow()), added to the sum by
 // additive blending.
 #include "shadow_lookup.glsl"
+#include "surface_decode.glsl"
 
-layout(binding = 0) uniform sampler2D uPoints;
+layout(binding = 0) uniform sampler2D uDepth; // SurfacesPass: positions (surfacePosition)
 
 layout(location = 0) out float oLit;
 
 void main() {
-    vec4 p = texelFetch(uPoints, ivec2(gl_FragCoord.xy), 0);
+    vec4 p = surfacePosition(uDepth, ivec2(gl_FragCoord.xy));
     if (p.w == 0.0) discard;
     oLit = hardShadow(p.xyz);
 }

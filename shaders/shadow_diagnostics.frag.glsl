@@ -3,10 +3,10 @@
 // texel footprint, view depth, hard visibility with this and the previous frame's map.
 #include "shadow_lookup.glsl"
 #include "light.glsl"
+#include "surface_decode.glsl"
 
-layout(binding = 3) uniform sampler2D uPosition; // SurfacesPass: world xyz, w = 0 background
-layout(binding = 4) uniform sampler2D uNormal;   // SurfacesPass: shading normal facing the eye
-layout(binding = 5) uniform sampler2D uPlane;    // SurfacesPass: the triangle's normal
+layout(binding = 3) uniform sampler2D uSurfaceDepth; // SurfacesPass: positions (surfacePosition)
+layout(binding = 4) uniform sampler2D uNormals; // SurfacesPass: normals (surfaceNormal, surfacePlane)
 uniform mat4 uInvViewProj;
 uniform vec2 uViewportSize;
 
@@ -35,12 +35,12 @@ vec2 texelOf(vec3 world) {
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
-    vec4 surface = texelFetch(uPosition, pixel, 0);
+    vec4 surface = surfacePosition(uSurfaceDepth, pixel);
     vec3 vWorld = surface.xyz;
     // The Jacobian screen pixel -> shadow texel by central differences of half a pixel on the
     // pixel's own surface plane (not between neighbouring pixels, which at a silhouette belong
     // to different surfaces). Edge-on planes give inf/NaN, caught below.
-    vec3 n0 = texelFetch(uPlane, pixel, 0).xyz;
+    vec3 n0 = surfacePlane(uNormals, pixel);
     vec2 c = gl_FragCoord.xy;
     vec2 dx = texelOf(onPlane(c + vec2(0.5, 0.0), vWorld, n0)) -
               texelOf(onPlane(c - vec2(0.5, 0.0), vWorld, n0));
@@ -52,7 +52,7 @@ void main() {
     bool inMap = shadowCoord(vWorld, uvz);
     // Receivers are surfaces that face the light (as shaded: two-sided, interpolated normal):
     // on the others Lambert shading is zero, so the shadow map's texels there never show.
-    vec3 n = texelFetch(uNormal, pixel, 0).xyz;
+    vec3 n = surfaceNormal(uNormals, pixel);
     vec3 l = toLight(vWorld);
     bool receiver = surface.w != 0.0 && inMap && dot(n, l) > 0.0;
     bool valid = receiver && !isnan(det) && !isinf(det);

@@ -1,9 +1,11 @@
 #version 450 core
 // Step 2 of a frame: the one geometry pass from the eye. Everything a shadow method, the shading
 // pass and the metrics need about the visible surface of each pixel (renderer/passes/
-// SurfacesPass.h lists the targets); the clear values mark background.
+// SurfacesPass.h lists the targets), packed: surface_decode.glsl reads them back. The depth
+// target's clear value (reversed Z: 0) marks background; the colour targets are not cleared.
 #include "alpha_coverage.glsl"
 #include "light.glsl"
+#include "surface_decode.glsl"
 
 in vec3 vWorld;
 in vec3 vNormal;
@@ -13,16 +15,14 @@ in vec4 vColor;
 in vec4 vPreviousClip;
 #endif
 
-layout(location = 0) out vec4 oPosition;   // xyz world, w = 1 (0 background)
-layout(location = 1) out vec4 oNormal;     // xyz shading normal facing the eye, w object id
-layout(location = 2) out vec4 oPlane;      // xyz geometric normal (the triangle's plane)
-layout(location = 3) out vec4 oBaseColor;  // material base colour (texture applied)
-layout(location = 4) out float oReceiver;  // 1 where the surface faces the light
+// The world position is not stored: surfacePosition() rebuilds it from the depth.
+layout(location = 0) out vec4 oNormals;   // octahedral: xy shading normal facing the eye, zw plane
+layout(location = 1) out vec4 oBaseColor; // material base colour (texture applied), sRGB-encoded
+layout(location = 2) out float oReceiver; // 1 where the surface faces the light
 #ifdef FL_MOTION
-layout(location = 5) out vec4 oMotion; // previous pixel xy, previous clip w, clip w
+layout(location = 3) out vec4 oMotion; // previous pixel xy, previous clip w, clip w
 #endif
 
-uniform int uObjectId;
 uniform vec2 uViewport; // the targets' size in pixels
 
 void main() {
@@ -37,10 +37,8 @@ void main() {
     vec3 n = normalize(vNormal);
     // Two-sided shading: the visible side of a surface faces the eye.
     if (!gl_FrontFacing) n = -n;
-    oPosition = vec4(vWorld, 1.0);
-    oNormal = vec4(n, float(uObjectId));
-    oPlane = vec4(g, 0.0);
-    oBaseColor = base;
+    oNormals = vec4(octEncode(n), octEncode(g));
+    oBaseColor = vec4(linearToSrgb(base.rgb), 1.0);
     // Lambert > 0: the pixels whose visibility changes the image; the error metrics count only
     // these (renderer/metrics/Metrics.h).
     oReceiver = dot(n, toLight(vWorld)) > 0.0 ? 1.0 : 0.0;

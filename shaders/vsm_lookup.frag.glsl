@@ -3,8 +3,9 @@
 // bound on the lit fraction from the blurred moments at its texel, with light-bleeding reduction
 // (Lauritzen 2007: the bound's tail below uBleed is cut and the rest rescaled).
 #include "shadow_lookup.glsl"
+#include "surface_decode.glsl"
 
-layout(binding = 0) uniform sampler2D uPosition; // SurfacesPass: world xyz, w = 0 background
+layout(binding = 0) uniform sampler2D uDepth; // SurfacesPass: positions (surfacePosition)
 layout(binding = 2) uniform sampler2D uMoments;  // blurred (d, d^2), bilinear
 uniform mat4 uLightView;
 uniform float uBleed;
@@ -21,7 +22,7 @@ float chebyshev(vec2 m, float t) {
 }
 
 void main() {
-    vec4 world = texelFetch(uPosition, ivec2(gl_FragCoord.xy), 0);
+    vec4 world = surfacePosition(uDepth, ivec2(gl_FragCoord.xy));
     vec3 uvz;
     if (world.w == 0.0 || !shadowCoord(world.xyz, uvz)) {
         oVisibility = 1.0;

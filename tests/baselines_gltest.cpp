@@ -80,8 +80,8 @@ void compareFilterWithCpu(ShadowMapProvider provider, bool pcss) {
     FilterFrame f = pass.frame(in);
     f.depth = readDepthMap(shadow.depth);
     const FloatImage vis = readTexture(out.visibility, 1);
-    const FloatImage points = readTexture(out.points, 4);
-    const FloatImage normals = readTexture(out.normals, 4);
+    const FloatImage points = surfaces.positions().read();
+    const FloatImage normals = surfaces.readNormals(SurfacesPass::Outputs::Normal::Plane);
     std::size_t surface = 0, differ = 0, partial = 0;
     double sumAbs = 0.0, maxAbs = 0.0;
     for (int y = 0; y < size; ++y)
@@ -158,7 +158,7 @@ struct Surfaces {
         (void)pass.execute({gpu, b.camera, sceneLight(b.scene)});
     }
     SurfacesPass pass;
-    [[nodiscard]] const gl::Texture& positions() const { return pass.outputs().position; }
+    [[nodiscard]] SurfacePositions positions() const { return pass.outputs().positions(); }
 };
 BoxScene boxScene() {
     BoxScene b;
@@ -199,7 +199,7 @@ TEST_F(BaselinesTest, ReferenceMatchesCpuRayCastToTheSameSamples) {
     const Surfaces& surfaces = setup.surfaces;
     const ReferenceShadowPass::Outputs out = setup.pass.execute(setup.inputs(rs));
     const FloatImage vis = readTexture(out.visibility, 1);
-    const FloatImage points = readTexture(surfaces.positions(), 4);
+    const FloatImage points = surfaces.positions().read();
     const std::vector<glm::vec3> samples = referenceDiskSamples(b.disk, rs.samples, rs.pattern);
     std::size_t surface = 0, partial = 0, exact = 0, within = 0;
     double sumAbs = 0.0;

@@ -38,6 +38,17 @@ ReceiverGrid readReceivers(const gl::Texture& t) {
     return r;
 }
 
+// The eye's surface positions in GL's row order (row 0 at the bottom), as the grid above.
+ReceiverGrid readReceivers(const SurfacePositions& positions) {
+    const FloatImage img = positions.read(); // row 0 at the top
+    ReceiverGrid r{img.width, img.height, {}};
+    for (int y = img.height - 1; y >= 0; --y)
+        for (int x = 0; x < img.width; ++x)
+            r.points.emplace_back(img.at(x, y, 0), img.at(x, y, 1), img.at(x, y, 2),
+                                  img.at(x, y, 3));
+    return r;
+}
+
 std::size_t nonEmpty(const jfa::Grid& g) {
     std::size_t n = 0;
     for (const jfa::Cell& c : g.cells) n += c.w != 0.0f;
@@ -301,10 +312,10 @@ TEST_F(PenumbraTest, ViewLimitPartsMatchTheCpu) {
     r.resize(128, 96);
     r.render(makeCameraView(scene, {}, 1.0f));
     const ShadowMapPass::Outputs& sm = *r.shadow();
-    const PenumbraView view{r.surfaces().position, sm.lightViewProj, sm.warp};
+    const PenumbraView view{r.surfaces().positions(), sm.lightViewProj, sm.warp};
     const ReceiverGrid receivers = readReceivers(*sm.receivers);
     const std::vector<std::uint8_t> cpuView = penumbraViewTiles(
-        readReceivers(r.surfaces().position), sm.lightViewProj, sm.warp, size, tile);
+        readReceivers(r.surfaces().positions()), sm.lightViewProj, sm.warp, size, tile);
     const float threshold = 0.001f * scene.bounds.radius();
     PenumbraMapPass pass(shaders);
     // One pass, frame after frame: the seeds off the drawn spans are cleared only when the last

@@ -89,7 +89,7 @@ VsmFrame renderVsm(float radius, float blur, float bleed, std::vector<float>* de
     r.render(camera);
     VsmFrame f;
     f.visibility = readTexture(r.visibility(), 1);
-    f.positions = readTexture(r.surfaces().position, 4);
+    f.positions = r.surfaces().positions().read();
     f.receivers = readTexture(r.receivers(), 1);
     if (depth) {
         *depth = readDepthMap(r.shadow()->depth);

@@ -198,6 +198,7 @@ std::int64_t texelBytes(GLenum internalFormat) {
     case GL_DEPTH_COMPONENT32F:
         return 4;
     case GL_RGBA16F:
+    case GL_RGBA16_SNORM:
     case GL_RG32F:
     case GL_RG32I:
     case GL_RG32UI:

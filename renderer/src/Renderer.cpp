@@ -213,7 +213,7 @@ void Renderer::renderFrame(const CameraView& camera, const CameraView* previous)
     timer_.begin("shading");
     const ShadingPass::Outputs shaded =
         shadingPass_.execute({surfaces, light_, methodVisibility, scene_, camera});
-    timer_.wrote(gl::textureBytes(shaded.color) + gl::textureBytes(shaded.visibility));
+    timer_.wrote(gl::textureBytes(shaded.color));
     timer_.end();
     diagnostics_ = nullptr;
     if (settings_.diagnostics) {
@@ -226,7 +226,7 @@ void Renderer::renderFrame(const CameraView& camera, const CameraView* previous)
     timer_.endFrame();
     eyeDraws_ = static_cast<int>(scene_.eyeDrawCalls() - eyeDrawsBefore);
     color_ = &shaded.color;
-    visibility_ = &shaded.visibility;
+    visibility_ = &methodVisibility; // every method writes 1 on background
     gl::throwIfErrors("frame");
 }
 

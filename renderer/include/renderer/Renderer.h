@@ -101,6 +101,7 @@ class Renderer {
     void present(int framebufferWidth, int framebufferHeight);
 
     [[nodiscard]] const gl::Texture& color() const { return *color_; }
+    /// The method's visibility of the last frame, R32F in [0, 1], 1 on background.
     [[nodiscard]] const gl::Texture& visibility() const { return *visibility_; }
     /// R8 mask of the last frame: 1 where the visible surface faces the light (its visibility
     /// changes the image), 0 on back-facing surfaces and background.

@@ -30,9 +30,9 @@ class EyeMethod final : public ShadowMethod {
         const PenumbraReach reach = penumbraReach(in.disk, in.camera.proj * in.camera.view,
                                                   {in.width(), in.height()}, in.sceneBounds);
         const EyeSoftShadowPass::Outputs out =
-            pass_.execute({in.scene, in.camera, in.surfaces.position, in.shadow, in.shadowSettings,
-                           in.disk, es, passes, standardFlooding_, in.width(), in.height(), region,
-                           reach, bandTile(in.options)},
+            pass_.execute({in.scene, in.camera, in.surfaces.positions(), in.shadow,
+                           in.shadowSettings, in.disk, es, passes, standardFlooding_, in.width(),
+                           in.height(), region, reach, bandTile(in.options)},
                           in.timer);
         flood_ = {
             &out.seeds,    &out.flooded,   &out.points,    &out.occluders, true,  standardFlooding_,

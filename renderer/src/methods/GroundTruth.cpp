@@ -20,7 +20,7 @@ class GroundTruth final : public ShadowMethod {
         rs.pattern = geom::diskPatternNamed(in.text("pattern"));
         return pass_
             .execute(
-                {in.scene, in.surfaces.position, in.sceneBounds, in.disk, in.shadowSettings, rs},
+                {in.scene, in.surfaces.positions(), in.sceneBounds, in.disk, in.shadowSettings, rs},
                 in.timer)
             .visibility;
     }

@@ -29,7 +29,7 @@ const gl::Texture& LightLookup::execute(const FrameInputs& in, const gl::Texture
     glViewport(0, 0, in.width(), in.height());
     glDisable(GL_DEPTH_TEST);
     bindShadowMap(program_, in.shadow);
-    glBindTextureUnit(2, in.surfaces.position.id());
+    in.surfaces.positions().bind(program_, 2);
     if (penumbra_) {
         setDiskLightUniforms(program_, in.disk);
         glBindTextureUnit(3, penumbraMap->id());

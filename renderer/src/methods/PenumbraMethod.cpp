@@ -37,7 +37,7 @@ class PenumbraMethod final : public ShadowMethod {
         // --flood-region view: the lookup below reads one texel per eye pixel, so the flood
         // need be exact there only (jfa/Band.h, the view limit), and only seeds within the
         // flood's reach of those texels, or (auto) within the widest penumbra's, count.
-        const PenumbraView view{in.surfaces.position, in.shadow.lightViewProj, in.shadow.warp};
+        const PenumbraView view{in.surfaces.positions(), in.shadow.lightViewProj, in.shadow.warp};
         PenumbraMapPass::Inputs pi{*in.shadow.receivers, in.disk, ps, threshold, reach, &view};
         if (ps.region == jfa::FloodRegion::View) pi.viewSeedReach = viewSeedReach(in, ps, size);
         const PenumbraMapPass::Outputs pm = pass_.execute(pi, in.timer);

@@ -87,7 +87,7 @@ class Vsm final : public ShadowMethod {
         lookup_.set("uLightView", in.lightVolume.view);
         lookup_.set("uBleed", in.real("bleed"));
         lookup_.set("uMinVariance", kMinVariance);
-        glBindTextureUnit(0, in.surfaces.position.id());
+        in.surfaces.positions().bind(lookup_, 0);
         glBindTextureUnit(2, maps_[0].id());
         gl::drawFullscreenTriangle(lookup_, emptyVao_);
         for (GLuint unit : {0u, 1u, 2u}) glBindTextureUnit(unit, 0);

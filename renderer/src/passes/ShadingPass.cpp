@@ -12,8 +12,7 @@ ShadingPass::ShadingPass(const gl::ShaderLibrary& shaders)
 void ShadingPass::resize(int width, int height) {
     if (color_ && color_.width() == width && color_.height() == height) return;
     color_ = gl::Texture(GL_RGBA16F, width, height);
-    visibility_ = gl::Texture(GL_R32F, width, height);
-    fbo_ = gl::Framebuffer::withTargets({&color_, &visibility_}, nullptr, "shading pass");
+    fbo_ = gl::Framebuffer::forColor(color_, "shading pass");
     blendFbo_ = {};
     blendDepth_ = 0;
 }
@@ -25,19 +24,22 @@ void ShadingPass::drawBlended(const Inputs& in) {
     }
     glBindFramebuffer(GL_FRAMEBUFFER, blendFbo_.id());
     glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_FALSE); // the eye's surfaces stay what step 2 wrote
+    glDepthFunc(GL_GREATER); // the surfaces' depth is reversed Z (SurfacesPass)
+    glDepthMask(GL_FALSE);   // the eye's surfaces stay what step 2 wrote
     glEnable(GL_BLEND);
     // "Over" for the colour; the colour target's alpha (1 = something drawn) becomes 1 under a
     // blended surface too, as the sky's 0 means "nothing here".
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     glDisable(GL_CULL_FACE);
-    blended_.set("uViewProj", in.camera.proj * in.camera.view);
+    blended_.set("uViewProj", in.surfaces.viewProj);
     blended_.set("uLightPosition", in.light.position);
     blended_.set("uLightDirection", in.light.direction);
     blended_.set("uLightDirectional", in.light.type == Light::Type::Directional ? 1 : 0);
     blended_.set("uLightColor", in.light.color);
-    in.scene.draw(blended_, GpuScene::Uniforms::Material, GpuScene::Surfaces::Blended);
+    withReversedDepth([&] {
+        in.scene.draw(blended_, GpuScene::Uniforms::Material, GpuScene::Surfaces::Blended);
+    });
+    glDepthFunc(GL_LESS);
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
     glDisable(GL_DEPTH_TEST);
@@ -52,15 +54,15 @@ ShadingPass::Outputs ShadingPass::execute(const Inputs& in) {
     program_.set("uLightDirection", in.light.direction);
     program_.set("uLightDirectional", in.light.type == Light::Type::Directional ? 1 : 0);
     program_.set("uLightColor", in.light.color);
-    glBindTextureUnit(0, in.surfaces.position.id());
-    glBindTextureUnit(1, in.surfaces.normal.id());
+    in.surfaces.positions().bind(program_, 0);
+    glBindTextureUnit(1, in.surfaces.normals.id());
     glBindTextureUnit(2, in.surfaces.baseColor.id());
     glBindTextureUnit(3, in.visibility.id());
     gl::drawFullscreenTriangle(program_, emptyVao_);
     for (GLuint unit : {0u, 1u, 2u, 3u}) glBindTextureUnit(unit, 0);
     if (in.scene.hasBlended()) drawBlended(in);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    return {color_, visibility_};
+    return {color_};
 }
 
 PresentPass::PresentPass(const gl::ShaderLibrary& shaders)

@@ -44,13 +44,12 @@ ShadowDiagnosticsPass::Outputs ShadowDiagnosticsPass::execute(const Inputs& in) 
     program_.set("uLightDirectional", in.light.type == Light::Type::Directional ? 1 : 0);
     bindShadowMap(program_, in.shadow);
     glBindTextureUnit(2, previousMap_.id());
-    glBindTextureUnit(3, in.surfaces.position.id());
-    glBindTextureUnit(4, in.surfaces.normal.id());
-    glBindTextureUnit(5, in.surfaces.plane.id());
+    in.surfaces.positions().bind(program_, 3);
+    glBindTextureUnit(4, in.surfaces.normals.id());
     program_.set("uInvViewProj", glm::inverse(in.camera.proj * in.camera.view));
     program_.set("uViewportSize", glm::vec2(output_.width(), output_.height()));
     gl::drawFullscreenTriangle(program_, emptyVao_);
-    for (GLuint unit : {1u, 2u, 3u, 4u, 5u}) glBindTextureUnit(unit, 0);
+    for (GLuint unit : {1u, 2u, 3u, 4u}) glBindTextureUnit(unit, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 
     glCopyImageSubData(in.shadow.depth.id(), GL_TEXTURE_2D, 0, 0, 0, 0, previousMap_.id(),

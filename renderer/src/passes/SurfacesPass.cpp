@@ -1,4 +1,8 @@
+#include <renderer/passes/SurfaceDecode.h>
 #include <renderer/passes/SurfacesPass.h>
+
+#include <cstring>
+#include <functional>
 
 namespace fl {
 
@@ -11,69 +15,111 @@ gl::Program buildProgram(const gl::ShaderLibrary& shaders, bool motion) {
 }
 } // namespace
 
+void SurfacePositions::bind(const gl::Program& program, GLuint unit) const {
+    glBindTextureUnit(unit, depth.id());
+    program.set("uSurfaceInverseViewProj", inverseViewProj);
+}
+
+FloatImage SurfacePositions::read() const {
+    const int w = width(), h = height();
+    std::vector<float> raw(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
+    glGetTextureImage(depth.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
+                      static_cast<GLsizei>(raw.size() * sizeof(float)), raw.data());
+    gl::throwIfErrors("surface depth read-back");
+    FloatImage out{w, h, 4, std::vector<float>(raw.size() * 4)};
+    for (int y = 0; y < h; ++y) // GL row y is file row h - 1 - y
+        for (int x = 0; x < w; ++x) {
+            const glm::vec4 p = surface::position(raw[static_cast<std::size_t>(y) * w + x], {x, y},
+                                                  {w, h}, inverseViewProj);
+            std::memcpy(&out.data[(static_cast<std::size_t>(h - 1 - y) * w + x) * 4], &p[0],
+                        sizeof(float) * 4);
+        }
+    return out;
+}
+
+FloatImage SurfacesPass::Outputs::readNormals(Normal which) const {
+    FloatImage img = readTexture(normals, 4);
+    const std::size_t first = which == Normal::Shading ? 0 : 2;
+    for (std::size_t i = 0; i < img.data.size(); i += 4) {
+        const glm::vec3 n = surface::octDecode({img.data[i + first], img.data[i + first + 1]});
+        img.data[i] = n.x;
+        img.data[i + 1] = n.y;
+        img.data[i + 2] = n.z;
+        img.data[i + 3] = 0.0f;
+    }
+    return img;
+}
+
 SurfacesPass::SurfacesPass(const gl::ShaderLibrary& shaders)
     : programs_{buildProgram(shaders, false), buildProgram(shaders, true)} {}
 
 void SurfacesPass::resize(int width, int height) {
-    if (position_ && position_.width() == width && position_.height() == height) return;
-    position_ = gl::Texture(GL_RGBA32F, width, height);
-    normal_ = gl::Texture(GL_RGBA32F, width, height);
-    plane_ = gl::Texture(GL_RGBA32F, width, height);
-    baseColor_ = gl::Texture(GL_RGBA32F, width, height);
+    if (depth_ && depth_.width() == width && depth_.height() == height) return;
+    normals_ = gl::Texture(GL_RGBA16_SNORM, width, height);
+    baseColor_ = gl::Texture(GL_RGBA8, width, height);
     receivers_ = gl::Texture(GL_R8, width, height);
     motion_ = gl::Texture(GL_RGBA32F, width, height);
     depth_ = gl::Texture(GL_DEPTH_COMPONENT32F, width, height);
-    fbos_[0] = gl::Framebuffer::withTargets(
-        {&position_, &normal_, &plane_, &baseColor_, &receivers_}, &depth_, "surfaces pass");
-    fbos_[1] = gl::Framebuffer::withTargets(
-        {&position_, &normal_, &plane_, &baseColor_, &receivers_, &motion_}, &depth_,
-        "surfaces pass with motion");
+    fbos_[0] = gl::Framebuffer::withTargets({&normals_, &baseColor_, &receivers_}, &depth_,
+                                            "surfaces pass");
+    fbos_[1] = gl::Framebuffer::withTargets({&normals_, &baseColor_, &receivers_, &motion_},
+                                            &depth_, "surfaces pass with motion");
 }
 
 SurfacesPass::Outputs SurfacesPass::outputs() const {
-    return {position_,
-            normal_,
-            plane_,
+    return {depth_,
+            normals_,
             baseColor_,
             receivers_,
-            depth_,
             motionWritten_ ? &motion_ : nullptr,
-            position_.width(),
-            position_.height()};
+            viewProj_,
+            inverseViewProj_,
+            depth_.width(),
+            depth_.height()};
 }
 
 std::int64_t SurfacesPass::Outputs::bytes() const {
     std::int64_t sum = 0;
-    for (const gl::Texture* t :
-         {&position, &normal, &plane, &baseColor, &receivers, &depth, motion})
+    for (const gl::Texture* t : {&depth, &normals, &baseColor, &receivers, motion})
         if (t) sum += gl::textureBytes(*t);
     return sum;
+}
+
+void withReversedDepth(const std::function<void()>& draw) {
+    glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+    draw();
+    glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
 }
 
 SurfacesPass::Outputs SurfacesPass::execute(const Inputs& in) {
     motionWritten_ = in.previousCamera != nullptr;
     const gl::Framebuffer& fbo = fbos_[motionWritten_ ? 1 : 0];
     gl::Program& program = programs_[motionWritten_ ? 1 : 0];
+    viewProj_ = surface::reversedViewProj(in.camera.proj, in.camera.view);
+    inverseViewProj_ = surface::inverseReversedViewProj(in.camera.proj, in.camera.view);
+    // Only what the depth test cannot mark: the receiver flag (read as a whole image by the
+    // metrics) and the motion target (read by them without the depth).
     const float none[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-    const float far = 1.0f;
-    for (GLint i = 0; i < (motionWritten_ ? 6 : 5); ++i)
-        glClearNamedFramebufferfv(fbo.id(), GL_COLOR, i, none);
-    glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &far);
+    glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 2, none);
+    if (motionWritten_) glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 3, none);
+    glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &surface::kBackgroundDepth);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
-    glViewport(0, 0, position_.width(), position_.height());
+    glViewport(0, 0, depth_.width(), depth_.height());
     glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
+    glDepthFunc(GL_GREATER); // reversed Z: nearer is larger
     glDepthMask(GL_TRUE);
     glDisable(GL_CULL_FACE); // glTF doubleSided and open meshes: both faces are visible
-    program.set("uViewProj", in.camera.proj * in.camera.view);
+    program.set("uViewProj", viewProj_);
     if (in.previousCamera)
         program.set("uPreviousViewProj", in.previousCamera->proj * in.previousCamera->view);
-    program.set("uViewport", glm::vec2(position_.width(), position_.height()));
+    program.set("uViewport", glm::vec2(depth_.width(), depth_.height()));
     program.set("uLightPosition", in.light.position);
     program.set("uLightDirection", in.light.direction);
     program.set("uLightDirectional", in.light.type == Light::Type::Directional ? 1 : 0);
     // Blended surfaces are drawn over the shaded image (ShadingPass, step 4b), not here.
-    in.scene.draw(program, GpuScene::Uniforms::Material, GpuScene::Surfaces::Solid);
+    withReversedDepth(
+        [&] { in.scene.draw(program, GpuScene::Uniforms::Material, GpuScene::Surfaces::Solid); });
+    glDepthFunc(GL_LESS);
     glBindTextureUnit(0, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return outputs();

@@ -181,7 +181,7 @@ ClosedFormFrame renderClosedForm(const gl::ShaderLibrary& shaders, const ClosedF
     r.resize(size, size);
     r.render(makeCameraView(c.scene, c.camera, 1.0f));
     ClosedFormFrame f{readTexture(r.visibility(), 1), {}};
-    f.error = closedFormError(c, readTexture(r.surfaces().position, 4), f.visibility);
+    f.error = closedFormError(c, r.surfaces().positions().read(), f.visibility);
     return f;
 }
 

@@ -207,7 +207,7 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::Pass
         eyePass_.set("uSilhouetteThreshold", in.settings.silhouetteThreshold);
         setDiskLightUniforms(eyePass_, in.light);
         bindShadowMap(eyePass_, in.shadow);
-        glBindTextureUnit(0, in.positions.id());
+        in.positions.bind(eyePass_, 0);
         glBindTextureUnit(2, in.shadow.receivers->id());
         glBindTextureUnit(3, ids_.id());
         gl::drawFullscreenTriangle(eyePass_, emptyVao_);

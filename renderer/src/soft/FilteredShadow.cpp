@@ -225,15 +225,15 @@ FilteredShadowPass::Outputs FilteredShadowPass::execute(const Inputs& in, gl::Pa
                             glm::value_ptr(f.blockerTaps[0]));
     glBindTextureUnit(4, in.shadow.depth.id());
     glBindSampler(4, rawDepth_.id());
-    glBindTextureUnit(0, in.surfaces.position.id());
-    glBindTextureUnit(1, in.surfaces.plane.id());
+    in.surfaces.positions().bind(program_, 0);
+    glBindTextureUnit(1, in.surfaces.normals.id());
     gl::drawFullscreenTriangle(program_, emptyVao_);
     glBindSampler(4, 0);
     for (GLuint unit : {0u, 1u, 4u}) glBindTextureUnit(unit, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (timer) timer->wrote(gl::textureBytes(visibility_));
     if (timer) timer->end();
-    return {visibility_, in.surfaces.position, in.surfaces.plane};
+    return {visibility_};
 }
 
 } // namespace fl

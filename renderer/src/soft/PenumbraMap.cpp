@@ -268,7 +268,7 @@ void PenumbraMapPass::markView(const PenumbraView& view, int size, int tile) {
     glBindFramebuffer(GL_FRAMEBUFFER, viewFbo_.id());
     glViewport(0, 0, w, h);
     glDisable(GL_DEPTH_TEST);
-    glBindTextureUnit(2, view.positions.id());
+    view.positions.bind(viewProgram_, 2);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, viewTiles_.id());
     gl::drawFullscreenTriangle(viewProgram_, emptyVao_);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);

@@ -112,7 +112,7 @@ ReferenceShadowPass::Outputs ReferenceShadowPass::execute(const Inputs& in, gl::
         glEnable(GL_BLEND);
         accumulate_.set("uLightViewProj", viewProj);
         // Bound per map: the scene's draw binds alpha cut-out textures on unit 0.
-        glBindTextureUnit(0, in.positions.id());
+        in.positions.bind(accumulate_, 0);
         glBindTextureUnit(1, map_.id());
         gl::drawFullscreenTriangle(accumulate_, emptyVao_);
         glDisable(GL_BLEND);
@@ -130,7 +130,7 @@ ReferenceShadowPass::Outputs ReferenceShadowPass::execute(const Inputs& in, gl::
     glViewport(0, 0, width, height);
     resolve_.set("uSamples", static_cast<float>(samples.size()));
     glBindTextureUnit(0, sum_.id());
-    glBindTextureUnit(1, in.positions.id());
+    in.positions.bind(resolve_, 1);
     gl::drawFullscreenTriangle(resolve_, emptyVao_);
     glBindTextureUnit(0, 0);
     glBindTextureUnit(1, 0);
@@ -148,7 +148,7 @@ VisibilityDifference referenceSamplingError(ReferenceShadowPass& pass,
                                   in.light, in.shadowSettings, s};
     const ReferenceShadowPass::Outputs out = pass.execute(a);
     const FloatImage va = readTexture(out.visibility, 1);
-    FloatImage mask = readTexture(in.positions, 4);
+    FloatImage mask = in.positions.read();
     FloatImage surface{mask.width, mask.height, 1, {}};
     for (std::size_t i = 3; i < mask.data.size(); i += 4) surface.data.push_back(mask.data[i]);
     s.samples = 2 * samples;

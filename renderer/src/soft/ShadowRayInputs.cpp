@@ -70,26 +70,25 @@ std::vector<glm::vec3> worldVertices(const Scene& scene, const Pose& pose) {
 }
 
 std::vector<rt::Receiver> surfaceReceivers(const SurfacesPass::Outputs& surfaces) {
-    const std::size_t pixels =
-        static_cast<std::size_t>(surfaces.width) * static_cast<std::size_t>(surfaces.height);
-    const auto read = [&](const gl::Texture& t) {
-        std::vector<float> v(4 * pixels);
-        glGetTextureImage(t.id(), 0, GL_RGBA, GL_FLOAT,
-                          static_cast<GLsizei>(v.size() * sizeof(float)), v.data());
-        return v;
-    };
-    const std::vector<float> position = read(surfaces.position), plane = read(surfaces.plane),
-                             normal = read(surfaces.normal);
-    gl::throwIfErrors("surfaces read-back for the ray tracer");
-    std::vector<rt::Receiver> receivers(pixels);
-    for (std::size_t i = 0; i < pixels; ++i) {
-        const auto at = [i](const std::vector<float>& v) {
-            return glm::vec3(v[4 * i], v[4 * i + 1], v[4 * i + 2]);
-        };
-        glm::vec3 n = at(plane);
-        if (glm::dot(n, at(normal)) < 0.0f) n = -n;
-        receivers[i] = {at(position), n, position[4 * i + 3] != 0.0f}; // w = 0: background
-    }
+    const int w = surfaces.width, h = surfaces.height;
+    // Read in file order (row 0 at the top); the receivers are in GL's (row 0 at the bottom),
+    // as the visibility they give is uploaded.
+    using Normal = SurfacesPass::Outputs::Normal;
+    const FloatImage position = surfaces.positions().read();
+    const FloatImage plane = surfaces.readNormals(Normal::Plane);
+    const FloatImage shading = surfaces.readNormals(Normal::Shading);
+    std::vector<rt::Receiver> receivers(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const int row = h - 1 - y;
+            const auto at = [&](const FloatImage& img) {
+                return glm::vec3(img.at(x, row, 0), img.at(x, row, 1), img.at(x, row, 2));
+            };
+            glm::vec3 n = at(plane); // the receiver's plane, facing the shading normal's side
+            if (glm::dot(n, at(shading)) < 0.0f) n = -n;
+            receivers[static_cast<std::size_t>(y) * w + x] = {
+                at(position), n, position.at(x, row, 3) != 0.0f}; // w = 0: background
+        }
     return receivers;
 }
 

@@ -1,9 +1,9 @@
 #pragma once
 // Step 4 of a frame: shading, shared by every shadow method. A fullscreen pass over the surfaces
-// of step 2 applies the method's visibility (step 3): linear colour, and the visibility itself
-// with background set to 1 (what the metrics and the visibility PNG read). Step 4b draws the
-// scene's alphaMode BLEND surfaces over that colour (not into the visibility: they are not among
-// the surfaces a method shades).
+// of step 2 applies the method's visibility (step 3), giving linear colour; the visibility itself
+// is the method's target (1 on background: every method writes that), not copied here. Step 4b
+// draws the scene's alphaMode BLEND surfaces over that colour (not into the visibility: they are
+// not among the surfaces a method shades).
 // PresentPass is step 6 in a window: the colour to the default framebuffer, sRGB-encoded (the
 // caller draws step 5 over it before the buffer swap).
 
@@ -19,7 +19,7 @@ namespace fl {
 class ShadingPass {
   public:
     explicit ShadingPass(const gl::ShaderLibrary& shaders);
-    /// (Re)allocates the colour and visibility targets.
+    /// (Re)allocates the colour target.
     void resize(int width, int height);
 
     struct Inputs {
@@ -30,8 +30,7 @@ class ShadingPass {
         const CameraView& camera;
     };
     struct Outputs {
-        const gl::Texture& color;      // RGBA16F linear; alpha 0 where nothing was drawn
-        const gl::Texture& visibility; // R32F in [0,1]; 1 for background
+        const gl::Texture& color; // RGBA16F linear; alpha 0 where nothing was drawn
     };
     Outputs execute(const Inputs& in);
 
@@ -42,7 +41,7 @@ class ShadingPass {
     gl::Program program_;
     gl::Program blended_;
     gl::VertexArray emptyVao_;
-    gl::Texture color_, visibility_;
+    gl::Texture color_;
     gl::Framebuffer fbo_;
     gl::Framebuffer blendFbo_; // color_ and the surfaces' depth, built when first needed
     GLuint blendDepth_ = 0;    // the depth texture blendFbo_ holds (SurfacesPass may realloc it)

@@ -14,6 +14,7 @@
 
 #include <renderer/io/ImageIO.h>
 #include <renderer/passes/ShadowMapPass.h>
+#include <renderer/passes/SurfacesPass.h>
 #include <renderer/scene/GpuScene.h>
 #include <renderer/soft/DiskLight.h>
 #include <renderer/soft/OccluderEdge.h>
@@ -133,7 +134,7 @@ class EyeSoftShadowPass {
     struct Inputs {
         const GpuScene& scene; // drawn from the light for the object ids
         const CameraView& camera;
-        const gl::Texture& positions;         // the frame's surfaces (SurfacesPass::position)
+        SurfacePositions positions;           // the frame's surfaces (SurfacesPass)
         const ShadowMapPass::Outputs& shadow; // phase 1 (frame step 1), made with writeReceivers
         const ShadowMapSettings& shadowSettings;
         const DiskLight& light;

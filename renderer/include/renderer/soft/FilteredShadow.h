@@ -98,8 +98,6 @@ class FilteredShadowPass {
     };
     struct Outputs {
         const gl::Texture& visibility; // R32F (1 on background)
-        const gl::Texture& points;     // the surfaces' positions: world xyz, w = 1 (0 background)
-        const gl::Texture& normals;    // the surfaces' receiver planes: the normal the filter used
     };
     /// Filters per pixel of the frame's surfaces; `timer` times it as "pcf filter" or
     /// "blocker search+filter".

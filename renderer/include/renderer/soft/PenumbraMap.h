@@ -4,6 +4,7 @@
 // become seeds carrying their world position, and jump flooding with PenumbraCriterion spreads
 // them into the penumbra map. The CPU functions are the reference the GL pass is tested against.
 
+#include <renderer/passes/SurfacesPass.h>
 #include <renderer/soft/PenumbraCriterion.h>
 
 #include <gpu/PassTimer.h>
@@ -42,8 +43,8 @@ jfa::Grid silhouetteSeeds(const ReceiverGrid& receivers, const DiskLight& light,
 /// What reads the penumbra map (--flood-region view): the lookup (soft_penumbra.glsl), one texel
 /// per eye pixel, where the pixel's surface point projects.
 struct PenumbraView {
-    const gl::Texture& positions; // SurfacesPass::Outputs::position (w = 0: background)
-    glm::mat4 lightViewProj;      // ShadowMapPass::Outputs
+    SurfacePositions positions; // SurfacesPass::Outputs::positions()
+    glm::mat4 lightViewProj;    // ShadowMapPass::Outputs
     glm::mat4 warp;
 };
 

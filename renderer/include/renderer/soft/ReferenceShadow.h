@@ -19,6 +19,7 @@
 #include <gpu/ShaderLibrary.h>
 #include <renderer/io/ImageIO.h>
 #include <renderer/passes/ShadowMapPass.h>
+#include <renderer/passes/SurfacesPass.h>
 #include <renderer/scene/GpuScene.h>
 #include <renderer/soft/DiskLight.h>
 
@@ -55,7 +56,7 @@ class ReferenceShadowPass {
 
     struct Inputs {
         const GpuScene& scene;         // drawn into each sample's map
-        const gl::Texture& positions;  // the frame's surfaces (SurfacesPass::position)
+        SurfacePositions positions;    // the frame's surfaces (SurfacesPass)
         const geom::Aabb& sceneBounds; // each sample's volume is fitted to these
         const DiskLight& light;
         const ShadowMapSettings& shadowSettings; // depth bias
