@@ -82,7 +82,8 @@ std::string untimedCsv(const fs::path& dir) {
 nlohmann::json untimedSummary(const fs::path& dir) {
     nlohmann::json j = nlohmann::json::parse(fileContents(dir / "summary.json"));
     j["reference"].erase("medianFrameMs");
-    j.erase("resources"); // the process's memory and objects, after this sitting's frames
+    j.erase("resources");  // the process's memory and objects, after this sitting's frames
+    j.erase("phaseSplit"); // where this sitting's time went
     for (auto& m : j["methods"])
         for (const char* timed : {"medianFrameMs", "frameTimeOverHard", "medianPhaseMs"})
             m.erase(timed);

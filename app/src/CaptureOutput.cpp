@@ -20,6 +20,17 @@ std::vector<std::string> allPhases(const CaptureResults& r) {
 
 } // namespace
 
+double outsideRendering(const PhaseSplit& split) {
+    return split.wall > 0.0 ? (split.wall - split.render) / split.wall : 0.0;
+}
+
+double progressShare(const CaptureResults& r) {
+    std::vector<double> share;
+    for (std::size_t i = 0; i < r.progressMs.size() && i < r.renderMs.size(); ++i)
+        if (r.renderMs[i] > 0.0) share.push_back(r.progressMs[i] / r.renderMs[i]);
+    return fl::median(std::move(share));
+}
+
 std::string safeName(const std::string& label) {
     std::string out;
     for (char c : label) {
@@ -202,6 +213,14 @@ nlohmann::json resultsSummary(const CaptureResults& r) {
     // After this run's first and last frame (a resumed run's first is its first of this sitting).
     if (r.firstFrame.frame >= 0)
         j["resources"] = {{"firstFrame", sample(r.firstFrame)}, {"lastFrame", sample(r.lastFrame)}};
+    // Where this sitting's time went (seconds; CaptureResults.h, PhaseSplit).
+    nlohmann::json split = {{"threads", r.split.threads}};
+    for (const SplitPhase& p : kSplitPhases)
+        split[std::string(p.name) + "Seconds"] = r.split.*p.seconds;
+    split["outsideRenderingShare"] = outsideRendering(r.split);
+    split["progressMedianMs"] = fl::median(r.progressMs);
+    split["progressShareOfRendering"] = progressShare(r);
+    j["phaseSplit"] = split;
     j["complete"] = true;
     return j;
 }

@@ -35,6 +35,10 @@ struct ByteImage {
 /// flipped so that row 0 is the top of the picture.
 FloatImage readTexture(const gl::Texture& texture, int channels);
 
+/// `channels` floats a pixel in GL's row order (row 0 at the bottom) as an image with row 0 at
+/// the top: what readTexture and a pixel-buffer read-back (gpu/ReadBack.h) both return.
+FloatImage fromGlRows(const float* rows, int width, int height, int channels);
+
 /// Reads the default framebuffer's back buffer (what a window shows) as 8-bit RGBA, row 0 at the
 /// top.
 ByteImage readDefaultFramebuffer(int width, int height);
