@@ -176,12 +176,12 @@ void submitFrame(CapturePipeline& pipeline, const FrameJob& job, int i,
         job.scorer.score(i, visibility, ref);
     };
     const auto keep = [f, &job, i, renderMs] {
-        // The frame is finished: into the progress, with the worst pictures it replaced.
-        std::vector<std::pair<std::size_t, const WorstPictures*>> worst;
+        // The frame is finished: into the progress, with the runs whose worst frame it is.
+        std::vector<std::size_t> worst;
         for (std::size_t k = 0; k < job.laneOf.size(); ++k) {
             const MethodRun& run = job.results.runs[job.first + k];
             f->record.runs[k].row = run.rows.back();
-            if (run.worstFrame == i) worst.emplace_back(job.first + k, &run.worst);
+            if (run.worstFrame == i) worst.push_back(job.first + k);
         }
         const auto start = std::chrono::steady_clock::now();
         job.progress.save(f->record, job.scorer.state(), worst);

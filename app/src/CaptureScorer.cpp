@@ -77,7 +77,9 @@ void FrameScorer::score(int i, std::vector<FloatImage>& visibility, const FrameI
 
 void FrameScorer::replay(const std::vector<const FrameRecord*>& done, bool more,
                          CaptureProgress& progress) {
-    std::vector<std::pair<std::size_t, int>> worst;
+    // Each run's worst pictures are in the state saved with its worst frame.
+    std::vector<std::pair<std::size_t, std::pair<int, int>>> worst;
+    const int size = done.empty() ? 0 : done.front()->size;
     for (std::size_t k = 0; k + first_ < runs_.size(); ++k) {
         MethodRun& run = runs_[first_ + k];
         for (const FrameRecord* r : done) {
@@ -85,8 +87,8 @@ void FrameScorer::replay(const std::vector<const FrameRecord*>& done, bool more,
             run.rows.push_back(r->runs.at(k).row);
         }
         if (run.worstFrame >= 0) {
-            run.worst = progress.loadWorst(first_ + k, run.worstFrame);
-            worst.emplace_back(first_ + k, run.worstFrame);
+            run.worst = progress.loadWorst(size, k, run.worstFrame);
+            worst.push_back({first_ + k, {size, run.worstFrame}});
         }
     }
     std::optional<std::pair<int, int>> last; // (resolution, frame) of the state kept

@@ -150,12 +150,13 @@ ByteImage readPng(const std::filesystem::path& path, std::string_view role) {
 }
 
 void writeExr(const std::filesystem::path& path, int width, int height,
-              const std::vector<ExrChannel>& channels) {
+              const std::vector<ExrChannel>& channels, ExrCompression compression) {
     makeOutputFolder(path.parent_path()); // folders are made on demand
     const std::filesystem::path tmp = temporarySibling(path);
     try {
         Imf::Header header(width, height);
-        header.compression() = Imf::ZIP_COMPRESSION;
+        header.compression() =
+            compression == ExrCompression::Zip ? Imf::ZIP_COMPRESSION : Imf::NO_COMPRESSION;
         Imf::FrameBuffer fb;
         for (const ExrChannel& c : channels) {
             if (c.values.size() != static_cast<size_t>(width) * static_cast<size_t>(height))

@@ -61,9 +61,13 @@ struct ExrChannel {
     std::string name;
     std::vector<float> values;
 };
-/// Writes a 32-bit float EXR with the given channels (ZIP compression).
+/// How writeExr stores the pixels: ZIP (small; the outputs) or uncompressed (several times
+/// faster to write: files kept only for a while, such as a capture's resume state).
+enum class ExrCompression { Zip, None };
+/// Writes a 32-bit float EXR with the given channels.
 void writeExr(const std::filesystem::path& path, int width, int height,
-              const std::vector<ExrChannel>& channels);
+              const std::vector<ExrChannel>& channels,
+              ExrCompression compression = ExrCompression::Zip);
 /// Reads every channel of an EXR file as floats.
 std::vector<ExrChannel> readExr(const std::filesystem::path& path, int& width, int& height);
 
