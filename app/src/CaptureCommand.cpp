@@ -202,6 +202,68 @@ struct SizeRun {
     int budget = -1;                      // frames this run may still render (-1: all)
 };
 
+// One resolution's renderers and lanes.
+struct SizeLanes {
+    std::vector<std::unique_ptr<Renderer>> renderers; // [0]: the reference's
+    std::vector<Lane> lanes;
+    std::vector<std::size_t> laneOf; // by method: its lane
+    std::vector<fs::path> laneDirs;  // by lane: its frames' folder
+};
+
+// The lanes of one resolution, w x h, and a MethodRun per method appended to `results`. One
+// renderer per method: each keeps its own maps and timers, and the reference's maps (its own
+// size) are never shared with a method's. Lane 0 is the reference; a `reference` entry in the
+// script's methods reads lane 0 rather than rendering the ground truth twice.
+SizeLanes makeLanes(const CaptureSetup& c, int w, int h, CaptureResults& results) {
+    const CaptureScript& script = c.script;
+    const std::string size = std::to_string(w) + "x" + std::to_string(h);
+    SizeLanes sl;
+    const auto add = [&](const std::string& label, const RenderSettings& settings) {
+        sl.renderers.push_back(std::make_unique<Renderer>(c.shaders, c.scene, settings));
+        sl.renderers.back()->resize(w, h);
+        sl.lanes.push_back({label, sl.renderers.back().get(), {}});
+        return sl.lanes.size() - 1;
+    };
+    add("reference", c.reference);
+    for (const MethodSpec& m : script.methods) {
+        MethodRun run;
+        run.spec = m;
+        run.label = script.resolutions.size() > 1 ? m.label + " @" + size : m.label;
+        run.width = w;
+        run.height = h;
+        sl.laneOf.push_back(
+            isTheReference(m, c.reference) ? 0 : add(run.label, settingsFor(c.base, m)));
+        results.runs.push_back(std::move(run));
+    }
+    const fs::path framesDir = c.dir / "frames" / size;
+    sl.laneDirs.assign(sl.lanes.size(), framesDir / "reference");
+    for (std::size_t k = 0; k < script.methods.size(); ++k)
+        if (sl.laneOf[k] != 0)
+            sl.laneDirs[sl.laneOf[k]] = framesDir / safeName(script.methods[k].label);
+    return sl;
+}
+
+// The frames an earlier run finished: their files must be there, and their times go into the
+// lanes (the rows and the scorer's state: FrameScorer::replay).
+void takeBack(const CaptureScript& script, const std::vector<const FrameRecord*>& done,
+              SizeLanes& sl) {
+    for (const FrameRecord* r : done) {
+        if (script.saveFrames)
+            for (const fs::path& d : sl.laneDirs) requireFrameFiles(d, r->frame);
+        for (std::size_t l = 0; l < sl.lanes.size(); ++l) {
+            // A lane's times are those of its methods' rows (lane 0: the reference's own time,
+            // with its phases where a `reference` entry kept them).
+            const auto k = std::find(sl.laneOf.begin(), sl.laneOf.end(), l) - sl.laneOf.begin();
+            if (k == std::ssize(sl.laneOf))
+                sl.lanes[l].times.append(r->referenceMs, {}, std::nullopt);
+            else
+                sl.lanes[l].times.append(r->runs.at(std::size_t(k)).frameMs,
+                                         r->runs.at(std::size_t(k)).phases,
+                                         r->runs.at(std::size_t(k)).flood);
+        }
+    }
+}
+
 // Every frame of the script at one resolution: appends one MethodRun per method to `results`,
 // takes back the frames an earlier run finished, and records every frame it renders in
 // `progress`. Returns the frames it rendered.
@@ -209,57 +271,15 @@ int captureSize(const CaptureSetup& c, const SizeRun& at, FrameRunner& runner,
                 CaptureResults& results, CaptureProgress& progress) {
     const CaptureScript& script = c.script;
     const int w = at.width, h = at.height;
-    const std::string size = std::to_string(w) + "x" + std::to_string(h);
     const std::size_t first = results.runs.size();
-    // One renderer per method: each keeps its own maps and timers, and the reference's maps (its
-    // own size) are never shared with a method's. Lane 0 is the reference; a `reference` entry
-    // in the script's methods reads lane 0 rather than rendering the ground truth twice.
-    Renderer reference(c.shaders, c.scene, c.reference);
-    reference.resize(w, h);
-    std::vector<std::unique_ptr<Renderer>> renderers;
-    std::vector<Lane> lanes(1);
-    lanes[0] = {"reference", &reference, {}};
-    std::vector<std::size_t> laneOf;
-    for (const MethodSpec& m : script.methods) {
-        MethodRun run;
-        run.spec = m;
-        run.label = script.resolutions.size() > 1 ? m.label + " @" + size : m.label;
-        run.width = w;
-        run.height = h;
-        laneOf.push_back(0);
-        if (!isTheReference(m, c.reference)) {
-            renderers.push_back(
-                std::make_unique<Renderer>(c.shaders, c.scene, settingsFor(c.base, m)));
-            renderers.back()->resize(w, h);
-            laneOf.back() = lanes.size();
-            lanes.push_back({run.label, renderers.back().get(), {}});
-        }
-        results.runs.push_back(std::move(run));
-    }
+    SizeLanes sl = makeLanes(c, w, h, results);
+    std::vector<Lane>& lanes = sl.lanes;
+    const std::vector<std::size_t>& laneOf = sl.laneOf;
+    const std::vector<fs::path>& laneDirs = sl.laneDirs;
     MethodOptions defaults; // the script's jfaPasses as a number (0: auto)
     defaults.set(floodPassesOption().flag, script.jfaPasses);
     FrameScorer scorer(results.runs, first, defaults.integer(floodPassesOption()));
-    const fs::path framesDir = c.dir / "frames" / size;
-    std::vector<fs::path> laneDirs(lanes.size(), framesDir / "reference");
-    for (std::size_t k = 0; k < script.methods.size(); ++k)
-        if (laneOf[k] != 0) laneDirs[laneOf[k]] = framesDir / safeName(script.methods[k].label);
-
-    // The frames an earlier run finished: their files, times and rows, and the scorer's state.
-    for (const FrameRecord* r : at.done) {
-        if (script.saveFrames)
-            for (const fs::path& d : laneDirs) requireFrameFiles(d, r->frame);
-        for (std::size_t l = 0; l < lanes.size(); ++l) {
-            // A lane's times are those of its methods' rows (lane 0: the reference's own time,
-            // with its phases where a `reference` entry kept them).
-            const auto k = std::find(laneOf.begin(), laneOf.end(), l) - laneOf.begin();
-            if (k == std::ssize(laneOf))
-                lanes[l].times.append(r->referenceMs, {}, std::nullopt);
-            else
-                lanes[l].times.append(r->runs.at(std::size_t(k)).frameMs,
-                                      r->runs.at(std::size_t(k)).phases,
-                                      r->runs.at(std::size_t(k)).flood);
-        }
-    }
+    takeBack(script, at.done, sl);
     scorer.replay(at.done, std::ssize(at.done) < script.frames, progress);
 
     const int firstFrame = static_cast<int>(at.done.size());
@@ -328,39 +348,6 @@ nlohmann::json writeOutputs(const fs::path& dir, const CaptureResults& results) 
     return summary;
 }
 
-void printSummaryTable(const nlohmann::json& summary) {
-    std::cout << std::left << std::setw(22) << "method" << std::right << std::setw(10) << "rmse"
-              << std::setw(12) << "rmse pen." << std::setw(10) << "miscl.%" << std::setw(11)
-              << "flicker" << std::setw(11) << "frame ms"
-              << "\n"
-              << std::fixed;
-    for (const auto& m : summary["methods"])
-        std::cout << std::left << std::setw(22) << m["label"].get<std::string>() << std::right
-                  << std::setprecision(4) << std::setw(10) << m["rmse"].get<double>()
-                  << std::setw(12) << m["rmsePenumbra"].get<double>() << std::setprecision(2)
-                  << std::setw(10) << m["misclassifiedPercent"].get<double>()
-                  << std::setprecision(5) << std::setw(11) << m["addedFlicker"].get<double>()
-                  << std::setprecision(2) << std::setw(11) << m["medianFrameMs"].get<double>()
-                  << "\n";
-    std::cout << std::defaultfloat;
-}
-
-// The phase split (CaptureResults.h) and what keeping the progress cost against rendering.
-void printPhaseSplit(const CaptureResults& r) {
-    const PhaseSplit& s = r.split;
-    std::cout << std::fixed << std::setprecision(2) << "phase split, s ("
-              << (s.threads > 0 ? std::to_string(s.threads) + " worker threads" : "synchronous")
-              << "):";
-    for (const SplitPhase& p : kSplitPhases) std::cout << " " << p.name << " " << s.*p.seconds;
-    std::cout << std::setprecision(0) << "; outside rendering " << 100.0 * outsideRendering(s)
-              << "% of the wall\n";
-    if (!r.progressMs.empty())
-        std::cout << std::setprecision(1) << "progress for --resume: " << median(r.progressMs)
-                  << " ms a frame (median) to keep, " << 100.0 * progressShare(r)
-                  << "% of a frame's rendering\n";
-    std::cout << std::defaultfloat;
-}
-
 // The hash of everything a capture's results depend on besides the build: the script's bytes,
 // its camera keys (a camera file's among them), the scene file's size and time, the shaders.
 std::string captureIdentity(const CaptureScript& script, const CaptureRequest& req) {
@@ -409,6 +396,47 @@ framesDone(const CaptureProgress& progress, const CaptureScript& script, const f
     return done;
 }
 
+// The folder's progress: the unfinished run's with --resume (when there is one), else a new one.
+std::optional<CaptureProgress> openProgress(const CaptureRequest& req, const fs::path& dir,
+                                            const std::string& identity, int total) {
+    std::optional<CaptureProgress> progress;
+    if (req.resume) {
+        progress = CaptureProgress::resume(dir, identity, total);
+        if (!progress)
+            std::cout << "no unfinished capture in " << dir.string()
+                      << " to resume: starting from frame 0\n";
+    }
+    if (!progress) progress = CaptureProgress::start(dir, identity, total);
+    return progress;
+}
+
+// The scene and renderer options of a capture script.
+SceneOptions sceneOptionsOf(const CaptureScript& script, const CaptureRequest& req) {
+    SceneOptions so;
+    so.scene = script.scene.string();
+    so.lightRadius = script.lightRadius;
+    so.shaderDir = req.shaderDir;
+    so.shadowMapSize = script.shadowMapSize;
+    so.shadowMap = script.shadowMapProvider;
+    so.methodOptions[std::string(floodPassesOption().flag)] = script.jfaPasses;
+    so.strictMethodOptions = false; // the script's methods each take their own
+    so.timing = req.timing;
+    so.ground = script.ground;
+    return so;
+}
+
+// The ground truth's settings: `base` with the script's reference method and its options.
+RenderSettings referenceSettings(const CaptureScript& script, RenderSettings base) {
+    const MethodDescriptor& truth = script.reference.method();
+    base.method = std::string(truth.name);
+    base.options.set(truth.option("samples")->flag, script.reference.samples);
+    if (const MethodOption* mapSize = truth.option("mapSize"))
+        base.options.set(mapSize->flag, script.reference.mapSize);
+    if (const MethodOption* pattern = truth.option("pattern"))
+        base.options.set(pattern->flag, script.reference.pattern);
+    return base;
+}
+
 int runCapture(const CaptureRequest& req) {
     const auto started = std::chrono::steady_clock::now();
     CaptureScript script;
@@ -427,41 +455,17 @@ int runCapture(const CaptureRequest& req) {
         return 0;
     }
     prepareOutput(dir);
-    std::optional<CaptureProgress> progress;
-    if (req.resume) {
-        progress = CaptureProgress::resume(dir, identity, total);
-        if (!progress)
-            std::cout << "no unfinished capture in " << dir.string()
-                      << " to resume: starting from frame 0\n";
-    }
-    if (!progress) progress = CaptureProgress::start(dir, identity, total);
+    std::optional<CaptureProgress> progress = openProgress(req, dir, identity, total);
     const std::vector<std::vector<const FrameRecord*>> done = framesDone(*progress, script, dir);
     const int finished = progress->finished();
 
-    SceneOptions so;
-    so.scene = script.scene.string();
-    so.lightRadius = script.lightRadius;
-    so.shaderDir = req.shaderDir;
-    so.shadowMapSize = script.shadowMapSize;
-    so.shadowMap = script.shadowMapProvider;
-    so.methodOptions[std::string(floodPassesOption().flag)] = script.jfaPasses;
-    so.strictMethodOptions = false; // the script's methods each take their own
-    so.timing = req.timing;
-    so.ground = script.ground;
+    const SceneOptions so = sceneOptionsOf(script, req);
     const Scene scene = loadScene(so);
     auto context = EglContext::create();
     const gl::ShaderLibrary shaders = makeShaderLibrary(so);
-    CaptureSetup setup{script, so, scene, shaders, makeRenderSettings(so), {}, dir, req.threads};
-    setup.reference = setup.base;
-    {
-        const MethodDescriptor& truth = script.reference.method();
-        setup.reference.method = std::string(truth.name);
-        setup.reference.options.set(truth.option("samples")->flag, script.reference.samples);
-        if (const MethodOption* mapSize = truth.option("mapSize"))
-            setup.reference.options.set(mapSize->flag, script.reference.mapSize);
-        if (const MethodOption* pattern = truth.option("pattern"))
-            setup.reference.options.set(pattern->flag, script.reference.pattern);
-    }
+    const RenderSettings base = makeRenderSettings(so);
+    const CaptureSetup setup{
+        script, so, scene, shaders, base, referenceSettings(script, base), dir, req.threads};
 
     CaptureResults results;
     results.script = &script;
@@ -507,12 +511,7 @@ int runCapture(const CaptureRequest& req) {
     const nlohmann::json summary = writeOutputs(dir, results);
     progress->finish();
     printSummaryTable(summary);
-    if (results.lastFrame.frame >= 0)
-        std::cout << "resources: resident " << results.firstFrame.residentKiB << " KiB after frame "
-                  << results.firstFrame.frame << ", " << results.lastFrame.residentKiB
-                  << " KiB after frame " << results.lastFrame.frame << "; GL objects "
-                  << results.firstFrame.glObjects.total() << ", "
-                  << results.lastFrame.glObjects.total() << "\n";
+    printResources(results);
     printPhaseSplit(results);
     std::cout << "wrote " << (dir / "frames.csv").string() << ", "
               << (dir / "summary.json").string() << ", " << (dir / "report.html").string()

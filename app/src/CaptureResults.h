@@ -103,6 +103,12 @@ double outsideRendering(const PhaseSplit& split);
 /// progress ms over the ms its lanes took to render (0 without frames).
 double progressShare(const CaptureResults& r);
 
+/// Prints the summary's table (one line per method), the resources after this sitting's first
+/// and last frame, and the phase split with what keeping the progress cost.
+void printSummaryTable(const nlohmann::json& summary);
+void printResources(const CaptureResults& r);
+void printPhaseSplit(const CaptureResults& r);
+
 /// Folder-safe form of a label ("pcss:16/24 @64x64" -> "pcss_16-24_64x64").
 std::string safeName(const std::string& label);
 
