@@ -1,8 +1,9 @@
 // `floodlight capture --capture-threads N`: the pipelined capture (frames read back a frame
 // behind, files, metrics and progress on N workers) writes the same outputs as the synchronous
 // one (N = 0) — every frame file and worst-frame picture byte for byte, the CSV and summary but
-// their times — and records where its time went (summary.json's "phaseSplit"); a thread count
-// out of range is a usage error with one message.
+// their times — and records where its time went (summary.json's "phaseSplit"); `auto` takes
+// no workers on a software rasterizer and 1 to 4 elsewhere; a thread count out of range is a
+// usage error with one message.
 //
 // Two runs of a small script (each process compiles its methods' shaders: about 10 s each).
 
@@ -136,12 +137,30 @@ TEST(CaptureThreads, TheSummaryRecordsThePhaseSplit) {
     EXPECT_LE(s["outsideRenderingShare"].get<double>(), 1.0);
 }
 
+TEST(CaptureThreads, AutoTakesNoWorkersOnASoftwareRasterizer) {
+    const fs::path out = root() / "auto";
+    const Outcome o = capture(out, ""); // auto is the default
+    ASSERT_EQ(o.code, 0) << o.output;
+    const nlohmann::json j = nlohmann::json::parse(fileContents(out / "summary.json"));
+    const std::string context = j["context"].get<std::string>();
+    const int threads = j["phaseSplit"]["threads"].get<int>();
+    // gl::isSoftwareRenderer's names: Mesa's CPU rasterizers.
+    if (context.find("llvmpipe") != std::string::npos ||
+        context.find("softpipe") != std::string::npos)
+        EXPECT_EQ(threads, 0) << context;
+    else {
+        EXPECT_GE(threads, 1) << context;
+        EXPECT_LE(threads, 4) << context;
+    }
+}
+
 TEST(CaptureThreads, AThreadCountOutOfRangeIsAUsageError) {
     for (const char* bad : {"17", "-1", "two"}) {
         const fs::path out = root() / "bad";
         const Outcome o = capture(out, std::string("--capture-threads ") + bad);
         EXPECT_EQ(o.code, 2) << bad << ": " << o.output;
-        EXPECT_NE(o.output.find("--capture-threads: must be an integer in [0, 16]"),
+        EXPECT_NE(o.output.find("--capture-threads: must be auto or an integer in [0, 16], got '" +
+                                std::string(bad) + "'"),
                   std::string::npos)
             << o.output;
         EXPECT_FALSE(fs::exists(out / "summary.json"));

@@ -3,9 +3,10 @@
 // (one row per frame x method), summary.json and report.html (written last, so a run that fails
 // leaves neither a summary nor a report behind). Every finished frame goes into the folder's
 // progress (CaptureProgress.h) first: `--resume` continues a killed or failed run from there.
-// With --capture-threads N > 0 the GL thread only renders and reads back (a frame behind,
-// through pixel buffers); the files, metrics and progress run on N workers (CapturePipeline.h),
-// with the same outputs. summary.json's "phaseSplit" says where the time went.
+// With --capture-threads N > 0 (auto: on a GPU) the GL thread only renders and reads back (a
+// frame behind, through pixel buffers); the files, metrics and progress run on N workers
+// (CapturePipeline.h), with the same outputs. summary.json's "phaseSplit" says where the time
+// went.
 
 #include "CapturePipeline.h"
 #include "CaptureProgress.h"
@@ -31,6 +32,7 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <thread>
 
 namespace fl::app {
 
@@ -44,8 +46,8 @@ struct CaptureRequest {
     std::string shaderDir;
     std::string timing = "auto";
     bool resume = false;
-    int stopAfter = 0; // frames this run renders at most (0: all)
-    int threads = 2;   // --capture-threads
+    int stopAfter = 0;            // frames this run renders at most (0: all)
+    std::string threads = "auto"; // --capture-threads: auto or 0..kMaxCaptureThreads
 };
 
 // The exit status of a run that --stop-after ended with frames left (its progress is kept).
@@ -396,6 +398,16 @@ framesDone(const CaptureProgress& progress, const CaptureScript& script, const f
     return done;
 }
 
+// --capture-threads: a count, or auto: none on a software rasterizer (its frames use every
+// core: workers slowed them, and added to the frame times it records: medium.json's rendering
+// took 200 s alone, 265 s beside two workers), else one a core but the GL thread's, up to 4.
+// Needs the GL context.
+int captureThreads(const std::string& option) {
+    if (option != "auto") return std::stoi(option); // checked by the option's validator
+    if (gl::isSoftwareRenderer()) return 0;
+    return std::clamp(static_cast<int>(std::thread::hardware_concurrency()) - 1, 1, 4);
+}
+
 // The folder's progress: the unfinished run's with --resume (when there is one), else a new one.
 std::optional<CaptureProgress> openProgress(const CaptureRequest& req, const fs::path& dir,
                                             const std::string& identity, int total) {
@@ -464,8 +476,10 @@ int runCapture(const CaptureRequest& req) {
     auto context = EglContext::create();
     const gl::ShaderLibrary shaders = makeShaderLibrary(so);
     const RenderSettings base = makeRenderSettings(so);
-    const CaptureSetup setup{
-        script, so, scene, shaders, base, referenceSettings(script, base), dir, req.threads};
+    const CaptureSetup setup{script, so,
+                             scene,  shaders,
+                             base,   referenceSettings(script, base),
+                             dir,    captureThreads(req.threads)};
 
     CaptureResults results;
     results.script = &script;
@@ -549,10 +563,20 @@ Runner addCaptureCommand(CLI::App& app) {
         ->check(integer(1, kMaxCaptureFrames));
     cmd->add_option("--capture-threads", r->threads,
                     "Worker threads that write the frames' files and compute their metrics and "
-                    "progress while the next frames render (0 to " +
+                    "progress while the next frames render: auto or 0 to " +
                         std::to_string(kMaxCaptureThreads) +
-                        "; 0: one frame after another, on the GL thread). Same outputs either way")
-        ->check(integer(0, kMaxCaptureThreads))
+                        " (0: one frame after another, on the GL thread; auto: 0 on a software "
+                        "rasterizer, whose frames use every core, else up to 4). Same outputs "
+                        "either way")
+        ->check(CLI::Validator(
+            [](const std::string& text) -> std::string {
+                if (text == "auto") return {};
+                const std::string problem = numberProblem(text, 0, kMaxCaptureThreads, true);
+                // "must be an integer in [0, 16], got 'x'" -> "must be auto or an integer ..."
+                return problem.starts_with("must be ") ? "must be auto or " + problem.substr(8)
+                                                       : problem;
+            },
+            "auto|INT"))
         ->capture_default_str();
     return [r] { return runCapture(*r); };
 }
