@@ -12,8 +12,9 @@
 //
 // A frame is finished when its line is in the journal: its frame files and pictures are written
 // first, the line last, and the superseded pictures are removed after it. A killed run therefore
-// loses at most the frames in flight: one synchronously, up to three with --capture-threads (the
-// one being rendered and the two queued for the workers, CapturePipeline.h). The journal and
+// loses at most the frames in flight: one synchronously, up to four with --capture-threads (the
+// one being rendered, the one read back a frame behind and the two queued for the workers,
+// CapturePipeline.h). The journal and
 // resume/ go when the capture's summary and report are written.
 
 #include "CaptureResults.h"
