@@ -3,9 +3,15 @@
 // (one row per frame x method), summary.json and report.html (written last, so a run that fails
 // leaves neither a summary nor a report behind). Every finished frame goes into the folder's
 // progress (CaptureProgress.h) first: `--resume` continues a killed or failed run from there.
+// With --capture-threads N > 0 (auto: on a GPU) the GL thread only renders and reads back (a
+// frame behind, through pixel buffers); the files, metrics and progress run on N workers
+// (CapturePipeline.h), with the same outputs. summary.json's "phaseSplit" says where the time
+// went.
 
+#include "CapturePipeline.h"
 #include "CaptureProgress.h"
 #include "CaptureResults.h"
+#include "CaptureScorer.h"
 #include "Commands.h"
 
 #include <base/InputFile.h>
@@ -26,6 +32,7 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <thread>
 
 namespace fl::app {
 
@@ -39,7 +46,8 @@ struct CaptureRequest {
     std::string shaderDir;
     std::string timing = "auto";
     bool resume = false;
-    int stopAfter = 0; // frames this run renders at most (0: all)
+    int stopAfter = 0;            // frames this run renders at most (0: all)
+    std::string threads = "auto"; // --capture-threads: auto or 0..kMaxCaptureThreads
 };
 
 // The exit status of a run that --stop-after ended with frames left (its progress is kept).
@@ -62,7 +70,6 @@ void prepareOutput(const fs::path& dir) {
     }
 }
 
-// The standard-flooding run a JFA run's |dI| buckets are measured against: the script's run of
 // Whether a script's entry is the ground truth itself (its row is then the reference against
 // itself, from lane 0): the same method, and every option the entry gives has the reference's
 // value. {"method": "reference", "mapSize": 1024} beside a 2048² reference is a method of its
@@ -76,22 +83,6 @@ bool isTheReference(const MethodSpec& m, const RenderSettings& reference) {
     return true;
 }
 
-// referenceOf(its method) at the same size and pass count; -1 if the script has none.
-int counterpartOf(const std::vector<MethodRun>& runs, std::size_t k, int defaultPasses) {
-    const MethodSpec& m = runs[k].spec;
-    const std::optional<std::string> want = referenceOf(m.method);
-    if (!want) return -1;
-    const auto passes = [&](const MethodSpec& spec) {
-        const MethodOption& o = floodPassesOption();
-        return spec.options.has(o.flag) ? spec.options.integer(o) : defaultPasses;
-    };
-    for (std::size_t c = 0; c < runs.size(); ++c)
-        if (runs[c].spec.method == *want && runs[c].width == runs[k].width &&
-            runs[c].height == runs[k].height && passes(runs[c].spec) == passes(m))
-            return static_cast<int>(c);
-    return -1;
-}
-
 // What every resolution of a capture shares.
 struct CaptureSetup {
     const CaptureScript& script;
@@ -100,6 +91,7 @@ struct CaptureSetup {
     const gl::ShaderLibrary& shaders;
     RenderSettings base, reference;
     fs::path dir;
+    int threads = 0; // workers for files, metrics and progress (0: synchronous)
 };
 
 // The script's time axis: its animations (checked against the scene), frame i at start + i / fps.
@@ -111,103 +103,6 @@ FramePlan::Clip timeAxis(const CaptureScript& script, const Scene& scene) {
         throw CaptureScriptError(script.file.string() + ": animation.name: " + e.what());
     }
 }
-
-// The metrics of one resolution's runs, frame by frame: each method against the ground truth,
-// its added flicker since the previous frame, its worst frame, and a JFA run's |dI| buckets
-// against its standard-flooding counterpart.
-class FrameScorer {
-  public:
-    FrameScorer(std::vector<MethodRun>& runs, std::size_t first, int jfaPasses)
-        : runs_(runs), first_(first) {
-        state_.previous.resize(runs.size() - first);
-        for (std::size_t k = first; k < runs.size(); ++k) {
-            const int c = counterpartOf(runs, k, jfaPasses);
-            counterpart_.push_back(c);
-            if (c >= 0) runs[k].counterpart = runs[static_cast<std::size_t>(c)].label;
-        }
-    }
-
-    /// Scores frame i: `visibility` holds one image per run (moved from), `ref` the truth.
-    void score(int i, std::vector<FloatImage>& visibility, const FrameImages& ref) {
-        // Flicker compares with the previous frame: on the same surface points (reprojected with
-        // the reference's motion; every method sees the same surfaces), and, as before, on the
-        // same pixels where both frames have receivers.
-        const FloatImage flickerReceivers =
-            i > 0 ? bothReceivers(state_.previousReceivers, ref.receivers) : FloatImage{};
-        std::optional<Reprojection> reprojection;
-        if (i > 0)
-            reprojection.emplace(ref.motion, state_.previousDepth, ref.receivers,
-                                 state_.previousReceivers);
-        for (std::size_t k = 0; k < visibility.size(); ++k) {
-            MethodRun& run = runs_[first_ + k];
-            FrameRow row;
-            row.frame = i;
-            // Every method sees the same surfaces: the reference's receivers are theirs.
-            row.metrics = compareWithReference(visibility[k], ref.visibility, ref.receivers);
-            if (reprojection) {
-                row.flicker = addedSurfaceFlicker(*reprojection, state_.previous[k], visibility[k],
-                                                  state_.previousReference, ref.visibility);
-                row.screenFlicker =
-                    addedFlicker(state_.previous[k], visibility[k], state_.previousReference,
-                                 ref.visibility, flickerReceivers);
-            }
-            if (isWorse(run, row)) run.worst = {visibility[k], ref.visibility, ref.receivers};
-            run.rows.push_back(std::move(row));
-        }
-        for (std::size_t k = 0; k < visibility.size(); ++k) {
-            if (counterpart_[k] >= 0)
-                runs_[first_ + k].rows.back().deltaBuckets =
-                    compareSoftShadows(
-                        visibility[k],
-                        visibility[static_cast<std::size_t>(counterpart_[k]) - first_])
-                        .deltaBuckets;
-            state_.previous[k] = std::move(visibility[k]);
-        }
-        state_.previousReference = ref.visibility;
-        state_.previousReceivers = ref.receivers;
-        state_.previousDepth = depthOf(ref.motion);
-    }
-
-    /// Takes back the frames an earlier run finished (a resumed capture): their rows, each
-    /// run's worst pictures and, when frames are left (`more`), the state after the last one.
-    void replay(const std::vector<const FrameRecord*>& done, bool more, CaptureProgress& progress) {
-        std::vector<std::pair<std::size_t, int>> worst;
-        for (std::size_t k = 0; k + first_ < runs_.size(); ++k) {
-            MethodRun& run = runs_[first_ + k];
-            for (const FrameRecord* r : done) {
-                isWorse(run, r->runs.at(k).row);
-                run.rows.push_back(r->runs.at(k).row);
-            }
-            if (run.worstFrame >= 0) {
-                run.worst = progress.loadWorst(first_ + k, run.worstFrame);
-                worst.emplace_back(first_ + k, run.worstFrame);
-            }
-        }
-        std::optional<std::pair<int, int>> last; // (resolution, frame) of the state kept
-        if (!done.empty() && more) {
-            last = {done.back()->size, done.back()->frame};
-            state_ = progress.loadState(last->first, last->second, state_.previous.size());
-        }
-        progress.adopt(last, worst);
-    }
-
-    /// What the next frame's flicker needs from the last one scored.
-    [[nodiscard]] const ScorerState& state() const { return state_; }
-
-  private:
-    // Whether `row` is the run's worst frame so far; if so, it becomes the run's worst.
-    static bool isWorse(MethodRun& run, const FrameRow& row) {
-        if (row.metrics.rmse <= run.worstRmse) return false;
-        run.worstRmse = row.metrics.rmse;
-        run.worstFrame = row.frame;
-        return true;
-    }
-
-    std::vector<MethodRun>& runs_;
-    std::size_t first_;
-    std::vector<int> counterpart_;
-    ScorerState state_;
-};
 
 // The stem of frame i's files ("frame_00042").
 std::string frameStem(int i) {
@@ -229,6 +124,78 @@ void requireFrameFiles(const fs::path& dir, int i) {
     }
 }
 
+// Frames queued for files, metrics and progress at once (each holds every lane's images); the
+// GL thread waits when as many are unfinished.
+constexpr int kFramesInFlight = 2;
+
+// What every frame of one resolution's capture shares, for its tasks.
+struct FrameJob {
+    const CaptureScript& script;
+    const std::vector<Lane>& lanes;
+    const std::vector<std::size_t>& laneOf; // by method: its lane
+    const std::vector<fs::path>& laneDirs;  // by lane: its frames' folder
+    FrameScorer& scorer;
+    CaptureProgress& progress;
+    CaptureResults& results;
+    std::size_t first; // the resolution's first run in results.runs
+    int size;          // the resolution's index in the script
+};
+
+// Queues frame i (every lane's images, moved from `laneImages`): its files, each lane's a task
+// of its own, then its metrics and progress, in frame order. The times go into its record here,
+// on the GL thread, which alone appends to the lanes' times.
+void submitFrame(CapturePipeline& pipeline, const FrameJob& job, int i,
+                 std::vector<FrameImages>& laneImages) {
+    struct Frame {
+        std::vector<FrameImages> images; // by lane
+        FrameRecord record;
+    };
+    auto f = std::make_shared<Frame>();
+    f->images = std::move(laneImages);
+    laneImages.resize(f->images.size());
+    const auto n = static_cast<std::size_t>(i); // the lanes' times hold every frame of the size
+    f->record = {job.size, i, job.lanes[0].times.frameMs().at(n), {}};
+    double renderMs = 0.0;
+    for (const Lane& lane : job.lanes) renderMs += lane.times.frameMs().at(n);
+    for (std::size_t k = 0; k < job.script.methods.size(); ++k) {
+        const PhaseTimes& t = job.lanes[job.laneOf[k]].times;
+        f->record.runs.push_back({{}, t.frameMs().at(n), t.phases(n), t.flood(n)});
+    }
+    std::vector<CapturePipeline::Task> files;
+    if (job.script.saveFrames)
+        for (std::size_t l = 0; l < f->images.size(); ++l)
+            files.push_back({&PhaseSplit::files, [f, l, &job, i] {
+                                 writeFrame(f->images[l], job.laneDirs[l], frameStem(i));
+                             }});
+    const auto metrics = [f, &job, i] {
+        std::vector<FloatImage> visibility(job.laneOf.size());
+        const FrameImages& ref = f->images[0];
+        for (std::size_t k = 0; k < visibility.size(); ++k)
+            // A `reference` entry's row is the reference against itself (lane 0, copied);
+            // every other lane belongs to one method alone. The files are written by now.
+            visibility[k] = job.laneOf[k] == 0 ? ref.visibility
+                                               : std::move(f->images[job.laneOf[k]].visibility);
+        job.scorer.score(i, visibility, ref);
+    };
+    const auto keep = [f, &job, i, renderMs] {
+        // The frame is finished: into the progress, with the runs whose worst frame it is.
+        std::vector<std::size_t> worst;
+        for (std::size_t k = 0; k < job.laneOf.size(); ++k) {
+            const MethodRun& run = job.results.runs[job.first + k];
+            f->record.runs[k].row = run.rows.back();
+            if (run.worstFrame == i) worst.push_back(job.first + k);
+        }
+        const auto start = std::chrono::steady_clock::now();
+        job.progress.save(f->record, job.scorer.state(), worst);
+        job.results.progressMs.push_back(
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count());
+        job.results.renderMs.push_back(renderMs);
+    };
+    pipeline.submit(std::move(files),
+                    {{&PhaseSplit::metrics, metrics}, {&PhaseSplit::progress, keep}});
+}
+
 // One resolution's part of a capture run.
 struct SizeRun {
     int index = 0; // into the script's resolutions
@@ -237,6 +204,68 @@ struct SizeRun {
     int budget = -1;                      // frames this run may still render (-1: all)
 };
 
+// One resolution's renderers and lanes.
+struct SizeLanes {
+    std::vector<std::unique_ptr<Renderer>> renderers; // [0]: the reference's
+    std::vector<Lane> lanes;
+    std::vector<std::size_t> laneOf; // by method: its lane
+    std::vector<fs::path> laneDirs;  // by lane: its frames' folder
+};
+
+// The lanes of one resolution, w x h, and a MethodRun per method appended to `results`. One
+// renderer per method: each keeps its own maps and timers, and the reference's maps (its own
+// size) are never shared with a method's. Lane 0 is the reference; a `reference` entry in the
+// script's methods reads lane 0 rather than rendering the ground truth twice.
+SizeLanes makeLanes(const CaptureSetup& c, int w, int h, CaptureResults& results) {
+    const CaptureScript& script = c.script;
+    const std::string size = std::to_string(w) + "x" + std::to_string(h);
+    SizeLanes sl;
+    const auto add = [&](const std::string& label, const RenderSettings& settings) {
+        sl.renderers.push_back(std::make_unique<Renderer>(c.shaders, c.scene, settings));
+        sl.renderers.back()->resize(w, h);
+        sl.lanes.push_back({label, sl.renderers.back().get(), {}});
+        return sl.lanes.size() - 1;
+    };
+    add("reference", c.reference);
+    for (const MethodSpec& m : script.methods) {
+        MethodRun run;
+        run.spec = m;
+        run.label = script.resolutions.size() > 1 ? m.label + " @" + size : m.label;
+        run.width = w;
+        run.height = h;
+        sl.laneOf.push_back(
+            isTheReference(m, c.reference) ? 0 : add(run.label, settingsFor(c.base, m)));
+        results.runs.push_back(std::move(run));
+    }
+    const fs::path framesDir = c.dir / "frames" / size;
+    sl.laneDirs.assign(sl.lanes.size(), framesDir / "reference");
+    for (std::size_t k = 0; k < script.methods.size(); ++k)
+        if (sl.laneOf[k] != 0)
+            sl.laneDirs[sl.laneOf[k]] = framesDir / safeName(script.methods[k].label);
+    return sl;
+}
+
+// The frames an earlier run finished: their files must be there, and their times go into the
+// lanes (the rows and the scorer's state: FrameScorer::replay).
+void takeBack(const CaptureScript& script, const std::vector<const FrameRecord*>& done,
+              SizeLanes& sl) {
+    for (const FrameRecord* r : done) {
+        if (script.saveFrames)
+            for (const fs::path& d : sl.laneDirs) requireFrameFiles(d, r->frame);
+        for (std::size_t l = 0; l < sl.lanes.size(); ++l) {
+            // A lane's times are those of its methods' rows (lane 0: the reference's own time,
+            // with its phases where a `reference` entry kept them).
+            const auto k = std::find(sl.laneOf.begin(), sl.laneOf.end(), l) - sl.laneOf.begin();
+            if (k == std::ssize(sl.laneOf))
+                sl.lanes[l].times.append(r->referenceMs, {}, std::nullopt);
+            else
+                sl.lanes[l].times.append(r->runs.at(std::size_t(k)).frameMs,
+                                         r->runs.at(std::size_t(k)).phases,
+                                         r->runs.at(std::size_t(k)).flood);
+        }
+    }
+}
+
 // Every frame of the script at one resolution: appends one MethodRun per method to `results`,
 // takes back the frames an earlier run finished, and records every frame it renders in
 // `progress`. Returns the frames it rendered.
@@ -244,57 +273,15 @@ int captureSize(const CaptureSetup& c, const SizeRun& at, FrameRunner& runner,
                 CaptureResults& results, CaptureProgress& progress) {
     const CaptureScript& script = c.script;
     const int w = at.width, h = at.height;
-    const std::string size = std::to_string(w) + "x" + std::to_string(h);
     const std::size_t first = results.runs.size();
-    // One renderer per method: each keeps its own maps and timers, and the reference's maps (its
-    // own size) are never shared with a method's. Lane 0 is the reference; a `reference` entry
-    // in the script's methods reads lane 0 rather than rendering the ground truth twice.
-    Renderer reference(c.shaders, c.scene, c.reference);
-    reference.resize(w, h);
-    std::vector<std::unique_ptr<Renderer>> renderers;
-    std::vector<Lane> lanes(1);
-    lanes[0] = {"reference", &reference, {}};
-    std::vector<std::size_t> laneOf;
-    for (const MethodSpec& m : script.methods) {
-        MethodRun run;
-        run.spec = m;
-        run.label = script.resolutions.size() > 1 ? m.label + " @" + size : m.label;
-        run.width = w;
-        run.height = h;
-        laneOf.push_back(0);
-        if (!isTheReference(m, c.reference)) {
-            renderers.push_back(
-                std::make_unique<Renderer>(c.shaders, c.scene, settingsFor(c.base, m)));
-            renderers.back()->resize(w, h);
-            laneOf.back() = lanes.size();
-            lanes.push_back({run.label, renderers.back().get(), {}});
-        }
-        results.runs.push_back(std::move(run));
-    }
+    SizeLanes sl = makeLanes(c, w, h, results);
+    std::vector<Lane>& lanes = sl.lanes;
+    const std::vector<std::size_t>& laneOf = sl.laneOf;
+    const std::vector<fs::path>& laneDirs = sl.laneDirs;
     MethodOptions defaults; // the script's jfaPasses as a number (0: auto)
     defaults.set(floodPassesOption().flag, script.jfaPasses);
     FrameScorer scorer(results.runs, first, defaults.integer(floodPassesOption()));
-    const fs::path framesDir = c.dir / "frames" / size;
-    std::vector<fs::path> laneDirs(lanes.size(), framesDir / "reference");
-    for (std::size_t k = 0; k < script.methods.size(); ++k)
-        if (laneOf[k] != 0) laneDirs[laneOf[k]] = framesDir / safeName(script.methods[k].label);
-
-    // The frames an earlier run finished: their files, times and rows, and the scorer's state.
-    for (const FrameRecord* r : at.done) {
-        if (script.saveFrames)
-            for (const fs::path& d : laneDirs) requireFrameFiles(d, r->frame);
-        for (std::size_t l = 0; l < lanes.size(); ++l) {
-            // A lane's times are those of its methods' rows (lane 0: the reference's own time,
-            // with its phases where a `reference` entry kept them).
-            const auto k = std::find(laneOf.begin(), laneOf.end(), l) - laneOf.begin();
-            if (k == std::ssize(laneOf))
-                lanes[l].times.append(r->referenceMs, {}, std::nullopt);
-            else
-                lanes[l].times.append(r->runs.at(std::size_t(k)).frameMs,
-                                      r->runs.at(std::size_t(k)).phases,
-                                      r->runs.at(std::size_t(k)).flood);
-        }
-    }
+    takeBack(script, at.done, sl);
     scorer.replay(at.done, std::ssize(at.done) < script.frames, progress);
 
     const int firstFrame = static_cast<int>(at.done.size());
@@ -314,38 +301,18 @@ int captureSize(const CaptureSetup& c, const SizeRun& at, FrameRunner& runner,
         // A resumed run's first frame would carry the start-up (shader compilation, first
         // allocations) that only frame 0 carries in a run without a break: one frame unrecorded.
         .warmup = firstFrame > 0 ? 1 : 0,
+        // Pipelined: the GL thread goes on rendering while the frame before is copied out.
+        .readBehind = c.threads > 0,
         .clip = timeAxis(script, c.scene),
         // The reference's motion reprojects every method's flicker (FrameScorer::score).
         .motionLane = 0};
+    const FrameJob frameJob{script,   lanes,   laneOf, laneDirs, scorer,
+                            progress, results, first,  at.index};
+    // Declared after everything its tasks use: it finishes them before those go.
+    CapturePipeline pipeline(c.threads, kFramesInFlight, results.split);
     if (rendered > 0)
         runner.run(plan, lanes, [&](int i, std::vector<FrameImages>& laneImages) {
-            const FrameImages& ref = laneImages[0];
-            if (script.saveFrames)
-                for (std::size_t l = 0; l < lanes.size(); ++l)
-                    writeFrame(laneImages[l], laneDirs[l], frameStem(i));
-            std::vector<FloatImage> visibility(script.methods.size());
-            for (std::size_t k = 0; k < script.methods.size(); ++k)
-                // A `reference` entry's row is the reference against itself (lane 0, copied);
-                // every other lane belongs to one method alone.
-                visibility[k] =
-                    laneOf[k] == 0 ? ref.visibility : std::move(laneImages[laneOf[k]].visibility);
-            scorer.score(i, visibility, ref);
-
-            // The frame is finished: into the progress, with the worst pictures it replaced.
-            FrameRecord record{at.index, i, lanes[0].times.frameMs().back(), {}};
-            std::vector<std::pair<std::size_t, const WorstPictures*>> worst;
-            for (std::size_t k = 0; k < script.methods.size(); ++k) {
-                const MethodRun& run = results.runs[first + k];
-                const PhaseTimes& t = lanes[laneOf[k]].times;
-                const std::size_t n = t.frames() - 1;
-                record.runs.push_back({run.rows.back(), t.frameMs()[n], t.phases(n), t.flood(n)});
-                if (run.worstFrame == i) worst.emplace_back(first + k, &run.worst);
-            }
-            const auto saveStart = std::chrono::steady_clock::now();
-            progress.save(record, scorer.state(), worst);
-            results.progressMs.push_back(std::chrono::duration<double, std::milli>(
-                                             std::chrono::steady_clock::now() - saveStart)
-                                             .count());
+            submitFrame(pipeline, frameJob, i, laneImages);
             // Memory and GL objects (one glIs* per name ever issued) after this sitting's first
             // frame and each resolution's last, not every frame.
             const bool firstSample = results.firstFrame.frame < 0, lastSample = i == plan.last;
@@ -355,6 +322,7 @@ int captureSize(const CaptureSetup& c, const SizeRun& at, FrameRunner& runner,
                 if (lastSample) results.lastFrame = sample;
             }
         });
+    pipeline.drain();
     for (std::size_t k = 0; k < script.methods.size(); ++k)
         results.runs[first + k].times = lanes[laneOf[k]].times;
     const std::vector<double>& refMs = lanes[0].times.frameMs();
@@ -380,23 +348,6 @@ nlohmann::json writeOutputs(const fs::path& dir, const CaptureResults& results) 
     writeTextFile(dir / "report.html", reportHtml(results, summary, "report"));
     outputs.commit();
     return summary;
-}
-
-void printSummaryTable(const nlohmann::json& summary) {
-    std::cout << std::left << std::setw(22) << "method" << std::right << std::setw(10) << "rmse"
-              << std::setw(12) << "rmse pen." << std::setw(10) << "miscl.%" << std::setw(11)
-              << "flicker" << std::setw(11) << "frame ms"
-              << "\n"
-              << std::fixed;
-    for (const auto& m : summary["methods"])
-        std::cout << std::left << std::setw(22) << m["label"].get<std::string>() << std::right
-                  << std::setprecision(4) << std::setw(10) << m["rmse"].get<double>()
-                  << std::setw(12) << m["rmsePenumbra"].get<double>() << std::setprecision(2)
-                  << std::setw(10) << m["misclassifiedPercent"].get<double>()
-                  << std::setprecision(5) << std::setw(11) << m["addedFlicker"].get<double>()
-                  << std::setprecision(2) << std::setw(11) << m["medianFrameMs"].get<double>()
-                  << "\n";
-    std::cout << std::defaultfloat;
 }
 
 // The hash of everything a capture's results depend on besides the build: the script's bytes,
@@ -447,7 +398,59 @@ framesDone(const CaptureProgress& progress, const CaptureScript& script, const f
     return done;
 }
 
+// --capture-threads: a count, or auto: none on a software rasterizer (its frames use every
+// core: workers slowed them, and added to the frame times it records: medium.json's rendering
+// took 200 s alone, 265 s beside two workers), else one a core but the GL thread's, up to 4.
+// Needs the GL context.
+int captureThreads(const std::string& option) {
+    if (option != "auto") return std::stoi(option); // checked by the option's validator
+    if (gl::isSoftwareRenderer()) return 0;
+    return std::clamp(static_cast<int>(std::thread::hardware_concurrency()) - 1, 1, 4);
+}
+
+// The folder's progress: the unfinished run's with --resume (when there is one), else a new one.
+std::optional<CaptureProgress> openProgress(const CaptureRequest& req, const fs::path& dir,
+                                            const std::string& identity, int total) {
+    std::optional<CaptureProgress> progress;
+    if (req.resume) {
+        progress = CaptureProgress::resume(dir, identity, total);
+        if (!progress)
+            std::cout << "no unfinished capture in " << dir.string()
+                      << " to resume: starting from frame 0\n";
+    }
+    if (!progress) progress = CaptureProgress::start(dir, identity, total);
+    return progress;
+}
+
+// The scene and renderer options of a capture script.
+SceneOptions sceneOptionsOf(const CaptureScript& script, const CaptureRequest& req) {
+    SceneOptions so;
+    so.scene = script.scene.string();
+    so.lightRadius = script.lightRadius;
+    so.shaderDir = req.shaderDir;
+    so.shadowMapSize = script.shadowMapSize;
+    so.shadowMap = script.shadowMapProvider;
+    so.methodOptions[std::string(floodPassesOption().flag)] = script.jfaPasses;
+    so.strictMethodOptions = false; // the script's methods each take their own
+    so.timing = req.timing;
+    so.ground = script.ground;
+    return so;
+}
+
+// The ground truth's settings: `base` with the script's reference method and its options.
+RenderSettings referenceSettings(const CaptureScript& script, RenderSettings base) {
+    const MethodDescriptor& truth = script.reference.method();
+    base.method = std::string(truth.name);
+    base.options.set(truth.option("samples")->flag, script.reference.samples);
+    if (const MethodOption* mapSize = truth.option("mapSize"))
+        base.options.set(mapSize->flag, script.reference.mapSize);
+    if (const MethodOption* pattern = truth.option("pattern"))
+        base.options.set(pattern->flag, script.reference.pattern);
+    return base;
+}
+
 int runCapture(const CaptureRequest& req) {
+    const auto started = std::chrono::steady_clock::now();
     CaptureScript script;
     try {
         script = readCaptureScript(req.script);
@@ -464,41 +467,19 @@ int runCapture(const CaptureRequest& req) {
         return 0;
     }
     prepareOutput(dir);
-    std::optional<CaptureProgress> progress;
-    if (req.resume) {
-        progress = CaptureProgress::resume(dir, identity, total);
-        if (!progress)
-            std::cout << "no unfinished capture in " << dir.string()
-                      << " to resume: starting from frame 0\n";
-    }
-    if (!progress) progress = CaptureProgress::start(dir, identity, total);
+    std::optional<CaptureProgress> progress = openProgress(req, dir, identity, total);
     const std::vector<std::vector<const FrameRecord*>> done = framesDone(*progress, script, dir);
     const int finished = progress->finished();
 
-    SceneOptions so;
-    so.scene = script.scene.string();
-    so.lightRadius = script.lightRadius;
-    so.shaderDir = req.shaderDir;
-    so.shadowMapSize = script.shadowMapSize;
-    so.shadowMap = script.shadowMapProvider;
-    so.methodOptions[std::string(floodPassesOption().flag)] = script.jfaPasses;
-    so.strictMethodOptions = false; // the script's methods each take their own
-    so.timing = req.timing;
-    so.ground = script.ground;
+    const SceneOptions so = sceneOptionsOf(script, req);
     const Scene scene = loadScene(so);
     auto context = EglContext::create();
     const gl::ShaderLibrary shaders = makeShaderLibrary(so);
-    CaptureSetup setup{script, so, scene, shaders, makeRenderSettings(so), {}, dir};
-    setup.reference = setup.base;
-    {
-        const MethodDescriptor& truth = script.reference.method();
-        setup.reference.method = std::string(truth.name);
-        setup.reference.options.set(truth.option("samples")->flag, script.reference.samples);
-        if (const MethodOption* mapSize = truth.option("mapSize"))
-            setup.reference.options.set(mapSize->flag, script.reference.mapSize);
-        if (const MethodOption* pattern = truth.option("pattern"))
-            setup.reference.options.set(pattern->flag, script.reference.pattern);
-    }
+    const RenderSettings base = makeRenderSettings(so);
+    const CaptureSetup setup{script, so,
+                             scene,  shaders,
+                             base,   referenceSettings(script, base),
+                             dir,    captureThreads(req.threads)};
 
     CaptureResults results;
     results.script = &script;
@@ -529,6 +510,10 @@ int runCapture(const CaptureRequest& req) {
         throw;
     }
     runner.finish();
+    results.split.render = runner.seconds().render;
+    results.split.readBack = runner.seconds().readBack;
+    results.split.wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     if (progress->finished() < total) {
         std::cout << "stopped after " << req.stopAfter
                   << " frames (--stop-after): " << progress->finished() << " of " << total
@@ -540,16 +525,8 @@ int runCapture(const CaptureRequest& req) {
     const nlohmann::json summary = writeOutputs(dir, results);
     progress->finish();
     printSummaryTable(summary);
-    if (results.lastFrame.frame >= 0)
-        std::cout << "resources: resident " << results.firstFrame.residentKiB << " KiB after frame "
-                  << results.firstFrame.frame << ", " << results.lastFrame.residentKiB
-                  << " KiB after frame " << results.lastFrame.frame << "; GL objects "
-                  << results.firstFrame.glObjects.total() << ", "
-                  << results.lastFrame.glObjects.total() << "\n";
-    if (!results.progressMs.empty())
-        std::cout << "progress for --resume: " << std::fixed << std::setprecision(1)
-                  << median(results.progressMs) << " ms a frame (median) to keep\n"
-                  << std::defaultfloat;
+    printResources(results);
+    printPhaseSplit(results);
     std::cout << "wrote " << (dir / "frames.csv").string() << ", "
               << (dir / "summary.json").string() << ", " << (dir / "report.html").string()
               << (script.saveFrames ? ", frames under " + (dir / "frames").string() : "") << "\n";
@@ -584,6 +561,23 @@ Runner addCaptureCommand(CLI::App& app) {
                         "), then stop with exit status 3, keeping the progress for --resume (a "
                         "long capture in several sittings)")
         ->check(integer(1, kMaxCaptureFrames));
+    cmd->add_option("--capture-threads", r->threads,
+                    "Worker threads that write the frames' files and compute their metrics and "
+                    "progress while the next frames render: auto or 0 to " +
+                        std::to_string(kMaxCaptureThreads) +
+                        " (0: one frame after another, on the GL thread; auto: 0 on a software "
+                        "rasterizer, whose frames use every core, else up to 4). Same outputs "
+                        "either way")
+        ->check(CLI::Validator(
+            [](const std::string& text) -> std::string {
+                if (text == "auto") return {};
+                const std::string problem = numberProblem(text, 0, kMaxCaptureThreads, true);
+                // "must be an integer in [0, 16], got 'x'" -> "must be auto or an integer ..."
+                return problem.starts_with("must be ") ? "must be auto or " + problem.substr(8)
+                                                       : problem;
+            },
+            "auto|INT"))
+        ->capture_default_str();
     return [r] { return runCapture(*r); };
 }
 

@@ -1,4 +1,4 @@
-// The CSV and the JSON summary of a capture run.
+// The CSV and the JSON summary of a capture run, and what it prints at the end.
 
 #include "CaptureResults.h"
 
@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <iostream>
 
 namespace fl::app {
 
@@ -19,6 +21,17 @@ std::vector<std::string> allPhases(const CaptureResults& r) {
 }
 
 } // namespace
+
+double outsideRendering(const PhaseSplit& split) {
+    return split.wall > 0.0 ? (split.wall - split.render) / split.wall : 0.0;
+}
+
+double progressShare(const CaptureResults& r) {
+    std::vector<double> share;
+    for (std::size_t i = 0; i < r.progressMs.size() && i < r.renderMs.size(); ++i)
+        if (r.renderMs[i] > 0.0) share.push_back(r.progressMs[i] / r.renderMs[i]);
+    return fl::median(std::move(share));
+}
 
 std::string safeName(const std::string& label) {
     std::string out;
@@ -202,8 +215,59 @@ nlohmann::json resultsSummary(const CaptureResults& r) {
     // After this run's first and last frame (a resumed run's first is its first of this sitting).
     if (r.firstFrame.frame >= 0)
         j["resources"] = {{"firstFrame", sample(r.firstFrame)}, {"lastFrame", sample(r.lastFrame)}};
+    // Where this sitting's time went (seconds; CaptureResults.h, PhaseSplit).
+    nlohmann::json split = {{"threads", r.split.threads}};
+    for (const SplitPhase& p : kSplitPhases)
+        split[std::string(p.name) + "Seconds"] = r.split.*p.seconds;
+    split["outsideRenderingShare"] = outsideRendering(r.split);
+    split["progressMedianMs"] = fl::median(r.progressMs);
+    split["progressShareOfRendering"] = progressShare(r);
+    j["phaseSplit"] = split;
     j["complete"] = true;
     return j;
+}
+
+// The summary's table: one line per method.
+void printSummaryTable(const nlohmann::json& summary) {
+    std::cout << std::left << std::setw(22) << "method" << std::right << std::setw(10) << "rmse"
+              << std::setw(12) << "rmse pen." << std::setw(10) << "miscl.%" << std::setw(11)
+              << "flicker" << std::setw(11) << "frame ms"
+              << "\n"
+              << std::fixed;
+    for (const auto& m : summary["methods"])
+        std::cout << std::left << std::setw(22) << m["label"].get<std::string>() << std::right
+                  << std::setprecision(4) << std::setw(10) << m["rmse"].get<double>()
+                  << std::setw(12) << m["rmsePenumbra"].get<double>() << std::setprecision(2)
+                  << std::setw(10) << m["misclassifiedPercent"].get<double>()
+                  << std::setprecision(5) << std::setw(11) << m["addedFlicker"].get<double>()
+                  << std::setprecision(2) << std::setw(11) << m["medianFrameMs"].get<double>()
+                  << "\n";
+    std::cout << std::defaultfloat;
+}
+
+// Memory and GL objects after this sitting's first and last frame.
+void printResources(const CaptureResults& r) {
+    if (r.lastFrame.frame >= 0)
+        std::cout << "resources: resident " << r.firstFrame.residentKiB << " KiB after frame "
+                  << r.firstFrame.frame << ", " << r.lastFrame.residentKiB << " KiB after frame "
+                  << r.lastFrame.frame << "; GL objects " << r.firstFrame.glObjects.total() << ", "
+                  << r.lastFrame.glObjects.total() << "\n";
+}
+
+// The phase split (CaptureResults.h) and what keeping the progress cost against rendering.
+void printPhaseSplit(const CaptureResults& r) {
+    const PhaseSplit& s = r.split;
+    std::cout << std::fixed << std::setprecision(2) << "phase split, s ("
+              << (s.threads > 0 ? std::to_string(s.threads) + " worker threads" : "synchronous")
+              << "):";
+    for (const SplitPhase& p : kSplitPhases) std::cout << " " << p.name << " " << s.*p.seconds;
+    std::cout << std::setprecision(0) << "; outside rendering " << 100.0 * outsideRendering(s)
+              << "% of the wall\n";
+    if (!r.progressMs.empty())
+        std::cout << std::setprecision(1) << "progress for --resume: " << median(r.progressMs)
+                  << " ms a frame (median) to keep, " << 100.0 * progressShare(r)
+                  << "% of a frame's rendering\n";
+    std::cout << std::defaultfloat;
 }
 
 } // namespace fl::app

@@ -6,13 +6,16 @@
 //   DIR/progress.jsonl   line 1: {"floodlightCapture": 1, "identity": HASH, "frames": TOTAL}
 //                        then one line per finished frame: every method's CSV row and times
 //   DIR/resume/          what the next frame's metrics need from the last one: every method's
-//                        visibility and the reference's (state_S_I.exr), and each method's worst
-//                        frame so far (worst_R_I.exr), for the report
+//                        visibility and the reference's (state_S_I.exr, uncompressed). The same
+//                        file of an earlier frame stays while it is a method's worst frame so
+//                        far: it holds that frame's pictures for the report.
 //
 // A frame is finished when its line is in the journal: its frame files and pictures are written
 // first, the line last, and the superseded pictures are removed after it. A killed run therefore
-// loses at most the frame in flight. The journal and resume/ go when the capture's summary and
-// report are written.
+// loses at most the frames in flight: one synchronously, up to four with --capture-threads (the
+// one being rendered, the one read back a frame behind and the two queued for the workers,
+// CapturePipeline.h). The journal and
+// resume/ go when the capture's summary and report are written.
 
 #include "CaptureResults.h"
 
@@ -79,18 +82,18 @@ class CaptureProgress {
     /// How many frames are finished: the earlier run's and this run's.
     [[nodiscard]] int finished() const { return static_cast<int>(records_.size()) + saved_; }
 
-    /// Saves frame `frame` of resolution `size`: the scorer's state after it, the worst
-    /// pictures of the runs whose worst frame it is (global run index, pictures), then its line.
+    /// Saves frame `frame` of resolution `size`: the scorer's state after it (also the pictures
+    /// of `worstRuns`, the global runs whose worst frame it is), then its line.
     void save(const FrameRecord& record, const ScorerState& state,
-              const std::vector<std::pair<std::size_t, const WorstPictures*>>& worst);
+              const std::vector<std::size_t>& worstRuns);
     /// The scorer's state after the last finished frame of resolution `size` (`runs` methods).
     [[nodiscard]] ScorerState loadState(int size, int frame, std::size_t runs) const;
-    /// Run `run`'s worst pictures, saved at frame `frame`.
-    [[nodiscard]] WorstPictures loadWorst(std::size_t run, int frame) const;
-    /// Marks the pictures of a resumed run as current, so that the next save removes them: the
-    /// state of (resolution, frame) if any, and each (global run, frame)'s worst pictures.
+    /// The worst pictures of method `k` of resolution `size`, saved with frame `frame`'s state.
+    [[nodiscard]] WorstPictures loadWorst(int size, std::size_t k, int frame) const;
+    /// Marks the files of a resumed run as in use, so that saves remove them once superseded:
+    /// the state of (resolution, frame) if any, and each global run's worst (resolution, frame).
     void adopt(std::optional<std::pair<int, int>> state,
-               const std::vector<std::pair<std::size_t, int>>& worst);
+               const std::vector<std::pair<std::size_t, std::pair<int, int>>>& worst);
 
     /// The capture's outputs are written: removes the journal and resume/.
     void finish();
@@ -99,14 +102,13 @@ class CaptureProgress {
     CaptureProgress(std::filesystem::path dir) : dir_(std::move(dir)) {}
     [[nodiscard]] std::filesystem::path journal() const { return dir_ / "progress.jsonl"; }
     [[nodiscard]] std::filesystem::path statePath(int size, int frame) const;
-    [[nodiscard]] std::filesystem::path worstPath(std::size_t run, int frame) const;
     void append(const std::string& line);
 
     std::filesystem::path dir_;
     std::vector<FrameRecord> records_;
     int saved_ = 0; // frames this run saved (their records live in the capture's results only)
     std::filesystem::path state_;              // the current state file
-    std::vector<std::filesystem::path> worst_; // by global run: its current worst file
+    std::vector<std::filesystem::path> worst_; // by global run: the state file of its worst frame
 };
 
 /// The journal line of a finished frame, and back (throws std::runtime_error on a bad line).

@@ -60,6 +60,29 @@ struct ResourceSample {
     gl::ObjectCounts glObjects;
 };
 
+/// Where one sitting's wall time went, in seconds. Rendering and read-back are the GL thread's;
+/// metrics, files and progress are the time the tasks took, on the GL thread when the capture
+/// runs synchronously (--capture-threads 0), else on worker threads, overlapped with rendering
+/// (their sum may then exceed the wall); waiting is the GL thread's wait for the workers.
+struct PhaseSplit {
+    double wall = 0.0; // from the command's start to the last frame's progress
+    double render = 0.0, readBack = 0.0, metrics = 0.0, files = 0.0, progress = 0.0;
+    double waiting = 0.0;
+    int threads = 0; // worker threads (0: synchronous)
+};
+
+/// The split's phases, in the order printed and written (summary.json's "phaseSplit", in
+/// seconds): the one list of them.
+struct SplitPhase {
+    const char* name; // the JSON key, "<name>Seconds"
+    double PhaseSplit::*seconds;
+};
+inline constexpr SplitPhase kSplitPhases[] = {
+    {"wall", &PhaseSplit::wall},         {"render", &PhaseSplit::render},
+    {"readBack", &PhaseSplit::readBack}, {"metrics", &PhaseSplit::metrics},
+    {"files", &PhaseSplit::files},       {"progress", &PhaseSplit::progress},
+    {"waiting", &PhaseSplit::waiting}};
+
 struct CaptureResults {
     const CaptureScript* script = nullptr;
     std::string identity; // the hash a resumed run must match (CaptureProgress.h)
@@ -69,7 +92,22 @@ struct CaptureResults {
     std::vector<double> referenceFrameMs; // the ground truth's own time, every frame
     ResourceSample firstFrame, lastFrame; // after this run's first and last frame
     std::vector<double> progressMs;       // per frame: keeping its progress (CaptureProgress)
+    /// Per frame: the sum of every lane's render (GPU-waited) ms, what progressMs is held to.
+    std::vector<double> renderMs;
+    PhaseSplit split;
 };
+
+/// The share of the wall time spent outside rendering (the target: at most one half).
+double outsideRendering(const PhaseSplit& split);
+/// Keeping the progress against rendering: the median over this sitting's frames of the frame's
+/// progress ms over the ms its lanes took to render (0 without frames).
+double progressShare(const CaptureResults& r);
+
+/// Prints the summary's table (one line per method), the resources after this sitting's first
+/// and last frame, and the phase split with what keeping the progress cost.
+void printSummaryTable(const nlohmann::json& summary);
+void printResources(const CaptureResults& r);
+void printPhaseSplit(const CaptureResults& r);
 
 /// Folder-safe form of a label ("pcss:16/24 @64x64" -> "pcss_16-24_64x64").
 std::string safeName(const std::string& label);

@@ -5,15 +5,44 @@
 
 namespace fl {
 
+namespace {
+
+// The motion target holds GL window coordinates (y up from the bottom edge); the images here
+// have row 0 at the top.
+void motionToImageRows(FloatImage& motion) {
+    for (std::size_t i = 1; i < motion.data.size(); i += 4)
+        motion.data[i] = static_cast<float>(motion.height) - motion.data[i];
+}
+
+FloatImage imageOf(gl::TextureReadBack& read) {
+    const gl::TextureReadBack::Mapped m = read.finish();
+    return fromGlRows(m.data(), m.width(), m.height(), m.channels());
+}
+
+} // namespace
+
 FrameImages readFrame(const Renderer& renderer) {
     FloatImage motion; // empty when the frame wrote no motion target
     if (renderer.motion()) motion = readTexture(*renderer.motion(), 4);
-    // The target holds GL window coordinates (y up from the bottom edge); the images here have
-    // row 0 at the top.
-    for (std::size_t i = 1; i < motion.data.size(); i += 4)
-        motion.data[i] = static_cast<float>(motion.height) - motion.data[i];
+    motionToImageRows(motion);
     return {readTexture(renderer.color(), 4), readTexture(renderer.visibility(), 1),
             readTexture(renderer.receivers(), 1), std::move(motion)};
+}
+
+void FrameReadBack::start(const Renderer& renderer) {
+    color_.start(renderer.color(), 4);
+    visibility_.start(renderer.visibility(), 1);
+    receivers_.start(renderer.receivers(), 1);
+    if (renderer.motion()) motion_.start(*renderer.motion(), 4);
+}
+
+FrameImages FrameReadBack::finish() {
+    FrameImages f{imageOf(color_), imageOf(visibility_), imageOf(receivers_), {}};
+    if (motion_.pending()) { // only a frame that wrote the motion target started its copy
+        f.motion = imageOf(motion_);
+        motionToImageRows(f.motion);
+    }
+    return f;
 }
 
 ByteImage visibilityToGrey(const FloatImage& v) {

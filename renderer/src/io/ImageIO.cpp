@@ -45,17 +45,23 @@ void writeTextFile(const std::filesystem::path& path, const std::string& text) {
 
 FloatImage readTexture(const gl::Texture& texture, int channels) {
     if (channels != 1 && channels != 4) throw std::invalid_argument("readTexture: 1 or 4 channels");
-    FloatImage img{texture.width(), texture.height(), channels, {}};
-    const size_t row = static_cast<size_t>(img.width) * static_cast<size_t>(channels);
-    std::vector<float> raw(row * static_cast<size_t>(img.height));
+    const int w = texture.width(), h = texture.height();
+    std::vector<float> raw(static_cast<size_t>(w) * static_cast<size_t>(h) *
+                           static_cast<size_t>(channels));
     glGetTextureImage(texture.id(), 0, channels == 1 ? GL_RED : GL_RGBA, GL_FLOAT,
                       static_cast<GLsizei>(raw.size() * sizeof(float)), raw.data());
     gl::throwIfErrors("texture read-back");
+    return fromGlRows(raw.data(), w, h, channels);
+}
+
+FloatImage fromGlRows(const float* rows, int width, int height, int channels) {
+    FloatImage img{width, height, channels, {}};
+    const size_t row = static_cast<size_t>(width) * static_cast<size_t>(channels);
     // GL stores row 0 at the bottom; files store it at the top.
-    img.data.resize(raw.size());
-    for (int y = 0; y < img.height; ++y)
+    img.data.resize(row * static_cast<size_t>(height));
+    for (int y = 0; y < height; ++y)
         std::memcpy(&img.data[static_cast<size_t>(y) * row],
-                    &raw[static_cast<size_t>(img.height - 1 - y) * row], row * sizeof(float));
+                    rows + static_cast<size_t>(height - 1 - y) * row, row * sizeof(float));
     return img;
 }
 
@@ -145,12 +151,13 @@ ByteImage readPng(const std::filesystem::path& path, std::string_view role) {
 }
 
 void writeExr(const std::filesystem::path& path, int width, int height,
-              const std::vector<ExrChannel>& channels) {
+              const std::vector<ExrChannel>& channels, ExrCompression compression) {
     makeOutputFolder(path.parent_path()); // folders are made on demand
     const std::filesystem::path tmp = temporarySibling(path);
     try {
         Imf::Header header(width, height);
-        header.compression() = Imf::ZIP_COMPRESSION;
+        header.compression() =
+            compression == ExrCompression::Zip ? Imf::ZIP_COMPRESSION : Imf::NO_COMPRESSION;
         Imf::FrameBuffer fb;
         for (const ExrChannel& c : channels) {
             if (c.values.size() != static_cast<size_t>(width) * static_cast<size_t>(height))

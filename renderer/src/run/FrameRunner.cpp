@@ -109,6 +109,16 @@ std::vector<std::string> phaseNames(const std::vector<const PhaseTimes*>& times)
     return names;
 }
 
+namespace {
+
+// Lane's frame i as read back, once every visibility in it is known to be finite.
+FrameImages checked(FrameImages frame, const Lane& lane, int i) {
+    requireFinite(frame.visibility, lane.label + " visibility, frame " + std::to_string(i));
+    return frame;
+}
+
+} // namespace
+
 FrameRunner::FrameRunner(int totalFrames, int done)
     : total_(totalFrames), done_(done), doneBefore_(done), tty_(::isatty(STDOUT_FILENO) != 0) {}
 
@@ -121,6 +131,9 @@ void FrameRunner::run(const FramePlan& plan, std::vector<Lane>& lanes, const OnF
     const Scene& scene = *plan.scene;
     const float aspect = static_cast<float>(plan.width) / static_cast<float>(plan.height);
     std::vector<FrameImages> images(lanes.size());
+    const bool behind = plan.readBack && plan.readBehind;
+    std::vector<FrameReadBack> reads(behind ? lanes.size() : 0);
+    int pending = -1; // the frame whose read-back is in flight (behind only)
     const int end = plan.last < 0 ? plan.frames : std::min(plan.last + 1, plan.frames);
     if (plan.clip)
         for (Lane& lane : lanes)
@@ -145,23 +158,50 @@ void FrameRunner::run(const FramePlan& plan, std::vector<Lane>& lanes, const OnF
         for (std::size_t l = 0; l < lanes.size(); ++l) {
             Renderer& r = *lanes[l].renderer;
             if (plan.clip) r.setTime(plan.clip->timeOf(i), plan.clip->timeOf(std::max(i - 1, 0)));
+            const Clock::time_point renderStart = Clock::now();
             if (static_cast<int>(l) == plan.motionLane)
                 r.render(cam, previous);
             else
                 r.render(cam);
+            const Clock::time_point rendered = Clock::now();
+            seconds_.render += std::chrono::duration<double>(rendered - renderStart).count();
             if (k < plan.first) continue;
-            if (plan.readBack) {
-                images[l] = readFrame(r);
-                requireFinite(images[l].visibility,
-                              lanes[l].label + " visibility, frame " + std::to_string(i));
+            if (behind) {
+                // This lane's copy of the frame before finished while this frame rendered.
+                if (pending >= 0) images[l] = checked(reads[l].finish(), lanes[l], pending);
+                reads[l].start(r);
+            } else if (plan.readBack) {
+                images[l] = checked(readFrame(r), lanes[l], i);
             }
             lanes[l].times.record(r.timer(), floodSample(r));
+            seconds_.readBack += std::chrono::duration<double>(Clock::now() - rendered).count();
         }
         if (k < plan.first) continue;
-        if (onFrame) onFrame(i, images);
-        ++done_;
-        showProgress();
+        if (!behind) {
+            handOver(i, images, onFrame);
+            continue;
+        }
+        if (pending >= 0) handOver(pending, images, onFrame);
+        pending = i;
     }
+    if (pending >= 0) {
+        finishReadBack(reads, lanes, pending, images);
+        handOver(pending, images, onFrame);
+    }
+}
+
+void FrameRunner::finishReadBack(std::vector<FrameReadBack>& reads, std::vector<Lane>& lanes, int i,
+                                 std::vector<FrameImages>& images) {
+    const Clock::time_point start = Clock::now();
+    for (std::size_t l = 0; l < lanes.size(); ++l)
+        images[l] = checked(reads[l].finish(), lanes[l], i);
+    seconds_.readBack += std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+void FrameRunner::handOver(int i, std::vector<FrameImages>& images, const OnFrame& onFrame) {
+    if (onFrame) onFrame(i, images);
+    ++done_;
+    showProgress();
 }
 
 void FrameRunner::showProgress() {

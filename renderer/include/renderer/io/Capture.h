@@ -1,6 +1,7 @@
 #pragma once
 // Saving a rendered frame: PNG (sRGB, for looking) and EXR (linear float, for measuring).
 
+#include <gpu/ReadBack.h>
 #include <renderer/Renderer.h>
 #include <renderer/io/ImageIO.h>
 
@@ -26,6 +27,19 @@ struct FrameImages {
     FloatImage motion;
 };
 FrameImages readFrame(const Renderer& renderer);
+
+/// readFrame through pixel buffers (gpu/ReadBack.h): start() queues the copies of the renderer's
+/// targets and returns at once; finish() waits for them (long done a frame later) and returns
+/// what readFrame would have returned then. Keep one per renderer: the buffers are reused.
+class FrameReadBack {
+  public:
+    void start(const Renderer& renderer);
+    [[nodiscard]] bool pending() const { return color_.pending(); }
+    [[nodiscard]] FrameImages finish();
+
+  private:
+    gl::TextureReadBack color_, visibility_, receivers_, motion_;
+};
 
 /// Visibility as a grey PNG image: white lit, black shadowed.
 ByteImage visibilityToGrey(const FloatImage& visibility);

@@ -35,6 +35,10 @@ struct ByteImage {
 /// flipped so that row 0 is the top of the picture.
 FloatImage readTexture(const gl::Texture& texture, int channels);
 
+/// `channels` floats a pixel in GL's row order (row 0 at the bottom) as an image with row 0 at
+/// the top: what readTexture and a pixel-buffer read-back (gpu/ReadBack.h) both return.
+FloatImage fromGlRows(const float* rows, int width, int height, int channels);
+
 /// Reads the default framebuffer's back buffer (what a window shows) as 8-bit RGBA, row 0 at the
 /// top.
 ByteImage readDefaultFramebuffer(int width, int height);
@@ -57,9 +61,13 @@ struct ExrChannel {
     std::string name;
     std::vector<float> values;
 };
-/// Writes a 32-bit float EXR with the given channels (ZIP compression).
+/// How writeExr stores the pixels: ZIP (small; the outputs) or uncompressed (several times
+/// faster to write: files kept only for a while, such as a capture's resume state).
+enum class ExrCompression { Zip, None };
+/// Writes a 32-bit float EXR with the given channels.
 void writeExr(const std::filesystem::path& path, int width, int height,
-              const std::vector<ExrChannel>& channels);
+              const std::vector<ExrChannel>& channels,
+              ExrCompression compression = ExrCompression::Zip);
 /// Reads every channel of an EXR file as floats.
 std::vector<ExrChannel> readExr(const std::filesystem::path& path, int& width, int& height);
 

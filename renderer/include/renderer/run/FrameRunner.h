@@ -117,6 +117,10 @@ struct FramePlan {
     int warmup = 0;
     /// false: frames are timed only, nothing is read back (onFrame gets empty images).
     bool readBack = true;
+    /// true: read back through pixel buffers a frame behind (FrameReadBack): frame i's images
+    /// are mapped, and passed to onFrame, after frame i + 1 is rendered, so the GL thread never
+    /// waits for a copy. The last frame's follow when the loop ends. Same images either way.
+    bool readBehind = false;
     /// The time axis (renderer/scene/Pose.h): when set, every lane plays these animations and
     /// frame i is posed at start + i * step seconds (step 0: every frame at `start`), with frame
     /// i - 1's time as the motion target's previous one.
@@ -152,8 +156,21 @@ class FrameRunner {
     /// Ends the progress line (call once, after the last plan).
     void finish();
 
+    /// Wall seconds the calling thread spent in every run() so far: rendering (Renderer::render,
+    /// which waits for the GPU at its end) and reading the frames back (with the finiteness
+    /// check and the times), not counting `onFrame`.
+    struct Seconds {
+        double render = 0.0, readBack = 0.0;
+    };
+    [[nodiscard]] const Seconds& seconds() const { return seconds_; }
+
   private:
     void showProgress();
+    // Frame i's images of every lane to `images` (each lane's finiteness checked), a frame behind.
+    void finishReadBack(std::vector<FrameReadBack>& reads, std::vector<Lane>& lanes, int i,
+                        std::vector<FrameImages>& images);
+    // Hands frame i to onFrame and advances the progress bar.
+    void handOver(int i, std::vector<FrameImages>& images, const OnFrame& onFrame);
 
     using Clock = std::chrono::steady_clock;
     int total_;
@@ -161,6 +178,7 @@ class FrameRunner {
     int doneBefore_; // frames of an earlier run: not in this run's rate
     bool tty_;       // the bar is drawn on a terminal only: logs and pipes get no carriage returns
     Clock::time_point start_ = Clock::now();
+    Seconds seconds_;
 };
 
 /// A CSV table built row by row: the header line, then one line per row. Cells go through an
