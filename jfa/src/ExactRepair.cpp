@@ -31,13 +31,18 @@ Cell walkToNearest(const SiteGraph& graph, int px, int py, const Cell& start) {
     if (graph.vertices.empty()) return start;
     std::uint32_t at = empty ? 0u : startVertex(graph, start);
     Cell best = graph.vertices[at];
+    std::int64_t bestDistance = NearestSite::squaredInt(px, py, best);
     // Each move is strictly better under a strict total order: at most V - 1 of them.
     for (std::size_t moves = 0; moves < graph.vertices.size(); ++moves) {
         std::uint32_t next = at;
         for (std::uint32_t k = graph.offsets[at]; k < graph.offsets[at + 1]; ++k) {
             const std::uint32_t n = graph.neighbours[k];
-            if (criterion.better(px, py, graph.vertices[n], best)) {
-                best = graph.vertices[n];
+            const Cell& c = graph.vertices[n];
+            // criterion.better, with the distance computed once per candidate.
+            const std::int64_t d = NearestSite::squaredInt(px, py, c);
+            if (d < bestDistance || (d == bestDistance && criterion.better(px, py, c, best))) {
+                best = c;
+                bestDistance = d;
                 next = n;
             }
         }
