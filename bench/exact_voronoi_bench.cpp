@@ -1,9 +1,11 @@
 // `voronoi --exact` against JFA and JFA^2 (issue 31 item 3): per backend, grid size and site
-// count, the three run side by side in one process, each --runs times (min / median, after one
-// warm-up). Exact = the site graph (CPU, geometry/SiteGraph.h) + JFA + the repair walk
-// (jfa/ExactRepair.h); on GL the graph's upload counts too. The seed grid is built and uploaded
-// outside every timing (the same for all three). Each exact result is then checked: 0 error
-// pixels against jfa::exactNearest, and GL equal to CPU texel for texel.
+// count, the three run side by side in one process, interleaved, --runs rounds (min / median,
+// after one warm-up). Exact = the site graph from the site list (CPU, geometry/SiteGraph.h; on
+// GL its upload too) + JFA + the repair (jfa/ExactRepair.h). The input of all three is the seed
+// grid and the list of its sites, built (and on GL uploaded) outside every timing; the graph
+// tags the seeds in place. Each exact result is then checked: 0 error pixels against
+// jfa::exactNearest, and GL equal to CPU texel for texel. On the CPU the repair alone is also
+// timed with walks at every texel against the row-interval shortcut, and the two compared.
 
 #include <base/Stats.h>
 #include <base/Text.h>
@@ -71,18 +73,86 @@ struct Config {
     std::vector<std::string> backends{"cpu", "gl"};
 };
 
+// The repair alone on the CPU, walks at every texel against the row-interval shortcut
+// (jfa/ExactRepair.h), from the same JFA result: the optimisation before and after, and equal.
+void compareRepairMethods(const Config& c, const jfa::Grid& seeds) {
+    jfa::Grid tagged = seeds;
+    const jfa::SiteGraph graph = geom::buildSiteGraph(tagged);
+    const jfa::Grid flooded =
+        jfa::flood(jfa::Plan::jfa(seeds.width, seeds.height), tagged, jfa::NearestSite{true});
+    jfa::Grid walks, intervals;
+    const std::vector<Timing> t =
+        timeRuns(c.runs, false,
+                 {[&] {
+                      walks = flooded;
+                      jfa::repairNearest(walks, graph, 0, jfa::RepairMethod::Walks);
+                  },
+                  [&] {
+                      intervals = flooded;
+                      jfa::repairNearest(intervals, graph);
+                  }});
+    row("repair alone: walks", t[0], "(every texel walks)");
+    row("repair alone: row intervals", t[1],
+        cat(fixed(t[1].median / t[0].median, 2),
+            "x the walks; same grid: ", walks == intervals ? "yes" : "NO"));
+    if (walks != intervals) throw std::runtime_error("the row intervals changed the repair");
+}
+
+// The exact pipeline once: the graph (CPU; on GL uploaded too), JFA, the repair, each stage's
+// time appended to `stageMs`. GL floods `taggedIn`, the seeds as the graph tags them.
+struct ExactPipeline {
+    jfa::Grid seeds;              // tagged in place by every run (the same tags each time)
+    std::vector<jfa::Cell> sites; // jfa::siteCells(seeds), the input as a list
+    const gl::Texture* taggedIn = nullptr;
+    jfa::GlFloodKernel<jfa::NearestSite>* kernel = nullptr;
+    jfa::GlExactRepair* repair = nullptr;
+    std::vector<double> stageMs[3];
+    jfa::Grid result; // the CPU's
+
+    void operator()() {
+        const jfa::Plan plan = jfa::Plan::jfa(seeds.width, seeds.height);
+        const jfa::NearestSite crit{true};
+        const bool gl = kernel != nullptr;
+        auto t0 = Clock::now();
+        auto stage = [&](int i) {
+            if (gl) glFinish();
+            stageMs[i].push_back(since(t0));
+            t0 = Clock::now();
+        };
+        const jfa::SiteGraph graph = geom::buildSiteGraph(seeds, sites);
+        if (gl) repair->setGraph(graph);
+        stage(0);
+        if (gl) {
+            const gl::Texture& flooded = kernel->run(plan, *taggedIn, crit);
+            stage(1);
+            repair->run(flooded);
+            stage(2);
+            return;
+        }
+        result = jfa::flood(plan, seeds, crit);
+        stage(1);
+        jfa::repairNearest(result, graph);
+        stage(2);
+    }
+    std::string stages() {
+        for (auto& v : stageMs) v.erase(v.begin()); // the warm-up
+        return cat("medians: graph ", fixed(fl::median(stageMs[0]), 2), ", JFA ",
+                   fixed(fl::median(stageMs[1]), 2), ", repair ", fixed(fl::median(stageMs[2]), 2),
+                   " ms");
+    }
+};
+
 // One size and site count on one backend: JFA, JFA^2, exact; returns the exact grid.
 jfa::Grid measure(const Config& c, bool gl, int n, int sites, const gl::ShaderLibrary* shaders) {
     const jfa::NearestSite crit{true};
     const jfa::Grid seeds =
         jfa::seedPoints(jfa::randomIntegerSites(sites, n, n, 1), n, n, true).grid;
     const jfa::Plan jfa = jfa::Plan::jfa(n, n), jfa2 = jfa::Plan::jfaSquared(n, n);
-    const jfa::ExactField exact = jfa::exactNearest(seeds, crit);
     std::unique_ptr<jfa::GlFloodKernel<jfa::NearestSite>> kernel;
     std::unique_ptr<jfa::GlExactRepair> repair;
     gl::Texture in, taggedIn;
-    jfa::Grid tagged = seeds, result;
-    const jfa::SiteGraph graph0 = geom::buildSiteGraph(tagged); // the tags, for the upload
+    jfa::Grid tagged = seeds;
+    const std::size_t vertices = geom::buildSiteGraph(tagged).vertices.size(); // the tags
     if (gl) {
         kernel = std::make_unique<jfa::GlFloodKernel<jfa::NearestSite>>(
             *shaders, jfa::GlKernelKind::Fragment);
@@ -91,60 +161,34 @@ jfa::Grid measure(const Config& c, bool gl, int n, int sites, const gl::ShaderLi
         taggedIn = jfa::uploadGrid(tagged);
     }
     auto run = [&](const jfa::Plan& plan) -> jfa::Grid {
-        if (gl) {
-            kernel->run(plan, in, crit);
-            return {};
-        }
+        if (gl) return jfa::readGrid(kernel->run(plan, in, crit));
         return jfa::flood(plan, seeds, crit);
     };
-    std::int64_t jfaErrors = 0, jfa2Errors = 0;
-    std::vector<double> graphMs, floodMs, repairMs;
-    auto exactRun = [&] {
-        auto t0 = Clock::now();
-        jfa::Grid work = seeds;
-        const jfa::SiteGraph graph = geom::buildSiteGraph(work);
-        if (gl) repair->setGraph(graph);
-        graphMs.push_back(since(t0));
-        t0 = Clock::now();
-        if (gl) {
-            const gl::Texture& flooded = kernel->run(jfa, taggedIn, crit);
-            glFinish();
-            floodMs.push_back(since(t0));
-            t0 = Clock::now();
-            repair->run(flooded);
-            glFinish();
-            repairMs.push_back(since(t0));
-            return;
-        }
-        result = jfa::flood(jfa, work, crit);
-        floodMs.push_back(since(t0));
-        t0 = Clock::now();
-        jfa::repairNearest(result, graph);
-        repairMs.push_back(since(t0));
+    auto timed = [&](const jfa::Plan& plan) {
+        if (gl)
+            kernel->run(plan, in, crit);
+        else
+            (void)jfa::flood(plan, seeds, crit);
     };
+    ExactPipeline exactRun{seeds, jfa::siteCells(seeds), &taggedIn, kernel.get(), repair.get(), {},
+                           {}};
     const std::vector<Timing> t =
-        timeRuns(c.runs, gl, {[&] { (void)run(jfa); }, [&] { (void)run(jfa2); }, exactRun});
-    const Timing tJfa = t[0], tJfa2 = t[1], tExact = t[2];
-    for (auto* v : {&graphMs, &floodMs, &repairMs}) v->erase(v->begin()); // the warm-up
-    if (gl) {
-        result = jfa::readGrid(repair->run(kernel->run(jfa, taggedIn, crit)));
-        jfaErrors = jfa::countErrors(jfa::readGrid(kernel->run(jfa, in, crit)), exact, crit);
-        jfa2Errors = jfa::countErrors(jfa::readGrid(kernel->run(jfa2, in, crit)), exact, crit);
-    } else {
-        jfaErrors = jfa::countErrors(run(jfa), exact, crit);
-        jfa2Errors = jfa::countErrors(run(jfa2), exact, crit);
-    }
+        timeRuns(c.runs, gl, {[&] { timed(jfa); }, [&] { timed(jfa2); }, [&] { exactRun(); }});
+    const jfa::Grid result =
+        gl ? jfa::readGrid(repair->run(kernel->run(jfa, taggedIn, crit))) : exactRun.result;
+    const jfa::ExactField exact = jfa::exactNearest(seeds, crit);
     const std::int64_t exactErrors = jfa::countErrors(result, exact, crit);
     const std::string tag = cat(gl ? "GL " : "CPU ", n, "^2, ", sites, " sites");
-    std::cout << tag << " (graph: " << graph0.vertices.size() << " vertices)\n";
-    row("JFA", tJfa, cat(jfaErrors, " error pixels"));
-    row("JFA^2", tJfa2,
-        cat(jfa2Errors, " error pixels, ", fixed(tJfa2.median / tJfa.median, 2), "x JFA"));
-    row("exact (graph + JFA + repair)", tExact,
-        cat(exactErrors, " error pixels, ", fixed(tExact.median / tJfa.median, 2),
-            "x JFA; medians: graph ", fixed(fl::median(graphMs), 2), ", JFA ",
-            fixed(fl::median(floodMs), 2), ", repair ", fixed(fl::median(repairMs), 2), " ms"));
+    std::cout << tag << " (graph: " << vertices << " vertices)\n";
+    row("JFA", t[0], cat(jfa::countErrors(run(jfa), exact, crit), " error pixels"));
+    row("JFA^2", t[1],
+        cat(jfa::countErrors(run(jfa2), exact, crit), " error pixels, ",
+            fixed(t[1].median / t[0].median, 2), "x JFA"));
+    row("exact (graph + JFA + repair)", t[2],
+        cat(exactErrors, " error pixels, ", fixed(t[2].median / t[0].median, 2), "x JFA; ",
+            exactRun.stages()));
     if (exactErrors != 0) throw std::runtime_error(tag + ": the exact result has errors");
+    if (!gl) compareRepairMethods(c, seeds);
     return result;
 }
 

@@ -23,9 +23,13 @@ namespace {
 
 const NearestSite kCriterion{true};
 
-// Repairs `flooded` on `graph` and checks it against the exact field of `seeds`.
+// Repairs `flooded` on `graph` and checks it against the exact field of `seeds`, and the row
+// interval shortcut against walks from every texel (the definition).
 void expectExact(Grid flooded, const SiteGraph& graph, const Grid& seeds, const char* what) {
-    repairNearest(flooded, graph, 2);
+    Grid walked = flooded;
+    repairNearest(walked, graph, 2, RepairMethod::Walks);
+    repairNearest(flooded, graph, 2, RepairMethod::RowIntervals);
+    EXPECT_EQ(flooded, walked) << what << ": row intervals differ from the walks";
     const ExactField exact = exactNearest(seeds, kCriterion);
     EXPECT_EQ(countErrors(flooded, exact, kCriterion), 0) << what;
     std::set<std::tuple<float, float, float>> sites;
@@ -111,6 +115,12 @@ TEST(ExactRepair, RefusesWhatItCannotRepair) {
     Grid sub = seedPoints({{1.25f, 2.5f}, {5.0f, 5.0f}}, 8, 8, false).grid;
     EXPECT_THROW((void)geom::buildSiteGraph(sub), std::invalid_argument);
     Grid seeds = seedPoints({{1, 2}, {5, 5}, {7, 1}}, 8, 8, true).grid;
+    std::vector<Cell> sites = siteCells(seeds);
+    std::swap(sites[0], sites[1]); // not row-major
+    EXPECT_THROW((void)geom::buildSiteGraph(seeds, sites), std::invalid_argument);
+    sites = siteCells(seeds);
+    sites[1].x += 1.0f; // not where the seeds hold it
+    EXPECT_THROW((void)geom::buildSiteGraph(seeds, sites), std::invalid_argument);
     const SiteGraph graph = geom::buildSiteGraph(seeds);
     Grid bad = flood(Plan::jfa(8, 8), seeds, kCriterion);
     bad.at(0, 7).w = 99.0f; // names a vertex the graph does not have

@@ -281,11 +281,12 @@ void checkRepairablePlan(const jfa::Plan& plan) {
                          "floods every texel (jfa, jfa+1, 1+jfa, jfa2, half:jfa, ...)");
 }
 
-// Builds the site graph of `seeds` (tagging them) and, on GL, uploads it.
-std::unique_ptr<Repair> prepareRepair(jfa::Grid& seeds, const gl::ShaderLibrary* shaders) {
+// Builds the site graph of `seeds` from their `sites` (tagging the seeds) and, on GL, uploads it.
+std::unique_ptr<Repair> prepareRepair(jfa::Grid& seeds, const std::vector<jfa::Cell>& sites,
+                                      const gl::ShaderLibrary* shaders) {
     auto repair = std::make_unique<Repair>();
     const auto t0 = std::chrono::steady_clock::now();
-    repair->graph = geom::buildSiteGraph(seeds);
+    repair->graph = geom::buildSiteGraph(seeds, sites);
     if (shaders) {
         repair->gl = std::make_unique<jfa::GlExactRepair>(*shaders);
         repair->gl->setGraph(repair->graph);
@@ -346,7 +347,7 @@ int runVoronoi(const VoronoiOptions& o) {
             o.kernel == "compute" ? jfa::GlKernelKind::Compute : jfa::GlKernelKind::Fragment);
     }
     std::unique_ptr<Repair> repair;
-    if (o.exact) repair = prepareRepair(seeds, shaders.get());
+    if (o.exact) repair = prepareRepair(seeds, siteList, shaders.get());
     jfa::Grid repairedInside; // --exact with --mask: the repaired diagram, for the SDF
     const std::string backend = o.backend == "gl" ? "GL " + o.kernel : std::string("CPU");
     std::cout << "input: " << in.what << " on " << w << "x" << h << ", backend " << backend << "\n";

@@ -3,6 +3,7 @@
 #include <geometry/Triangulation.h>
 
 #include <jfa/NearestSite.h>
+#include <jfa/Reference.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -64,45 +65,60 @@ std::vector<Edge> directedEdges(const std::vector<jfa::Cell>& v) {
     return edges;
 }
 
-// Interior sites start their walks at a boundary site of their row: the last one to their left,
-// else the first one to their right, else vertex 0.
-void tagInterior(jfa::Grid& seeds, const std::vector<int>& vertexAt) {
-    const int w = seeds.width;
-    for (int y = 0; y < seeds.height; ++y) {
-        const int* row = &vertexAt[std::size_t(y) * std::size_t(w)];
-        int first = -1;
-        for (int x = 0; x < w && first < 0; ++x) first = row[x];
-        int last = first < 0 ? 0 : first;
-        for (int x = 0; x < w; ++x) {
-            if (row[x] >= 0)
-                last = row[x];
-            else if (isSite(seeds, x, y))
-                seeds.at(x, y).w = float(last);
-        }
-    }
+// The pixel of sites[k], which must be an integer position inside the grid whose cell holds it,
+// after sites[k - 1] in row-major order.
+std::pair<int, int> pixelOfSite(const jfa::Grid& seeds, const std::vector<jfa::Cell>& sites,
+                                std::size_t k) {
+    const jfa::Cell& c = sites[k];
+    const int x = int(c.x), y = int(c.y);
+    const bool own = c.x >= 0.0f && c.y >= 0.0f && c.x < float(seeds.width) &&
+                     c.y < float(seeds.height) && c.x == float(x) && c.y == float(y) &&
+                     isSite(seeds, x, y) && seeds.at(x, y).z == c.z;
+    if (!own)
+        throw std::invalid_argument("buildSiteGraph: site " + std::to_string(c.z) + " at (" +
+                                    std::to_string(c.x) + ", " + std::to_string(c.y) +
+                                    ") is not at its own pixel of the seeds; the exact repair "
+                                    "takes integer sites only");
+    if (k > 0 && (sites[k - 1].y > c.y || (sites[k - 1].y == c.y && sites[k - 1].x >= c.x)))
+        throw std::invalid_argument("buildSiteGraph: the sites are not in row-major order");
+    return {x, y};
 }
 
 } // namespace
 
 jfa::SiteGraph buildSiteGraph(jfa::Grid& seeds) {
+    return buildSiteGraph(seeds, jfa::siteCells(seeds));
+}
+
+jfa::SiteGraph buildSiteGraph(jfa::Grid& seeds, const std::vector<jfa::Cell>& sites) {
     jfa::SiteGraph graph;
-    const int w = seeds.width, h = seeds.height;
-    std::vector<int> vertexAt(std::size_t(w) * std::size_t(h), -1);
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-            if (!isSite(seeds, x, y)) continue;
-            jfa::Cell& c = seeds.at(x, y);
-            if (c.x != float(x) || c.y != float(y))
-                throw std::invalid_argument(
-                    "buildSiteGraph: pixel (" + std::to_string(x) + ", " + std::to_string(y) +
-                    ") holds site " + std::to_string(c.z) + " at (" + std::to_string(c.x) + ", " +
-                    std::to_string(c.y) + "); the exact repair takes integer sites only");
+    std::vector<std::uint8_t> boundary; // per site of the current row
+    for (std::size_t row = 0; row < sites.size();) {
+        std::size_t end = row;
+        while (end < sites.size() && sites[end].y == sites[row].y) ++end;
+        // Boundary sites become vertices (row-major order), tagged with their index.
+        const std::uint32_t first = std::uint32_t(graph.vertices.size());
+        boundary.assign(end - row, 0);
+        for (std::size_t k = row; k < end; ++k) {
+            const auto [x, y] = pixelOfSite(seeds, sites, k);
             if (!onBoundary(seeds, x, y)) continue;
-            vertexAt[std::size_t(y) * std::size_t(w) + std::size_t(x)] = int(graph.vertices.size());
+            boundary[k - row] = 1;
+            jfa::Cell& c = seeds.at(x, y);
             c.w = float(graph.vertices.size());
             graph.vertices.push_back(c);
         }
-    tagInterior(seeds, vertexAt);
+        // Interior sites start their walks at the row's last boundary site to their left, else
+        // its first one, else vertex 0 (a walk from any vertex ends right; a near one is short).
+        std::uint32_t last = first < graph.vertices.size() ? first : 0u;
+        for (std::size_t k = row; k < end; ++k) {
+            jfa::Cell& c = seeds.at(int(sites[k].x), int(sites[k].y));
+            if (boundary[k - row])
+                last = std::uint32_t(c.w);
+            else
+                c.w = float(last);
+        }
+        row = end;
+    }
     std::vector<Edge> edges = directedEdges(graph.vertices);
     std::sort(edges.begin(), edges.end());
     graph.offsets.assign(graph.vertices.size() + 1, 0);

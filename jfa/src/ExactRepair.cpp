@@ -5,6 +5,8 @@
 
 #include <base/Parallel.h>
 
+#include <algorithm>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -52,17 +54,71 @@ Cell walkToNearest(const SiteGraph& graph, int px, int py, const Cell& start) {
     return best;
 }
 
-void repairNearest(Grid& flooded, const SiteGraph& graph, int threads) {
+namespace {
+
+// floor(a / b) for b > 0.
+std::int64_t floorDiv(std::int64_t a, std::int64_t b) {
+    return a >= 0 ? a / b : -((-a + b - 1) / b);
+}
+
+// The texels x of row y where vertex v's site is strictly nearer than each of its neighbours
+// (its open Voronoi cell in the graph, cut by the row): [lo, hi], empty when lo > hi. There no
+// neighbour is better, so the walk stops at once and the texel becomes vertices[v].
+// |p - s|^2 < |p - n|^2  <=>  2x(n.x - s.x) < |n|^2 - |s|^2 - 2y(n.y - s.y), exact in int64.
+struct RowInterval {
+    std::int64_t lo = 1, hi = 0;
+};
+
+RowInterval rowInterval(const SiteGraph& graph, std::uint32_t v, int y) {
+    const Cell& s = graph.vertices[v];
+    const std::int64_t sx = std::int64_t(s.x), sy = std::int64_t(s.y);
+    RowInterval r{std::numeric_limits<std::int64_t>::min(),
+                  std::numeric_limits<std::int64_t>::max()};
+    for (std::uint32_t k = graph.offsets[v]; k < graph.offsets[v + 1]; ++k) {
+        const Cell& n = graph.vertices[graph.neighbours[k]];
+        const std::int64_t nx = std::int64_t(n.x), ny = std::int64_t(n.y);
+        const std::int64_t a = 2 * (nx - sx);
+        const std::int64_t b = nx * nx + ny * ny - sx * sx - sy * sy - 2 * y * (ny - sy);
+        if (a > 0)
+            r.hi = std::min(r.hi, floorDiv(b - 1, a)); // a x < b  <=>  x <= floor((b - 1) / a)
+        else if (a < 0)
+            r.lo = std::max(r.lo, floorDiv(-b, -a) + 1); // (-a) x > -b
+        else if (b <= 0)
+            return {}; // the whole row is at least as near to n
+    }
+    return r;
+}
+
+} // namespace
+
+void repairNearest(Grid& flooded, const SiteGraph& graph, int threads, RepairMethod method) {
     if (graph.offsets.size() != graph.vertices.size() + 1)
         throw std::invalid_argument("repairNearest: the graph's offsets do not match its " +
                                     std::to_string(graph.vertices.size()) + " vertices");
     const int w = flooded.width;
+    const bool intervals = method == RepairMethod::RowIntervals;
     parallelRows(flooded.height, threads, [&](int rowBegin, int rowEnd, int) {
-        for (int y = rowBegin; y < rowEnd; ++y)
+        for (int y = rowBegin; y < rowEnd; ++y) {
+            // A row crosses few cells: consecutive texels mostly start from the same vertex.
+            std::int64_t cached = -1;
+            RowInterval in;
             for (int x = 0; x < w; ++x) {
                 Cell& c = flooded.at(x, y);
+                if (intervals && !graph.vertices.empty() && c.z >= 0.0f &&
+                    NearestSite::squaredInt(x, y, c) != 0) {
+                    const std::uint32_t v = startVertex(graph, c);
+                    if (v != cached) {
+                        cached = v;
+                        in = rowInterval(graph, v, y);
+                    }
+                    if (x >= in.lo && x <= in.hi) {
+                        c = graph.vertices[v];
+                        continue;
+                    }
+                }
                 c = walkToNearest(graph, x, y, c);
             }
+        }
     });
 }
 

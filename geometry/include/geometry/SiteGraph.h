@@ -12,6 +12,8 @@
 #include <jfa/ExactRepair.h>
 #include <jfa/Grid.h>
 
+#include <vector>
+
 namespace fl::geom {
 
 /// Builds the graph of `seeds` (integer sites, each at its own pixel, as seedPoints(..., true)
@@ -22,5 +24,9 @@ namespace fl::geom {
 /// along the line when they are collinear or fewer than 3. Throws std::invalid_argument for a
 /// cell that does not hold a site at its own integer position.
 jfa::SiteGraph buildSiteGraph(jfa::Grid& seeds);
+/// The same with the seeds' sites given (jfa::siteCells(seeds): row-major order), so that only
+/// the sites and their 4-neighbours are read, not every cell of the grid (throws
+/// std::invalid_argument if a site is not at its own pixel of `seeds` or out of order).
+jfa::SiteGraph buildSiteGraph(jfa::Grid& seeds, const std::vector<jfa::Cell>& sites);
 
 } // namespace fl::geom

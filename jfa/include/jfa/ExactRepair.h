@@ -52,10 +52,18 @@ struct SiteGraph {
 /// the cell of a nearest site. Integer sites only (NearestSite{true}).
 Cell walkToNearest(const SiteGraph& graph, int px, int py, const Cell& start);
 
+/// How repairNearest finds each texel's walk end (the same result either way; tests check it).
+enum class RepairMethod {
+    Walks,        // walkToNearest for every texel (the definition)
+    RowIntervals, // per row and start vertex, the texels inside its graph Voronoi cell (one
+                  // integer interval, computed once per run of texels) take it without a walk
+};
+
 /// Repairs a flooded grid in place: every texel becomes walkToNearest of its cell. Rows are
 /// split among `threads` (0 = all cores). Throws std::invalid_argument if a cell names a vertex
 /// the graph does not have.
-void repairNearest(Grid& flooded, const SiteGraph& graph, int threads = 0);
+void repairNearest(Grid& flooded, const SiteGraph& graph, int threads = 0,
+                   RepairMethod method = RepairMethod::RowIntervals);
 
 /// The GL twin of repairNearest (shaders/jfa_exact_repair.comp.glsl), texel for texel equal.
 class GlExactRepair {
