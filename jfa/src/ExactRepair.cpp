@@ -112,7 +112,8 @@ void repairNearest(Grid& flooded, const SiteGraph& graph, int threads, RepairMet
                         in = rowInterval(graph, v, y);
                     }
                     if (x >= in.lo && x <= in.hi) {
-                        c = graph.vertices[v];
+                        // Mostly the cell already is the vertex: no store, no dirty line.
+                        if (!(c == graph.vertices[v])) c = graph.vertices[v];
                         continue;
                     }
                 }
