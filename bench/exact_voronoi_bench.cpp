@@ -23,6 +23,7 @@
 #include <CLI/CLI.hpp>
 
 #include <chrono>
+#include <ctime>
 #include <functional>
 #include <iomanip>
 #include <iostream>
@@ -33,36 +34,54 @@ namespace {
 using namespace fl;
 using Clock = std::chrono::steady_clock;
 
+// Wall time, and the process's CPU time (all its threads, llvmpipe's included): on a machine
+// shared with other builds the wall time of a run varies with their load, its CPU time much less.
 struct Timing {
-    double min = 0, median = 0;
+    double min = 0, median = 0, cpuMedian = 0;
 };
 
 double since(Clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
+double processCpuMs() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
+}
+
+// "1.10x JFA (min 1.02x, CPU time 1.05x)": the ratios of medians, of minima, of CPU medians.
+std::string ratioText(const Timing& t, const Timing& base, const char* what) {
+    return cat(fixed(t.median / base.median, 2), "x ", what, " (min ", fixed(t.min / base.min, 2),
+               "x, CPU time ", fixed(t.cpuMedian / base.cpuMedian, 2), "x)");
+}
+
 // Each of `fs` once to warm up, then `runs` rounds that time each once, interleaved so that
 // load from other processes falls on all of them alike; `gl` waits for the GPU around each.
 std::vector<Timing> timeRuns(int runs, bool gl, const std::vector<std::function<void()>>& fs) {
-    std::vector<std::vector<double>> ms(fs.size());
+    std::vector<std::vector<double>> ms(fs.size()), cpu(fs.size());
     for (const auto& f : fs) f();
     for (int i = 0; i < runs; ++i)
         for (std::size_t k = 0; k < fs.size(); ++k) {
             if (gl) glFinish();
             const auto t0 = Clock::now();
+            const double c0 = processCpuMs();
             fs[k]();
             if (gl) glFinish();
             ms[k].push_back(since(t0));
+            cpu[k].push_back(processCpuMs() - c0);
         }
     std::vector<Timing> out;
-    for (const auto& series : ms) out.push_back({fl::minimum(series), fl::median(series)});
+    for (std::size_t k = 0; k < fs.size(); ++k)
+        out.push_back({fl::minimum(ms[k]), fl::median(ms[k]), fl::median(cpu[k])});
     return out;
 }
 
 void row(const std::string& what, const Timing& t, const std::string& note) {
     std::cout << "  " << std::left << std::setw(30) << what << std::right << std::fixed
               << std::setprecision(2) << " min " << std::setw(9) << t.min << " ms  median "
-              << std::setw(9) << t.median << " ms  " << note << "\n"
+              << std::setw(9) << t.median << " ms  CPU " << std::setw(9) << t.cpuMedian << " ms  "
+              << note << "\n"
               << std::defaultfloat;
 }
 
@@ -93,8 +112,8 @@ void compareRepairMethods(const Config& c, const jfa::Grid& seeds) {
                   }});
     row("repair alone: walks", t[0], "(every texel walks)");
     row("repair alone: row intervals", t[1],
-        cat(fixed(t[1].median / t[0].median, 2),
-            "x the walks; same grid: ", walks == intervals ? "yes" : "NO"));
+        cat(ratioText(t[1], t[0], "the walks"),
+            "; same grid: ", walks == intervals ? "yes" : "NO"));
     if (walks != intervals) throw std::runtime_error("the row intervals changed the repair");
 }
 
@@ -183,10 +202,9 @@ jfa::Grid measure(const Config& c, bool gl, int n, int sites, const gl::ShaderLi
     row("JFA", t[0], cat(jfa::countErrors(run(jfa), exact, crit), " error pixels"));
     row("JFA^2", t[1],
         cat(jfa::countErrors(run(jfa2), exact, crit), " error pixels, ",
-            fixed(t[1].median / t[0].median, 2), "x JFA"));
+            ratioText(t[1], t[0], "JFA")));
     row("exact (graph + JFA + repair)", t[2],
-        cat(exactErrors, " error pixels, ", fixed(t[2].median / t[0].median, 2), "x JFA; ",
-            exactRun.stages()));
+        cat(exactErrors, " error pixels, ", ratioText(t[2], t[0], "JFA"), "; ", exactRun.stages()));
     if (exactErrors != 0) throw std::runtime_error(tag + ": the exact result has errors");
     if (!gl) compareRepairMethods(c, seeds);
     return result;
