@@ -322,6 +322,34 @@ jfa::DistanceField maskDistances(const std::vector<std::uint8_t>& mask, int w, i
     return jfa::signedDistanceFromNearest(mask, *repairedInside, nearestOutside);
 }
 
+// The mask's signed distance transform on the CPU kernel (with --exact, repaired), against the
+// exact one, written as NAME.sdf.exr.
+void writeMaskDistances(const VoronoiOptions& o, const std::vector<std::uint8_t>& mask, int w,
+                        int h, const jfa::Grid* repairedInside, std::ostream& wrote) {
+    const jfa::Plan plan = jfa::parsePlan(o.plan, w, h);
+    const jfa::DistanceField sd = maskDistances(mask, w, h, plan, repairedInside);
+    const jfa::DistanceField ex = jfa::exactSignedDistanceTransform(mask, w, h);
+    std::cout << "signed distance transform (" << plan.name()
+              << (repairedInside ? " + exact repair" : "")
+              << ", CPU): " << jfa::countDifferences(sd, ex)
+              << " pixels differ from the exact one\n";
+    std::vector<float> flipped(sd.values.size());
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            flipped[size_t(h - 1 - y) * size_t(w) + size_t(x)] = sd.at(x, y);
+    // Every value is finite: where the mask has no outside (every pixel a site) or no inside
+    // pixel, the nearest pixel of the other kind lies beyond the grid and the field holds
+    // -/+ hypot(W, H) (jfa/DistanceTransform.h); an inf here became NaN in renderers.
+    const auto all = std::count(mask.begin(), mask.end(), std::uint8_t{1});
+    if (all == 0 || std::size_t(all) == mask.size())
+        std::cout << "note: the mask has no " << (all == 0 ? "inside" : "outside")
+                  << " pixel: signed_distance is " << (all == 0 ? "+" : "-")
+                  << jfa::noFeatureDistance(w, h) << " (hypot(width, height)) everywhere\n";
+    const auto path = std::filesystem::path(o.out) / (o.name + ".sdf.exr");
+    writeExr(path, w, h, {{"signed_distance", flipped}});
+    wrote << "wrote " << path.string() << " (negative inside the mask)\n";
+}
+
 int runVoronoi(const VoronoiOptions& o) {
     checkExactOptions(o);
     std::unique_ptr<EglContext> ctx;
@@ -388,32 +416,8 @@ int runVoronoi(const VoronoiOptions& o) {
             writeOutputs(o, result, exact, jfa::errorPixelMask(result, view), crit, wrote);
         if (repair && !in.mask.empty()) repairedInside = std::move(r.repaired);
     }
-    if (!in.mask.empty() && !o.compare) {
-        // Distance transforms of the mask on the CPU kernel, against the exact ones.
-        const jfa::Plan plan = jfa::parsePlan(o.plan, w, h);
-        const jfa::DistanceField sd =
-            maskDistances(in.mask, w, h, plan, repair ? &repairedInside : nullptr);
-        const jfa::DistanceField ex = jfa::exactSignedDistanceTransform(in.mask, w, h);
-        std::cout << "signed distance transform (" << plan.name()
-                  << (repair ? " + exact repair" : "")
-                  << ", CPU): " << jfa::countDifferences(sd, ex)
-                  << " pixels differ from the exact one\n";
-        std::vector<float> flipped(sd.values.size());
-        for (int y = 0; y < h; ++y)
-            for (int x = 0; x < w; ++x)
-                flipped[size_t(h - 1 - y) * size_t(w) + size_t(x)] = sd.at(x, y);
-        // Every value is finite: where the mask has no outside (every pixel a site) or no inside
-        // pixel, the nearest pixel of the other kind lies beyond the grid and the field holds
-        // -/+ hypot(W, H) (jfa/DistanceTransform.h); an inf here became NaN in renderers.
-        const auto all = std::count(in.mask.begin(), in.mask.end(), std::uint8_t{1});
-        if (all == 0 || std::size_t(all) == in.mask.size())
-            std::cout << "note: the mask has no " << (all == 0 ? "inside" : "outside")
-                      << " pixel: signed_distance is " << (all == 0 ? "+" : "-")
-                      << jfa::noFeatureDistance(w, h) << " (hypot(width, height)) everywhere\n";
-        const auto path = std::filesystem::path(o.out) / (o.name + ".sdf.exr");
-        writeExr(path, w, h, {{"signed_distance", flipped}});
-        wrote << "wrote " << path.string() << " (negative inside the mask)\n";
-    }
+    if (!in.mask.empty() && !o.compare)
+        writeMaskDistances(o, in.mask, w, h, repair ? &repairedInside : nullptr, wrote);
     outputs.commit();
     std::cout << wrote.str();
     return 0;
