@@ -1,5 +1,6 @@
 // `floodlight voronoi`: Voronoi diagrams and distance transforms by jump flooding (thesis ch. 4),
-// on the GPU or the CPU, with errors counted against the exact diagram.
+// on the GPU or the CPU, with errors counted against the exact diagram; with --exact the flood
+// is then repaired to that exact diagram (jfa/ExactRepair.h).
 
 #include "Commands.h"
 
@@ -10,9 +11,12 @@
 #include <base/InputFile.h>
 #include <base/OutputFiles.h>
 
+#include <geometry/SiteGraph.h>
+
 #include <jfa/CpuKernel.h>
 #include <jfa/DistanceTransform.h>
 #include <jfa/ErrorAnalysis.h>
+#include <jfa/ExactRepair.h>
 #include <jfa/GlKernel.h>
 #include <jfa/Plan.h>
 #include <jfa/Reference.h>
@@ -41,6 +45,7 @@ struct VoronoiOptions {
     std::string kernel = "fragment";
     std::string floodRegion = "band";
     bool compare = false;
+    bool exact = false;
     std::string out = "captures";
     std::string name = "voronoi";
     std::string shaderDir;
@@ -127,27 +132,50 @@ Input makeInput(const VoronoiOptions& o) {
     return in;
 }
 
+// --exact: the site graph, built before the flood (it tags the seeds with start vertices), and
+// the repair's GL twin on the GL backend.
+struct Repair {
+    jfa::SiteGraph graph;
+    double graphMs = 0;
+    std::unique_ptr<jfa::GlExactRepair> gl;
+};
+
 struct Run {
     jfa::Grid grid;
     double ms = 0;
+    jfa::Grid repaired; // with a Repair: the flood repaired to the exact diagram
+    double repairMs = 0;
     bool banded = false;      // ran over a band, not the whole grid
     double activeShare = 1.0; // of the full-resolution texels
 };
 
-// Floods with the GL kernel (timed after a warm-up run) or the CPU one, over `region`.
+double msSince(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Floods with the GL kernel (timed after a warm-up run) or the CPU one, over `region`, then with
+// `repair` repairs the result (timed on its own).
 Run flood(const jfa::Plan& plan, const jfa::Grid& seeds, const jfa::NearestSite& crit,
-          jfa::GlFloodKernel<jfa::NearestSite>* gl, jfa::FloodRegion region) {
+          jfa::GlFloodKernel<jfa::NearestSite>* gl, jfa::FloodRegion region, const Repair* repair) {
     Run r;
     if (gl) {
         gl->setRegion(region);
         const gl::Texture in = jfa::uploadGrid(seeds);
-        gl->run(plan, in, crit); // warm-up: shader compilation and allocation are not the flood
+        // Warm-up: shader compilation and allocation are not the flood (nor the repair).
+        const gl::Texture& warm = gl->run(plan, in, crit);
+        if (repair) repair->gl->run(warm);
         glFinish();
-        const auto t0 = std::chrono::steady_clock::now();
+        auto t0 = std::chrono::steady_clock::now();
         const gl::Texture& out = gl->run(plan, in, crit);
         glFinish();
-        r.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
-                   .count();
+        r.ms = msSince(t0);
+        if (repair) {
+            t0 = std::chrono::steady_clock::now();
+            const gl::Texture& fixed = repair->gl->run(out);
+            glFinish();
+            r.repairMs = msSince(t0);
+            r.repaired = jfa::readGrid(fixed);
+        }
         r.grid = jfa::readGrid(out);
         r.banded = gl->lastRunBanded();
         r.activeShare = gl->activeShare();
@@ -156,11 +184,16 @@ Run flood(const jfa::Plan& plan, const jfa::Grid& seeds, const jfa::NearestSite&
         options.region = region;
         const auto t0 = std::chrono::steady_clock::now();
         jfa::FloodResult f = jfa::floodWithStats(plan, seeds, crit, options);
-        r.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
-                   .count();
+        r.ms = msSince(t0);
         r.grid = std::move(f.grid);
         r.activeShare = f.activeShare;
         r.banded = f.activeShare < 1.0;
+        if (repair) {
+            r.repaired = r.grid;
+            const auto t1 = std::chrono::steady_clock::now();
+            jfa::repairNearest(r.repaired, repair->graph);
+            r.repairMs = msSince(t1);
+        }
     }
     return r;
 }
@@ -224,7 +257,101 @@ void checkGridSize(int w, int h, const std::string& what, bool gl) {
                              : std::string()));
 }
 
+// --exact refuses what it cannot repair (usage errors, exit 2): sub-pixel sites, whose float
+// distances the proof does not cover, and --compare, which runs every plan.
+void checkExactOptions(const VoronoiOptions& o) {
+    if (!o.exact) return;
+    if (o.floatSites)
+        throw UsageError("--exact: sub-pixel sites (--float-sites) cannot be repaired exactly; "
+                         "the repair is proven for integer sites (--sites, --points, --mask)");
+    if (o.compare)
+        throw UsageError("--exact repairs one plan's flood and --compare runs every plan: use one "
+                         "of them");
+}
+
+// The repair starts each walk from the flood's answer; a plan that cannot reach every texel
+// (flood:N with small N) leaves texels whose walks would start from an arbitrary site.
+void checkRepairablePlan(const jfa::Plan& plan) {
+    const long long need = std::max(plan.width(), plan.height()) - 1;
+    if (plan.maxReach() < need)
+        throw UsageError("--exact: plan " + plan.name() + " reaches " +
+                         std::to_string(plan.maxReach()) + " texels, fewer than the " +
+                         std::to_string(need) +
+                         " of this grid; the repair needs a plan that "
+                         "floods every texel (jfa, jfa+1, 1+jfa, jfa2, half:jfa, ...)");
+}
+
+// Builds the site graph of `seeds` from their `sites` (tagging the seeds) and, on GL, uploads it.
+std::unique_ptr<Repair> prepareRepair(jfa::Grid& seeds, const std::vector<jfa::Cell>& sites,
+                                      const gl::ShaderLibrary* shaders) {
+    auto repair = std::make_unique<Repair>();
+    const auto t0 = std::chrono::steady_clock::now();
+    repair->graph = geom::buildSiteGraph(seeds, sites);
+    if (shaders) {
+        repair->gl = std::make_unique<jfa::GlExactRepair>(*shaders);
+        repair->gl->setGraph(repair->graph);
+    }
+    repair->graphMs = msSince(t0);
+    return repair;
+}
+
+// The lines --exact adds under a plan's: the repair's cost and its errors, counted as the
+// plan's are.
+void reportRepair(const Repair& repair, const Run& r, const jfa::ExactDiagramView& view) {
+    std::int64_t changed = 0;
+    for (std::size_t i = 0; i < r.grid.cells.size(); ++i)
+        changed += !(r.grid.cells[i] == r.repaired.cells[i]);
+    const jfa::ErrorReport rep = jfa::analyzeErrors(r.repaired, view, "exact");
+    std::cout << std::fixed << std::setprecision(2) << "exact repair: site graph of "
+              << repair.graph.vertices.size() << " boundary sites, greedy walks; " << changed
+              << " texels changed\n  " << repair.graphMs << " ms graph + " << r.ms << " ms flood + "
+              << r.repairMs << " ms repair = " << repair.graphMs + r.ms + r.repairMs << " ms; "
+              << rep.describe() << "\n"
+              << std::defaultfloat;
+}
+
+// The mask's signed distance transform, as the plan floods it on the CPU, or with --exact from
+// the repaired diagram and the repaired flood of the outside pixels.
+jfa::DistanceField maskDistances(const std::vector<std::uint8_t>& mask, int w, int h,
+                                 const jfa::Plan& plan, const jfa::Grid* repairedInside) {
+    if (!repairedInside) return jfa::signedDistanceTransform(mask, w, h, plan);
+    jfa::Grid outside = jfa::seedMask(jfa::invertedMask(mask), w, h);
+    const jfa::SiteGraph graph = geom::buildSiteGraph(outside);
+    jfa::Grid nearestOutside = jfa::flood(plan, outside, jfa::NearestSite{true});
+    jfa::repairNearest(nearestOutside, graph);
+    return jfa::signedDistanceFromNearest(mask, *repairedInside, nearestOutside);
+}
+
+// The mask's signed distance transform on the CPU kernel (with --exact, repaired), against the
+// exact one, written as NAME.sdf.exr.
+void writeMaskDistances(const VoronoiOptions& o, const std::vector<std::uint8_t>& mask, int w,
+                        int h, const jfa::Grid* repairedInside, std::ostream& wrote) {
+    const jfa::Plan plan = jfa::parsePlan(o.plan, w, h);
+    const jfa::DistanceField sd = maskDistances(mask, w, h, plan, repairedInside);
+    const jfa::DistanceField ex = jfa::exactSignedDistanceTransform(mask, w, h);
+    std::cout << "signed distance transform (" << plan.name()
+              << (repairedInside ? " + exact repair" : "")
+              << ", CPU): " << jfa::countDifferences(sd, ex)
+              << " pixels differ from the exact one\n";
+    std::vector<float> flipped(sd.values.size());
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            flipped[size_t(h - 1 - y) * size_t(w) + size_t(x)] = sd.at(x, y);
+    // Every value is finite: where the mask has no outside (every pixel a site) or no inside
+    // pixel, the nearest pixel of the other kind lies beyond the grid and the field holds
+    // -/+ hypot(W, H) (jfa/DistanceTransform.h); an inf here became NaN in renderers.
+    const auto all = std::count(mask.begin(), mask.end(), std::uint8_t{1});
+    if (all == 0 || std::size_t(all) == mask.size())
+        std::cout << "note: the mask has no " << (all == 0 ? "inside" : "outside")
+                  << " pixel: signed_distance is " << (all == 0 ? "+" : "-")
+                  << jfa::noFeatureDistance(w, h) << " (hypot(width, height)) everywhere\n";
+    const auto path = std::filesystem::path(o.out) / (o.name + ".sdf.exr");
+    writeExr(path, w, h, {{"signed_distance", flipped}});
+    wrote << "wrote " << path.string() << " (negative inside the mask)\n";
+}
+
 int runVoronoi(const VoronoiOptions& o) {
+    checkExactOptions(o);
     std::unique_ptr<EglContext> ctx;
     if (o.backend == "gl") ctx = EglContext::create();
     if (o.mask.empty()) checkGridSize(o.width, o.height, "--width/--height", bool(ctx));
@@ -236,6 +363,7 @@ int runVoronoi(const VoronoiOptions& o) {
     const jfa::ExactField exact = jfa::exactNearest(in.seeds, crit);
     const std::vector<jfa::Cell> siteList = jfa::siteCells(in.seeds);
     const jfa::ExactDiagramView view{w, h, siteList, exact.distSq, in.integer};
+    jfa::Grid seeds = in.seeds; // with --exact, tagged with the walks' start vertices
 
     std::unique_ptr<gl::ShaderLibrary> shaders;
     std::unique_ptr<jfa::GlFloodKernel<jfa::NearestSite>> kernel;
@@ -246,6 +374,9 @@ int runVoronoi(const VoronoiOptions& o) {
             *shaders,
             o.kernel == "compute" ? jfa::GlKernelKind::Compute : jfa::GlKernelKind::Fragment);
     }
+    std::unique_ptr<Repair> repair;
+    if (o.exact) repair = prepareRepair(seeds, siteList, shaders.get());
+    jfa::Grid repairedInside; // --exact with --mask: the repaired diagram, for the SDF
     const std::string backend = o.backend == "gl" ? "GL " + o.kernel : std::string("CPU");
     std::cout << "input: " << in.what << " on " << w << "x" << h << ", backend " << backend << "\n";
 
@@ -264,8 +395,9 @@ int runVoronoi(const VoronoiOptions& o) {
                 throw InputError(std::string("--plan: ") + e.what());
             }
         }();
+        if (o.exact) checkRepairablePlan(plan);
         const jfa::FloodRegion region = *jfa::parseFloodRegion(o.floodRegion);
-        const Run r = flood(plan, in.seeds, crit, kernel.get(), region);
+        Run r = flood(plan, seeds, crit, kernel.get(), region, repair.get());
         const jfa::ErrorReport rep = jfa::analyzeErrors(r.grid, view, plan.name());
         std::cout << std::fixed << std::setprecision(2) << plan.describe() << "\n  " << r.ms
                   << " ms; " << rep.describe() << "\n"
@@ -278,33 +410,14 @@ int runVoronoi(const VoronoiOptions& o) {
         else if (region == jfa::FloodRegion::Band)
             std::cout << "  flood region: full (every tile lies within the plan's reach of "
                       << jfa::planBandReach(plan) << " texels from a site)\n";
+        if (repair) reportRepair(*repair, r, view);
+        const jfa::Grid& result = repair ? r.repaired : r.grid;
         if (!o.compare)
-            writeOutputs(o, r.grid, exact, jfa::errorPixelMask(r.grid, view), crit, wrote);
+            writeOutputs(o, result, exact, jfa::errorPixelMask(result, view), crit, wrote);
+        if (repair && !in.mask.empty()) repairedInside = std::move(r.repaired);
     }
-    if (!in.mask.empty() && !o.compare) {
-        // Distance transforms of the mask on the CPU kernel, against the exact ones.
-        const jfa::Plan plan = jfa::parsePlan(o.plan, w, h);
-        const jfa::DistanceField sd = jfa::signedDistanceTransform(in.mask, w, h, plan);
-        const jfa::DistanceField ex = jfa::exactSignedDistanceTransform(in.mask, w, h);
-        std::cout << "signed distance transform (" << plan.name()
-                  << ", CPU): " << jfa::countDifferences(sd, ex)
-                  << " pixels differ from the exact one\n";
-        std::vector<float> flipped(sd.values.size());
-        for (int y = 0; y < h; ++y)
-            for (int x = 0; x < w; ++x)
-                flipped[size_t(h - 1 - y) * size_t(w) + size_t(x)] = sd.at(x, y);
-        // Every value is finite: where the mask has no outside (every pixel a site) or no inside
-        // pixel, the nearest pixel of the other kind lies beyond the grid and the field holds
-        // -/+ hypot(W, H) (jfa/DistanceTransform.h); an inf here became NaN in renderers.
-        const auto all = std::count(in.mask.begin(), in.mask.end(), std::uint8_t{1});
-        if (all == 0 || std::size_t(all) == in.mask.size())
-            std::cout << "note: the mask has no " << (all == 0 ? "inside" : "outside")
-                      << " pixel: signed_distance is " << (all == 0 ? "+" : "-")
-                      << jfa::noFeatureDistance(w, h) << " (hypot(width, height)) everywhere\n";
-        const auto path = std::filesystem::path(o.out) / (o.name + ".sdf.exr");
-        writeExr(path, w, h, {{"signed_distance", flipped}});
-        wrote << "wrote " << path.string() << " (negative inside the mask)\n";
-    }
+    if (!in.mask.empty() && !o.compare)
+        writeMaskDistances(o, in.mask, w, h, repair ? &repairedInside : nullptr, wrote);
     outputs.commit();
     std::cout << wrote.str();
     return 0;
@@ -356,6 +469,10 @@ Runner addVoronoiCommand(CLI::App& app) {
         ->check(CLI::IsMember({"fragment", "compute"}))
         ->capture_default_str();
     cmd->add_flag("--compare", o->compare, "Run every variant and print times and errors");
+    cmd->add_flag("--exact", o->exact,
+                  "Repair the plan's flood to the exact diagram (0 error pixels): integer sites "
+                  "only (--sites, --points, --mask), a plan that floods every texel, not with "
+                  "--compare");
     addOutOption(*cmd, o->out, "Output folder");
     addNameOption(*cmd, o->name, "Output name stem: NAME.png, NAME.exr (and NAME.sdf.exr)");
     cmd->add_option("--shader-dir", o->shaderDir, "Load shaders from this folder");

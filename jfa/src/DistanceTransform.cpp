@@ -21,12 +21,6 @@ void checkPlan(const Plan& plan, int width, int height, const char* what) {
     }
 }
 
-std::vector<std::uint8_t> inverted(const std::vector<std::uint8_t>& mask) {
-    std::vector<std::uint8_t> out(mask.size());
-    for (std::size_t i = 0; i < mask.size(); ++i) out[i] = mask[i] == 0 ? 1 : 0;
-    return out;
-}
-
 // Distances of a flooded (or exact nearest) grid: from each texel to the site it holds.
 DistanceField distancesOf(const Grid& nearest) {
     DistanceField field{nearest.width, nearest.height, {}};
@@ -71,6 +65,12 @@ DistanceField combineSigned(const std::vector<std::uint8_t>& mask, const Distanc
 
 } // namespace
 
+std::vector<std::uint8_t> invertedMask(const std::vector<std::uint8_t>& mask) {
+    std::vector<std::uint8_t> out(mask.size());
+    for (std::size_t i = 0; i < mask.size(); ++i) out[i] = mask[i] == 0 ? 1 : 0;
+    return out;
+}
+
 float distanceFromSquared(std::int64_t d2) {
     return static_cast<float>(std::sqrt(static_cast<double>(d2)));
 }
@@ -98,7 +98,8 @@ DistanceField signedDistanceTransform(const std::vector<std::uint8_t>& mask, int
                                       const Plan& plan, const FloodOptions& options) {
     checkPlan(plan, width, height, "signedDistanceTransform");
     const DistanceField toInside = floodDistances(mask, width, height, plan, options);
-    const DistanceField toOutside = floodDistances(inverted(mask), width, height, plan, options);
+    const DistanceField toOutside =
+        floodDistances(invertedMask(mask), width, height, plan, options);
     return combineSigned(mask, toInside, toOutside);
 }
 
@@ -111,8 +112,17 @@ DistanceField signedDistanceTransform(const std::vector<std::uint8_t>& mask, int
 DistanceField exactSignedDistanceTransform(const std::vector<std::uint8_t>& mask, int width,
                                            int height) {
     const DistanceField toInside = exactDistances(mask, width, height);
-    const DistanceField toOutside = exactDistances(inverted(mask), width, height);
+    const DistanceField toOutside = exactDistances(invertedMask(mask), width, height);
     return combineSigned(mask, toInside, toOutside);
+}
+
+DistanceField signedDistanceFromNearest(const std::vector<std::uint8_t>& mask,
+                                        const Grid& nearestInside, const Grid& nearestOutside) {
+    if (nearestInside.cells.size() != mask.size() || nearestOutside.cells.size() != mask.size() ||
+        nearestInside.width != nearestOutside.width)
+        throw std::invalid_argument("signedDistanceFromNearest: the grids and the mask differ in "
+                                    "size");
+    return combineSigned(mask, distancesOf(nearestInside), distancesOf(nearestOutside));
 }
 
 std::int64_t countDifferences(const DistanceField& a, const DistanceField& b) {

@@ -44,6 +44,8 @@ struct DistanceField {
     friend bool operator==(const DistanceField&, const DistanceField&) = default;
 };
 
+/// The mask's complement: 1 where `mask` is 0, else 0 (the outside pixels as features).
+std::vector<std::uint8_t> invertedMask(const std::vector<std::uint8_t>& mask);
 /// A distance in pixels from an exact squared integer distance: float(sqrt(double(d2))).
 float distanceFromSquared(std::int64_t d2);
 /// The value for "no feature pixel in a W x H grid" (convention above): float(hypot(W, H)).
@@ -69,6 +71,12 @@ DistanceField signedDistanceTransform(const std::vector<std::uint8_t>& mask, int
 /// Exact signed distance transform (two exactIntegerEdt runs).
 DistanceField exactSignedDistanceTransform(const std::vector<std::uint8_t>& mask, int width,
                                            int height);
+
+/// Signed distance transform from nearest-feature grids the caller already has (such as floods
+/// repaired by jfa/ExactRepair.h): `nearestInside` holds per pixel an inside pixel's cell (empty
+/// where there is none), `nearestOutside` an outside pixel's; both W x H like the mask.
+DistanceField signedDistanceFromNearest(const std::vector<std::uint8_t>& mask,
+                                        const Grid& nearestInside, const Grid& nearestOutside);
 
 /// Pixels where two fields of the same size hold different values (NaN-free fields).
 std::int64_t countDifferences(const DistanceField& a, const DistanceField& b);
