@@ -5,6 +5,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
+#include <vector>
+
 namespace fl::geom {
 namespace {
 
@@ -90,6 +92,58 @@ TEST(Framing, FramingShowsWholeBounds) {
     const Aabb b = box({-3, 0, -2}, {5, 4, 6});
     for (float aspect : {0.5f, 1.0f, 2.0f})
         expectCornersInside(frameBounds(b, {1, 0.5f, 1}, glm::radians(50.0f), aspect), b);
+}
+
+// A model on a wide ground: the model's corners fill the picture (to `fill`), centred on the
+// axis they fill, from the given direction; every point of the ground in view lies between the
+// planes.
+TEST(Framing, PointsFramedTightlyWithTheWholeInDepth) {
+    const Aabb model = box({0, 0, 0}, {1, 2, 1});
+    const Aabb ground = box({-20, -0.01f, -20}, {21, 2, 21});
+    std::vector<glm::vec3> corners;
+    for (int i = 0; i < 8; ++i)
+        corners.emplace_back((i & 1) ? 1.0f : 0.0f, (i & 2) ? 2.0f : 0.0f, (i & 4) ? 1.0f : 0.0f);
+    const glm::vec3 from(0.55f, 0.5f, 0.75f);
+    const float fov = glm::radians(50.0f);
+    for (float aspect : {1.0f, 1.5f, 0.5f})
+        for (float fill : {1.0f, 0.9f}) {
+            const ViewVolume v = framePointsTightly(corners, ground, from, fov, aspect, fill);
+            expectCornersInside(v, model);
+            // Looking along -from: the camera's z axis is `from`.
+            const glm::vec3 back = glm::vec3(glm::inverse(v.view)[2]);
+            EXPECT_NEAR(glm::dot(back, glm::normalize(from)), 1.0f, 1e-5f);
+            // Tight and centred: the corners reach -fill and +fill on one axis.
+            glm::vec2 lo(1e9f), hi(-1e9f);
+            for (const glm::vec3& c : corners) {
+                const glm::vec4 clip = v.viewProj() * glm::vec4(c, 1.0f);
+                lo = glm::min(lo, glm::vec2(clip) / clip.w);
+                hi = glm::max(hi, glm::vec2(clip) / clip.w);
+            }
+            const int axis = hi.x - lo.x > hi.y - lo.y ? 0 : 1;
+            EXPECT_NEAR(hi[axis], fill, 1e-4f) << aspect;
+            EXPECT_NEAR(lo[axis], -fill, 1e-4f) << aspect;
+            // Nearer than the bounding sphere's fit.
+            const ViewVolume sphere = frameBounds(model, from, fov, aspect);
+            EXPECT_LT(glm::length(glm::vec3(glm::inverse(v.view)[3]) - model.center()),
+                      glm::length(glm::vec3(glm::inverse(sphere.view)[3]) - model.center()));
+            // The ground's top and bottom faces, sampled: the points in view are in depth range.
+            int inView = 0;
+            for (int i = 0; i <= 40; ++i)
+                for (int k = 0; k <= 40; ++k)
+                    for (float y : {ground.min.y, ground.max.y}) {
+                        const glm::vec3 p(-20.0f + 41.0f * i / 40.0f, y,
+                                          -20.0f + 41.0f * k / 40.0f);
+                        const glm::vec3 e = glm::vec3(v.view * glm::vec4(p, 1.0f));
+                        const glm::vec4 clip = v.proj * glm::vec4(e, 1.0f);
+                        if (!(-e.z > 0.0f) || std::abs(clip.x) > clip.w ||
+                            std::abs(clip.y) > clip.w)
+                            continue;
+                        ++inView;
+                        EXPECT_GE(-e.z, v.znear) << p.x << " " << p.y << " " << p.z;
+                        EXPECT_LE(-e.z, v.zfar) << p.x << " " << p.y << " " << p.z;
+                    }
+            EXPECT_GT(inView, 100);
+        }
 }
 
 TEST(Framing, DegenerateBoundsStayFinite) {

@@ -55,6 +55,7 @@ Render render(const std::string& name, const std::string& flags = {}) {
     for (std::size_t i = 0; i < visibility.size() && i < receiver.size(); ++i)
         n += receiver[i] > 0.5f && visibility[i] < 0.5f;
     r.shadowed = double(n) / double(std::max<std::size_t>(visibility.size(), 1));
+    std::printf("%s: shadowed share %.4f\n", name.c_str(), r.shadowed);
     return r;
 }
 
@@ -63,9 +64,10 @@ TEST(GroundCli, ASingleModelCastsAVisibleShadowOnTheGroundItIsGiven) {
     ASSERT_EQ(withGround.outcome.code, 0) << withGround.outcome.output;
     EXPECT_NE(withGround.outcome.output.find("ground: added"), std::string::npos)
         << withGround.outcome.output;
-    // Measured: 3.0% of the 128² image is the box's shadow on the ground (the camera frames the
-    // ground too); half of that fails, as does a shadow hidden behind the box.
-    EXPECT_GT(withGround.shadowed, 0.015) << "shadowed share " << withGround.shadowed;
+    // Measured: 11.6% of the 128² image is the box's shadow on the ground, the first view
+    // framing the box and its shadow (issue 30 item 6; 3.0% when it framed the whole ground);
+    // half of that fails, as does a shadow hidden behind the box or the whole ground framed.
+    EXPECT_GT(withGround.shadowed, 0.058) << "shadowed share " << withGround.shadowed;
 
     // Without it, the shadow falls on nothing: no receiver is in shadow.
     const Render floating = render("off", "--ground off");
@@ -76,7 +78,9 @@ TEST(GroundCli, ASingleModelCastsAVisibleShadowOnTheGroundItIsGiven) {
 
 TEST(GroundCli, TheLightByHand) {
     // From straight above, the shadow is the box's own footprint, hidden under the box but for
-    // its penumbra (measured 0.5% of the image); from the side, 3.3%.
+    // a rim (the light stands 2.5 scene radii up: its top's shadow is a little wider than the
+    // box) and the penumbra: measured 3.3% of the image, the view framing the box closely; from
+    // the side, 5.9%; from the default light, 11.6%.
     const Render above = render("above", "--light-dir 0,-1,0");
     ASSERT_EQ(above.outcome.code, 0) << above.outcome.output;
     const Render side = render("side", "--light-position -6,3,0");

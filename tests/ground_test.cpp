@@ -104,5 +104,51 @@ TEST(Ground, OnAndOffOverrideTheRule) {
     EXPECT_FALSE(parseGroundMode("yes"));
 }
 
+// The box around modelAndShadowPoints; invalid when there are none.
+geom::Aabb shadowFrame(const Scene& s, const Light& light) {
+    geom::Aabb b;
+    for (const glm::vec3& p : modelAndShadowPoints(s, light)) b.extend(p);
+    return b;
+}
+
+// The first view frames the model and its shadow on the added ground (issue 30 item 6).
+TEST(Ground, TheModelAndItsShadowOnTheAddedGround) {
+    Scene box;
+    addBox(box, {0, 0, 0}, {1, 2, 1});
+    Light light;
+    light.type = Light::Type::Directional;
+    light.direction = {0.0f, -1.0f, 0.0f};
+    // No ground added: nothing, the whole scene is framed.
+    EXPECT_TRUE(modelAndShadowPoints(box, light).empty());
+    ASSERT_TRUE(applyGround(box, GroundMode::Auto));
+    EXPECT_EQ(box.addedGround, 1);
+    const float groundY = box.bounds.min.y;
+    // From straight above, the shadow is the model's own footprint, on the ground's plane.
+    geom::Aabb b = shadowFrame(box, light);
+    EXPECT_EQ(b.min, glm::vec3(0.0f, groundY, 0.0f));
+    EXPECT_EQ(b.max, glm::vec3(1.0f, 2.0f, 1.0f));
+    // 24 vertices (the box's faces have their own) and their 24 shadows.
+    EXPECT_EQ(modelAndShadowPoints(box, light).size(), 48u);
+    // At 45 degrees along +x the top's shadow lands 2 further on, x in [2, 3]: cut at the
+    // ground's edge, x = 2.5 (the square reaches 1.5 past the footprint).
+    light.direction = glm::normalize(glm::vec3(1.0f, -1.0f, 0.0f));
+    b = shadowFrame(box, light);
+    EXPECT_NEAR(b.max.x, 2.5f, 1e-5f);
+    EXPECT_NEAR(b.min.x, 0.0f, 1e-5f);
+    EXPECT_NEAR(b.max.z, 1.0f, 1e-5f);
+    // A point light 2 above the model's centre: the top corners' shadows lie twice as far from
+    // the light's foot as the corners (x 0 -> -0.5, z 1 -> 1.5).
+    light.type = Light::Type::Point;
+    light.position = {0.5f, 4.0f, 0.5f};
+    b = shadowFrame(box, light);
+    EXPECT_NEAR(b.min.x, -0.5f, 1e-3f);
+    EXPECT_NEAR(b.max.z, 1.5f, 1e-3f);
+    // A point light lower than the model's top: that shadow runs off the ground, all of it framed.
+    light.position = {-3.0f, 1.5f, 0.5f};
+    b = shadowFrame(box, light);
+    EXPECT_EQ(b.min, box.bounds.min);
+    EXPECT_EQ(b.max, box.bounds.max);
+}
+
 } // namespace
 } // namespace fl

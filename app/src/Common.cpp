@@ -59,7 +59,8 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool sceneAsOption) {
         ->capture_default_str();
     cmd.add_option(
            "--camera", o.camera,
-           "default (scene camera, else auto), auto (frame the bounds), or a glTF camera index")
+           "default (scene camera, else auto), auto (frame the bounds; on an added ground, the "
+           "model and its shadow), or a glTF camera index")
         ->capture_default_str();
     cmd.add_option("--eye", o.eye, "Camera position x,y,z (with --target)")
         ->check(number())

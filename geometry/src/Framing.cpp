@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace fl::geom {
 
@@ -93,6 +94,50 @@ ViewVolume frameBounds(const Aabb& bounds, glm::vec3 fromDir, float yfov, float 
     v.view = glm::lookAt(c + fromDir * d, c, stableUp(fromDir));
     v.znear = std::max(d - r, 1e-3f * r) * 0.9f;
     v.zfar = (d + r) * 1.1f;
+    v.proj = glm::perspective(yfov, aspect, v.znear, v.zfar);
+    return v;
+}
+
+ViewVolume framePointsTightly(std::span<const glm::vec3> points, const Aabb& scene,
+                              glm::vec3 fromDir, float yfov, float aspect, float fill) {
+    fromDir = glm::normalize(fromDir);
+    const glm::vec3 up = stableUp(fromDir);
+    // The camera's axes as glm::lookAt builds them: side, up, and towards the eye.
+    const glm::vec3 side = glm::normalize(glm::cross(-fromDir, up));
+    const glm::vec3 camUp = glm::cross(side, -fromDir);
+    const float halfY = std::tan(0.5f * yfov), halfX = halfY * std::max(aspect, 1e-3f);
+    const glm::vec2 t = glm::vec2(halfX, halfY) * fill;
+    // A point at (x, y) across and z towards the eye is in view from an eye at (ex, ey, D) when
+    // |x - ex| <= tx (D - z), and likewise in y: D >= (ax - bx) / (2 tx) with ax = max(x + tx z),
+    // bx = min(x - tx z), the least D at ex = (ax + bx) / 2.
+    glm::vec2 a(std::numeric_limits<float>::lowest()), b(std::numeric_limits<float>::max());
+    float zmax = std::numeric_limits<float>::lowest();
+    Aabb all = scene;
+    for (const glm::vec3& p : points) {
+        const glm::vec2 xy(glm::dot(p, side), glm::dot(p, camUp));
+        const float z = glm::dot(p, fromDir);
+        a = glm::max(a, xy + t * z);
+        b = glm::min(b, xy - t * z);
+        zmax = std::max(zmax, z);
+        all.extend(p);
+    }
+    const float r = std::max(all.radius(), 1e-4f);
+    if (points.empty()) return frameBounds(all, fromDir, yfov, aspect);
+    // Every point in front of the eye, if only just (points in a plane seen edge-on).
+    const float d =
+        std::max({(a.x - b.x) / (2.0f * t.x), (a.y - b.y) / (2.0f * t.y), zmax + 1e-3f * r});
+    const glm::vec2 e = 0.5f * (a + b);
+    const glm::vec3 eye = e.x * side + e.y * camUp + d * fromDir;
+    ViewVolume v;
+    v.view = glm::lookAt(eye, eye - fromDir, up);
+    // No point of the scene's box is nearer than its nearest point, nor farther than its farthest
+    // corner; a point in view at distance s has a depth of at least s times the cosine of the
+    // frustum's half-diagonal.
+    const float nearest = glm::length(glm::max(glm::max(all.min - eye, eye - all.max), 0.0f));
+    const float farthest = glm::length(glm::max(glm::abs(all.min - eye), glm::abs(all.max - eye)));
+    const float cosDiagonal = 1.0f / std::sqrt(1.0f + halfX * halfX + halfY * halfY);
+    v.znear = std::max(0.9f * cosDiagonal * nearest, 1e-4f * r);
+    v.zfar = std::max(1.1f * farthest, 2.0f * v.znear);
     v.proj = glm::perspective(yfov, aspect, v.znear, v.zfar);
     return v;
 }

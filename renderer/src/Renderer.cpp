@@ -1,10 +1,12 @@
 #include <renderer/Renderer.h>
+#include <renderer/scene/Ground.h>
 
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <stdexcept>
+#include <vector>
 
 namespace fl {
 
@@ -41,9 +43,15 @@ CameraView makeCameraView(const Scene& scene, const CameraSpec& spec, float aspe
         return out;
     }
     default: {
-        const float fov = glm::radians(spec.yfovDegrees.value_or(50.0f));
+        const float fov = glm::radians(spec.yfovDegrees.value_or(kAutoViewFovDegrees));
+        const glm::vec3 from = kAutoViewFrom;
+        // A model on the ground Floodlight added is framed with its shadow, as tightly as they
+        // allow (a 5% border), not the whole ground it would be a speck on (issue 30 item 6); a
+        // scene of its own is framed whole, as before.
+        const std::vector<glm::vec3> focus = modelAndShadowPoints(scene, sceneLight(scene));
         const geom::ViewVolume v =
-            geom::frameBounds(scene.bounds, glm::vec3(0.55f, 0.5f, 0.75f), fov, aspect);
+            focus.empty() ? geom::frameBounds(scene.bounds, from, fov, aspect)
+                          : geom::framePointsTightly(focus, scene.bounds, from, fov, aspect, 0.9f);
         out.view = v.view;
         out.proj = v.proj;
         out.eye = glm::vec3(glm::inverse(v.view)[3]);

@@ -6,6 +6,8 @@
 
 #include <glm/glm.hpp>
 
+#include <span>
+
 namespace fl::geom {
 
 /// A view and projection pair with the depth range it was fitted to.
@@ -35,6 +37,15 @@ ViewVolume fitPerspectiveLight(const Aabb& bounds, glm::vec3 position,
 /// A look-at view from direction `fromDir` (pointing from the target to the eye) that shows the
 /// whole bounding sphere of `bounds` for the given vertical fov and aspect, plus near/far planes.
 ViewVolume frameBounds(const Aabb& bounds, glm::vec3 fromDir, float yfov, float aspect);
+
+/// The view from direction `fromDir` (target to eye) whose frustum holds every one of `points`
+/// with the eye as close as it can be: they span `fill` (in (0, 1]) of the picture's width or
+/// height, centred in it on that axis (the sphere frameBounds fits around a box leaves the box
+/// much smaller than the picture). The near and far planes hold every point of `scene` in view
+/// too: a model framed on a wide ground must not lose the rest of the ground. No points:
+/// frameBounds(scene).
+ViewVolume framePointsTightly(std::span<const glm::vec3> points, const Aabb& scene,
+                              glm::vec3 fromDir, float yfov, float aspect, float fill = 1.0f);
 
 /// The perspective projection `proj` (a glm::perspective / glm::frustum matrix) with its near and
 /// far planes moved in to the depth range that `bounds` (in the space `view` maps from) occupies,

@@ -60,8 +60,15 @@ struct CameraSpec {
     std::optional<float> yfovDegrees; // overrides the camera's field of view
 };
 
+/// The automatic view's direction (from the target to the eye) and vertical field of view (when
+/// --fov does not set it).
+inline const glm::vec3 kAutoViewFrom{0.55f, 0.5f, 0.75f};
+inline constexpr float kAutoViewFovDegrees = 50.0f;
+
 /// The camera for `spec` at the given aspect ratio; throws std::invalid_argument for a glTF
-/// camera index the scene does not have.
+/// camera index the scene does not have. The automatic view (Auto, and Default for a scene
+/// without cameras) frames the scene's bounds, or, on a ground Floodlight added, the model and
+/// its shadow under sceneLight (modelAndShadowPoints, Ground.h), as tightly as they allow.
 CameraView makeCameraView(const Scene& scene, const CameraSpec& spec, float aspect);
 
 /// The scene's light, or the default one (above and to the side of the bounds) if it has none.

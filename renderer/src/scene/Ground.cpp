@@ -87,8 +87,8 @@ void addGround(Scene& scene) {
     const geom::Aabb b = scene.bounds;
     const glm::vec3 c = b.center(), e = b.extent();
     // The default light (sceneLight) stands 58 degrees above the horizon: a shadow reaches
-    // 0.61 x the height past the footprint; 0.75 x leaves a margin without shrinking the model
-    // in the first view (the camera frames the bounds, ground and all) more than it must.
+    // 0.61 x the height past the footprint; 0.75 x leaves a margin. The first view frames the
+    // model and its shadow, not this square (modelAndShadowPoints).
     const float half =
         0.5f * std::max(e.x, e.z) + kReach * std::max(e.y, 0.25f * std::max(e.x, e.z));
     // Just below the lowest point, so that a model's flat underside does not fight it for depth.
@@ -113,8 +113,42 @@ void addGround(Scene& scene) {
     inst.objectId = id + 1;
     inst.nodeName = "floodlight ground";
     scene.meshes.push_back(std::move(ground));
+    scene.addedGround = static_cast<int>(scene.instances.size());
     scene.instances.push_back(inst);
     scene.computeBounds();
+}
+
+std::vector<glm::vec3> modelAndShadowPoints(const Scene& scene, const Light& light) {
+    if (scene.addedGround < 0 || scene.addedGround >= static_cast<int>(scene.instances.size()))
+        return {};
+    const Instance& g = scene.instances[static_cast<std::size_t>(scene.addedGround)];
+    geom::Aabb ground;
+    for (const glm::vec3& p : scene.meshes.at(static_cast<std::size_t>(g.mesh)).positions)
+        ground.extend(glm::vec3(g.world * glm::vec4(p, 1.0f)));
+    const float y = ground.max.y; // the ground is flat: its top is its plane
+    std::vector<glm::vec3> out;
+    bool offGround = false;
+    for (std::size_t i = 0; i < scene.instances.size(); ++i) {
+        if (static_cast<int>(i) == scene.addedGround) continue;
+        const Instance& inst = scene.instances[i];
+        for (const glm::vec3& p : scene.meshes.at(static_cast<std::size_t>(inst.mesh)).positions) {
+            const glm::vec3 w(inst.world * glm::vec4(p, 1.0f));
+            out.push_back(w);
+            // The shadow of a triangle is the triangle of its corners' shadows (each corner
+            // below the light meets the plane once): the hull of these holds the model's.
+            const glm::vec3 d =
+                light.type == Light::Type::Directional ? light.direction : w - light.position;
+            if (d.y < 0.0f)
+                out.push_back(glm::clamp(w + d * ((y - w.y) / d.y), ground.min, ground.max));
+            else
+                offGround = true; // level with or above the light: runs off the ground
+        }
+    }
+    if (offGround)
+        for (int k = 0; k < 4; ++k)
+            out.emplace_back((k & 1) ? ground.max.x : ground.min.x, y,
+                             (k & 2) ? ground.max.z : ground.min.z);
+    return out;
 }
 
 bool applyGround(Scene& scene, GroundMode mode) {

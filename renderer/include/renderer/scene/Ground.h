@@ -16,6 +16,7 @@
 #include <array>
 #include <optional>
 #include <string_view>
+#include <vector>
 
 namespace fl {
 
@@ -35,8 +36,16 @@ bool hasGround(const Scene& scene);
 /// bottom of the bounds, centred under them, reaching past the footprint by 0.75 x the scene's
 /// height (a shadow cast from 53 degrees above the horizon or higher lands on it whole; the
 /// default light stands at 58), as one instance with its own object id and material named
-/// "floodlight ground".
+/// "floodlight ground". Scene::addedGround names the instance.
 void addGround(Scene& scene);
+
+/// What the first view of a scene with an added ground frames (issue 30 item 6): the model's
+/// vertices (every instance's but the ground's, at rest) and their shadows on the ground's plane,
+/// each cast from `light` (along its direction for a directional light) and kept on the ground's
+/// square; with the ground's four corners when a vertex is level with or above a point light
+/// (that shadow runs off the ground). Their hull holds the model and its shadow. Empty for a
+/// scene without an added ground: its view frames all of it, as before.
+std::vector<glm::vec3> modelAndShadowPoints(const Scene& scene, const Light& light);
 
 /// Applies `mode`: adds the ground for On, and for Auto when the scene has none. Returns
 /// whether it added one.

@@ -160,6 +160,9 @@ struct Scene {
     std::vector<Skin> skins;
     std::vector<Animation> animations;
     geom::Aabb bounds; // world-space bounds of all instances
+    /// The instance addGround (Ground.h) added under the scene, -1 for none: the first view
+    /// frames the model without it (makeCameraView).
+    int addedGround = -1;
 
     /// Total triangles over all instances.
     [[nodiscard]] std::size_t triangleCount() const;

@@ -1,0 +1,154 @@
+// The first view of a lone model (issue 30 item 6): on the ground `--ground auto` adds, the
+// automatic camera frames the model and its shadow, not the whole ground. Measured on the surfaces
+// pass's targets at 256²: the rows the model covers, and the share of the picture that is ground
+// in hard shadow. Scenes with their own ground or cameras keep today's view, matrix for matrix.
+
+#include "GlTest.h"
+#include "TestPaths.h"
+#include "TestScenes.h"
+
+#include <renderer/Renderer.h>
+#include <renderer/gltf/GltfLoader.h>
+#include <renderer/io/ImageIO.h>
+#include <renderer/scene/Ground.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace fl {
+namespace {
+
+class FirstViewTest : public test::GlTest {};
+
+constexpr int kSize = 256;
+
+// One object of the default asset alone (its node and the node's children, named "NAME" and
+// "NAME.*"), at rest, with no camera, no light and no ground: what a single-model glTF is.
+Scene objectAlone(const std::string& name) {
+    Scene s = loadGltf(test::defaultAsset());
+    std::vector<Instance> kept;
+    for (Instance inst : s.instances)
+        if (inst.nodeName == name || inst.nodeName.rfind(name + ".", 0) == 0) {
+            inst.node = -1; // static: the file's animations are dropped below
+            kept.push_back(inst);
+        }
+    s.instances = std::move(kept);
+    s.cameras.clear();
+    s.light.reset();
+    s.nodes.clear();
+    s.skins.clear();
+    s.animations.clear();
+    s.computeBounds();
+    return s;
+}
+
+// A 1 x 2 x 1 box alone (ground_cli_test's model).
+Scene boxAlone() {
+    Scene s;
+    s.meshes.push_back(test::box(glm::vec3(0.0f), glm::vec3(1.0f, 2.0f, 1.0f)));
+    s.instances.push_back(Instance{0, glm::mat4(1.0f), 1, "box"});
+    s.computeBounds();
+    return s;
+}
+
+struct FirstView {
+    double height = 0.0; // rows with a model pixel, first to last, over the picture's height
+    double shadow = 0.0; // ground pixels with hard-shadow visibility < 0.5, over all pixels
+};
+
+// The lone model's picture from `camera`: the surfaces' object ids tell the model from the
+// ground (Scene::addedGround); the hard shadow's visibility tells the shadow.
+FirstView measure(const Scene& scene, const CameraView& camera) {
+    RenderSettings settings;
+    settings.shadow.size = 1024;
+    settings.method = "hard";
+    Renderer r(test::testShaders(), scene, settings);
+    r.resize(kSize, kSize);
+    r.render(camera);
+    const FloatImage position = readTexture(r.surfaces().position, 4);
+    const FloatImage normal = readTexture(r.surfaces().normal, 4);
+    const FloatImage visibility = readTexture(r.visibility(), 1);
+    const auto groundId = static_cast<float>(
+        scene.instances.at(static_cast<std::size_t>(scene.addedGround)).objectId);
+    int top = kSize, bottom = -1;
+    std::size_t shadowed = 0;
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x) {
+            if (position.at(x, y, 3) < 0.5f) continue; // background
+            if (std::abs(normal.at(x, y, 3) - groundId) > 0.5f) {
+                top = std::min(top, y);
+                bottom = std::max(bottom, y);
+            } else if (visibility.at(x, y, 0) < 0.5f) {
+                ++shadowed;
+            }
+        }
+    FirstView v;
+    v.height = bottom < top ? 0.0 : double(bottom - top + 1) / kSize;
+    v.shadow = double(shadowed) / double(kSize * kSize);
+    return v;
+}
+
+// Today's automatic view, before issue 30: the whole scene's bounds, ground and all.
+CameraView wholeSceneView(const Scene& scene) {
+    const geom::ViewVolume v =
+        geom::frameBounds(scene.bounds, kAutoViewFrom, glm::radians(kAutoViewFovDegrees), 1.0f);
+    CameraView c;
+    c.view = v.view;
+    c.proj = v.proj;
+    c.eye = glm::vec3(glm::inverse(v.view)[3]);
+    return c;
+}
+
+// Targets: the model spans at least 30% of the picture's height and its shadow covers at least
+// 3% of it, for a box and for four of the default asset's objects, each alone on the ground
+// Floodlight adds, under the default light. The whole-scene view is measured beside it (and
+// printed) to show what the change is worth.
+TEST_F(FirstViewTest, ALoneModelFillsThePictureWithItsShadow) {
+    struct Case {
+        std::string name;
+        Scene scene;
+    };
+    std::vector<Case> cases;
+    cases.push_back({"box", boxAlone()});
+    for (const char* name : {"tree", "pergola", "mushroom1", "rock"})
+        cases.push_back({name, objectAlone(name)});
+    for (Case& c : cases) {
+        ASSERT_FALSE(c.scene.instances.empty()) << c.name;
+        ASSERT_TRUE(applyGround(c.scene, GroundMode::Auto)) << c.name;
+        const FirstView before = measure(c.scene, wholeSceneView(c.scene));
+        const FirstView after = measure(c.scene, makeCameraView(c.scene, {}, 1.0f));
+        std::printf("%-10s height %.3f -> %.3f, shadow %.4f -> %.4f\n", c.name.c_str(),
+                    before.height, after.height, before.shadow, after.shadow);
+        EXPECT_GE(after.height, 0.30) << c.name;
+        EXPECT_GE(after.shadow, 0.03) << c.name;
+        EXPECT_GT(after.height, 1.2 * before.height) << c.name;
+    }
+}
+
+void expectSameView(const CameraView& a, const CameraView& b) {
+    EXPECT_EQ(a.view, b.view);
+    EXPECT_EQ(a.proj, b.proj);
+    EXPECT_EQ(a.eye, b.eye);
+}
+
+// No added ground, no change: a scene with its own ground (the default asset, asked for the
+// automatic view), a lone model left floating (--ground off) and a scene with its own camera.
+TEST_F(FirstViewTest, ScenesOfTheirOwnKeepTodaysView) {
+    Scene own = loadGltf(test::defaultAsset());
+    ASSERT_FALSE(applyGround(own, GroundMode::Auto));
+    CameraSpec automatic;
+    automatic.kind = CameraSpec::Kind::Auto;
+    expectSameView(makeCameraView(own, automatic, 1.0f), wholeSceneView(own));
+    // Its own camera is the default view, as before.
+    EXPECT_EQ(makeCameraView(own, {}, 1.0f).view, own.cameras.at(0).view);
+
+    Scene floating = boxAlone();
+    ASSERT_FALSE(applyGround(floating, GroundMode::Off));
+    expectSameView(makeCameraView(floating, {}, 1.0f), wholeSceneView(floating));
+}
+
+} // namespace
+} // namespace fl
