@@ -59,8 +59,8 @@ struct FirstView {
     double shadow = 0.0; // ground pixels with hard-shadow visibility < 0.5, over all pixels
 };
 
-// The lone model's picture from `camera`: the surfaces' object ids tell the model from the
-// ground (Scene::addedGround); the hard shadow's visibility tells the shadow.
+// The lone model's picture from `camera`: the surfaces' positions and planes tell the model
+// from the ground (Scene::addedGround); the hard shadow's visibility tells the shadow.
 FirstView measure(const Scene& scene, const CameraView& camera) {
     RenderSettings settings;
     settings.shadow.size = 1024;
@@ -68,17 +68,23 @@ FirstView measure(const Scene& scene, const CameraView& camera) {
     Renderer r(test::testShaders(), scene, settings);
     r.resize(kSize, kSize);
     r.render(camera);
-    const FloatImage position = readTexture(r.surfaces().position, 4);
-    const FloatImage normal = readTexture(r.surfaces().normal, 4);
+    const FloatImage position = r.surfaces().positions().read();
+    const FloatImage plane = r.surfaces().readNormals(SurfacesPass::Outputs::Normal::Plane);
     const FloatImage visibility = readTexture(r.visibility(), 1);
-    const auto groundId = static_cast<float>(
-        scene.instances.at(static_cast<std::size_t>(scene.addedGround)).objectId);
+    // The added ground is one horizontal quad 1e-4 of the scene's radius below the model
+    // (Ground.cpp): a pixel is ground when its plane is horizontal at that height (positions
+    // come back from depth within ~1e-6 of the distance, SurfaceDecode.h).
+    const Instance& ground = scene.instances.at(static_cast<std::size_t>(scene.addedGround));
+    const float groundY = scene.meshes.at(static_cast<std::size_t>(ground.mesh)).positions[0].y;
+    const float tolerance = 2e-5f * scene.bounds.radius();
     int top = kSize, bottom = -1;
     std::size_t shadowed = 0;
     for (int y = 0; y < kSize; ++y)
         for (int x = 0; x < kSize; ++x) {
             if (position.at(x, y, 3) < 0.5f) continue; // background
-            if (std::abs(normal.at(x, y, 3) - groundId) > 0.5f) {
+            const bool onGround = std::abs(plane.at(x, y, 1)) > 0.999f &&
+                                  std::abs(position.at(x, y, 1) - groundY) < tolerance;
+            if (!onGround) {
                 top = std::min(top, y);
                 bottom = std::max(bottom, y);
             } else if (visibility.at(x, y, 0) < 0.5f) {
