@@ -9,6 +9,7 @@
 // The script below is already the smallest with what they check: two resolutions, a reference
 // lane and both flooding methods with their counterparts, at 32 x 32 and 48 x 32 pixels.
 
+#include "CaptureOutputs.h"
 #include "CliRun.h"
 #include "TestPaths.h"
 
@@ -60,37 +61,6 @@ Outcome capture(const fs::path& out, const std::string& flags = {},
                 const std::string& threads = "--capture-threads 2") {
     return runCommand(std::string(FLOODLIGHT_BINARY) + " capture " + script.string() + " --out " +
                       out.string() + " " + threads + " " + flags);
-}
-
-// The CSV without its time columns (frame_ms and the phases' *_ms): what a resumed run must
-// reproduce exactly.
-std::string untimedCsv(const fs::path& dir) {
-    std::istringstream in(fileContents(dir / "frames.csv"));
-    std::string out, line;
-    std::vector<bool> keep;
-    while (std::getline(in, line)) {
-        std::vector<std::string> cells;
-        std::stringstream s(line);
-        for (std::string c; std::getline(s, c, ',');) cells.push_back(c);
-        if (keep.empty())
-            for (const std::string& c : cells) keep.push_back(!c.ends_with("_ms"));
-        for (std::size_t k = 0; k < cells.size(); ++k)
-            if (k < keep.size() && keep[k]) out += cells[k] + ",";
-        out += "\n";
-    }
-    return out;
-}
-
-// The summary's measurements but its times.
-nlohmann::json untimedSummary(const fs::path& dir) {
-    nlohmann::json j = nlohmann::json::parse(fileContents(dir / "summary.json"));
-    j["reference"].erase("medianFrameMs");
-    j.erase("resources");  // the process's memory and objects, after this sitting's frames
-    j.erase("phaseSplit"); // where this sitting's time went
-    for (auto& m : j["methods"])
-        for (const char* timed : {"medianFrameMs", "frameTimeOverHard", "medianPhaseMs"})
-            m.erase(timed);
-    return j;
 }
 
 // The run without a break every other run is compared with (once per test program).

@@ -7,6 +7,7 @@
 //
 // Two runs of a small script (each process compiles its methods' shaders: about 10 s each).
 
+#include "CaptureOutputs.h"
 #include "CliRun.h"
 #include "TestPaths.h"
 
@@ -51,36 +52,6 @@ const fs::path& root() {
 Outcome capture(const fs::path& out, const std::string& flags) {
     return runCommand(std::string(FLOODLIGHT_BINARY) + " capture " +
                       (root() / "script.json").string() + " --out " + out.string() + " " + flags);
-}
-
-// The CSV without its time columns (frame_ms and the phases' *_ms).
-std::string untimedCsv(const fs::path& dir) {
-    std::istringstream in(fileContents(dir / "frames.csv"));
-    std::string out, line;
-    std::vector<bool> keep;
-    while (std::getline(in, line)) {
-        std::vector<std::string> cells;
-        std::stringstream s(line);
-        for (std::string c; std::getline(s, c, ',');) cells.push_back(c);
-        if (keep.empty())
-            for (const std::string& c : cells) keep.push_back(!c.ends_with("_ms"));
-        for (std::size_t k = 0; k < cells.size(); ++k)
-            if (k < keep.size() && keep[k]) out += cells[k] + ",";
-        out += "\n";
-    }
-    return out;
-}
-
-// The summary but its times, memory and phase split.
-nlohmann::json untimedSummary(const fs::path& dir) {
-    nlohmann::json j = nlohmann::json::parse(fileContents(dir / "summary.json"));
-    j["reference"].erase("medianFrameMs");
-    j.erase("resources");
-    j.erase("phaseSplit");
-    for (auto& m : j["methods"])
-        for (const char* timed : {"medianFrameMs", "frameTimeOverHard", "medianPhaseMs"})
-            m.erase(timed);
-    return j;
 }
 
 TEST(CaptureThreads, PipelinedWritesWhatTheSynchronousRunWrites) {

@@ -90,6 +90,7 @@ ReferenceShadowPass::Outputs ReferenceShadowPass::execute(const Inputs& in, gl::
     depth_.set("uSlopeBias", in.shadowSettings.slopeBias);
     depth_.set("uConstantBias", in.shadowSettings.constantBias);
     accumulate_.set("uShadowWarp", glm::mat4(1.0f));
+    in.positions.bind(accumulate_, 0); // the matrix once; the depth again per map, below
     glBlendEquation(GL_FUNC_ADD);
     glBlendFunc(GL_ONE, GL_ONE);
     for (const glm::vec3& q : samples) {
@@ -112,7 +113,7 @@ ReferenceShadowPass::Outputs ReferenceShadowPass::execute(const Inputs& in, gl::
         glEnable(GL_BLEND);
         accumulate_.set("uLightViewProj", viewProj);
         // Bound per map: the scene's draw binds alpha cut-out textures on unit 0.
-        in.positions.bind(accumulate_, 0);
+        glBindTextureUnit(0, in.positions.depth.id());
         glBindTextureUnit(1, map_.id());
         gl::drawFullscreenTriangle(accumulate_, emptyVao_);
         glDisable(GL_BLEND);

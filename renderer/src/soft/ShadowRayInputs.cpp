@@ -1,5 +1,6 @@
 #include <renderer/soft/ShadowRayInputs.h>
 
+#include <renderer/passes/SurfaceDecode.h>
 #include <renderer/scene/AlphaCoverage.h>
 
 #include <base/Text.h>
@@ -71,23 +72,23 @@ std::vector<glm::vec3> worldVertices(const Scene& scene, const Pose& pose) {
 
 std::vector<rt::Receiver> surfaceReceivers(const SurfacesPass::Outputs& surfaces) {
     const int w = surfaces.width, h = surfaces.height;
-    // Read in file order (row 0 at the top); the receivers are in GL's (row 0 at the bottom),
-    // as the visibility they give is uploaded.
-    using Normal = SurfacesPass::Outputs::Normal;
+    // Read once each, in file order (row 0 at the top); the receivers are in GL's (row 0 at the
+    // bottom), as the visibility they give is uploaded.
     const FloatImage position = surfaces.positions().read();
-    const FloatImage plane = surfaces.readNormals(Normal::Plane);
-    const FloatImage shading = surfaces.readNormals(Normal::Shading);
+    const FloatImage normals = readTexture(surfaces.normals, 4); // octahedral: xy shading, zw plane
     std::vector<rt::Receiver> receivers(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             const int row = h - 1 - y;
-            const auto at = [&](const FloatImage& img) {
-                return glm::vec3(img.at(x, row, 0), img.at(x, row, 1), img.at(x, row, 2));
+            const auto oct = [&](int c) {
+                return surface::octDecode({normals.at(x, row, c), normals.at(x, row, c + 1)});
             };
-            glm::vec3 n = at(plane); // the receiver's plane, facing the shading normal's side
-            if (glm::dot(n, at(shading)) < 0.0f) n = -n;
+            glm::vec3 n = oct(2); // the receiver's plane, facing the shading normal's side
+            if (glm::dot(n, oct(0)) < 0.0f) n = -n;
+            const glm::vec3 p(position.at(x, row, 0), position.at(x, row, 1),
+                              position.at(x, row, 2));
             receivers[static_cast<std::size_t>(y) * w + x] = {
-                at(position), n, position.at(x, row, 3) != 0.0f}; // w = 0: background
+                p, n, position.at(x, row, 3) != 0.0f}; // w = 0: background
         }
     return receivers;
 }
