@@ -1,6 +1,5 @@
 #include <renderer/io/ImageIO.h>
 #include <renderer/io/PngLimits.h>
-#include <renderer/passes/SurfaceDecode.h>
 
 #include <base/InputFile.h>
 #include <base/OutputFiles.h>
@@ -82,11 +81,15 @@ ByteImage readDefaultFramebuffer(int width, int height) {
     return img;
 }
 
+float linearToSrgb(float c) {
+    c = std::clamp(c, 0.0f, 1.0f);
+    return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+}
+
 std::uint8_t linearToSrgb8(float c) {
     if (!(c > 0.0f)) return 0; // also maps NaN to 0
     if (c >= 1.0f) return 255;
-    // The transfer function is the surfaces pass's (SurfaceDecode.h), so one curve is written.
-    return static_cast<std::uint8_t>(std::lround(surface::linearToSrgb(glm::vec3(c)).x * 255.0f));
+    return static_cast<std::uint8_t>(std::lround(linearToSrgb(c) * 255.0f));
 }
 
 ByteImage toSrgb8(const FloatImage& linear) {

@@ -1,3 +1,4 @@
+#include <renderer/io/ImageIO.h>
 #include <renderer/passes/SurfaceDecode.h>
 
 #include <cmath>
@@ -55,12 +56,7 @@ glm::vec3 octDecode(glm::vec2 e) {
 }
 
 glm::vec3 linearToSrgb(glm::vec3 c) {
-    glm::vec3 out;
-    for (int i = 0; i < 3; ++i) {
-        const float v = glm::clamp(c[i], 0.0f, 1.0f);
-        out[i] = v < 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
-    }
-    return out;
+    return {fl::linearToSrgb(c.x), fl::linearToSrgb(c.y), fl::linearToSrgb(c.z)};
 }
 
 glm::vec3 srgbToLinear(glm::vec3 c) {

@@ -43,6 +43,9 @@ FloatImage fromGlRows(const float* rows, int width, int height, int channels);
 /// top.
 ByteImage readDefaultFramebuffer(int width, int height);
 
+/// The sRGB transfer function (IEC 61966-2-1) for a linear value clamped to [0,1]: the one
+/// curve the PNG writer and the surfaces pass's base colour (SurfaceDecode.h) use.
+float linearToSrgb(float linear);
 /// The sRGB transfer function for a linear value (clamped to [0,1]), as 0..255.
 std::uint8_t linearToSrgb8(float linear);
 /// Encodes linear RGB(A) floats as 8-bit sRGB (alpha kept linear, forced to 255 if absent).
