@@ -129,13 +129,15 @@ TEST(CaptureResume, StoppedTwiceAndResumedGivesTheRunWithoutABreak) {
 TEST(CaptureResume, AKilledRunLosesAtMostTheFrameInFlight) {
     const fs::path d = root() / "killed";
     fs::remove_all(d);
-    // SIGKILL once two frames are in the journal; the loop gives up if the run ends first.
+    // SIGKILL once two frames are in the journal; the loop gives up if the run ends first. The
+    // shell then waits for (reaps) it: until then the killed process still "exists" for
+    // kill(pid, 0), and the resumed run would keep its temporary as a live run's.
     const Outcome killed = runCommand(
         std::string(FLOODLIGHT_BINARY) + " capture " + (root() / "script.json").string() +
         " --out " + d.string() +
         " --capture-threads 2 >/dev/null 2>&1 & pid=$!; while kill -0 $pid 2>/dev/null && " +
         "[ $(($(wc -l 2>/dev/null < " + (d / "progress.jsonl").string() +
-        " || echo 0))) -lt 3 ]; do sleep 0.01; done; kill -9 $pid && echo killed");
+        " || echo 0))) -lt 3 ]; do sleep 0.01; done; kill -9 $pid && { wait $pid; echo killed; }");
     ASSERT_NE(killed.output.find("killed"), std::string::npos)
         << "the run finished before it could be killed: " << killed.output;
     const int before = finishedFrames(d);
