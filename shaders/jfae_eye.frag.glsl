@@ -2,7 +2,8 @@
 // JFA-E phase 2 (thesis §5.4.1, "Generating Hard Shadows"): per pixel of the frame's surfaces,
 // its world position with the hard-shadow flag in alpha (1 shadowed, 0 lit, 2 lit because
 // outside the shadow map, -1 background), and its occluder: the surface the light's centre sees
-// at the pixel's shadow-map texel (the receiver position the shadow pass stored there) with that
+// at the pixel's shadow-map texel (the receiver position decoded from the shadow pass's receiver
+// target, shadow_map_decode.glsl) with that
 // surface's object id. Phase 3 records the occluder of boundary pixels from here, so a boundary
 // pixel's occluder is by construction the surface that puts it in hard shadow, not a guess from
 // the shadow map's silhouettes (Arvo et al.'s condition (2), which the thesis drops). With
@@ -10,11 +11,12 @@
 // (occluder_edge.glsl says why); off, the thesis' texel centre.
 #include "shadow_lookup.glsl"
 #include "disk_light.glsl"
+#include "shadow_map_decode.glsl"
 #include "occluder_edge.glsl"
 #include "surface_decode.glsl"
 
 layout(binding = 0) uniform sampler2D uDepth; // SurfacesPass: positions (surfacePosition)
-layout(binding = 2) uniform sampler2D uReceivers;
+layout(binding = 2) uniform sampler2D uReceivers; // the map's receiver target (MapPositions)
 layout(binding = 3) uniform sampler2D uLightObjectIds;
 uniform int uHaveObjectIds;
 uniform int uOccluderEdges;
@@ -47,7 +49,7 @@ void main() {
         // Only hard-shadowed pixels' occluders are read (phase 3, the object-ID fix).
         vec3 o = uOccluderEdges != 0 && lit < 0.5
                      ? occluderEdgePoint(uReceivers, t, uSilhouetteThreshold)
-                     : texelFetch(uReceivers, t, 0).xyz;
+                     : mapReceiver(uReceivers, t).xyz;
         oOccluder = vec4(o, id);
     }
 }

@@ -1,6 +1,7 @@
 // Silhouette edges of the shadow map's receiver texture, shared by JFA-L's silhouette pass and
 // JFA-E's occluder lookup; fl::acrossSilhouette and fl::occluderEdgePoint on the CPU
-// (renderer/soft/OccluderEdge.h), operation for operation. Needs disk_light.glsl.
+// (renderer/soft/OccluderEdge.h), operation for operation. Needs disk_light.glsl and
+// shadow_map_decode.glsl (the receiver target holds depths; positions come from mapReceiver).
 //
 // Why occluder points move to the edge: a texel is covered when its centre is, so the occluder's
 // true edge lies anywhere between the last covered centre and the first uncovered one, on average
@@ -35,7 +36,7 @@ bool acrossSilhouette(vec4 self, vec4 n, float threshold) {
 // sides of an axis, or none, or at the map's border, stays put on that axis.
 vec3 occluderEdgePoint(sampler2D receivers, ivec2 t, float threshold) {
     ivec2 size = textureSize(receivers, 0);
-    vec4 self = texelFetch(receivers, t, 0);
+    vec4 self = mapReceiver(receivers, t);
     precise vec3 o = self.xyz;
     if (self.w == 0.0) return o;
     for (int axis = 0; axis < 2; ++axis) {
@@ -43,8 +44,8 @@ vec3 occluderEdgePoint(sampler2D receivers, ivec2 t, float threshold) {
         ivec2 lo = t - a, hi = t + a;
         bool inLo = all(greaterThanEqual(lo, ivec2(0)));
         bool inHi = all(lessThan(hi, size));
-        vec4 nLo = texelFetch(receivers, clamp(lo, ivec2(0), size - 1), 0);
-        vec4 nHi = texelFetch(receivers, clamp(hi, ivec2(0), size - 1), 0);
+        vec4 nLo = mapReceiver(receivers, clamp(lo, ivec2(0), size - 1));
+        vec4 nHi = mapReceiver(receivers, clamp(hi, ivec2(0), size - 1));
         bool edgeLo = inLo && acrossSilhouette(self, nLo, threshold);
         bool edgeHi = inHi && acrossSilhouette(self, nHi, threshold);
         if (edgeHi && !edgeLo && inLo) o = o + 0.5 * (self.xyz - nLo.xyz);

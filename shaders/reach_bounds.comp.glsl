@@ -4,8 +4,12 @@
 // their range of distances from the light's plane (w): the smallest in uDstLo, the largest in
 // uDstHi (lo = 1e30, hi = -1e30 where there is none). Level L + 1 bounds 2x2 cells of level L
 // (the last cell of an odd level: 3 cells). uMode 0 builds level 0 from the receiver positions,
-// 1 one level from the one below.
+// 1 one level from the one below. With MAP_RECEIVERS the source is the shadow map's receiver
+// target (positions through mapReceiver), else a texture of positions (JFA-E's eye points).
 #include "disk_light.glsl"
+#ifdef MAP_RECEIVERS
+#include "shadow_map_decode.glsl"
+#endif
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -42,7 +46,11 @@ void main() {
             for (int i = 0; i < 8; ++i) {
                 ivec2 q = t * 8 + ivec2(i, j);
                 if (any(greaterThanEqual(q, uSrcSize))) continue;
+#ifdef MAP_RECEIVERS
+                vec4 p = mapReceiver(uPositions, q);
+#else
                 vec4 p = texelFetch(uPositions, q, 0);
+#endif
                 if (p.w >= uValidMin) {
                     vec4 v = vec4(p.xyz, abs(dot(p.xyz - uDiskCenter, uDiskNormal)));
                     lo = min(lo, v);

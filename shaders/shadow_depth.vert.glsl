@@ -2,10 +2,10 @@
 // Light-space depth of the scene (shadow map). The texel position goes through the provider's
 // warp (identity for the uniform map, N_T for TSM); the depth stays the light's own
 // post-perspective depth, interpolated as clip z and w (both linear in the vertex, so
-// perspective-correct interpolation in the warped space gives them exactly). The world position
-// is passed on for the receiver-position target that JFA-L floods over, and the texture
-// coordinate and vertex alpha for the alpha cut-out (alpha_coverage.glsl). Vertices are posed as
-// in the eye's passes (pose.glsl).
+// perspective-correct interpolation in the warped space gives them exactly); the receiver
+// target stores their ratio unbiased (shadow_map_decode.glsl). The texture coordinate and
+// vertex alpha are passed on for the alpha cut-out (alpha_coverage.glsl). Vertices are posed
+// as in the eye's passes (pose.glsl).
 #include "pose.glsl"
 
 layout(location = 0) in vec3 aPosition;
@@ -16,13 +16,11 @@ uniform mat4 uLightViewProj;
 uniform mat4 uShadowWarp;
 
 out vec2 vLightZW;
-out vec3 vWorld;
 out vec2 vTexcoord;
 out float vAlpha;
 
 void main() {
     vec4 world = poseWorld(aPosition, false);
-    vWorld = world.xyz;
     vTexcoord = aTexcoord;
     vAlpha = aColor.a;
     vec4 light = uLightViewProj * world;

@@ -1,13 +1,14 @@
 #version 450 core
 // JFA-L phase 2 (thesis §5.3.1, "Locating Occluders"): a shadow-map texel is a silhouette
-// pixel, and so a seed carrying its world position, if one of its 8 neighbours sees nothing, or
+// pixel, and so a seed carrying its world position (w its texel's tag, mapSeedTag), if one of its 8 neighbours sees nothing, or
 // lies across a silhouette edge (acrossSilhouette, occluder_edge.glsl). Same as
 // fl::silhouetteSeeds on the CPU.
 #include "disk_light.glsl"
+#include "shadow_map_decode.glsl"
 #include "occluder_edge.glsl"
 #include "jfa_seed_list.glsl"
 
-layout(binding = 0) uniform sampler2D uReceivers;
+layout(binding = 0) uniform sampler2D uReceivers; // the map's receiver target (MapPositions)
 uniform float uSilhouetteThreshold;
 uniform int uListSeeds; // append each seed to the band's seed list (jfa_seed_list.glsl)
 // With SILHOUETTE_REGION (--flood-region view): only the tiles of the seed region (one uint per
@@ -33,18 +34,18 @@ void main() {
     }
 #endif
     ivec2 size = textureSize(uReceivers, 0);
-    vec4 self = texelFetch(uReceivers, t, 0);
+    vec4 self = mapReceiver(uReceivers, t);
     bool silhouette = false;
     for (int j = -1; j <= 1; ++j) {
         for (int i = -1; i <= 1; ++i) {
             ivec2 q = t + ivec2(i, j);
             bool inside = all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, size));
-            vec4 n = texelFetch(uReceivers, clamp(q, ivec2(0), size - 1), 0);
+            vec4 n = mapReceiver(uReceivers, clamp(q, ivec2(0), size - 1));
             bool edge = acrossSilhouette(self, n, uSilhouetteThreshold);
             silhouette = silhouette || (inside && (i != 0 || j != 0) && edge);
         }
     }
     bool seed = self.w != 0.0 && silhouette;
-    oSeed = seed ? vec4(self.xyz, 1.0) : vec4(0.0, 0.0, -1.0, 0.0);
+    oSeed = seed ? vec4(self.xyz, mapSeedTag(t, size.x)) : vec4(0.0, 0.0, -1.0, 0.0);
     if (seed && uListSeeds != 0) jfaListSeed(t);
 }

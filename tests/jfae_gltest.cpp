@@ -101,7 +101,7 @@ TEST_F(JfaETest, PhasesMatchTheCpuReference) {
 
         // Phase 2: the flag is the hard method's shadow test; in-shadow pixels know their
         // occluder (a receiver of the shadow map) and, with the fix, its object.
-        const ReceiverGrid receivers{128, 128, readVec4(*r.shadow()->receivers)};
+        const ReceiverGrid receivers{128, 128, readVec4(r.decodedShadowReceivers())};
         const float threshold = silhouetteThreshold(s.scene.bounds.radius());
         std::size_t shadowed = 0, misplaced = 0, moved = 0;
         for (std::size_t i = 0; i < image.points.size(); ++i) {

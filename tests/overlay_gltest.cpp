@@ -208,7 +208,7 @@ ReceiverGrid receiversOf(const gl::Texture& t) {
 // plan cut after k passes; all passes reproduce the frame's own penumbra map.
 TEST_F(OverlayTest, FloodPassesMatchTruncatedCpuPlan) {
     Frame s("jfa-l");
-    const ReceiverGrid receivers = receiversOf(*s.renderer->shadow()->receivers);
+    const ReceiverGrid receivers = receiversOf(s.renderer->decodedShadowReceivers());
     PenumbraCriterion crit;
     crit.light = s.renderer->disk();
     crit.receivers = &receivers;
@@ -257,7 +257,7 @@ TEST_F(OverlayTest, JfaVsFloodMaskIsTheCpuComparison) {
     const OverlayCapture cap = s.capture(OverlayMode::JfaVsFlood);
     const OverlayResult& r = s.overlays->lastResult();
     ASSERT_TRUE(r.drawn);
-    const ReceiverGrid receivers = receiversOf(*s.renderer->shadow()->receivers);
+    const ReceiverGrid receivers = receiversOf(s.renderer->decodedShadowReceivers());
     PenumbraCriterion crit;
     crit.light = s.renderer->disk();
     crit.receivers = &receivers;

@@ -81,7 +81,7 @@ TEST_F(PenumbraTest, SilhouettesAndFloodMatchTheCpuReference) {
                 EXPECT_FALSE(flood->eye);
                 EXPECT_EQ(flood->passes, 4);
                 EXPECT_EQ(flood->standardFlooding, isStandardFlooding(*d)) << method;
-                const ReceiverGrid receivers = readReceivers(*r.shadow()->receivers);
+                const ReceiverGrid receivers = readReceivers(r.decodedShadowReceivers());
                 const jfa::Grid gpuSeeds = jfa::readGrid(*flood->seeds);
                 const float threshold = 0.001f * s.scene.bounds.radius();
                 const jfa::Grid cpuSeeds = silhouetteSeeds(receivers, r.disk(), threshold);
@@ -313,7 +313,7 @@ TEST_F(PenumbraTest, ViewLimitPartsMatchTheCpu) {
     r.render(makeCameraView(scene, {}, 1.0f));
     const ShadowMapPass::Outputs& sm = *r.shadow();
     const PenumbraView view{r.surfaces().positions(), sm.lightViewProj, sm.warp};
-    const ReceiverGrid receivers = readReceivers(*sm.receivers);
+    const ReceiverGrid receivers = readReceivers(r.decodedShadowReceivers());
     const std::vector<std::uint8_t> cpuView = penumbraViewTiles(
         readReceivers(r.surfaces().positions()), sm.lightViewProj, sm.warp, size, tile);
     const float threshold = 0.001f * scene.bounds.radius();
@@ -390,8 +390,8 @@ TEST_F(PenumbraTest, WidestPenumbraBoundsEverySeedsRect) {
             const std::optional<long long> widest =
                 widestPenumbraTexels(r.disk(), volume, size, nearest, reach.farDepth);
             ASSERT_TRUE(widest.has_value());
-            const jfa::Grid seeds = silhouetteSeeds(readReceivers(*r.shadow()->receivers), r.disk(),
-                                                    0.001f * scene.bounds.radius());
+            const jfa::Grid seeds = silhouetteSeeds(readReceivers(r.decodedShadowReceivers()),
+                                                    r.disk(), 0.001f * scene.bounds.radius());
             long long most = -1;
             for (int y = 0; y < size; ++y)
                 for (int x = 0; x < size; ++x) {

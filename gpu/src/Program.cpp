@@ -208,6 +208,10 @@ void Program::set(const char* name, const glm::vec3& v) const {
 void Program::set(const char* name, const glm::vec4& v) const {
     glProgramUniform4fv(id(), location(name), 1, glm::value_ptr(v));
 }
+void Program::set(const char* name, const glm::mat3& v) const {
+    glProgramUniformMatrix3fv(id(), location(name), 1, GL_FALSE, glm::value_ptr(v));
+}
+
 void Program::set(const char* name, const glm::mat4& v) const {
     glProgramUniformMatrix4fv(id(), location(name), 1, GL_FALSE, glm::value_ptr(v));
 }

@@ -183,7 +183,7 @@ void Renderer::renderFrame(const CameraView& camera, const CameraView* previous)
         shadowPass_.execute({scene_, lightVolume_, settings_.shadow, camera.view, camera.proj,
                              sceneBounds_, method.shadowMapPositions}));
     timer_.wrote(gl::textureBytes(shadow.depth) +
-                 (shadow.receivers ? gl::textureBytes(*shadow.receivers) : 0));
+                 (shadow.receivers ? gl::textureBytes(*shadow.receivers->depth) : 0));
     timer_.end();
     // 2. Surfaces: the scene drawn once from the eye; every later step reads these targets.
     timer_.begin("surfaces");

@@ -131,6 +131,12 @@ class Renderer {
     [[nodiscard]] const ShadowMapPass::Outputs* shadow() const {
         return shadow_ ? &*shadow_ : nullptr;
     }
+    /// The last frame's shadow-map receiver positions decoded into RGBA32F (ShadowMapPass::
+    /// decodedReceivers; for overlays and tests). Throws std::logic_error when the last frame's
+    /// method wrote no receiver target.
+    [[nodiscard]] const gl::Texture& decodedShadowReceivers() const {
+        return shadowPass_.decodedReceivers();
+    }
     /// Eye-space geometry draws of the last frame (1: the surfaces pass; methods read it).
     [[nodiscard]] int eyeGeometryDraws() const { return eyeDraws_; }
     /// Makes the next diagnostics frame compare with itself (e.g. after a camera cut).

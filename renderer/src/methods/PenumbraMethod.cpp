@@ -43,7 +43,7 @@ class PenumbraMethod final : public ShadowMethod {
         const PenumbraMapPass::Outputs pm = pass_.execute(pi, in.timer);
         flood_ = {&pm.seeds,
                   &pm.penumbraMap,
-                  in.shadow.receivers,
+                  nullptr,
                   nullptr,
                   false,
                   standardFlooding_,
@@ -52,7 +52,8 @@ class PenumbraMethod final : public ShadowMethod {
                   true,
                   ps.region,
                   reach,
-                  &pass_.kernel()};
+                  &pass_.kernel(),
+                  in.shadow.receivers};
         if (in.timer) in.timer->begin("penumbra lookup");
         const gl::Texture& v = lookup_.execute(in, &pm.penumbraMap);
         if (in.timer) in.timer->wrote(gl::textureBytes(v));

@@ -85,7 +85,7 @@ const gl::Texture& floodFrame(State& s, const Renderer& r, const Soft& soft,
     c.reachBound = soft.reach;
     s.penumbraKernel.setRegion(soft.region, tile);
     c.light = r.disk();
-    c.receiverTexture = soft.receivers->id();
+    c.map = *soft.map;
     const gl::Texture& out = s.penumbraKernel.run(plan, *soft.seeds, c);
     glBindTextureUnit(2, 0);
     unbindPenumbraReach();
@@ -131,7 +131,9 @@ Lines drawSeeds(State& s, const Frame& f) {
 static void drawOccluders(State& s, const Frame& f, const Soft& soft, const gl::Texture& grid) {
     const glm::ivec4 vp = viewportOf(soft, f);
     s.result.grid = jfa::readGrid(grid);
-    GridDraw g{GridMode::Occluder, &grid, soft.receivers};
+    // Light space: the map's positions decoded (the bits the flood's criterion read).
+    GridDraw g{GridMode::Occluder, &grid,
+               soft.eye ? soft.receivers : &f.renderer.decodedShadowReceivers()};
     g.eyeSpace = soft.eye;
     g.light = &f.renderer.disk();
     f.bindTarget();

@@ -1,4 +1,7 @@
+#include <renderer/passes/ShadowMapDecode.h>
 #include <renderer/passes/ShadowMapPass.h>
+
+#include <stdexcept>
 
 namespace fl {
 
@@ -12,9 +15,32 @@ std::optional<ShadowMapProvider> parseProvider(std::string_view name) {
     return std::nullopt;
 }
 
+void MapPositions::bind(const gl::Program& program, GLuint unit) const {
+    glBindTextureUnit(unit, depth->id());
+    program.set("uMapUnwarp", unwarp);
+    program.set("uMapInverseLightViewProj", inverseLightViewProj);
+}
+
+std::vector<glm::vec4> MapPositions::read() const {
+    const int n = size();
+    std::vector<float> raw(static_cast<std::size_t>(n) * static_cast<std::size_t>(n));
+    glGetTextureImage(depth->id(), 0, GL_RED, GL_FLOAT,
+                      static_cast<GLsizei>(raw.size() * sizeof(float)), raw.data());
+    gl::throwIfErrors("shadow map receiver read-back");
+    std::vector<glm::vec4> out(raw.size());
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+            const std::size_t i = static_cast<std::size_t>(y) * n + x;
+            out[i] = shadowmap::receiverPosition(raw[i], {x, y}, n, unwarp, inverseLightViewProj);
+        }
+    return out;
+}
+
 ShadowMapPass::ShadowMapPass(const gl::ShaderLibrary& shaders)
     : program_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "shadow_depth.vert.glsl"},
-                                            {GL_FRAGMENT_SHADER, "shadow_depth.frag.glsl"}})) {}
+                                            {GL_FRAGMENT_SHADER, "shadow_depth.frag.glsl"}})),
+      decodeProgram_(
+          gl::Program::build(shaders, {{GL_COMPUTE_SHADER, "shadow_map_positions.comp.glsl"}})) {}
 
 gl::Texture makeShadowDepthTexture(int size) {
     gl::Texture depth(GL_DEPTH_COMPONENT32F, size, size);
@@ -31,9 +57,10 @@ void ShadowMapPass::resize(int size) {
     gl::checkTextureSize("shadow map", size, size);
     depth_ = makeShadowDepthTexture(size);
     fbo_ = gl::Framebuffer::withTargets({}, &depth_, "shadow map");
-    receivers_ = gl::Texture(GL_RGBA32F, size, size);
+    receiverDepth_ = gl::Texture(GL_R32F, size, size);
     receiversFbo_ =
-        gl::Framebuffer::withTargets({&receivers_}, &depth_, "shadow map with receiver positions");
+        gl::Framebuffer::withTargets({&receiverDepth_}, &depth_, "shadow map with receivers");
+    receiversWritten_ = false;
 }
 
 ShadowMapPass::Outputs ShadowMapPass::execute(const Inputs& in) {
@@ -59,7 +86,7 @@ ShadowMapPass::Outputs ShadowMapPass::execute(const Inputs& in) {
     const float one = 1.0f;
     glClearNamedFramebufferfv(target.id(), GL_DEPTH, 0, &one);
     if (in.writeReceivers) {
-        const float nothing[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+        const float nothing[4] = {shadowmap::kNoReceiver, 0.0f, 0.0f, 0.0f};
         glClearNamedFramebufferfv(target.id(), GL_COLOR, 0, nothing);
     }
     // Both faces are drawn: the generated and loaded scenes contain open and double-sided
@@ -71,12 +98,33 @@ ShadowMapPass::Outputs ShadowMapPass::execute(const Inputs& in) {
     program_.set("uConstantBias", in.settings.constantBias);
     in.scene.draw(program_, GpuScene::Uniforms::Geometry);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    receiversWritten_ = in.writeReceivers;
+    if (in.writeReceivers)
+        positions_ = {&receiverDepth_, shadowmap::unwarp(warp),
+                      shadowmap::inverseLightViewProj(lightViewProj)};
     return {depth_,
             lightViewProj,
             warp,
             tsm ? &fit_ : nullptr,
             in.settings.provider,
-            in.writeReceivers ? &receivers_ : nullptr};
+            in.writeReceivers ? &positions_ : nullptr};
+}
+
+const gl::Texture& ShadowMapPass::decodedReceivers() const {
+    if (!receiversWritten_)
+        throw std::logic_error("decodedReceivers: the last shadow map wrote no receiver target");
+    const int n = positions_.size();
+    if (!decoded_ || decoded_.width() != n) decoded_ = gl::Texture(GL_RGBA32F, n, n);
+    glUseProgram(decodeProgram_.id());
+    positions_.bind(decodeProgram_, 0);
+    glBindImageTexture(0, decoded_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glDispatchCompute(GLuint((n + 7) / 8), GLuint((n + 7) / 8), 1);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
+                    GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindTextureUnit(0, 0);
+    glUseProgram(0);
+    return decoded_;
 }
 
 void bindShadowMap(const gl::Program& program, const ShadowMapPass::Outputs& shadow) {

@@ -208,7 +208,7 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::Pass
         setDiskLightUniforms(eyePass_, in.light);
         bindShadowMap(eyePass_, in.shadow);
         in.positions.bind(eyePass_, 0);
-        glBindTextureUnit(2, in.shadow.receivers->id());
+        in.shadow.receivers->bind(eyePass_, 2);
         glBindTextureUnit(3, ids_.id());
         gl::drawFullscreenTriangle(eyePass_, emptyVao_);
         for (GLuint unit : {0u, 1u, 2u, 3u}) glBindTextureUnit(unit, 0);

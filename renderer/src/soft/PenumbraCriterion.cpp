@@ -11,7 +11,7 @@ void setDiskLightUniforms(const gl::Program& program, const DiskLight& light) {
 void setCriterionUniforms(const gl::Program& program, const PenumbraCriterion& criterion) {
     setDiskLightUniforms(program, criterion.light);
     setPenumbraReachUniforms(program, criterion.reachBound);
-    glBindTextureUnit(2, criterion.receiverTexture);
+    criterion.map.bind(program, 2);
 }
 
 } // namespace fl

@@ -61,7 +61,8 @@ jfa::Grid silhouetteSeeds(const ReceiverGrid& r, const DiskLight& light, float t
                     silhouette =
                         silhouette || acrossSilhouette(light, self, r.at(qx, qy), threshold);
                 }
-            if (silhouette) out.at(x, y) = {self.x, self.y, self.z, 1.0f};
+            if (silhouette)
+                out.at(x, y) = {self.x, self.y, self.z, shadowmap::seedTag(x, y, r.width)};
         }
     return out;
 }
@@ -102,7 +103,7 @@ PenumbraMapPass::PenumbraMapPass(const gl::ShaderLibrary& shaders)
           {"SILHOUETTE_REGION 1"})) {}
 
 PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, gl::PassTimer* timer) {
-    const int size = in.receivers.width();
+    const int size = in.receivers.size();
     if (in.settings.passes != 0)
         (void)penumbraPlan(in.settings, size); // validates before any GL work
     if (!seeds_ || seeds_.width() != size) {
@@ -139,14 +140,14 @@ PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, gl::PassTime
     if (timer) timer->begin("band");
     PenumbraCriterion criterion;
     criterion.light = in.light;
-    criterion.receiverTexture = in.receivers.id();
+    criterion.map = in.receivers;
     criterion.reachBound = in.reach;
     kernel_.setRegion(in.settings.region, tile);
     kernel_.setViewTiles(limited ? &viewTiles_ : nullptr);
     PenumbraSettings settings = in.settings;
     for (;;) {
         if (criterion.reachBound.enabled) { // receivers are the texels with w = 1
-            bounds_.build(in.receivers, 0.5f, in.light, criterion.reachBound,
+            bounds_.build(in.receivers, in.light, criterion.reachBound,
                           region ? &seedRegion_ : nullptr, tile);
             if (timer) timer->wrote(bounds_.bytes());
         }
@@ -177,7 +178,7 @@ PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, gl::PassTime
 }
 
 void PenumbraMapPass::findSeeds(const Inputs& in, bool region) {
-    const int size = in.receivers.width();
+    const int size = in.receivers.size();
     const int tile = in.settings.bandTile;
     const gl::Program& program = region ? silhouetteRows_ : silhouette_;
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
@@ -190,7 +191,7 @@ void PenumbraMapPass::findSeeds(const Inputs& in, bool region) {
     const bool listSeeds = jfa::banded(in.settings.region);
     program.set("uListSeeds", listSeeds ? 1 : 0);
     if (listSeeds) kernel_.beginSeedList(size, size);
-    glBindTextureUnit(0, in.receivers.id());
+    in.receivers.bind(program, 0);
     if (region) {
         // The spans drawn are this region's and the last one's (markSeedRegion), so every texel
         // off them was off the last spans too, and empty since: cleared only when the texture

@@ -115,10 +115,18 @@ void unbindPenumbraReach() {
     glBindTextureUnit(5, 0);
 }
 
+namespace {
+gl::Program boundsProgram(const gl::ShaderLibrary& shaders, bool map, bool region) {
+    std::vector<std::string> defines;
+    if (map) defines.emplace_back("MAP_RECEIVERS 1");
+    if (region) defines.emplace_back("REACH_REGION 1");
+    return gl::Program::build(shaders, {{GL_COMPUTE_SHADER, "reach_bounds.comp.glsl"}}, defines);
+}
+} // namespace
+
 ReceiverBoundsPyramid::ReceiverBoundsPyramid(const gl::ShaderLibrary& shaders)
-    : program_(gl::Program::build(shaders, {{GL_COMPUTE_SHADER, "reach_bounds.comp.glsl"}})),
-      regionProgram_(gl::Program::build(shaders, {{GL_COMPUTE_SHADER, "reach_bounds.comp.glsl"}},
-                                        {"REACH_REGION 1"})) {}
+    : programs_{{boundsProgram(shaders, false, false), boundsProgram(shaders, false, true)},
+                {boundsProgram(shaders, true, false), boundsProgram(shaders, true, true)}} {}
 
 std::int64_t ReceiverBoundsPyramid::bytes() const {
     std::int64_t texels = 0;
@@ -132,7 +140,23 @@ std::int64_t ReceiverBoundsPyramid::bytes() const {
 void ReceiverBoundsPyramid::build(const gl::Texture& positions, float validMin,
                                   const DiskLight& light, PenumbraReach& reach,
                                   const gl::Buffer* region, int regionTile) {
-    const int w0 = (positions.width() + 7) / 8, h0 = (positions.height() + 7) / 8;
+    const gl::Program& program = programs_[0][region != nullptr];
+    glBindTextureUnit(0, positions.id());
+    build(program, positions.width(), positions.height(), validMin, light, reach, region,
+          regionTile);
+}
+
+void ReceiverBoundsPyramid::build(const MapPositions& map, const DiskLight& light,
+                                  PenumbraReach& reach, const gl::Buffer* region, int regionTile) {
+    const gl::Program& program = programs_[1][region != nullptr];
+    map.bind(program, 0);
+    build(program, map.size(), map.size(), 0.5f, light, reach, region, regionTile); // w = 1
+}
+
+void ReceiverBoundsPyramid::build(const gl::Program& program, int width, int height, float validMin,
+                                  const DiskLight& light, PenumbraReach& reach,
+                                  const gl::Buffer* region, int regionTile) {
+    const int w0 = (width + 7) / 8, h0 = (height + 7) / 8;
     if (!lo_ || lo_.width() != w0 || lo_.height() != h0) {
         levels_ = 1; // GL's mip chain: sizes halve rounding down, to 1 x 1
         for (int w = w0, h = h0; w > 1 || h > 1; w = std::max(1, w / 2), h = std::max(1, h / 2))
@@ -140,15 +164,13 @@ void ReceiverBoundsPyramid::build(const gl::Texture& positions, float validMin,
         lo_ = gl::Texture(GL_RGBA32F, w0, h0, levels_);
         hi_ = gl::Texture(GL_RGBA32F, w0, h0, levels_);
     }
-    const gl::Program& program = region != nullptr ? regionProgram_ : program_;
     glUseProgram(program.id());
     setDiskLightUniforms(program, light);
     program.set("uValidMin", validMin);
     program.set("uRegionTile", regionTile);
-    program.set("uRegionTilesX", (positions.width() + regionTile - 1) / regionTile);
+    program.set("uRegionTilesX", (width + regionTile - 1) / regionTile);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, region != nullptr ? region->id() : 0);
-    glBindTextureUnit(0, positions.id());
-    int w = w0, h = h0, sw = positions.width(), sh = positions.height();
+    int w = w0, h = h0, sw = width, sh = height;
     for (int level = 0; level < levels_; ++level) {
         program.set("uMode", level == 0 ? 0 : 1);
         program.set("uDstSize", glm::ivec2(w, h));

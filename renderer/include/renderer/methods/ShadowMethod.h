@@ -64,7 +64,7 @@ struct FrameInputs {
 struct FloodFrame {
     const gl::Texture* seeds = nullptr;
     const gl::Texture* flooded = nullptr;
-    const gl::Texture* receivers = nullptr; // light: receiver positions; eye: EyeImage::points
+    const gl::Texture* receivers = nullptr; // eye only: EyeImage::points
     const gl::Texture* occluders = nullptr; // eye only: EyeImage::occluders
     bool eye = false;
     bool standardFlooding = false;
@@ -74,6 +74,7 @@ struct FloodFrame {
     jfa::FloodRegion region = jfa::FloodRegion::Full; // --flood-region
     PenumbraReach reach;                              // the criterion's band bound
     const jfa::GlFloodKernelBase* kernel = nullptr;   // ran the flood (activeShare())
+    const MapPositions* map = nullptr; // light only: the shadow map's receiver target
 };
 
 class ShadowMethod {

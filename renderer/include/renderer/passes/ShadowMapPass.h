@@ -21,8 +21,25 @@
 
 #include <optional>
 #include <string_view>
+#include <vector>
 
 namespace fl {
+
+/// The shadow map's receiver target and what reads it (shaders/shadow_map_decode.glsl's
+/// mapReceiver(); CPU twin renderer/passes/ShadowMapDecode.h): per texel the light's unbiased
+/// NDC depth, from which the world position of the surface the texel sees comes back.
+struct MapPositions {
+    const gl::Texture* depth = nullptr; // R32F; shadowmap::kNoReceiver where nothing is seen
+    glm::mat3 unwarp{1.0f};             // shadowmap::unwarp(warp)
+    glm::mat4 inverseLightViewProj{1.0f};
+    [[nodiscard]] int size() const { return depth->width(); }
+    /// For mapReceiver(): the target on texture `unit` (the shader's sampler binding) and the
+    /// uMapUnwarp / uMapInverseLightViewProj uniforms of `program`.
+    void bind(const gl::Program& program, GLuint unit) const;
+    /// Every texel's position, decoded on the CPU (the twin of mapReceiver()), in GL's row
+    /// order (row 0 at the bottom): (xyz, 1), or all 0 where the light sees nothing.
+    [[nodiscard]] std::vector<glm::vec4> read() const;
+};
 
 enum class ShadowMapProvider { Uniform, Tsm };
 
@@ -56,7 +73,7 @@ class ShadowMapPass {
         const glm::mat4& eyeView; // the camera, for the TSM fit
         const glm::mat4& eyeProj;
         const geom::Aabb& sceneBounds; // clamps the eye frustum's depth range for the TSM fit
-        bool writeReceivers = false;   // also store each texel's world position (JFA-L)
+        bool writeReceivers = false;   // also write the receiver target (JFA-L, JFA-E)
     };
     struct Outputs {
         const gl::Texture& depth; // DEPTH_COMPONENT32F, compare mode set for sampler2DShadow
@@ -64,20 +81,28 @@ class ShadowMapPass {
         glm::mat4 warp;           // light clip -> shadow-map clip (identity for uniform)
         const geom::TrapezoidFit* trapezoid; // the fit (tsm only; nullptr for uniform)
         ShadowMapProvider provider;
-        /// With writeReceivers: RGBA32F, the world position of the surface each texel sees
-        /// (w = 1; w = 0 where the light sees nothing). nullptr otherwise.
-        const gl::Texture* receivers;
+        /// With writeReceivers: the receiver target, from which every reader rebuilds the world
+        /// position of the surface each texel sees. nullptr otherwise.
+        const MapPositions* receivers;
         /// world -> shadow-map clip space (texel positions).
         [[nodiscard]] glm::mat4 mapViewProj() const { return warp * lightViewProj; }
     };
     /// Renders the scene's depth as seen from the light.
     Outputs execute(const Inputs& in);
+    /// The last execute()'s receiver positions decoded on the GPU into an RGBA32F texture
+    /// (xyz, w = 1; 0 where nothing is seen): the very bits every shader's mapReceiver() reads,
+    /// for the overlays and the tests that feed the CPU kernels. Throws std::logic_error when
+    /// the last execute() did not write the receiver target.
+    [[nodiscard]] const gl::Texture& decodedReceivers() const;
 
   private:
-    gl::Program program_;
-    gl::Texture depth_, receivers_;
+    gl::Program program_, decodeProgram_;
+    gl::Texture depth_, receiverDepth_;
     gl::Framebuffer fbo_, receiversFbo_;
     geom::TrapezoidFit fit_;
+    MapPositions positions_;
+    bool receiversWritten_ = false;
+    mutable gl::Texture decoded_; // decodedReceivers(): made on demand
 };
 
 /// Binds the map for shaders/shadow_lookup.glsl: the depth texture on unit 1 and the

@@ -3,6 +3,8 @@
 // jfa/ kernels: the CPU functor here and shaders/jfa_penumbra.glsl for the GL kernels, which
 // agree bit for bit. See the GLSL file for the rule.
 
+#include <renderer/passes/ShadowMapDecode.h>
+#include <renderer/passes/ShadowMapPass.h>
 #include <renderer/soft/DiskLight.h>
 #include <renderer/soft/PenumbraReach.h>
 
@@ -35,30 +37,32 @@ struct PenumbraCriterion {
     static constexpr bool keyed = true; // the GLSL has jfaKey (jfa_select.glsl)
     DiskLight light;
     const ReceiverGrid* receivers = nullptr; // CPU kernel
-    GLuint receiverTexture = 0;              // GL kernels: RGBA32F, same layout
-    PenumbraReach reachBound;                // the shadow map's: bounds the band (jfa/Band.h)
+    MapPositions map; // GL kernels: the shadow map's receiver target (decoded in the shader)
+    PenumbraReach reachBound; // the shadow map's: bounds the band (jfa/Band.h)
 
     /// Band-limited flooding: the widest penumbra occluder c (seeded at its own texel) can cast.
     [[nodiscard]] jfa::ReachRect reach(int, int, const jfa::Cell& c) const {
         return penumbraReachRect(light, reachBound, {c.x, c.y, c.z});
     }
 
-    /// The ranking key of occluder c at receiver r: |cq|^2 if its ray reaches the light, the
-    /// largest float if c is the receiver itself (a silhouette texel keeps its own occluder, so
-    /// JFA's later passes can still pass it on), -1 (rejected) otherwise.
-    [[nodiscard]] float key(glm::vec3 r, const jfa::Cell& c) const {
-        if (c.x == r.x && c.y == r.y && c.z == r.z) return std::numeric_limits<float>::max();
+    /// The ranking key of occluder c at receiver r of texel (px, py): |cq|^2 if its ray reaches
+    /// the light, the largest float if c is the seed of this very texel (its w is the texel's
+    /// shadowmap::seedTag: a silhouette texel keeps its own occluder, so JFA's later passes can
+    /// still pass it on), -1 (rejected) otherwise.
+    [[nodiscard]] float key(int px, int py, glm::vec3 r, const jfa::Cell& c) const {
+        if (c.w == shadowmap::seedTag(px, py, receivers->width))
+            return std::numeric_limits<float>::max();
         return occluderHitDistance2(light, r, {c.x, c.y, c.z});
     }
     [[nodiscard]] bool empty(const jfa::Cell& c) const { return c.w == 0.0f; }
     [[nodiscard]] bool accepts(int px, int py, const jfa::Cell& c) const {
         const glm::vec4& r = receivers->at(px, py);
-        return r.w != 0.0f && key(glm::vec3(r), c) >= 0.0f;
+        return r.w != 0.0f && key(px, py, glm::vec3(r), c) >= 0.0f;
     }
     [[nodiscard]] bool better(int px, int py, const jfa::Cell& a, const jfa::Cell& b) const {
         const glm::vec3 r(receivers->at(px, py));
-        const float da = key(r, a);
-        const float db = key(r, b);
+        const float da = key(px, py, r, a);
+        const float db = key(px, py, r, b);
         const bool tieWins = a.x < b.x || (a.x == b.x && (a.y < b.y || (a.y == b.y && a.z < b.z)));
         return da < db || (da == db && tieWins);
     }
@@ -67,7 +71,7 @@ struct PenumbraCriterion {
 /// Sets the disk-light uniforms (shaders/disk_light.glsl) of any program that includes it.
 void setDiskLightUniforms(const gl::Program& program, const DiskLight& light);
 /// The GL kernels' hook (found by argument-dependent lookup from jfa::GlFloodKernel::run):
-/// binds the receiver texture on unit 2 and sets the light.
+/// binds the map's receiver target on unit 2 and sets the light.
 void setCriterionUniforms(const gl::Program& program, const PenumbraCriterion& criterion);
 
 } // namespace fl

@@ -62,7 +62,7 @@ class PenumbraMapPass {
     explicit PenumbraMapPass(const gl::ShaderLibrary& shaders);
 
     struct Inputs {
-        const gl::Texture& receivers; // ShadowMapPass::Outputs::receivers
+        const MapPositions& receivers; // ShadowMapPass::Outputs::receivers
         const DiskLight& light;
         const PenumbraSettings& settings;
         float threshold;                    // resolved silhouette threshold (world units)

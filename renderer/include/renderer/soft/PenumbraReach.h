@@ -29,6 +29,7 @@
 // 10.7% instead of 12.5% and a slower flood; 4 x 4 first cells instead of 8 x 8 gave the same
 // JFA-L band (6.1%) and a wider JFA-E one (58%).
 
+#include <renderer/passes/ShadowMapPass.h>
 #include <renderer/scene/Pose.h>
 #include <renderer/scene/Scene.h>
 #include <renderer/soft/DiskLight.h>
@@ -79,11 +80,19 @@ class ReceiverBoundsPyramid {
     /// side `regionTile`, a multiple of 8, row-major), receivers outside its tiles do not count.
     void build(const gl::Texture& positions, float validMin, const DiskLight& light,
                PenumbraReach& reach, const gl::Buffer* region = nullptr, int regionTile = 8);
+    /// The same from the shadow map's receiver target (positions decoded in the shader).
+    void build(const MapPositions& map, const DiskLight& light, PenumbraReach& reach,
+               const gl::Buffer* region = nullptr, int regionTile = 8);
     /// Bytes one build() writes: both pyramids, every level (0 before the first build).
     [[nodiscard]] std::int64_t bytes() const;
 
   private:
-    gl::Program program_, regionProgram_; // the latter with REACH_REGION (a seed region)
+    void build(const gl::Program& program, int width, int height, float validMin,
+               const DiskLight& light, PenumbraReach& reach, const gl::Buffer* region,
+               int regionTile);
+    // [map source][seed region]: MAP_RECEIVERS decodes the shadow map's receiver target,
+    // REACH_REGION limits the receivers to a seed region's tiles.
+    gl::Program programs_[2][2];
     gl::Texture lo_, hi_; // min and max: xyz world position, w distance from the light's plane
     int levels_ = 0;
 };

@@ -1,0 +1,41 @@
+#include <renderer/passes/ShadowMapDecode.h>
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+
+namespace fl::shadowmap {
+
+float seedTag(int x, int y, int width) {
+    return std::bit_cast<float>(0x3f800000u + static_cast<std::uint32_t>(y * width + x));
+}
+
+glm::mat3 unwarp(const glm::mat4& warp) {
+    // Rows and columns x, y, w of the warp (glm is column-major: warp[column][row]).
+    constexpr int kAxes[3] = {0, 1, 3};
+    glm::dmat3 h(0.0);
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r) h[c][r] = warp[kAxes[c]][kAxes[r]];
+    for (int r : kAxes)
+        if (warp[2][r] != 0.0f)
+            throw std::invalid_argument("shadow map warp mixes the light's depth into x, y or w");
+    if (std::abs(glm::determinant(h)) < 1e-300)
+        throw std::invalid_argument("shadow map warp is singular");
+    return glm::mat3(glm::inverse(h));
+}
+
+glm::mat4 inverseLightViewProj(const glm::mat4& lightViewProj) {
+    return glm::mat4(glm::inverse(glm::dmat4(lightViewProj)));
+}
+
+glm::vec4 receiverPosition(float depth, glm::ivec2 texel, int size, const glm::mat3& unwarp,
+                           const glm::mat4& inverseLightViewProj) {
+    if (depth == kNoReceiver) return glm::vec4(0.0f);
+    const glm::vec2 uv = (glm::vec2(texel) + 0.5f) / glm::vec2(float(size)) * 2.0f - 1.0f;
+    const glm::vec3 l = unwarp * glm::vec3(uv, 1.0f);
+    const glm::vec4 w = inverseLightViewProj * glm::vec4(l.x, l.y, depth * l.z, l.z);
+    return glm::vec4(glm::vec3(w) / w.w, 1.0f);
+}
+
+} // namespace fl::shadowmap

@@ -1,0 +1,34 @@
+// Reading the shadow map's receiver target (renderer/passes/ShadowMapPass.h): per texel the
+// light's unbiased post-perspective depth (NDC z, R32F), or kMapNoReceiver where the light sees
+// nothing. The world position of texel t comes back through the map's own matrices: the texel
+// centre is unwarped into the light's clip plane (uMapUnwarp, the inverse of the provider's warp
+// on x, y and w; the identity for the uniform map) and unprojected at the stored depth
+// (uMapInverseLightViewProj). The CPU twin is renderer/passes/ShadowMapDecode.h: keep the two in
+// step. `precise` keeps every shader that decodes a texel (silhouettes, the flood's criterion,
+// the reach bounds, JFA-E's occluder points) at the same bits, which the criterion's "a seed is
+// its own texel's receiver" test needs.
+uniform mat3 uMapUnwarp;
+uniform mat4 uMapInverseLightViewProj;
+
+const float kMapNoReceiver = -4.0;
+
+// A silhouette seed's w (JFA-L): the texel it was found at, as the bits of 1.0 plus the texel's
+// row-major index, a normal float in [1, 256) for maps up to 8192², never 0 (w = 0 is an empty
+// cell), kept bit for bit by every copy. The flood knows a seed at its own texel by this tag,
+// not by comparing positions: two shaders decoding one texel may differ in the last bit.
+float mapSeedTag(ivec2 t, int width) {
+    return uintBitsToFloat(0x3f800000u + uint(t.y * width + t.x));
+}
+
+// (xyz, 1) the world position the map's texel t sees, or vec4(0) where it sees nothing.
+vec4 mapReceiver(sampler2D receiverDepth, ivec2 t) {
+    float d = texelFetch(receiverDepth, t, 0).r;
+    if (d == kMapNoReceiver) return vec4(0.0);
+    precise vec2 uv = (vec2(t) + 0.5) / vec2(textureSize(receiverDepth, 0)) * 2.0 - 1.0;
+    precise vec3 l = uMapUnwarp * vec3(uv, 1.0);
+    // Light clip (l.x, l.y, d l.z, l.z) is NDC (l.xy / l.z, d) unscaled: one division, not two
+    // (a division is not exact in GLSL and may round differently from shader to shader).
+    precise vec4 w = uMapInverseLightViewProj * vec4(l.xy, d * l.z, l.z);
+    precise vec3 p = w.xyz / w.w;
+    return vec4(p, 1.0);
+}
