@@ -20,6 +20,7 @@
 #include <geometry/Trapezoid.h>
 
 #include <optional>
+#include <span>
 #include <string_view>
 
 namespace fl {
@@ -30,6 +31,18 @@ enum class ShadowMapProvider { Uniform, Tsm };
 std::string_view providerName(ShadowMapProvider p);
 /// Parses "uniform" or "tsm"; nullopt for anything else.
 std::optional<ShadowMapProvider> parseProvider(std::string_view name);
+
+/// A TSM stability option (geom::TrapezoidParams' quantize, snapTexels, hysteresis), declared
+/// once for the CLI, the capture scripts and tsm_bench.
+struct TsmOption {
+    std::string_view flag; // CLI flag: "--tsm-quantize"
+    std::string_view key;  // capture-script key inside "shadowMap": "quantize"
+    std::string_view help;
+    double min = 0.0, max = 0.0; // the closed range; 0 turns the measure off
+    float geom::TrapezoidParams::*field = nullptr;
+};
+/// The table of TSM stability options.
+std::span<const TsmOption> tsmOptions();
 
 struct ShadowMapSettings {
     int size = 1024; // texels per side
@@ -72,12 +85,22 @@ class ShadowMapPass {
     };
     /// Renders the scene's depth as seen from the light.
     Outputs execute(const Inputs& in);
+    /// Forgets the previous frame's TSM fit (what hysteresis keeps): the next frame refits as
+    /// a single frame would. The pass also forgets it by itself when the light, the map size or
+    /// the TSM parameters change.
+    void resetHistory() { history_.reset(); }
 
   private:
     gl::Program program_;
     gl::Texture depth_, receivers_;
     gl::Framebuffer fbo_, receiversFbo_;
     geom::TrapezoidFit fit_;
+    // What fit_ was made for; a frame with other inputs does not read fit_ as its previous.
+    struct History {
+        glm::mat4 lightViewProj;
+        geom::TrapezoidParams params;
+    };
+    std::optional<History> history_;
 };
 
 /// Binds the map for shaders/shadow_lookup.glsl: the depth texture on unit 1 and the
