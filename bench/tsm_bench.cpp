@@ -7,6 +7,9 @@
 //  - frame time (the hard method's frame, no diagnostics) with each provider, interleaved frame by
 //    frame along the same path, min and median, and TSM / uniform.
 // Both loops are the frame loop of capture/compare (renderer/run/FrameRunner.h).
+// The TSM lane takes the stability options (--tsm-quantize, --tsm-snap, --tsm-hysteresis, the
+// table of ShadowMapPass.h); --with-tsm-off adds a third lane, TSM with all of them 0 (the
+// paper's fit), so that a stable TSM is measured against it in the same run, frames interleaved.
 
 #include <renderer/Renderer.h>
 #include <renderer/context/EglContext.h>
@@ -57,7 +60,7 @@ double edgeShare(const fl::FloatImage& d) {
 
 struct Series {
     std::vector<double> fpMed, fpP95, nearMed, nearP95, flicker, flickerPerEdge;
-    int degenerateFrames = 0;
+    int degenerateFrames = 0, heldFrames = 0;
 };
 
 } // namespace
@@ -80,6 +83,15 @@ int main(int argc, char** argv) {
                    "Write uniform | TSM side-by-side PNGs of every --save-every-th frame here");
     app.add_option("--save-every", saveEvery, "Frame interval for --save (0 = only the first)")
         ->check(CLI::NonNegativeNumber);
+    fl::geom::TrapezoidParams tsm;
+    for (const fl::TsmOption& t : fl::tsmOptions())
+        app.add_option(std::string(t.flag), tsm.*t.field, std::string(t.help))
+            ->check(CLI::Range(t.min, t.max))
+            ->capture_default_str();
+    bool withOff = false;
+    app.add_flag(
+        "--with-tsm-off", withOff,
+        "Also measure TSM with every stability option 0 (the paper's fit) in a third lane");
     CLI11_PARSE(app, argc, argv);
     try {
         const fl::Scene scene = fl::loadGltf(
@@ -89,21 +101,25 @@ int main(int argc, char** argv) {
         const fl::gl::ShaderLibrary shaders;
         const fl::CameraPath path =
             fl::defaultWalkthrough(fl::makeCameraView(scene, {}, 1.0f), scene.bounds);
-        const fl::ShadowMapProvider providers[2] = {fl::ShadowMapProvider::Uniform,
-                                                    fl::ShadowMapProvider::Tsm};
+        // Lanes: uniform, TSM with the options given, and (--with-tsm-off) TSM without them.
+        std::vector<std::string> names{"uniform", "tsm"};
+        if (withOff) names.emplace_back("tsm-off");
+        const int laneCount = static_cast<int>(names.size());
         std::vector<std::unique_ptr<fl::Renderer>> renderers;
-        for (fl::ShadowMapProvider p : providers) {
+        for (int k = 0; k < laneCount; ++k) {
             fl::RenderSettings s;
             s.shadow.size = shadowMap;
-            s.shadow.provider = p;
+            s.shadow.provider = k ? fl::ShadowMapProvider::Tsm : fl::ShadowMapProvider::Uniform;
+            if (k == 1) s.shadow.tsm = tsm;
+            if (k == 2)
+                for (const fl::TsmOption& t : fl::tsmOptions()) s.shadow.tsm.*t.field = 0.0f;
             s.diagnostics = true;
             renderers.push_back(std::make_unique<fl::Renderer>(shaders, scene, s));
             renderers.back()->resize(size, size);
         }
-        Series series[2];
+        std::vector<Series> series(names.size());
         std::vector<fl::Lane> lanes;
-        for (int k = 0; k < 2; ++k)
-            lanes.push_back({k ? "tsm" : "uniform", renderers[k].get(), {}});
+        for (int k = 0; k < laneCount; ++k) lanes.push_back({names[k], renderers[k].get(), {}});
         fl::FrameRunner runner(frames + timedFrames);
         fl::FramePlan plan{.scene = &scene,
                            .camera = path,
@@ -114,8 +130,8 @@ int main(int argc, char** argv) {
         runner.run(plan, lanes, [&](int i, std::vector<fl::FrameImages>&) {
             std::vector<fl::ByteImage> pictures;
             const bool save = !saveDir.empty() && (saveEvery > 0 ? i % saveEvery == 0 : i == 0);
-            for (int k = 0; k < 2; ++k) {
-                if (save)
+            for (int k = 0; k < laneCount; ++k) {
+                if (save && k < 2)
                     pictures.push_back(fl::toSrgb8(fl::readTexture(renderers[k]->color(), 4)));
                 const fl::FloatImage d = fl::readTexture(*renderers[k]->diagnostics(), 4);
                 const fl::ShadowMapStats st = fl::summarizeShadowDiagnostics(d);
@@ -124,9 +140,10 @@ int main(int argc, char** argv) {
                 s.fpP95.push_back(st.footprint.p95);
                 s.nearMed.push_back(st.footprintNear.median);
                 s.nearP95.push_back(st.footprintNear.p95);
-                if (renderers[k]->shadow()->trapezoid &&
-                    renderers[k]->shadow()->trapezoid->degenerate)
-                    ++s.degenerateFrames;
+                if (const fl::geom::TrapezoidFit* fit = renderers[k]->shadow()->trapezoid) {
+                    s.degenerateFrames += fit->degenerate;
+                    s.heldFrames += fit->held;
+                }
                 if (i == 0) continue; // the first frame has no previous map
                 s.flicker.push_back(st.flickerShare);
                 const double e = edgeShare(d);
@@ -155,10 +172,12 @@ int main(int argc, char** argv) {
         std::cout << "context: " << ctx->description() << "\n"
                   << "scene: " << scene.source << ", " << scene.triangleCount() << " triangles\n"
                   << "walkthrough: " << frames << " frames at " << size << "x" << size
-                  << ", shadow map " << shadowMap << "^2 (both providers)\n"
-                  << std::fixed << std::setprecision(3);
-        const char* names[2] = {"uniform", "tsm"};
-        for (int k = 0; k < 2; ++k) {
+                  << ", shadow map " << shadowMap << "^2 (every lane)\n"
+                  << "tsm lane:";
+        for (const fl::TsmOption& t : fl::tsmOptions())
+            std::cout << " " << t.flag << " " << tsm.*t.field;
+        std::cout << "\n" << std::fixed << std::setprecision(3);
+        for (int k = 0; k < laneCount; ++k) {
             const Series& s = series[k];
             std::cout << names[k] << ":\n"
                       << "  footprint (px/texel), median over frames: all median "
@@ -172,17 +191,26 @@ int main(int argc, char** argv) {
                       << fl::minimum(timed[k].times.frameMs()) << " ms, median "
                       << timed[k].times.medianFrameMs() << " ms ("
                       << renderers[k]->timer().modeName() << ")\n";
-            if (k == 1)
+            if (k > 0)
                 std::cout << "  frames with the uniform fallback blended in: " << s.degenerateFrames
-                          << " of " << frames << "\n";
+                          << " of " << frames
+                          << "; frames that kept the previous fit: " << s.heldFrames << "\n";
         }
         std::cout << "ratios uniform / tsm footprint near the viewer: median "
                   << fl::median(series[0].nearMed) / fl::median(series[1].nearMed) << ", p95 "
-                  << fl::median(series[0].nearP95) / fl::median(series[1].nearP95) << "\n"
-                  << "tsm / uniform frame time: min "
-                  << fl::minimum(timed[1].times.frameMs()) / fl::minimum(timed[0].times.frameMs())
-                  << ", median " << timed[1].times.medianFrameMs() / timed[0].times.medianFrameMs()
-                  << "\n";
+                  << fl::median(series[0].nearP95) / fl::median(series[1].nearP95) << "\n";
+        for (int k = 1; k < laneCount; ++k)
+            std::cout << names[k] << " / uniform frame time: min "
+                      << fl::minimum(timed[k].times.frameMs()) /
+                             fl::minimum(timed[0].times.frameMs())
+                      << ", median "
+                      << timed[k].times.medianFrameMs() / timed[0].times.medianFrameMs() << "\n";
+        if (withOff)
+            std::cout << "tsm / tsm-off frame time: min "
+                      << fl::minimum(timed[1].times.frameMs()) /
+                             fl::minimum(timed[2].times.frameMs())
+                      << ", median "
+                      << timed[1].times.medianFrameMs() / timed[2].times.medianFrameMs() << "\n";
     } catch (const std::exception& e) {
         std::cerr << "error: " << e.what() << "\n";
         return 1;

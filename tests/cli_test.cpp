@@ -53,6 +53,28 @@ TEST(Cli, AbsurdSizesAreUsageErrors) {
     }
 }
 
+TEST(Cli, TsmStabilityStepsOutOfRangeAreOneUsageError) {
+    const std::array<std::pair<const char*, const char*>, 6> cases{{
+        {"--tsm-quantize 0.6", "--tsm-quantize: must be a finite number in [0, 0.5], got '0.6'"},
+        {"--tsm-quantize -0.01", "--tsm-quantize: must be a finite number in [0, 0.5]"},
+        {"--tsm-quantize nan", "--tsm-quantize: must be a finite number in [0, 0.5]"},
+        {"--tsm-snap 65", "--tsm-snap: must be a finite number in [0, 64], got '65'"},
+        {"--tsm-hysteresis 1", "--tsm-hysteresis: must be a finite number in [0, 0.5]"},
+        {"--tsm-hysteresis abc", "--tsm-hysteresis: must be a finite number in [0, 0.5]"},
+    }};
+    for (const auto& [args, message] : cases) {
+        const Outcome r = run(std::string("render --shadow-map tsm --width 32 --height 32 ") +
+                              args + " --out " + outputDir("cli").string());
+        EXPECT_EQ(r.code, 2) << args << "\n" << r.output;
+        EXPECT_NE(r.output.find(message), std::string::npos) << args << "\n" << r.output;
+    }
+    // The ends of each range are accepted (0 turns the measure off).
+    const Outcome ok = run("render --shadow-map tsm --width 32 --height 32 --shadow-map-size 64 "
+                           "--tsm-quantize 0.5 --tsm-snap 0 --tsm-hysteresis 0.5 --out " +
+                           outputDir("cli_tsm_ranges").string());
+    EXPECT_EQ(ok.code, 0) << ok.output;
+}
+
 TEST(Cli, BadCameraIsAnInputError) {
     const Outcome r =
         run("render --camera 7 --width 32 --height 32 --out " + outputDir("cli").string());

@@ -1,5 +1,7 @@
 // Trapezoidal shadow map fit: N_T keeps the eye frustum inside the map, gives the near plane
 // more texels, honours the 80% rule, and degrades smoothly (never NaN) in degenerate setups.
+// The stability measures (quantize, snapTexels, hysteresis): small camera moves leave the map
+// unchanged, large ones change it, and the frustum stays inside the map either way.
 
 #include <geometry/Trapezoid.h>
 
@@ -315,6 +317,130 @@ TEST(Trapezoid, RandomConfigurationsNeverProduceNaN) {
     // Both regimes are exercised.
     EXPECT_GT(full, 50);
     EXPECT_GT(degenerate, 50);
+}
+
+bool sameMap(const TrapezoidFit& a, const TrapezoidFit& b) {
+    return a.nt == b.nt;
+}
+
+// A camera swinging slowly sideways: the eye at x, looking along -z turned by x degrees.
+glm::mat4 swungEye(float x) {
+    const float a = glm::radians(x);
+    return eyeInverse({x, 2, 0}, {std::sin(a), 0, -std::cos(a)});
+}
+
+// How often the map changes over 50 camera steps of `step` (in swungEye's x).
+int changesAlongSwing(const TrapezoidParams& params, float step) {
+    const glm::mat4 light = orthoLight({0, -1, 0.3f});
+    TrapezoidFit last = fitTrapezoid(light, swungEye(0.3f), params);
+    int changes = 0;
+    for (int i = 1; i <= 50; ++i) {
+        const TrapezoidFit fit =
+            fitTrapezoid(light, swungEye(0.3f + step * float(i)), params, &last);
+        expectHullInside(fit);
+        changes += !sameMap(fit, last);
+        last = fit;
+    }
+    return changes;
+}
+
+TEST(TrapezoidStable, AllMeasuresOffIsThePapersFitEveryFrame) {
+    TrapezoidParams off;
+    const TrapezoidFit a = fitTrapezoid(orthoLight({0, -1, 0.3f}), swungEye(0.0f), off);
+    const TrapezoidFit b = fitTrapezoid(orthoLight({0, -1, 0.3f}), swungEye(0.0f), off, &a);
+    EXPECT_TRUE(sameMap(a, b));
+    EXPECT_FALSE(b.held) << "without hysteresis the previous fit is not read";
+    // Sub-texel camera steps (1e-4 units at 20 units' depth) move the paper's fit every time.
+    EXPECT_EQ(changesAlongSwing(off, 1e-4f), 50);
+}
+
+TEST(TrapezoidStable, EachMeasureKeepsTheMapUnderSubTexelMoves) {
+    TrapezoidParams quantize, snap, hysteresis;
+    quantize.quantize = 0.05f;
+    snap.snapTexels = 4.0f;
+    hysteresis.hysteresis = 0.1f;
+    // 50 steps of 1e-4 (0.005 units, 0.005 degrees in all): a boundary of a step may be crossed
+    // once per parameter; the continuous fit changed 50 times.
+    EXPECT_LE(changesAlongSwing(quantize, 1e-4f), 3);
+    EXPECT_EQ(changesAlongSwing(hysteresis, 1e-4f), 0);
+    // Snapping alone leaves the direction and slopes continuous: it cannot keep the map.
+    EXPECT_EQ(changesAlongSwing(snap, 1e-4f), 50);
+}
+
+TEST(TrapezoidStable, LargeMovesChangeTheMap) {
+    TrapezoidParams all;
+    all.quantize = 0.05f;
+    all.snapTexels = 1.0f;
+    all.hysteresis = 0.1f;
+    // Steps of 0.5 units and 0.5 degrees: the view leaves what the kept map covers well.
+    const int changes = changesAlongSwing(all, 0.5f);
+    EXPECT_GE(changes, 5);
+    EXPECT_LT(changes, 50);
+}
+
+TEST(TrapezoidStable, SnappedLinesLieOnTheTexelGrid) {
+    TrapezoidParams snap;
+    snap.snapTexels = 2.0f;
+    snap.mapSize = 512;
+    const double step = 2.0 * 2.0 / 512.0;
+    for (float x : {0.0f, 0.37f, 1.9f}) {
+        const TrapezoidFit fit = fitTrapezoid(orthoLight({0, -1, 0.3f}), swungEye(x), snap);
+        ASSERT_EQ(fit.weight, 1.0f);
+        // Top line (corners 0, 1) and base line (2, 3): distances along the axis from the light
+        // NDC origin, whole multiples of the step; and so is the centre line's offset.
+        const glm::dvec2 u(fit.axis);
+        for (size_t k : {0u, 2u}) {
+            const double s = glm::dot(glm::dvec2(fit.corners[k]), u) / step;
+            EXPECT_NEAR(s, std::round(s), 1e-3) << x << " corner " << k;
+        }
+        const double offset = glm::dot(glm::dvec2(fit.q), glm::dvec2(-u.y, u.x)) / step;
+        EXPECT_NEAR(offset, std::round(offset), 1e-3) << x;
+    }
+}
+
+TEST(TrapezoidStable, HysteresisKeepsAFitOnlyWhileItHoldsTheView) {
+    TrapezoidParams h;
+    h.hysteresis = 0.1f;
+    const glm::mat4 light = orthoLight({0, -1, 0.3f});
+    const TrapezoidFit first = fitTrapezoid(light, swungEye(0.0f), h);
+    EXPECT_FALSE(first.held);
+    // The same camera again: the map stays (a frame rendered twice gives the same picture).
+    const TrapezoidFit again = fitTrapezoid(light, swungEye(0.0f), h, &first);
+    EXPECT_TRUE(again.held);
+    EXPECT_TRUE(sameMap(first, again));
+    // A view turned by 30 degrees is refitted, and the refit holds it.
+    const TrapezoidFit turned = fitTrapezoid(light, swungEye(30.0f), h, &first);
+    EXPECT_FALSE(turned.held);
+    EXPECT_FALSE(sameMap(first, turned));
+    expectHullInside(turned);
+    EXPECT_FALSE(keepsPreviousFit(first, turned, 0.1f));
+}
+
+TEST(TrapezoidStable, EveryMeasureKeepsRandomFrustaInsideTheMap) {
+    // Random cameras and lights, each fitted from the previous one's fit: whatever is kept or
+    // rounded, the hull stays inside the map and nothing is NaN.
+    Rng rng;
+    TrapezoidParams all;
+    all.quantize = 0.05f;
+    all.snapTexels = 1.0f;
+    all.hysteresis = 0.2f;
+    int held = 0;
+    for (int i = 0; i < 150; ++i) {
+        const glm::mat4 light = orthoLight({rng.range(-0.5f, 0.5f), -1.0f, rng.range(-0.5f, 0.5f)});
+        const float x = rng.range(0.0f, 10.0f);
+        // Pairs of frames up to 8 units and 8 degrees apart: some kept, some refitted.
+        const TrapezoidFit first = fitTrapezoid(light, swungEye(x), all);
+        const TrapezoidFit second =
+            fitTrapezoid(light, swungEye(x + rng.range(0.0f, 8.0f)), all, &first);
+        SCOPED_TRACE(i);
+        for (const TrapezoidFit* fit : {&first, &second}) {
+            ASSERT_TRUE(finite(fit->nt));
+            expectHullInside(*fit);
+        }
+        held += second.held;
+    }
+    EXPECT_GT(held, 0);
+    EXPECT_LT(held, 150);
 }
 
 } // namespace

@@ -430,6 +430,7 @@ SceneOptions sceneOptionsOf(const CaptureScript& script, const CaptureRequest& r
     so.shaderDir = req.shaderDir;
     so.shadowMapSize = script.shadowMapSize;
     so.shadowMap = script.shadowMapProvider;
+    so.tsm = script.tsm;
     so.methodOptions[std::string(floodPassesOption().flag)] = script.jfaPasses;
     so.strictMethodOptions = false; // the script's methods each take their own
     so.timing = req.timing;

@@ -111,6 +111,7 @@ nlohmann::json resultsSummary(const CaptureResults& r) {
     j["resolutions"] = nlohmann::json::array();
     for (const auto& [w, h] : s.resolutions) j["resolutions"].push_back({w, h});
     j["shadowMap"] = {{"provider", s.shadowMapProvider}, {"size", s.shadowMapSize}};
+    for (const TsmOption& t : tsmOptions()) j["shadowMap"][std::string(t.key)] = s.tsm.*t.field;
     j["jfaPasses"] = s.jfaPasses;
     j["reference"] = {{"kind", s.reference.kind},
                       {"method", std::string(s.reference.method().name)},

@@ -214,7 +214,9 @@ CaptureScript parseCaptureScript(const std::string& text, const std::filesystem:
         }
         if (j.contains("shadowMap")) {
             const Json& m = j["shadowMap"];
-            checkKeys(m, "shadowMap", {"provider", "size"});
+            std::set<std::string> keys{"provider", "size"};
+            for (const TsmOption& t : tsmOptions()) keys.emplace(t.key);
+            checkKeys(m, "shadowMap", keys);
             if (m.contains("provider")) {
                 if (m["provider"] != "uniform" && m["provider"] != "tsm")
                     fail("shadowMap.provider", "expected \"uniform\" or \"tsm\"");
@@ -222,6 +224,11 @@ CaptureScript parseCaptureScript(const std::string& text, const std::filesystem:
             }
             if (m.contains("size"))
                 s.shadowMapSize = readInt(m["size"], "shadowMap.size", 16, 8192);
+            for (const TsmOption& t : tsmOptions())
+                if (m.contains(t.key))
+                    s.tsm.*t.field = static_cast<float>(
+                        readNumber(m[std::string(t.key)], "shadowMap." + std::string(t.key), t.min,
+                                   t.max, false));
         }
         if (j.contains("jfaPasses")) {
             // The --jfa-passes option's own validation: 1 to 13, or "auto".

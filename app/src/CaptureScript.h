@@ -66,6 +66,7 @@ struct CaptureScript {
     std::vector<std::pair<int, int>> resolutions;
     std::string shadowMapProvider = "uniform";
     int shadowMapSize = 1024;
+    geom::TrapezoidParams tsm; // "shadowMap": the keys of tsmOptions()
     std::string jfaPasses{floodPassesOption().defaultValue}; // --jfa-passes of every flood method
     /// The ground truth the metrics use: a method of the table with a `truth` kind, with its
     /// options (samples; mapSize for maps).

@@ -36,6 +36,10 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool sceneAsOption) {
                    "Shadow-map provider: uniform (fitted to the scene) or tsm (trapezoidal)")
         ->check(CLI::IsMember({"uniform", "tsm"}))
         ->capture_default_str();
+    for (const TsmOption& t : tsmOptions()) // out of range: a usage error naming flag and range
+        cmd.add_option(std::string(t.flag), o.tsm.*t.field, std::string(t.help))
+            ->check(number(t.min, t.max))
+            ->capture_default_str();
     std::string methodHelp = "Shadow method:";
     std::vector<std::string> names;
     for (const MethodDescriptor& m : methodTable()) {
@@ -281,6 +285,7 @@ RenderSettings makeRenderSettings(const SceneOptions& o) {
     RenderSettings s;
     s.shadow.size = o.shadowMapSize;
     s.shadow.provider = parseProvider(o.shadowMap).value_or(ShadowMapProvider::Uniform);
+    s.shadow.tsm = o.tsm;
     const MethodDescriptor* method = findMethod(o.method);
     if (!method)
         throw UsageError("--method " + o.method + ": unknown method (valid: " + methodNames() +

@@ -39,6 +39,7 @@ struct SceneOptions {
     std::string shaderDir;            // --shader-dir
     int shadowMapSize = 1024;
     std::string shadowMap = "uniform"; // provider: uniform | tsm
+    geom::TrapezoidParams tsm;         // --tsm-quantize, --tsm-snap, --tsm-hysteresis
     std::string method = "hard";       // a name of the method table
     /// The methods' options given on the command line, by flag (the table's MethodOption).
     std::map<std::string, std::string> methodOptions;

@@ -165,6 +165,7 @@ void Renderer::resize(int width, int height) {
         if (m) m->resize(width, height);
     shadingPass_.resize(width, height);
     diagnosticsPass_.resize(width, height);
+    shadowPass_.resetHistory(); // another frame size: start from a single frame's fit
     width_ = width;
     height_ = height;
 }

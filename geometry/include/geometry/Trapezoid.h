@@ -34,6 +34,23 @@
 // nt = (1 - t) * U + t * T with t the product of both weights. Both maps are normalised so that
 // w > 0 on the hull, hence every blended image is a convex combination of two points in the
 // square and stays inside it. degenerate is true whenever t < 1; the matrix is always finite.
+//
+// Stability (issue 30 item 3)
+// The paper's fit is a continuous function of the camera, so its texels slide over the scene
+// whenever the camera moves and shadow edges shimmer. Three optional measures, all off (0) by
+// the paper's fit, make the map change in steps instead:
+// - quantize: every parameter moves in steps of this size in its own unit: the centre line's
+//   angle (radians), its lateral position, the top, base and focus lines (light NDC, where the
+//   map spans 2), the side lines' slopes and the blend weight. Extents round outwards, so the
+//   frustum's hull stays inside. Stateless: the same camera always gives the same map.
+// - snapTexels: the positional parameters snap to multiples of this many texels of a mapSize
+//   map (light NDC), as cascaded shadow maps snap their translation. With quantize too, the
+//   positional step is quantize rounded to whole multiples of that.
+// - hysteresis: given the previous frame's fit, keep it unchanged while it still holds the
+//   hull, the new focus point maps within 2 * hysteresis of xi, the hull spans at least
+//   1 - 2 * hysteresis of the map on each axis, the centre line turned by at most
+//   hysteresis * 90 degrees and the blend weight moved by at most hysteresis. A refit is fitted
+//   to the hull scaled by 1 + hysteresis about its centre so that it can be kept a while.
 
 #include <glm/glm.hpp>
 
@@ -55,6 +72,12 @@ struct TrapezoidParams {
     float rHigh = 0.15f;
     /// wRel band over which a perspective light fades from uniform to TSM.
     float wBand = 0.05f;
+    /// Stability, see the header comment; 0 turns each off (the paper's fit, every frame).
+    float quantize = 0.0f;
+    float snapTexels = 0.0f;
+    float hysteresis = 0.0f;
+    /// Texels per side of the map the fit is for (snapTexels' unit).
+    int mapSize = 1024;
 };
 
 /// The result of a trapezoid fit; 2D quantities are in light NDC.
@@ -73,6 +96,8 @@ struct TrapezoidFit {
     float eta = 0.0f;                   ///< distance from q to the top line
     float centerLineRatio = 0.0f;       ///< r, see the header comment
     float wRel = 0.0f;                  ///< see the header comment
+    glm::vec2 axis{0.0f, 1.0f};         ///< u: the centre line's direction, near to far
+    bool held = false;                  ///< hysteresis kept the previous fit's map
 };
 
 /// Convex hull of 2D points (Andrew's monotone chain), counter-clockwise, no collinear points.
@@ -88,8 +113,14 @@ std::array<glm::dvec4, 8> projectFrustumCorners(const glm::dmat4& lightViewProj,
 
 /// Fits the TSM trapezoid to the eye frustum seen from the light and returns N_T; never NaN.
 /// Takes double matrices: the inverse of the eye matrix loses enough precision in float to make
-/// the fit jitter by a fraction of a texel between nearly identical cameras.
+/// the fit jitter by a fraction of a texel between nearly identical cameras. `previous` (the
+/// last frame's fit with the same light and params, or null) is read only with hysteresis.
 TrapezoidFit fitTrapezoid(const glm::dmat4& lightViewProj, const glm::dmat4& eyeViewProjInverse,
-                          const TrapezoidParams& params = {});
+                          const TrapezoidParams& params = {},
+                          const TrapezoidFit* previous = nullptr);
+
+/// The checks hysteresis keeps `previous` by (see the header comment), for the fresh fit `fresh`
+/// of the current frame: true when previous's map may stay.
+bool keepsPreviousFit(const TrapezoidFit& previous, const TrapezoidFit& fresh, float hysteresis);
 
 } // namespace fl::geom

@@ -1,9 +1,41 @@
 #include <renderer/passes/ShadowMapDecode.h>
 #include <renderer/passes/ShadowMapPass.h>
 
+#include <array>
 #include <stdexcept>
 
 namespace fl {
+
+namespace {
+
+// Each measure alone and combined is in docs/BENCHMARKS.md, "Stable TSM (issue 30 item 3)".
+const std::array<TsmOption, 3> kTsmOptions{{
+    {"--tsm-quantize", "quantize",
+     "TSM: the trapezoid's parameters move in steps of this size (angle in radians, lines in "
+     "light NDC, slopes, blend weight), extents rounded outwards; 0 = continuous (the paper's "
+     "fit)",
+     0.0, 0.5, &geom::TrapezoidParams::quantize},
+    {"--tsm-snap", "snap",
+     "TSM: the trapezoid's lines snap to multiples of this many shadow-map texels; 0 = off", 0.0,
+     64.0, &geom::TrapezoidParams::snapTexels},
+    {"--tsm-hysteresis", "hysteresis",
+     "TSM: keep the previous frame's trapezoid while it holds the view and its focus line, "
+     "resolution and direction stay within this band (refits fitted to the view scaled by 1 + "
+     "this); 0 = refit every frame",
+     0.0, 0.5, &geom::TrapezoidParams::hysteresis},
+}};
+
+bool sameParams(const geom::TrapezoidParams& a, const geom::TrapezoidParams& b) {
+    return a.focusFraction == b.focusFraction && a.xi == b.xi && a.rLow == b.rLow &&
+           a.rHigh == b.rHigh && a.wBand == b.wBand && a.quantize == b.quantize &&
+           a.snapTexels == b.snapTexels && a.hysteresis == b.hysteresis && a.mapSize == b.mapSize;
+}
+
+} // namespace
+
+std::span<const TsmOption> tsmOptions() {
+    return kTsmOptions;
+}
 
 std::string_view providerName(ShadowMapProvider p) {
     return p == ShadowMapProvider::Tsm ? "tsm" : "uniform";
@@ -54,6 +86,7 @@ gl::Texture makeShadowDepthTexture(int size) {
 
 void ShadowMapPass::resize(int size) {
     if (depth_ && depth_.width() == size) return;
+    history_.reset();
     gl::checkTextureSize("shadow map", size, size);
     depth_ = makeShadowDepthTexture(size);
     fbo_ = gl::Framebuffer::withTargets({}, &depth_, "shadow map");
@@ -71,10 +104,18 @@ ShadowMapPass::Outputs ShadowMapPass::execute(const Inputs& in) {
     if (tsm) {
         // Fit to the part of the eye frustum the scene occupies: receivers exist only there.
         const glm::mat4 eyeProj = geom::clampDepthRange(in.eyeProj, in.eyeView, in.sceneBounds);
-        fit_ = geom::fitTrapezoid(in.light.viewProj(),
+        geom::TrapezoidParams params = in.settings.tsm;
+        params.mapSize = in.settings.size;
+        // Hysteresis reads the last fit only if it was made for this light and these settings.
+        const bool continues = history_ && history_->lightViewProj == lightViewProj &&
+                               sameParams(history_->params, params);
+        fit_ = geom::fitTrapezoid(lightViewProj,
                                   glm::inverse(glm::dmat4(eyeProj) * glm::dmat4(in.eyeView)),
-                                  in.settings.tsm);
+                                  params, continues ? &fit_ : nullptr);
+        history_ = History{lightViewProj, params};
         warp = fit_.nt;
+    } else {
+        history_.reset();
     }
 
     const gl::Framebuffer& target = in.writeReceivers ? receiversFbo_ : fbo_;

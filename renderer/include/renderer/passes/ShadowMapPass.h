@@ -20,6 +20,7 @@
 #include <geometry/Trapezoid.h>
 
 #include <optional>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -47,6 +48,18 @@ enum class ShadowMapProvider { Uniform, Tsm };
 std::string_view providerName(ShadowMapProvider p);
 /// Parses "uniform" or "tsm"; nullopt for anything else.
 std::optional<ShadowMapProvider> parseProvider(std::string_view name);
+
+/// A TSM stability option (geom::TrapezoidParams' quantize, snapTexels, hysteresis), declared
+/// once for the CLI, the capture scripts and tsm_bench.
+struct TsmOption {
+    std::string_view flag; // CLI flag: "--tsm-quantize"
+    std::string_view key;  // capture-script key inside "shadowMap": "quantize"
+    std::string_view help;
+    double min = 0.0, max = 0.0; // the closed range; 0 turns the measure off
+    float geom::TrapezoidParams::*field = nullptr;
+};
+/// The table of TSM stability options.
+std::span<const TsmOption> tsmOptions();
 
 struct ShadowMapSettings {
     int size = 1024; // texels per side
@@ -94,6 +107,10 @@ class ShadowMapPass {
     /// for the overlays and the tests that feed the CPU kernels. Throws std::logic_error when
     /// the last execute() did not write the receiver target.
     [[nodiscard]] const gl::Texture& decodedReceivers() const;
+    /// Forgets the previous frame's TSM fit (what hysteresis keeps): the next frame refits as
+    /// a single frame would. The pass also forgets it by itself when the light, the map size or
+    /// the TSM parameters change.
+    void resetHistory() { history_.reset(); }
 
   private:
     gl::Program program_, decodeProgram_;
@@ -103,6 +120,12 @@ class ShadowMapPass {
     MapPositions positions_;
     bool receiversWritten_ = false;
     mutable gl::Texture decoded_; // decodedReceivers(): made on demand
+    // What fit_ was made for; a frame with other inputs does not read fit_ as its previous.
+    struct History {
+        glm::mat4 lightViewProj;
+        geom::TrapezoidParams params;
+    };
+    std::optional<History> history_;
 };
 
 /// Binds the map for shaders/shadow_lookup.glsl: the depth texture on unit 1 and the
