@@ -8,7 +8,10 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0, rgba32f) uniform writeonly image2D uDst;
+#ifndef JFA_CELL_FORMAT
+#define JFA_CELL_FORMAT rgba32f // the kernel defines r32f for packed cells
+#endif
+layout(binding = 0, JFA_CELL_FORMAT) uniform writeonly image2D uDst;
 uniform ivec2 uSize;
 
 void main() {

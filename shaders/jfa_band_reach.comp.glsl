@@ -8,6 +8,7 @@
 layout(local_size_x = 64) in;
 
 bool jfaEmpty(vec4 c);
+vec4 jfaLoad(sampler2D grid, ivec2 q);
 // Texels x0..x1 (.x, .z), y0..y1 (.y, .w) where seed cell c seeded at p may be accepted.
 ivec4 jfaSeedRect(ivec2 p, vec4 c);
 
@@ -25,7 +26,7 @@ void main() {
     if (gl_GlobalInvocationID.x >= seedCount) return;
     uint entry = seeds[gl_GlobalInvocationID.x];
     ivec2 p = ivec2(int(entry & 0xffffu), int(entry >> 16));
-    vec4 c = texelFetch(uSeeds, p, 0);
+    vec4 c = jfaLoad(uSeeds, p);
     front[(p.y / uTile) * uTilesX + p.x / uTile] = 1u;
     ivec4 r = jfaSeedRect(p, c);
     r.xy = max(r.xy, ivec2(0));

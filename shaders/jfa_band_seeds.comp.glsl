@@ -10,6 +10,7 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 
 bool jfaEmpty(vec4 c);
+vec4 jfaLoad(sampler2D grid, ivec2 q);
 
 layout(binding = 1) uniform sampler2D uSeeds;
 uniform ivec2 uSize;
@@ -23,6 +24,6 @@ void main() {
         return;
     }
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-    if (any(greaterThanEqual(p, uSize)) || jfaEmpty(texelFetch(uSeeds, p, 0))) return;
+    if (any(greaterThanEqual(p, uSize)) || jfaEmpty(jfaLoad(uSeeds, p))) return;
     jfaListSeed(p);
 }

@@ -43,3 +43,7 @@ bool jfaBetter(ivec2 p, vec4 a, vec4 b) {
     bool tieWins = a.z < b.z || (a.z == b.z && (a.y < b.y || (a.y == b.y && a.x < b.x)));
     return closer || (same && tieWins);
 }
+
+// Cells are stored as they are (RGBA32F).
+vec4 jfaLoad(sampler2D grid, ivec2 q) { return texelFetch(grid, q, 0); }
+vec4 jfaStore(vec4 c) { return c; }

@@ -4,12 +4,15 @@
 // (jfa_band_compact.comp.glsl) by an indirect dispatch: group x = the list entry, group y = the
 // 8x8 block within the tile.
 #include "jfa_select.glsl"
+#ifndef JFA_CELL_FORMAT
+#define JFA_CELL_FORMAT rgba32f // the kernel defines r32f for packed cells
+#endif
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(binding = 0) uniform sampler2D uSrc;
 layout(binding = 1) uniform sampler2D uSeeds; // full-resolution seeds (for the expansion)
-layout(binding = 0, rgba32f) uniform writeonly image2D uDst;
+layout(binding = 0, JFA_CELL_FORMAT) uniform writeonly image2D uDst;
 uniform ivec2 uSize;
 uniform ivec2 uSrcSize;
 uniform int uStep;
@@ -37,7 +40,7 @@ void main() {
     vec4 before;
     vec4 result = jfaTexel(uSrc, uSeeds, t, uSize, uSrcSize, uStep, uScale, uMode, before);
     if (uCountChanges != 0 && result != before) atomicCounterIncrement(uChanged);
-    imageStore(uDst, t, result);
+    imageStore(uDst, t, jfaStore(result));
 #ifdef JFA_BAND
     if (uFront != 0 && !jfaEmpty(result)) {
         ivec2 tile = jfaBandTile();

@@ -21,5 +21,5 @@ void main() {
     vec4 before;
     vec4 result = jfaTexel(uSrc, uSeeds, t, uSize, uSrcSize, uStep, uScale, uMode, before);
     if (uCountChanges != 0 && result != before) atomicCounterIncrement(uChanged);
-    oCell = result;
+    oCell = jfaStore(result);
 }

@@ -3,7 +3,7 @@
 // bit), thesis §5.2-5.3: a texel's receiver point is its world position (mapReceiver of the
 // shadow map's receiver target uPenumbraPositions, bound by MapPositions::bind); a
 // cell is an occluder point (xyz, w the tag of the silhouette texel it came from, mapSeedTag;
-// w = 0 empty). An occluder whose ray from the receiver
+// w = 0 empty), stored packed as the tag alone (jfaLoad, jfaStore). An occluder whose ray from the receiver
 // misses the light is not taken (and so not passed on), except by the silhouette texel it came
 // from (penumbraKey). Among the others the one whose ray meets
 // the light's plane nearest the centre wins: that is the minimum intensity outside the hard
@@ -14,6 +14,13 @@
 layout(binding = 2) uniform sampler2D uPenumbraPositions;
 
 bool jfaEmpty(vec4 c) { return c.w == 0.0; }
+
+// Cells are packed (JFA_CELL_FORMAT r32f): a texel stores its occluder's seed tag alone, 4 bytes
+// instead of 16; the occluder's position comes back from the map (mapSeedCell).
+vec4 jfaLoad(sampler2D grid, ivec2 q) {
+    return mapSeedCell(uPenumbraPositions, texelFetch(grid, q, 0).r);
+}
+vec4 jfaStore(vec4 c) { return vec4(c.w); }
 
 // Occluders are not tied to pixels: the half-resolution expansion copies them verbatim.
 ivec2 jfaSeedPixel(vec4 c) { return ivec2(-1); }

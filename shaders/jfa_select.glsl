@@ -8,6 +8,12 @@ bool jfaBetter(ivec2 p, vec4 a, vec4 b);
 bool jfaAccept(ivec2 p, vec4 c);
 // Full-resolution pixel a cell was seeded at; any negative coordinate = unknown (copy verbatim).
 ivec2 jfaSeedPixel(vec4 c);
+// How the criterion's cells are stored: jfaLoad reads the cell at q of a grid texture (seeds or
+// a pass's output), jfaStore gives the texel to write for cell c. The identity for RGBA32F
+// cells; a criterion with packed cells (a seed's texel in 32 bits, JFA_CELL_FORMAT r32f)
+// rebuilds the cell from what the seed's texel holds elsewhere.
+vec4 jfaLoad(sampler2D grid, ivec2 q);
+vec4 jfaStore(vec4 c);
 
 const vec4 kJfaEmptyCell = vec4(0.0, 0.0, -1.0, 0.0);
 
@@ -29,7 +35,7 @@ bool jfaTieWins(vec4 a, vec4 b);
 // refined among the full-resolution seeds of the 2x2 block holding r's seed pixel (the sites r
 // stands for), judged at q. Same as expandStage() in jfa/CpuKernel.h.
 vec4 jfaExpandedCell(sampler2D coarse, sampler2D seeds, ivec2 q, ivec2 fullSize) {
-    vec4 best = texelFetch(coarse, q / 2, 0);
+    vec4 best = jfaLoad(coarse, q / 2);
     if (jfaEmpty(best)) return best;
     ivec2 sp = jfaSeedPixel(best);
     if (any(lessThan(sp, ivec2(0)))) return best;
@@ -38,7 +44,7 @@ vec4 jfaExpandedCell(sampler2D coarse, sampler2D seeds, ivec2 q, ivec2 fullSize)
         for (int i = 0; i <= 1; ++i) {
             ivec2 c = b + ivec2(i, j);
             ivec2 cc = min(c, fullSize - 1);
-            vec4 s = texelFetch(seeds, cc, 0);
+            vec4 s = jfaLoad(seeds, cc);
             bool take = c == cc && !jfaEmpty(s) && jfaAccept(q, s) && jfaBetter(q, s, best);
             best = take ? s : best;
         }
@@ -54,7 +60,7 @@ vec4 jfaCandidate(sampler2D src, sampler2D seeds, ivec2 q, ivec2 size) {
 #ifdef JFA_EXPAND
     return jfaExpandedCell(src, seeds, q, size);
 #else
-    return texelFetch(src, q, 0);
+    return jfaLoad(src, q);
 #endif
 }
 
@@ -104,7 +110,7 @@ vec4 jfaDownsample(sampler2D full, ivec2 t, ivec2 fullSize) {
         for (int i = 0; i <= 1; ++i) {
             ivec2 q = p + ivec2(i, j);
             ivec2 qc = min(q, fullSize - 1);
-            vec4 c = texelFetch(full, qc, 0);
+            vec4 c = jfaLoad(full, qc);
             bool take = q == qc && !jfaEmpty(c) && jfaAccept(p, c) && (!have || jfaBetter(p, c, best));
             best = take ? c : best;
             have = have || take;

@@ -91,3 +91,7 @@ bool jfaBetter(ivec2 p, vec4 a, vec4 b) {
                                                                 (a.z == b.z && a.w < b.w)))));
     return da < db || (da == db && tieWins);
 }
+
+// Cells are stored as they are (RGBA32F).
+vec4 jfaLoad(sampler2D grid, ivec2 q) { return texelFetch(grid, q, 0); }
+vec4 jfaStore(vec4 c) { return c; }

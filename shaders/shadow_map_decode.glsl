@@ -12,14 +12,6 @@ uniform mat4 uMapInverseLightViewProj;
 
 const float kMapNoReceiver = -4.0;
 
-// A silhouette seed's w (JFA-L): the texel it was found at, as the bits of 1.0 plus the texel's
-// row-major index, a normal float in [1, 256) for maps up to 8192², never 0 (w = 0 is an empty
-// cell), kept bit for bit by every copy. The flood knows a seed at its own texel by this tag,
-// not by comparing positions: two shaders decoding one texel may differ in the last bit.
-float mapSeedTag(ivec2 t, int width) {
-    return uintBitsToFloat(0x3f800000u + uint(t.y * width + t.x));
-}
-
 // (xyz, 1) the world position the map's texel t sees, or vec4(0) where it sees nothing.
 vec4 mapReceiver(sampler2D receiverDepth, ivec2 t) {
     float d = texelFetch(receiverDepth, t, 0).r;
@@ -31,4 +23,27 @@ vec4 mapReceiver(sampler2D receiverDepth, ivec2 t) {
     precise vec4 w = uMapInverseLightViewProj * vec4(l.xy, d * l.z, l.z);
     precise vec3 p = w.xyz / w.w;
     return vec4(p, 1.0);
+}
+
+// A silhouette seed's w (JFA-L): the texel it was found at, as the bits of 1.0 plus the texel's
+// row-major index, a normal float in [1, 256) for maps up to 8192², never 0 (w = 0 is an empty
+// cell), kept bit for bit by every copy. The flood knows a seed at its own texel by this tag,
+// not by comparing positions: two shaders decoding one texel may differ in the last bit.
+float mapSeedTag(ivec2 t, int width) {
+    return uintBitsToFloat(0x3f800000u + uint(t.y * width + t.x));
+}
+
+// The texel of a seed tag (mapSeedTag's inverse).
+ivec2 mapSeedTexel(float tag, int width) {
+    uint index = floatBitsToUint(tag) - 0x3f800000u;
+    return ivec2(int(index % uint(width)), int(index / uint(width)));
+}
+
+// A packed JFA-L cell (R32F: its seed's tag, 0 empty) as the criterion's vec4: the occluder is
+// the surface the seed's texel sees, decoded from the receiver target as the silhouette pass
+// decoded it; w the tag. Empty: the kernel's empty cell (0, 0, -1, 0).
+vec4 mapSeedCell(sampler2D receiverDepth, float tag) {
+    if (tag == 0.0) return vec4(0.0, 0.0, -1.0, 0.0);
+    ivec2 t = mapSeedTexel(tag, textureSize(receiverDepth, 0).x);
+    return vec4(mapReceiver(receiverDepth, t).xyz, tag);
 }

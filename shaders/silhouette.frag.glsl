@@ -1,6 +1,7 @@
 #version 450 core
 // JFA-L phase 2 (thesis §5.3.1, "Locating Occluders"): a shadow-map texel is a silhouette
-// pixel, and so a seed carrying its world position (w its texel's tag, mapSeedTag), if one of its 8 neighbours sees nothing, or
+// pixel, and so a seed (stored as its texel's tag, mapSeedTag; its occluder is the surface the
+// texel sees), if one of its 8 neighbours sees nothing, or
 // lies across a silhouette edge (acrossSilhouette, occluder_edge.glsl). Same as
 // fl::silhouetteSeeds on the CPU.
 #include "disk_light.glsl"
@@ -22,14 +23,14 @@ uniform int uRegionTilesX;
 layout(std430, binding = 7) readonly buffer SeedRegion { uint seedRegion[]; };
 #endif
 
-layout(location = 0) out vec4 oSeed;
+layout(location = 0) out float oSeed; // packed: the seed's tag, 0 none (jfa_penumbra.glsl)
 
 void main() {
     ivec2 t = ivec2(gl_FragCoord.xy);
 #ifdef SILHOUETTE_REGION
     ivec2 r = t / uRegionTile;
     if (seedRegion[r.y * uRegionTilesX + r.x] == 0u) {
-        oSeed = vec4(0.0, 0.0, -1.0, 0.0);
+        oSeed = 0.0;
         return;
     }
 #endif
@@ -46,6 +47,6 @@ void main() {
         }
     }
     bool seed = self.w != 0.0 && silhouette;
-    oSeed = seed ? vec4(self.xyz, mapSeedTag(t, size.x)) : vec4(0.0, 0.0, -1.0, 0.0);
+    oSeed = seed ? mapSeedTag(t, size.x) : 0.0;
     if (seed && uListSeeds != 0) jfaListSeed(t);
 }

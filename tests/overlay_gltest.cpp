@@ -146,7 +146,7 @@ TEST(OverlayPlans, TruncateKeepsThePrefix) {
 // on the same seeds, the error count equals the CPU count, and the pixels are its colours.
 TEST_F(OverlayTest, VoronoiOfSeedsMatchesCpuKernel) {
     Frame s("jfa-l");
-    const jfa::Grid sites = overlay::sitesFromSeeds(jfa::readGrid(*s.flood().seeds));
+    const jfa::Grid sites = overlay::sitesFromSeeds(readFloodGrid(s.flood(), *s.flood().seeds));
     ASSERT_GT(jfa::siteCells(sites).size(), 100u);
     const jfa::NearestSite crit{true};
     const jfa::ExactField exact = jfa::exactNearest(sites, crit);
@@ -174,7 +174,7 @@ TEST_F(OverlayTest, DistanceTransformOfBoundarySeeds) {
     const OverlayCapture cap = s.capture(OverlayMode::DistanceTransform);
     const OverlayResult& r = s.overlays->lastResult();
     ASSERT_TRUE(r.drawn);
-    const jfa::Grid sites = overlay::sitesFromSeeds(jfa::readGrid(*s.flood().seeds));
+    const jfa::Grid sites = overlay::sitesFromSeeds(readFloodGrid(s.flood(), *s.flood().seeds));
     ASSERT_GT(jfa::siteCells(sites).size(), 100u)
         << "the JFA-E frame has (almost) no boundary seeds";
     const jfa::NearestSite crit{true};
@@ -212,7 +212,7 @@ TEST_F(OverlayTest, FloodPassesMatchTruncatedCpuPlan) {
     PenumbraCriterion crit;
     crit.light = s.renderer->disk();
     crit.receivers = &receivers;
-    const jfa::Grid seeds = jfa::readGrid(*s.flood().seeds);
+    const jfa::Grid seeds = readFloodGrid(s.flood(), *s.flood().seeds);
     const jfa::Plan full = penumbraPlan(s.penumbraSettings(), kSize);
     for (int k : {0, 1, 3, -1}) {
         s.controls.floodPass = k;
@@ -221,7 +221,7 @@ TEST_F(OverlayTest, FloodPassesMatchTruncatedCpuPlan) {
         EXPECT_TRUE(s.overlays->lastResult().grid == cpu) << "after " << k << " passes";
         if (k == 3) expectGolden(cap.image, "overlay_256_flood-passes-3");
     }
-    EXPECT_TRUE(s.overlays->lastResult().grid == jfa::readGrid(*s.flood().flooded));
+    EXPECT_TRUE(s.overlays->lastResult().grid == readFloodGrid(s.flood(), *s.flood().flooded));
 }
 
 // The default flood region, view, finds seeds and floods JFA-L's map only around what the eye's
@@ -264,9 +264,9 @@ TEST_F(OverlayTest, JfaVsFloodMaskIsTheCpuComparison) {
     PenumbraSettings ps = s.penumbraSettings();
     ps.standardFlooding = true;
     const jfa::Grid flood =
-        jfa::flood(penumbraPlan(ps, kSize), jfa::readGrid(*s.flood().seeds), crit);
+        jfa::flood(penumbraPlan(ps, kSize), readFloodGrid(s.flood(), *s.flood().seeds), crit);
     EXPECT_TRUE(r.reference == flood);
-    const jfa::Grid jfa = jfa::readGrid(*s.flood().flooded);
+    const jfa::Grid jfa = readFloodGrid(s.flood(), *s.flood().flooded);
     std::int64_t differ = 0;
     for (int y = 0; y < kSize; ++y)
         for (int x = 0; x < kSize; ++x) {
@@ -298,9 +298,11 @@ TEST_F(OverlayTest, JfaVsFloodEyeSpace) {
     s.capture(OverlayMode::JfaVsFlood);
     const OverlayResult& r = s.overlays->lastResult();
     ASSERT_TRUE(r.drawn);
-    ASSERT_GT(jfa::siteCells(overlay::sitesFromSeeds(jfa::readGrid(*s.flood().seeds))).size(), 100u)
+    ASSERT_GT(
+        jfa::siteCells(overlay::sitesFromSeeds(readFloodGrid(s.flood(), *s.flood().seeds))).size(),
+        100u)
         << "the JFA-E frame has (almost) no boundary seeds";
-    const jfa::Grid jfa = jfa::readGrid(*s.flood().flooded);
+    const jfa::Grid jfa = readFloodGrid(s.flood(), *s.flood().flooded);
     EXPECT_TRUE(r.grid == jfa);
     std::int64_t differ = 0;
     for (std::size_t i = 0; i < jfa.cells.size(); ++i) {
@@ -312,7 +314,7 @@ TEST_F(OverlayTest, JfaVsFloodEyeSpace) {
     EXPECT_GT(differ, 0);
     // The reference is what a flood-E frame of the same view floods.
     Frame floodE("flood-e", ShadowMapProvider::Uniform, 1.5f, 4);
-    EXPECT_TRUE(r.reference == jfa::readGrid(*floodE.flood().flooded));
+    EXPECT_TRUE(r.reference == readFloodGrid(floodE.flood(), *floodE.flood().flooded));
 }
 
 // The playground's live error count is the CPU count for the same sites and variant; clicked
@@ -431,7 +433,7 @@ TEST_F(OverlayTest, PictureGoldens) {
     }
     // Seeds are drawn exactly where the seed texture holds one.
     const OverlayCapture seeds = s.capture(OverlayMode::Seeds);
-    const jfa::Grid g = jfa::readGrid(*s.flood().seeds);
+    const jfa::Grid g = readFloodGrid(s.flood(), *s.flood().seeds);
     expectPixels(
         seeds.image,
         [&](int x, int y) {

@@ -82,7 +82,7 @@ TEST_F(PenumbraTest, SilhouettesAndFloodMatchTheCpuReference) {
                 EXPECT_EQ(flood->passes, 4);
                 EXPECT_EQ(flood->standardFlooding, isStandardFlooding(*d)) << method;
                 const ReceiverGrid receivers = readReceivers(r.decodedShadowReceivers());
-                const jfa::Grid gpuSeeds = jfa::readGrid(*flood->seeds);
+                const jfa::Grid gpuSeeds = readFloodGrid(*flood, *flood->seeds);
                 const float threshold = 0.001f * s.scene.bounds.radius();
                 const jfa::Grid cpuSeeds = silhouetteSeeds(receivers, r.disk(), threshold);
                 ASSERT_EQ(gpuSeeds, cpuSeeds) << "silhouette seeds differ";
@@ -95,7 +95,7 @@ TEST_F(PenumbraTest, SilhouettesAndFloodMatchTheCpuReference) {
                 ps.passes = 4;
                 ps.standardFlooding = isStandardFlooding(*d);
                 const jfa::Grid cpuMap = jfa::flood(penumbraPlan(ps, 128), cpuSeeds, criterion);
-                const jfa::Grid gpuMap = jfa::readGrid(*flood->flooded);
+                const jfa::Grid gpuMap = readFloodGrid(*flood, *flood->flooded);
                 std::size_t differ = 0;
                 for (std::size_t i = 0; i < cpuMap.cells.size(); ++i)
                     differ += !(cpuMap.cells[i] == gpuMap.cells[i]);
@@ -279,7 +279,7 @@ TEST_F(PenumbraTest, ViewLimitGivesTheFullFloodsPicture) {
                     r.render(camera);
                     return std::tuple{readFrame(r), r.flood()->passes,
                                       r.flood()->kernel->activeShare(),
-                                      jfa::readGrid(*r.flood()->flooded)};
+                                      readFloodGrid(*r.flood(), *r.flood()->flooded)};
                 };
                 const auto [view, viewPasses, viewShare, viewMap] = render("view", passes);
                 EXPECT_EQ(r.flood()->region, jfa::FloodRegion::View);
@@ -352,7 +352,7 @@ TEST_F(PenumbraTest, ViewLimitPartsMatchTheCpu) {
         }
         const jfa::Grid cpuSeeds =
             silhouetteSeeds(receivers, r.disk(), threshold, region ? &*region : nullptr);
-        EXPECT_EQ(jfa::readGrid(out.seeds), cpuSeeds);
+        EXPECT_EQ(readPenumbraGrid(out.seeds, receivers), cpuSeeds);
         EXPECT_GT(nonEmpty(cpuSeeds), 50u);
         if (region) {
             EXPECT_LT(nonEmpty(cpuSeeds),

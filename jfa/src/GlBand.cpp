@@ -55,12 +55,16 @@ void GlFloodKernelBase::buildBandPrograms() {
     markProgram_ = gl::Program::build(shaders_, {{GL_COMPUTE_SHADER, "jfa_band_mark.comp.glsl"}});
     compactProgram_ =
         gl::Program::build(shaders_, {{GL_COMPUTE_SHADER, "jfa_band_compact.comp.glsl"}});
-    clearProgram_ = gl::Program::build(shaders_, {{GL_COMPUTE_SHADER, "jfa_band_clear.comp.glsl"}});
+    std::vector<std::string> cellDefines;
+    if (cellFormat_ == GL_R32F) cellDefines.emplace_back("JFA_CELL_FORMAT r32f");
+    clearProgram_ = gl::Program::build(shaders_, {{GL_COMPUTE_SHADER, "jfa_band_clear.comp.glsl"}},
+                                       cellDefines);
     viewProgram_ = gl::Program::build(shaders_, {{GL_COMPUTE_SHADER, "jfa_band_view.comp.glsl"}});
     frontProgram_ = gl::Program::build(shaders_, {{GL_COMPUTE_SHADER, "jfa_band_front.comp.glsl"}});
     dilation_ = std::make_unique<GlTileDilation>(shaders_);
     for (bool expand : {false, true}) {
-        std::vector<std::string> defines{"JFA_BAND"};
+        std::vector<std::string> defines = cellDefines;
+        defines.emplace_back("JFA_BAND");
         if (expand) defines.emplace_back("JFA_EXPAND");
         if (keyed_) defines.emplace_back("JFA_KEYED");
         gl::Program p = gl::Program::build(
@@ -258,7 +262,7 @@ void GlFloodKernelBase::emptyTexture(Pair& pair, int i, int stage) {
     if (pair.dirt[i] == stage && stageBands_[stage].commands) {
         clearProgram_.set("uSize", glm::ivec2(t.width(), t.height()));
         clearProgram_.set("uTile", tile_);
-        glBindImageTexture(0, t.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+        glBindImageTexture(0, t.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, cellFormat_);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, stageBands_[stage].tiles.id());
         glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, stageBands_[stage].commands.id());
         glUseProgram(clearProgram_.id());
@@ -266,7 +270,7 @@ void GlFloodKernelBase::emptyTexture(Pair& pair, int i, int stage) {
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
                         GL_SHADER_STORAGE_BARRIER_BIT);
         glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
-        glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+        glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, cellFormat_);
         glUseProgram(0);
     } else if (pair.dirt[i] != kDirtClean) {
         const std::array<float, 4> empty{0.0f, 0.0f, -1.0f, 0.0f}; // kEmptyCell

@@ -38,8 +38,9 @@ Grid readGrid(const gl::Texture& texture) {
 namespace {
 
 gl::Program buildKernel(const gl::ShaderLibrary& shaders, const std::string& criterionFile,
-                        GlKernelKind kind, bool expand, bool keyed) {
+                        GlKernelKind kind, bool expand, bool keyed, bool packed) {
     std::vector<std::string> defines;
+    if (packed) defines.emplace_back("JFA_CELL_FORMAT r32f");
     if (expand) defines.emplace_back("JFA_EXPAND");
     if (keyed) defines.emplace_back("JFA_KEYED");
     if (kind == GlKernelKind::Fragment)
@@ -57,11 +58,11 @@ gl::Program buildKernel(const gl::ShaderLibrary& shaders, const std::string& cri
 
 GlFloodKernelBase::GlFloodKernelBase(const gl::ShaderLibrary& shaders,
                                      const std::string& criterionFile, GlKernelKind kind,
-                                     bool keyed)
-    : passProgram_(buildKernel(shaders, criterionFile, kind, false, keyed)),
-      expandProgram_(buildKernel(shaders, criterionFile, kind, true, keyed)), shaders_(shaders),
-      criterionFile_(criterionFile), keyed_(keyed), kind_(kind),
-      emptyVao_(gl::VertexArray::create()),
+                                     bool keyed, bool packed)
+    : passProgram_(buildKernel(shaders, criterionFile, kind, false, keyed, packed)),
+      expandProgram_(buildKernel(shaders, criterionFile, kind, true, keyed, packed)),
+      shaders_(shaders), criterionFile_(criterionFile), keyed_(keyed),
+      cellFormat_(packed ? GL_R32F : GL_RGBA32F), kind_(kind), emptyVao_(gl::VertexArray::create()),
       changedCounter_(sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT) {}
 
 const gl::Texture& GlFloodKernelBase::otherTexture(int width, int height,
@@ -70,7 +71,7 @@ const gl::Texture& GlFloodKernelBase::otherTexture(int width, int height,
     Pair& pair = it->second;
     if (inserted) {
         for (int i = 0; i < 2; ++i) {
-            pair.tex[i] = gl::Texture(GL_RGBA32F, width, height);
+            pair.tex[i] = gl::Texture(cellFormat_, width, height);
             pair.fbo[i] = gl::Framebuffer::forColor(pair.tex[i], "jfa ping-pong");
         }
     }
@@ -116,7 +117,7 @@ void GlFloodKernelBase::dispatch(const gl::Texture& src, const gl::Texture& seed
     // kernel's kind: on llvmpipe the fragment kernel's instanced tile quads cost twice as much
     // per pass on a small band (docs/BENCHMARKS.md, jfa_bench "flood:15 ... band").
     if (kind_ == GlKernelKind::Compute || banded) {
-        glBindImageTexture(0, dst.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+        glBindImageTexture(0, dst.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, cellFormat_);
         if (banded)
             glDispatchComputeIndirect(0);
         else
@@ -124,7 +125,7 @@ void GlFloodKernelBase::dispatch(const gl::Texture& src, const gl::Texture& seed
                               static_cast<GLuint>((dst.height() + 7) / 8), 1);
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_ATOMIC_COUNTER_BARRIER_BIT |
                         GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
-        glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+        glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, cellFormat_);
     } else {
         const Pair& pair = pairs_.at({dst.width(), dst.height()});
         const gl::Framebuffer& fbo = &dst == &pair.tex[0] ? pair.fbo[0] : pair.fbo[1];

@@ -111,8 +111,10 @@ class GlFloodKernelBase {
 
   protected:
     /// Builds the kernel programs with `criterionFile` (a criterion's glslFile) linked in.
+    /// `packed`: the criterion stores a cell in one R32F texel (jfaLoad/jfaStore unpack it;
+    /// JFA_CELL_FORMAT r32f), else one RGBA32F texel as it is.
     GlFloodKernelBase(const gl::ShaderLibrary& shaders, const std::string& criterionFile,
-                      GlKernelKind kind, bool keyed);
+                      GlKernelKind kind, bool keyed, bool packed);
 
     /// The programs that link the criterion (their uniforms are the criterion's), the band
     /// programs included once built; `needBand` builds them first.
@@ -144,6 +146,7 @@ class GlFloodKernelBase {
     gl::ShaderLibrary shaders_;
     std::string criterionFile_;
     bool keyed_ = false;
+    GLenum cellFormat_ = GL_RGBA32F; // GL_R32F for packed cells
     GlKernelKind kind_;
     FloodRegion region_ = FloodRegion::Full;
     int tile_ = kDefaultBandTile;
@@ -221,6 +224,13 @@ concept Keyed = requires {
     requires C::keyed;
 };
 
+/// Criteria whose cells the GL kernels store packed in one R32F texel (the GLSL's jfaLoad and
+/// jfaStore unpack and pack them); the GL textures of their grids hold that form.
+template <class C>
+concept PackedCells = requires {
+    requires C::packedCells;
+};
+
 /// A GL kernel for criterion C. Its programs link C::glslFile when it is built, and run() takes
 /// a C only, so a kernel cannot run a criterion whose GLSL it was not built with: that does not
 /// compile.
@@ -231,7 +241,7 @@ class GlFloodKernel : public GlFloodKernelBase {
   public:
     /// Builds the kernel programs with C::glslFile linked in.
     GlFloodKernel(const gl::ShaderLibrary& shaders, GlKernelKind kind)
-        : GlFloodKernelBase(shaders, C::glslFile, kind, Keyed<C>) {
+        : GlFloodKernelBase(shaders, C::glslFile, kind, Keyed<C>, PackedCells<C>) {
         criterionBounds_ = Reaching<C>;
     }
 

@@ -33,9 +33,10 @@ const gl::Texture& LightLookup::execute(const FrameInputs& in, const gl::Texture
     if (penumbra_) {
         setDiskLightUniforms(program_, in.disk);
         glBindTextureUnit(3, penumbraMap->id());
+        in.shadow.receivers->bind(program_, 4); // the packed cells' occluders
     }
     gl::drawFullscreenTriangle(program_, emptyVao_);
-    for (GLuint unit : {0u, 1u, 2u, 3u}) glBindTextureUnit(unit, 0);
+    for (GLuint unit : {0u, 1u, 2u, 3u, 4u}) glBindTextureUnit(unit, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return visibility_;
 }

@@ -92,6 +92,26 @@ const gl::Texture& floodFrame(State& s, const Renderer& r, const Soft& soft,
     return out;
 }
 
+// A grid of the frame's flood read back as cells, and a texture of them the canvas can draw:
+// light grids are packed on the GPU (PenumbraCriterion::packedCells), so they are drawn from an
+// upload of their cells; eye grids as they are.
+struct Cells {
+    jfa::Grid grid;
+    gl::Texture unpacked;                // light only
+    const gl::Texture* stored = nullptr; // eye only
+    [[nodiscard]] const gl::Texture& texture() const { return unpacked ? unpacked : *stored; }
+};
+
+Cells readCells(const Soft& soft, const gl::Texture& grid) {
+    Cells c;
+    c.grid = readFloodGrid(soft, grid);
+    if (soft.eye)
+        c.stored = &grid;
+    else
+        c.unpacked = jfa::uploadGrid(c.grid);
+    return c;
+}
+
 std::int64_t nonEmpty(const jfa::Grid& g) {
     return std::count_if(g.cells.begin(), g.cells.end(),
                          [](const jfa::Cell& c) { return c.w != 0.0f; });
@@ -116,9 +136,10 @@ Lines drawSeeds(State& s, const Frame& f) {
     const std::optional<Soft> soft = softOf(f.renderer);
     if (!soft) return {kNeedsSoft};
     const glm::ivec4 vp = viewportOf(*soft, f);
-    s.result.grid = jfa::readGrid(*soft->seeds);
+    Cells seeds = readCells(*soft, *soft->seeds);
     f.bindTarget();
-    s.canvas.drawGrid({GridMode::Seeds, soft->seeds}, vp);
+    s.canvas.drawGrid({GridMode::Seeds, &seeds.texture()}, vp);
+    s.result.grid = std::move(seeds.grid);
     s.result.viewport = vp;
     s.result.drawn = true;
     return {std::string(soft->eye ? "boundary seeds (eye space, JFA-E phase 3): "
@@ -130,14 +151,15 @@ Lines drawSeeds(State& s, const Frame& f) {
 // and keeps it as the overlay's result.
 static void drawOccluders(State& s, const Frame& f, const Soft& soft, const gl::Texture& grid) {
     const glm::ivec4 vp = viewportOf(soft, f);
-    s.result.grid = jfa::readGrid(grid);
+    Cells cells = readCells(soft, grid);
     // Light space: the map's positions decoded (the bits the flood's criterion read).
-    GridDraw g{GridMode::Occluder, &grid,
+    GridDraw g{GridMode::Occluder, &cells.texture(),
                soft.eye ? soft.receivers : &f.renderer.decodedShadowReceivers()};
     g.eyeSpace = soft.eye;
     g.light = &f.renderer.disk();
     f.bindTarget();
     s.canvas.drawGrid(g, vp);
+    s.result.grid = std::move(cells.grid);
     s.result.viewport = vp;
     s.result.drawn = true;
 }
@@ -174,7 +196,7 @@ Lines drawFloodPasses(State& s, const Frame& f) {
 Lines drawSiteDiagram(State& s, const Frame& f, bool distance) {
     const std::optional<Soft> soft = softOf(f.renderer);
     if (!soft) return {kNeedsSoft};
-    const jfa::Grid sites = sitesFromSeeds(jfa::readGrid(*soft->seeds));
+    const jfa::Grid sites = sitesFromSeeds(readFloodGrid(*soft, *soft->seeds));
     const jfa::Plan plan = variantPlan(f.controls.variant, sites.width, sites.height);
     SiteDiagram d = floodSites(s.siteKernel, plan, sites);
     const gl::Texture grid = jfa::uploadGrid(d.flooded);
@@ -218,12 +240,12 @@ Lines drawJfaVsFlood(State& s, const Frame& f) {
     key.push_back(soft->eye ? 1.0f : 0.0f);
     key.push_back(soft->objectIdFix ? 1.0f : 0.0f);
     key.push_back(soft->midpointFix ? 1.0f : 0.0f);
-    jfa::Grid seeds = jfa::readGrid(*soft->seeds);
+    jfa::Grid seeds = readFloodGrid(*soft, *soft->seeds);
     ReferenceCache& cache = s.reference;
     const bool reused = cache.key == key && cache.seeds == seeds;
     if (!reused) {
         const auto t0 = std::chrono::steady_clock::now();
-        cache.reference = jfa::readGrid(floodFrame(s, f.renderer, *soft, plan));
+        cache.reference = readFloodGrid(*soft, floodFrame(s, f.renderer, *soft, plan));
         cache.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
                        .count();
         cache.texture = jfa::uploadGrid(cache.reference);
@@ -233,14 +255,15 @@ Lines drawJfaVsFlood(State& s, const Frame& f) {
     const gl::Texture& other = cache.texture;
     const double ms = cache.ms;
     s.result.reference = cache.reference;
-    s.result.grid = jfa::readGrid(*soft->flooded);
+    Cells flooded = readCells(*soft, *soft->flooded);
+    s.result.grid = flooded.grid;
     s.result.mask.assign(s.result.grid.cells.size(), 0);
     for (std::size_t i = 0; i < s.result.mask.size(); ++i)
         s.result.mask[i] = s.result.grid.cells[i] == s.result.reference.cells[i] ? 0 : 1;
     s.result.count = std::count(s.result.mask.begin(), s.result.mask.end(), std::uint8_t(1));
     const glm::ivec4 vp = viewportOf(*soft, f);
     f.bindTarget();
-    s.canvas.drawGrid({GridMode::Diff, soft->flooded, &other}, vp);
+    s.canvas.drawGrid({GridMode::Diff, &flooded.texture(), &other}, vp);
     s.result.viewport = vp;
     s.result.drawn = true;
     char msText[32];

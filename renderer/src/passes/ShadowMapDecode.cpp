@@ -11,6 +11,10 @@ float seedTag(int x, int y, int width) {
     return std::bit_cast<float>(0x3f800000u + static_cast<std::uint32_t>(y * width + x));
 }
 
+std::uint32_t seedIndex(float tag) {
+    return std::bit_cast<std::uint32_t>(tag) - 0x3f800000u;
+}
+
 glm::mat3 unwarp(const glm::mat4& warp) {
     // Rows and columns x, y, w of the warp (glm is column-major: warp[column][row]).
     constexpr int kAxes[3] = {0, 1, 3};

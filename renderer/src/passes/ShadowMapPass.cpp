@@ -53,6 +53,11 @@ void MapPositions::bind(const gl::Program& program, GLuint unit) const {
     program.set("uMapInverseLightViewProj", inverseLightViewProj);
 }
 
+const gl::Texture& MapPositions::decoded() const {
+    if (pass == nullptr) throw std::logic_error("MapPositions::decoded: no shadow map pass");
+    return pass->decodedReceivers();
+}
+
 std::vector<glm::vec4> MapPositions::read() const {
     const int n = size();
     std::vector<float> raw(static_cast<std::size_t>(n) * static_cast<std::size_t>(n));
@@ -142,7 +147,7 @@ ShadowMapPass::Outputs ShadowMapPass::execute(const Inputs& in) {
     receiversWritten_ = in.writeReceivers;
     if (in.writeReceivers)
         positions_ = {&receiverDepth_, shadowmap::unwarp(warp),
-                      shadowmap::inverseLightViewProj(lightViewProj)};
+                      shadowmap::inverseLightViewProj(lightViewProj), this};
     return {depth_,
             lightViewProj,
             warp,

@@ -77,6 +77,11 @@ struct FloodFrame {
     const MapPositions* map = nullptr; // light only: the shadow map's receiver target
 };
 
+/// One of `frame`'s grids (its seeds, its flood, or an overlay's re-run of it) as cells: eye
+/// grids as stored, light grids unpacked (readPenumbraGrid) with the map's positions as the
+/// shaders decode them.
+jfa::Grid readFloodGrid(const FloodFrame& frame, const gl::Texture& grid);
+
 class ShadowMethod {
   public:
     virtual ~ShadowMethod() = default;

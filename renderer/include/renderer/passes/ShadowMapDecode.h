@@ -8,6 +8,8 @@
 
 #include <glm/glm.hpp>
 
+#include <cstdint>
+
 namespace fl::shadowmap {
 
 /// The receiver target's value where the light sees nothing (the clear value; NDC depth is in
@@ -18,6 +20,8 @@ inline constexpr float kNoReceiver = -4.0f;
 /// plus its row-major index; a normal float in [1, 256) for maps up to 8192²). The same as
 /// mapSeedTag() in GLSL.
 float seedTag(int x, int y, int width);
+/// The texel index (y * width + x) of a seed tag: seedTag's inverse.
+std::uint32_t seedIndex(float tag);
 
 /// The inverse of a provider's warp (light clip -> map clip) on x, y and w, computed in double:
 /// both providers' warps leave z out of x, y and w (TSM's N_T is a 2D projective map with its z

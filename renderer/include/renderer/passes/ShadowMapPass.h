@@ -26,6 +26,8 @@
 
 namespace fl {
 
+class ShadowMapPass;
+
 /// The shadow map's receiver target and what reads it (shaders/shadow_map_decode.glsl's
 /// mapReceiver(); CPU twin renderer/passes/ShadowMapDecode.h): per texel the light's unbiased
 /// NDC depth, from which the world position of the surface the texel sees comes back.
@@ -33,7 +35,10 @@ struct MapPositions {
     const gl::Texture* depth = nullptr; // R32F; shadowmap::kNoReceiver where nothing is seen
     glm::mat3 unwarp{1.0f};             // shadowmap::unwarp(warp)
     glm::mat4 inverseLightViewProj{1.0f};
+    const ShadowMapPass* pass = nullptr; // made it (decoded())
     [[nodiscard]] int size() const { return depth->width(); }
+    /// Its pass's decodedReceivers(): every position as the shaders decode it, RGBA32F.
+    [[nodiscard]] const gl::Texture& decoded() const;
     /// For mapReceiver(): the target on texture `unit` (the shader's sampler binding) and the
     /// uMapUnwarp / uMapInverseLightViewProj uniforms of `program`.
     void bind(const gl::Program& program, GLuint unit) const;

@@ -35,6 +35,9 @@ struct ReceiverGrid {
 struct PenumbraCriterion {
     static constexpr const char* glslFile = "jfa_penumbra.glsl";
     static constexpr bool keyed = true; // the GLSL has jfaKey (jfa_select.glsl)
+    /// GL grids hold a cell as its seed's tag alone (R32F; jfaLoad rebuilds the occluder from
+    /// the map's receiver target): readPenumbraGrid turns one back into cells.
+    static constexpr bool packedCells = true;
     DiskLight light;
     const ReceiverGrid* receivers = nullptr; // CPU kernel
     MapPositions map; // GL kernels: the shadow map's receiver target (decoded in the shader)
