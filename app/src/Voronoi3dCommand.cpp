@@ -174,7 +174,14 @@ jfa::SiteGrid3 runVariant(const jfa::Flood3dVariant& v, const std::vector<jfa::S
                           const std::vector<std::int64_t>& exact, jfa::Extent3 e,
                           const Voronoi3dOptions& o, jfa::GlJfa3d* gl, bool& disagreed) {
     const bool cpu = o.backend != "gl";
-    std::cout << v.label << ": " << jfa::variantPlan(v, e).describe() << "\n";
+    const jfa::Plan plan = jfa::variantPlan(v, e);
+    const std::vector<int>& steps = plan.stages().front().steps;
+    std::cout << v.label << ": steps";
+    for (int k : steps) std::cout << " " << k;
+    std::cout << " (" << steps.size() << " passes, "
+              << (v.shape == jfa::Flood3dShape::Volume ? "27 reads a voxel"
+                                                       : "each z slice apart, 9 reads a voxel")
+              << ")\n";
     Flooded c, g;
     if (cpu) {
         c = floodCpu(v, sites, e, o);
