@@ -5,9 +5,13 @@
 #   times   - every variant on CPU and GL side by side in one run (--backend both: each flood
 #             --runs times, min and median; GL's passes after a warm-up run, upload and
 #             read-back apart), with GL == CPU checked voxel for voxel.
+#   shaders - the GL pass with the shaders of folder DIR (--shader-dir) against the embedded ones,
+#             alternating ROUNDS times, each --runs 3 (min and median of the passes), and the two
+#             EXRs compared byte for byte (an optimisation must not change the result).
 # Prints one table row per line (Markdown). Usage:
 #   bash bench/voronoi3d_tables.sh errors "64 128" "100 1000 10000" "1 2 3"
 #   bash bench/voronoi3d_tables.sh times "64 128" 1000 RUNS
+#   bash bench/voronoi3d_tables.sh shaders 64 1000 DIR ROUNDS
 set -euo pipefail
 part=${1:?errors or times}
 sizes=${2:-"64 128"}
@@ -57,7 +61,27 @@ elif [[ $part == times ]]; then
           printf "| %s^3 | %s | %s | %s | %s | %s + %s | %s | %s |\n", s, n, label, cpu, gl, up, rd, same, b[1] }'
     done
   done
+elif [[ $part == shaders ]]; then
+  dir=${4:?shader folder}
+  rounds=${5:-3}
+  out=$(mktemp -d)
+  echo "| round | variant | grid | sites | shaders | GL passes min / median ms | EXR equal |"
+  echo "|---|---|---|---|---|---|---|"
+  for ((r = 1; r <= rounds; ++r)); do
+    for v in jfa slices; do
+      for which in before after; do
+        opt=()
+        [[ $which == before ]] && opt=(--shader-dir "$dir")
+        t=$("$bin" voronoi3d --size "$sizes" --sites "$counts" --variant "$v" --backend gl --runs 3 \
+              "${opt[@]}" --out "$out" --name "$which" | awk '/^  GL: min/ { print $3 " / " $9 }')
+        same=-
+        [[ $which == after ]] && { cmp -s "$out/before.exr" "$out/after.exr" && same=yes || same=NO; }
+        echo "| $r | $v | ${sizes}^3 | $counts | $which | $t | $same |"
+      done
+    done
+  done
+  rm -rf "$out"
 else
-  echo "unknown part $part (errors or times)" >&2
+  echo "unknown part $part (errors, times or shaders)" >&2
   exit 2
 fi
