@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # Runs a libFuzzer target for SECONDS (default 60): bash scripts/fuzz.sh TARGET|all [SECONDS].
-# Targets: plan, points, input_script, camera_path, gltf, capture_script, png_mask (fuzz/). It
-# builds the clang preset `fuzz`, starts from the committed seeds (fuzz/corpus/TARGET, never
-# modified) plus what earlier runs found (build/fuzz/corpus/TARGET), and stops at the first crash,
-# leak or timeout, whose input is written to build/fuzz/artifacts/ (make it a regression fixture
-# named after the bug).
+# Targets: plan, points, points3d, input_script, camera_path, gltf, capture_script, png_mask
+# (fuzz/). It builds the clang preset `fuzz`, starts from the committed seeds (fuzz/corpus/TARGET,
+# never modified) plus what earlier runs found (build/fuzz/corpus/TARGET), and stops at the first
+# crash, leak or timeout, whose input is written to build/fuzz/artifacts/ (make it a regression
+# fixture named after the bug).
 # Targets run side by side, one per core (FLOODLIGHT_FUZZ_JOBS=N to change).
 # Prints the executions per second and in total. FLOODLIGHT_FUZZ_SEED=N fixes libFuzzer's seed:
 # from a clean build/fuzz the run is then the same sequence of inputs on every machine (CI uses 1;
@@ -13,7 +13,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 target=${1:?usage: bash scripts/fuzz.sh TARGET|all [SECONDS]}
 seconds=${2:-60}
-targets=(plan points input_script camera_path gltf capture_script png_mask)
+targets=(plan points points3d input_script camera_path gltf capture_script png_mask)
 [ "$target" = all ] || targets=("$target")
 
 cmake --preset fuzz >/dev/null

@@ -318,7 +318,7 @@ TEST(Jfa3dErrors, DescribeSaysWhatWasCounted) {
     EXPECT_EQ(count.erroneous, 32);
     EXPECT_EQ(count.empty, 1);
     EXPECT_EQ(count.describe(),
-              "test on 4x4x4, 2 sites: 32 erroneous voxels of 64 (50.0000%), 1 without a site");
+              "test on 4x4x4, 2 sites: 32 error voxels of 64 (50.0000%), 1 without a site");
     EXPECT_THROW(countErrors3d(wrong, sites, exactSquaredDistances3d({{1, 1, 1, 0}}, e), "x"),
                  std::invalid_argument);
 }

@@ -15,6 +15,9 @@ Runner addRenderCommand(CLI::App& app);
 Runner addViewCommand(CLI::App& app);
 /// `floodlight voronoi`: jump-flooded Voronoi diagrams and distance transforms with errors.
 Runner addVoronoiCommand(CLI::App& app);
+/// `floodlight voronoi3d`: 3D Voronoi diagrams by 3D or slice-by-slice jump flooding, CPU or GL,
+/// with error voxels against the exact diagram.
+Runner addVoronoi3dCommand(CLI::App& app);
 /// `floodlight delaunay`: Delaunay triangulation of a point file by 1+JFA and exact repair.
 Runner addDelaunayCommand(CLI::App& app);
 /// `floodlight compare`: a soft-shadow method against its standard-flooding reference.

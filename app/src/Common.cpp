@@ -6,6 +6,7 @@
 
 #include <base/InputFile.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -343,6 +344,13 @@ CameraView initialCamera(const Scene& scene, const SceneOptions& o, int width, i
     } catch (const std::invalid_argument& e) {
         throw InputError(e.what());
     }
+}
+
+std::array<std::uint8_t, 3> regionColour(std::int64_t id) {
+    std::uint32_t h = std::uint32_t(std::max<std::int64_t>(id, 0)) * 2654435761u;
+    h ^= h >> 15;
+    return {std::uint8_t(64 + (h & 0x7f)), std::uint8_t(64 + ((h >> 8) & 0x7f)),
+            std::uint8_t(64 + ((h >> 16) & 0x7f))};
 }
 
 void printTimings(const Renderer& renderer, std::ostream& out) {

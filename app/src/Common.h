@@ -10,6 +10,8 @@
 
 #include <base/Numbers.h>
 
+#include <array>
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -112,6 +114,10 @@ CameraView initialCamera(const Scene& scene, const SceneOptions& o, int width, i
 /// Parameters of the built-in default scene (also how assets/default.glb was made).
 inline constexpr std::size_t kDefaultSceneTriangles = 6320;
 inline constexpr std::uint32_t kDefaultSceneSeed = 1;
+
+/// The colour of region `id` in Voronoi pictures (voronoi, voronoi3d): a hash of the id in mid
+/// tones, so that black sites and red error cells stand out; negative ids as 0.
+std::array<std::uint8_t, 3> regionColour(std::int64_t id);
 
 /// Prints per-pass times and the frame total on one line each.
 void printTimings(const Renderer& renderer, std::ostream& out);

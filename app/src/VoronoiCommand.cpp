@@ -198,13 +198,6 @@ Run flood(const jfa::Plan& plan, const jfa::Grid& seeds, const jfa::NearestSite&
     return r;
 }
 
-std::array<std::uint8_t, 3> colourOf(float id) {
-    std::uint32_t h = std::uint32_t(std::max(id, 0.0f)) * 2654435761u;
-    h ^= h >> 15;
-    return {std::uint8_t(64 + (h & 0x7f)), std::uint8_t(64 + ((h >> 8) & 0x7f)),
-            std::uint8_t(64 + ((h >> 16) & 0x7f))};
-}
-
 // "wrote ..." lines go to `log`, printed once the command's OutputSet has committed.
 void writeOutputs(const VoronoiOptions& o, const jfa::Grid& g, const jfa::ExactField& exact,
                   const std::vector<std::uint8_t>& errors, const jfa::NearestSite& crit,
@@ -219,7 +212,7 @@ void writeOutputs(const VoronoiOptions& o, const jfa::Grid& g, const jfa::ExactF
             const size_t src = size_t(y) * size_t(w) + size_t(x);
             const size_t dst = size_t(h - 1 - y) * size_t(w) + size_t(x); // files: top row first
             const jfa::Cell& c = g.cells[src];
-            auto rgb = colourOf(c.z);
+            auto rgb = regionColour(std::int64_t(std::max(c.z, 0.0f)));
             if (errors[src]) rgb = {255, 0, 0};
             if (!crit.empty(c) && jfa::pixelOf(c.x) == x && jfa::pixelOf(c.y) == y) rgb = {0, 0, 0};
             for (int k = 0; k < 3; ++k) pic.data[dst * 4 + size_t(k)] = rgb[size_t(k)];

@@ -1,5 +1,6 @@
-// floodlight: soft shadows and jump flooding. Subcommands: render, view, make-scene; with no
-// arguments, a window on the default scene when a display exists, else a headless render.
+// floodlight: soft shadows and jump flooding. Subcommands: render, view, make-scene, voronoi,
+// voronoi3d, delaunay, compare, capture; with no arguments, a window on the default scene when a
+// display exists, else a headless render.
 
 #include "Commands.h"
 
@@ -21,6 +22,7 @@ int main(int argc, char** argv) {
     const Runner view = addViewCommand(app);
     const Runner makeScene = addMakeSceneCommand(app);
     const Runner voronoi = addVoronoiCommand(app);
+    const Runner voronoi3d = addVoronoi3dCommand(app);
     const Runner delaunay = addDelaunayCommand(app);
     const Runner compare = addCompareCommand(app);
     const Runner capture = addCaptureCommand(app);
@@ -35,6 +37,7 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("view")) return view();
         if (app.got_subcommand("make-scene")) return makeScene();
         if (app.got_subcommand("voronoi")) return voronoi();
+        if (app.got_subcommand("voronoi3d")) return voronoi3d();
         if (app.got_subcommand("delaunay")) return delaunay();
         if (app.got_subcommand("compare")) return compare();
         if (app.got_subcommand("capture")) return capture();

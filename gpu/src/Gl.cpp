@@ -24,6 +24,13 @@ GLuint newTexture2D() {
     return id;
 }
 
+GLuint newTexture3D() {
+    GLuint id = 0;
+    glCreateTextures(GL_TEXTURE_3D, 1, &id);
+    noteCreated(ObjectKind::Texture, id);
+    return id;
+}
+
 } // namespace
 
 Buffer::Buffer(GLsizeiptr bytes, const void* data, GLbitfield flags)
@@ -43,6 +50,14 @@ void Texture::setSampling(GLenum minFilter, GLenum magFilter, GLenum wrap) {
     glTextureParameteri(id(), GL_TEXTURE_MAG_FILTER, static_cast<GLint>(magFilter));
     glTextureParameteri(id(), GL_TEXTURE_WRAP_S, static_cast<GLint>(wrap));
     glTextureParameteri(id(), GL_TEXTURE_WRAP_T, static_cast<GLint>(wrap));
+}
+
+Texture3D::Texture3D(GLenum internalFormat, int width, int height, int depth)
+    : Handle(newTexture3D()), width_(width), height_(height), depth_(depth),
+      format_(internalFormat) {
+    glTextureStorage3D(id(), 1, internalFormat, width, height, depth);
+    glTextureParameteri(id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
 }
 
 Framebuffer Framebuffer::create() {
@@ -222,6 +237,12 @@ std::int64_t textureBytes(const Texture& texture) {
 int maxTextureSize() {
     GLint size = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &size);
+    return size;
+}
+
+int max3dTextureSize() {
+    GLint size = 0;
+    glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &size);
     return size;
 }
 

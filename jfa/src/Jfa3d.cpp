@@ -212,19 +212,25 @@ Plan plan3d(std::string_view spec, Extent3 extent) {
     return plan;
 }
 
+SiteGrid3 seedGrid3d(const std::vector<Site3>& sites, Extent3 extent) {
+    checkSites(sites, extent);
+    SiteGrid3 grid(extent);
+    for (std::size_t i = 0; i < sites.size(); ++i) { // distance 0: ties by id then index
+        const Site3& s = sites[i];
+        std::int32_t& cell = grid.cells[grid.index(s.x, s.y, s.z)];
+        if (cell == kNoSite || tieLess(sites.data(), std::int32_t(i), cell)) cell = std::int32_t(i);
+    }
+    return grid;
+}
+
 SiteGrid3 flood3d(const std::vector<Site3>& sites, Extent3 extent, const Plan& plan, int threads) {
     checkSites(sites, extent);
     if (plan.stages().size() != 1) {
         throw std::invalid_argument(
             fl::cat("3D flooding runs single-stage plans only, not ", plan.describe()));
     }
-    SiteGrid3 grid(extent);
+    SiteGrid3 grid = seedGrid3d(sites, extent);
     Cells& a = grid.cells;
-    for (std::size_t i = 0; i < sites.size(); ++i) { // seed: distance 0, ties by id then index
-        const Site3& s = sites[i];
-        std::int32_t& cell = a[grid.index(s.x, s.y, s.z)];
-        if (cell == kNoSite || tieLess(sites.data(), std::int32_t(i), cell)) cell = std::int32_t(i);
-    }
     const Stage& stage = plan.stages().front();
     const int rows = extent.height * extent.depth;
     const int threadCount = poolSize(threads);
@@ -313,6 +319,20 @@ std::vector<std::int32_t> projectSites(const std::vector<Site3>& sites, Extent3 
     return projectChecked(sites, extent, slice);
 }
 
+SiteGrid3 projectedSeeds3d(const std::vector<Site3>& sites, Extent3 extent, int threads) {
+    checkSites(sites, extent);
+    SiteGrid3 grid(extent);
+    const std::size_t sliceSize = std::size_t(extent.width) * std::size_t(extent.height);
+    fl::parallelRows(extent.depth, poolSize(threads), [&](int begin, int end, int) {
+        for (int z = begin; z < end; ++z) {
+            const Cells slice = projectChecked(sites, extent, z);
+            std::copy(slice.begin(), slice.end(),
+                      grid.cells.begin() + std::ptrdiff_t(std::size_t(z) * sliceSize));
+        }
+    });
+    return grid;
+}
+
 std::vector<std::int32_t> floodSlice(const std::vector<Site3>& sites, Extent3 extent, int slice,
                                      const Plan& plan) {
     checkSites(sites, extent);
@@ -338,13 +358,53 @@ SiteGrid3 floodSliceBySlice(const std::vector<Site3>& sites, Extent3 extent, con
     return grid;
 }
 
+// ---- variants ----------------------------------------------------------------------------------
+
+const std::vector<Flood3dVariant>& flood3dVariants() {
+    static const std::vector<Flood3dVariant> variants{
+        {"jfa", "jfa", Flood3dShape::Volume, "3D JFA"},
+        {"jfa+1", "jfa+1", Flood3dShape::Volume, "3D JFA+1"},
+        {"jfa+2", "jfa+2", Flood3dShape::Volume, "3D JFA+2"},
+        {"jfa2", "jfa2", Flood3dShape::Volume, "3D JFA^2"},
+        {"slices", "jfa", Flood3dShape::Slices, "slice JFA"},
+        {"slices-1+jfa", "1+jfa", Flood3dShape::Slices, "slice 1+JFA"},
+    };
+    return variants;
+}
+
+const Flood3dVariant* findFlood3dVariant(std::string_view name) {
+    for (const Flood3dVariant& v : flood3dVariants())
+        if (name == v.name) return &v;
+    return nullptr;
+}
+
+Plan variantPlan(const Flood3dVariant& variant, Extent3 extent) {
+    if (variant.shape == Flood3dShape::Volume) return plan3d(variant.plan, extent);
+    checkExtent(extent);
+    return parsePlan(variant.plan, extent.width, extent.height);
+}
+
+SiteGrid3 startGrid3d(const std::vector<Site3>& sites, Extent3 extent, Flood3dShape shape,
+                      int threads) {
+    return shape == Flood3dShape::Volume ? seedGrid3d(sites, extent)
+                                         : projectedSeeds3d(sites, extent, threads);
+}
+
+SiteGrid3 floodVariant3d(const Flood3dVariant& variant, const std::vector<Site3>& sites,
+                         Extent3 extent, int threads) {
+    const Plan plan = variantPlan(variant, extent);
+    return variant.shape == Flood3dShape::Volume ? flood3d(sites, extent, plan, threads)
+                                                 : floodSliceBySlice(sites, extent, plan, threads);
+}
+
 // ---- errors and the experiment -----------------------------------------------------------------
 
 std::string ErrorCount3d::describe() const {
     std::string text =
         fl::cat(method, " on ", extentText(extent), ", ", sites,
-                sites == 1 ? " site: " : " sites: ", erroneous, " erroneous voxels of ", voxels,
-                " (", percentText(voxels > 0 ? double(erroneous) / double(voxels) : 0.0), ")");
+                sites == 1 ? " site: " : " sites: ", erroneous,
+                erroneous == 1 ? " error voxel of " : " error voxels of ", voxels, " (",
+                percentText(voxels > 0 ? double(erroneous) / double(voxels) : 0.0), ")");
     if (empty > 0) text += fl::cat(", ", empty, " without a site");
     return text;
 }

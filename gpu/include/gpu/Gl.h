@@ -104,6 +104,25 @@ class Texture : public Handle<detail::TextureDeleter> {
     GLenum format_ = 0;
 };
 
+/// A 3D texture with immutable storage, one level (volumes written by compute passes, e.g. the
+/// 3D jump flood's image3D ping-pong pair).
+class Texture3D : public Handle<detail::TextureDeleter> {
+  public:
+    Texture3D() = default;
+    /// Allocates width x height x depth texels of `internalFormat` (GL_TEXTURE_3D), NEAREST.
+    Texture3D(GLenum internalFormat, int width, int height, int depth);
+    [[nodiscard]] int width() const { return width_; }
+    [[nodiscard]] int height() const { return height_; }
+    [[nodiscard]] int depth() const { return depth_; }
+    [[nodiscard]] GLenum format() const { return format_; }
+
+  private:
+    int width_ = 0;
+    int height_ = 0;
+    int depth_ = 0;
+    GLenum format_ = 0;
+};
+
 /// A framebuffer object; attach textures, then check() it.
 class Framebuffer : public Handle<detail::FramebufferDeleter> {
   public:
@@ -173,6 +192,8 @@ std::int64_t texelBytes(GLenum internalFormat);
 std::int64_t textureBytes(const Texture& texture);
 /// GL_MAX_TEXTURE_SIZE of the current context: the largest side a frame or map can have here.
 int maxTextureSize();
+/// GL_MAX_3D_TEXTURE_SIZE of the current context: the largest side of a 3D texture here.
+int max3dTextureSize();
 /// Throws std::invalid_argument naming `what`, its size and this driver's largest texture side
 /// when `width` or `height` exceeds maxTextureSize().
 void checkTextureSize(const std::string& what, int width, int height);

@@ -78,6 +78,9 @@ struct SiteGrid3 {
 /// The 3D step plan for `spec` (jfa, jfa+1, jfa+2, jfa2, 1+jfa, doubling, flood, ...): parsePlan
 /// for an n x n grid, n = max(W, H, D); throws std::invalid_argument for half-resolution plans.
 Plan plan3d(std::string_view spec, Extent3 extent);
+/// The grid a 3D flood starts from: each site at its voxel (two sites on one voxel: ties as
+/// above), kNoSite elsewhere. Throws std::invalid_argument on bad sites or extents.
+SiteGrid3 seedGrid3d(const std::vector<Site3>& sites, Extent3 extent);
 /// Runs the passes of a single-stage `plan` on the 3D grid seeded with `sites`; threads <= 0
 /// means one per hardware thread. Throws std::invalid_argument on bad sites, extents or plans.
 SiteGrid3 flood3d(const std::vector<Site3>& sites, Extent3 extent, const Plan& plan,
@@ -100,6 +103,9 @@ std::vector<std::int64_t> recordedSquaredDistances(const SiteGrid3& grid,
 /// Site indices projected onto slice z = `slice` (W x H, row-major): per pixel the site nearest
 /// to the slice (|site.z - slice| smallest; ties as above), or kNoSite.
 std::vector<std::int32_t> projectSites(const std::vector<Site3>& sites, Extent3 extent, int slice);
+/// projectSites for every slice at once (threads over slices): the grid the slice-by-slice
+/// variant starts from, slice z of it = projectSites(sites, extent, z).
+SiteGrid3 projectedSeeds3d(const std::vector<Site3>& sites, Extent3 extent, int threads = 0);
 /// Floods one slice with a 2D `plan` for W x H from the projected sites, comparing candidates by
 /// their full 3D distance to (x, y, slice); returns W x H site indices.
 std::vector<std::int32_t> floodSlice(const std::vector<Site3>& sites, Extent3 extent, int slice,
@@ -108,6 +114,32 @@ std::vector<std::int32_t> floodSlice(const std::vector<Site3>& sites, Extent3 ex
 SiteGrid3 floodSliceBySlice(const std::vector<Site3>& sites, Extent3 extent, const Plan& plan,
                             int threads = 0);
 
+// ---- variants ----------------------------------------------------------------------------------
+
+/// Which neighbours a pass reads: the 27 of 3D JFA, or the 9 of the voxel's own slice.
+enum class Flood3dShape { Volume, Slices };
+
+/// One 3D Voronoi variant: a plan and the shape its passes have (`voronoi3d --variant`, the GL
+/// kernel's test and the benchmark read this one table).
+struct Flood3dVariant {
+    const char* name;   // e.g. "jfa", "slices"
+    const char* plan;   // plan spec (plan3d for Volume, parsePlan for the W x H slice)
+    Flood3dShape shape; // 3D passes or slice by slice
+    const char* label;  // e.g. "3D JFA", "slice 1+JFA" (thesis Fig. 4.16 / 4.17)
+};
+/// Every variant: 3D jfa, jfa+1, jfa+2, jfa2 (Fig. 4.16) and slice jfa, 1+jfa (Fig. 4.17).
+const std::vector<Flood3dVariant>& flood3dVariants();
+/// The variant called `name`, or nullptr.
+const Flood3dVariant* findFlood3dVariant(std::string_view name);
+/// The variant's plan for `extent` (throws std::invalid_argument on a bad extent).
+Plan variantPlan(const Flood3dVariant& variant, Extent3 extent);
+/// The grid a flood of `shape` starts from: seedGrid3d, or projectedSeeds3d for Slices.
+SiteGrid3 startGrid3d(const std::vector<Site3>& sites, Extent3 extent, Flood3dShape shape,
+                      int threads = 0);
+/// The CPU flood of `variant`: flood3d or floodSliceBySlice with its plan.
+SiteGrid3 floodVariant3d(const Flood3dVariant& variant, const std::vector<Site3>& sites,
+                         Extent3 extent, int threads = 0);
+
 // ---- errors and the experiment -----------------------------------------------------------------
 
 /// Erroneous voxels of one result against the exact diagram.
@@ -115,10 +147,10 @@ struct ErrorCount3d {
     std::string method;         // e.g. "3D JFA", "slice 1+JFA"
     Extent3 extent;             // grid size
     std::size_t sites = 0;      // number of sites
-    std::int64_t erroneous = 0; // voxels whose recorded distance exceeds the exact one
+    std::int64_t erroneous = 0; // error voxels: recorded distance exceeds the exact one
     std::int64_t empty = 0;     // voxels with no site at all (also counted as erroneous)
     std::int64_t voxels = 0;    // voxels in the grid
-    /// One line, e.g. "3D JFA on 64x64x64, 1000 sites: 37 erroneous voxels of 262144 (0.0141%)".
+    /// One line, e.g. "3D JFA on 64x64x64, 1000 sites: 37 error voxels of 262144 (0.0141%)".
     [[nodiscard]] std::string describe() const;
 };
 
