@@ -446,6 +446,8 @@ RenderSettings referenceSettings(const CaptureScript& script, RenderSettings bas
         base.options.set(mapSize->flag, script.reference.mapSize);
     if (const MethodOption* pattern = truth.option("pattern"))
         base.options.set(pattern->flag, script.reference.pattern);
+    if (const MethodOption* offset = truth.option("terminatorOffset"))
+        base.options.set(offset->flag, script.reference.terminatorOffset);
     return base;
 }
 

@@ -118,6 +118,8 @@ nlohmann::json resultsSummary(const CaptureResults& r) {
                       {"medianFrameMs", fl::median(r.referenceFrameMs)}};
     if (s.reference.method().option("mapSize")) j["reference"]["mapSize"] = s.reference.mapSize;
     if (s.reference.method().option("pattern")) j["reference"]["pattern"] = s.reference.pattern;
+    if (s.reference.method().option("terminatorOffset"))
+        j["reference"]["terminatorOffset"] = s.reference.terminatorOffset;
     j["definitions"] = {
         {"receivers", "the pixels counted: visible surfaces facing the light (N.L > 0), where the "
                       "visibility changes the image"},

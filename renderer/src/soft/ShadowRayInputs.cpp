@@ -6,6 +6,7 @@
 #include <base/Text.h>
 
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -52,6 +53,12 @@ rt::Triangles worldTriangles(const Scene& scene) {
                                                     rt::kMaxCoordinate, ")"));
             t.vertices.push_back(p);
         }
+        // The normals as the vertex stage turns them (the rest pose's inverse transpose); a mesh
+        // built without them gets zero, which the offset reads as none.
+        const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(inst.world)));
+        for (std::size_t v = 0; v < m.positions.size(); ++v)
+            t.normals.push_back(v < m.normals.size() ? glm::normalize(normalMatrix * m.normals[v])
+                                                     : glm::vec3(0.0f));
         for (std::uint32_t i : m.indices) t.indices.push_back(base + i);
     }
     if (test->coverage.any())
@@ -61,11 +68,14 @@ rt::Triangles worldTriangles(const Scene& scene) {
     return t;
 }
 
-std::vector<glm::vec3> worldVertices(const Scene& scene, const Pose& pose) {
-    std::vector<glm::vec3> out, posed;
+std::vector<glm::vec3> worldVertices(const Scene& scene, const Pose& pose,
+                                     std::vector<glm::vec3>* normals) {
+    std::vector<glm::vec3> out, posed, posedNormals;
+    if (normals) normals->clear();
     for (std::size_t i = 0; i < scene.instances.size(); ++i) {
-        posedVertices(scene, pose, i, posed);
+        posedVertices(scene, pose, i, posed, normals ? &posedNormals : nullptr);
         out.insert(out.end(), posed.begin(), posed.end());
+        if (normals) normals->insert(normals->end(), posedNormals.begin(), posedNormals.end());
     }
     return out;
 }
