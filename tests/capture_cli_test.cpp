@@ -247,9 +247,27 @@ TEST(CaptureRun, TheRayTracedReferenceIsUsedAndNamed) {
             EXPECT_EQ(m["rmse"].get<double>(), 0.0);
         else
             EXPECT_GT(m["rmse"].get<double>(), 0.0);
+        // Acne and peter-panning, shares in [0, 1]; none for the reference itself.
+        for (const char* key : {"acne", "peterPanning"}) {
+            ASSERT_TRUE(m.contains(key)) << key;
+            EXPECT_GE(m[key].get<double>(), 0.0);
+            EXPECT_LE(m[key].get<double>(), 1.0);
+            if (m["method"] == "raytrace") {
+                EXPECT_EQ(m[key].get<double>(), 0.0) << key;
+            }
+        }
     }
+    EXPECT_TRUE(summary["definitions"].contains("acne"));
+    EXPECT_TRUE(summary["definitions"].contains("peterPanning"));
+    const std::string csv = fileContents(dir / "frames.csv");
+    const std::string header = csv.substr(0, csv.find('\n'));
+    for (const char* column :
+         {"acne_percent", "acne_candidates", "peter_panning_percent", "peter_panning_candidates"})
+        EXPECT_NE(header.find(column), std::string::npos) << column;
     const std::string report = fileContents(dir / "report.html");
     EXPECT_NE(report.find("raytrace: 16 shadow rays per pixel (Embree)"), std::string::npos);
+    EXPECT_NE(report.find("<th>acne %</th><th>peter-panning %</th>"), std::string::npos);
+    EXPECT_NE(r.output.find("acne%"), std::string::npos) << r.output;
 }
 
 void expectCleanFailure(const Outcome& r, const std::string& named, const fs::path& out) {

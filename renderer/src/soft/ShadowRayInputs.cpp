@@ -103,4 +103,26 @@ std::vector<rt::Receiver> surfaceReceivers(const SurfacesPass::Outputs& surfaces
     return receivers;
 }
 
+SurfaceGeometry surfaceGeometry(const SurfacesPass::Outputs& surfaces, const CameraView& camera) {
+    const int w = surfaces.width, h = surfaces.height;
+    const std::vector<rt::Receiver> receivers = surfaceReceivers(surfaces); // GL's row order
+    SurfaceGeometry g;
+    g.positions = {w, h, 4, std::vector<float>(receivers.size() * 4, 0.0f)};
+    g.planes = g.positions;
+    g.receivers = readTexture(surfaces.receivers, 1);
+    g.eye = camera.eye;
+    g.pixelAngle = 2.0f / (camera.proj[1][1] * static_cast<float>(h)); // 2 tan(fovy/2) / h
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const rt::Receiver& r = receivers[static_cast<std::size_t>(h - 1 - y) * w + x];
+            const std::size_t i = (static_cast<std::size_t>(y) * w + x) * 4;
+            for (int c = 0; c < 3; ++c) {
+                g.positions.data[i + c] = r.position[c];
+                g.planes.data[i + c] = r.normal[c];
+            }
+            g.positions.data[i + 3] = r.valid ? 1.0f : 0.0f;
+        }
+    return g;
+}
+
 } // namespace fl

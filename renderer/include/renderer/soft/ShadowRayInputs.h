@@ -4,6 +4,7 @@
 // the `raytrace` method and the benchmarks that measure it.
 
 #include <raytrace/ShadowRays.h>
+#include <renderer/metrics/BiasArtifacts.h>
 #include <renderer/passes/SurfacesPass.h>
 #include <renderer/scene/Pose.h>
 #include <renderer/scene/Scene.h>
@@ -28,5 +29,10 @@ std::vector<glm::vec3> worldVertices(const Scene& scene, const Pose& pose,
 /// position, the triangle's plane turned to the side the eye sees (by the shading normal), and
 /// valid where a surface was drawn. Reads the targets back (the context must be current).
 std::vector<rt::Receiver> surfaceReceivers(const SurfacesPass::Outputs& surfaces);
+
+/// The same surfaces as the acne and peter-panning figures read them (metrics/BiasArtifacts.h):
+/// positions, the receivers' planes and the receiver mask, row 0 at the top, and `camera`'s eye
+/// and pixel size. Reads the targets back (the context must be current).
+SurfaceGeometry surfaceGeometry(const SurfacesPass::Outputs& surfaces, const CameraView& camera);
 
 } // namespace fl
