@@ -207,10 +207,6 @@ bool RayScene::occluded(glm::vec3 from, glm::vec3 to) const {
     return ray.tfar < 0.0f; // Embree sets tfar to -inf on a hit
 }
 
-bool RayScene::hasNormals() const {
-    return !e_->normals.empty();
-}
-
 std::optional<SmoothPoint> RayScene::smoothSurface(glm::vec3 eye, glm::vec3 point,
                                                    glm::vec3 side) const {
     if (e_->normals.empty()) return std::nullopt;

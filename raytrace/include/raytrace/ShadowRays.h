@@ -77,7 +77,6 @@ class RayScene {
     /// no triangle lies there or the triangle is flat.
     [[nodiscard]] std::optional<SmoothPoint> smoothSurface(glm::vec3 eye, glm::vec3 point,
                                                            glm::vec3 side) const;
-    [[nodiscard]] bool hasNormals() const;
     /// The ray offset (see the header comment).
     [[nodiscard]] float epsilon() const { return epsilon_; }
     [[nodiscard]] std::size_t triangleCount() const { return triangleCount_; }
