@@ -40,6 +40,7 @@ int main(int argc, char** argv) {
         referenceMap = 2048, raySamples = 256;
     float radius = 1.5f;
     bool samplingError = false;
+    std::string terminatorOffset = "on";
     app.add_option("--size", size, "Frame width and height")->capture_default_str();
     app.add_option("--shadow-map-size", shadowMap)->capture_default_str();
     app.add_option("--light-radius", radius)->capture_default_str();
@@ -55,6 +56,11 @@ int main(int argc, char** argv) {
     app.add_option("--reference-map-size", referenceMap)->capture_default_str();
     app.add_option("--raytrace-samples", raySamples, "Shadow rays per pixel of the exact truth")
         ->check(CLI::Range(1, 16384))
+        ->capture_default_str();
+    app.add_option("--terminator-offset", terminatorOffset,
+                   "The ray-traced truth's rays leave the smooth surface (on) or the flat "
+                   "triangle (off)")
+        ->check(CLI::IsMember({"on", "off"}))
         ->capture_default_str();
     app.add_flag("--sampling-error", samplingError,
                  "Also render the ground truth with 2N samples and report N vs 2N");
@@ -74,6 +80,7 @@ int main(int argc, char** argv) {
             s.options.set("--reference-samples", samples);
             s.options.set("--reference-map-size", referenceMap);
             s.options.set("--raytrace-samples", raySamples);
+            s.options.set("--terminator-offset", terminatorOffset);
             if (!flag.empty()) s.options.set(flag, value);
             Entry e{std::move(label), s, std::make_unique<fl::Renderer>(shaders, scene, s), {}};
             e.renderer->resize(size, size);
@@ -145,13 +152,13 @@ int main(int argc, char** argv) {
 
         const double hardMedian = lanes.front().times.medianFrameMs();
         std::printf("default scene %dx%d, map %dx%d, light radius %.2f; ground truths: maps N=%d "
-                    "at %dx%d, raytrace N=%d\n",
+                    "at %dx%d, raytrace N=%d (terminator offset %s)\n",
                     size, size, shadowMap, shadowMap, static_cast<double>(radius), samples,
-                    referenceMap, referenceMap, raySamples);
-        // Where the two ground truths differ: receivers (the smooth shading normal faces the
-        // light) whose triangle faces away from the light's centre ("terminator": the ray
-        // tracer's rays leave the flat triangle, which blocks them; shadow maps light it through
-        // their depth bias), and the rest.
+                    referenceMap, referenceMap, raySamples, terminatorOffset.c_str());
+        // Where the two ground truths differed most: receivers (the smooth shading normal faces
+        // the light) whose triangle faces away from the light's centre ("terminator": with
+        // --terminator-offset off the ray tracer's rays leave the flat triangle, which blocks
+        // them; shadow maps light it through their depth bias), and the rest.
         fl::FloatImage terminator = mask, facing = mask;
         {
             // The ray tracer's own receivers (GL row order; the images here are top row first).

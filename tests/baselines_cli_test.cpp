@@ -32,7 +32,9 @@ TEST(BaselinesCli, EachBaselineRendersWithItsPhases) {
           Case{"--method pcss --pcss-preset 32/64 --shadow-map tsm", "blocker search+filter"},
           Case{"--method reference --reference-samples 4 --reference-map-size 256",
                "reference maps"},
-          Case{"--method raytrace --raytrace-samples 4", "raytrace rays"}}) {
+          Case{"--method raytrace --raytrace-samples 4", "raytrace rays"},
+          Case{"--method raytrace --raytrace-samples 4 --terminator-offset off",
+               "raytrace rays"}}) {
         const Outcome r =
             run(std::string("render --width 64 --height 48 --shadow-map-size 256 ") +
                 "--light-radius 1.5 " + c.args + " --out " + dir.string() + " --name f");
@@ -51,13 +53,16 @@ TEST(BaselinesCli, BadBaselineOptionsAreUsageErrors) {
          {"--pcf-kernel 0", "--pcf-kernel 16", "--pcf-kernel x", "--pcss-preset 8/8",
           "--pcss-preset 16", "--reference-samples 0", "--reference-samples -3",
           "--reference-map-size 8", "--reference-map-size 100000", "--raytrace-samples 0",
-          "--raytrace-samples 16385", "--raytrace-samples many"}) {
+          "--raytrace-samples 16385", "--raytrace-samples many", "--terminator-offset maybe",
+          "--terminator-offset 1"}) {
         // Each with its own method (an option of another method is a usage error by itself).
         const std::string a(args);
-        const std::string method = a.find("pcf") != std::string::npos        ? "pcf"
-                                   : a.find("pcss") != std::string::npos     ? "pcss"
-                                   : a.find("raytrace") != std::string::npos ? "raytrace"
-                                                                             : "reference";
+        const std::string method =
+            a.find("pcf") != std::string::npos    ? "pcf"
+            : a.find("pcss") != std::string::npos ? "pcss"
+            : a.find("raytrace") != std::string::npos || a.find("terminator") != std::string::npos
+                ? "raytrace"
+                : "reference";
         const Outcome r = run("render --method " + method + " " + a + " --out " +
                               outputDir("cli_baselines").string());
         EXPECT_EQ(r.code, 2) << args << "\n" << r.output;

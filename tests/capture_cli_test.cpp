@@ -184,6 +184,31 @@ Outcome tinyCapture(const std::string& name, const std::string& fields) {
                    dir);
 }
 
+// The script's terminator offset reaches the ray tracer: the reference without it is the entry
+// without it, and the default view's low-poly objects make the two differ at their terminator.
+// (An entry is the reference itself when every option it gives has the reference's value, so
+// the "on" entry says so.)
+TEST(CaptureRun, TheRayTracedReferenceTakesTheTerminatorOffset) {
+    const fs::path dir = outputDir("capture_terminator");
+    fs::remove_all(dir);
+    const Outcome r = capture(
+        scriptFile("capture_terminator.json",
+                   R"({"camera": {"frames": 1, "path": "default"}, "resolutions": [[64, 64]],
+                       "reference": {"kind": "raytrace", "samples": 16, "terminatorOffset": "off"},
+                       "methods": [{"method": "raytrace", "samples": 16,
+                                    "terminatorOffset": "on", "label": "on"},
+                                   {"method": "raytrace", "samples": 16,
+                                    "terminatorOffset": "off", "label": "off"}]})"),
+        dir);
+    ASSERT_EQ(r.code, 0) << r.output;
+    const nlohmann::json summary = nlohmann::json::parse(fileContents(dir / "summary.json"));
+    EXPECT_EQ(summary["reference"]["terminatorOffset"], "off");
+    std::map<std::string, double> rmse;
+    for (const auto& m : summary["methods"]) rmse[m["label"]] = m["rmse"].get<double>();
+    EXPECT_EQ(rmse.at("off"), 0.0);
+    EXPECT_GT(rmse.at("on"), 0.0);
+}
+
 // The bug: an entry of the reference's method with other options ({"method": "reference",
 // "mapSize": 512} beside a 256² reference) was taken for the reference itself and scored 0.
 TEST(CaptureRun, AnEntryOfTheReferencesMethodWithOtherOptionsIsAMethodOfItsOwn) {
@@ -215,15 +240,34 @@ TEST(CaptureRun, TheRayTracedReferenceIsUsedAndNamed) {
     EXPECT_EQ(summary["reference"]["kind"], "raytrace");
     EXPECT_EQ(summary["reference"]["method"], "raytrace");
     EXPECT_FALSE(summary["reference"].contains("mapSize"));
+    EXPECT_EQ(summary["reference"]["terminatorOffset"], "on");
     for (const auto& m : summary["methods"]) {
         // The raytrace entry is the reference against itself; hard is not.
         if (m["method"] == "raytrace")
             EXPECT_EQ(m["rmse"].get<double>(), 0.0);
         else
             EXPECT_GT(m["rmse"].get<double>(), 0.0);
+        // Acne and peter-panning, shares in [0, 1]; none for the reference itself.
+        for (const char* key : {"acne", "peterPanning"}) {
+            ASSERT_TRUE(m.contains(key)) << key;
+            EXPECT_GE(m[key].get<double>(), 0.0);
+            EXPECT_LE(m[key].get<double>(), 1.0);
+            if (m["method"] == "raytrace") {
+                EXPECT_EQ(m[key].get<double>(), 0.0) << key;
+            }
+        }
     }
+    EXPECT_TRUE(summary["definitions"].contains("acne"));
+    EXPECT_TRUE(summary["definitions"].contains("peterPanning"));
+    const std::string csv = fileContents(dir / "frames.csv");
+    const std::string header = csv.substr(0, csv.find('\n'));
+    for (const char* column :
+         {"acne_percent", "acne_candidates", "peter_panning_percent", "peter_panning_candidates"})
+        EXPECT_NE(header.find(column), std::string::npos) << column;
     const std::string report = fileContents(dir / "report.html");
     EXPECT_NE(report.find("raytrace: 16 shadow rays per pixel (Embree)"), std::string::npos);
+    EXPECT_NE(report.find("<th>acne %</th><th>peter-panning %</th>"), std::string::npos);
+    EXPECT_NE(r.output.find("acne%"), std::string::npos) << r.output;
 }
 
 void expectCleanFailure(const Outcome& r, const std::string& named, const fs::path& out) {

@@ -116,6 +116,11 @@ TEST(CaptureScript, TheReferenceIsChosenByKind) {
     const CaptureScript grid = parse(script(R"(, "reference": {"pattern": "grid"})"));
     EXPECT_EQ(grid.reference.pattern, "grid");
     EXPECT_EQ(referenceText(grid.reference), "maps: 256 point-light shadow maps of 2048^2 (grid)");
+    // The ray tracer's terminator offset: on unless the script says off.
+    EXPECT_EQ(rays.reference.terminatorOffset, "on");
+    EXPECT_EQ(parse(script(R"(, "reference": {"kind": "raytrace", "terminatorOffset": "off"})"))
+                  .reference.terminatorOffset,
+              "off");
     // The default is the shadow-map ground truth (the faster one on this machine).
     EXPECT_EQ(parse(script()).reference.kind, "maps");
 }
@@ -183,6 +188,9 @@ TEST(CaptureScript, EveryMalformedFieldIsNamed) {
         {script(R"(, "reference": {"pattern": 3})"), "reference.pattern"},
         {script(R"(, "reference": {"kind": "raytrace", "pattern": "grid"})"), "reference.pattern"},
         {script(R"(, "reference": {"kind": "raytrace", "samples": 100000})"), "reference.samples"},
+        {script(R"(, "reference": {"kind": "raytrace", "terminatorOffset": "maybe"})"),
+         "reference.terminatorOffset"},
+        {script(R"(, "reference": {"terminatorOffset": "off"})"), "reference.terminatorOffset"},
         {script(R"(, "saveFrames": "yes")"), "saveFrames"},
         {script(R"(, "ground": "maybe")"), "ground"},
         {script(R"(, "ground": true)"), "ground"},

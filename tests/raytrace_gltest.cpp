@@ -49,6 +49,23 @@ TEST_F(RayTraceMethodTest, EveryClosedFormCaseMatchesThroughTheRenderer) {
     }
 }
 
+TEST_F(RayTraceMethodTest, TheTerminatorOffsetLeavesTheClosedFormCasesAsTheyWere) {
+    // Their ground and occluders are flat (every vertex normal the face's): the rays leave the
+    // same points with the offset on (the default) as off, bit for bit.
+    for (const ClosedFormCase& c : closedFormCases()) {
+        SCOPED_TRACE(c.name);
+        RenderSettings settings;
+        settings.shadow.size = 256;
+        settings.method = "raytrace";
+        settings.options.set("--raytrace-samples", 16);
+        const ClosedFormFrame on = renderClosedForm(gl::ShaderLibrary{}, c, settings, 64);
+        settings.options.set("--terminator-offset", "off");
+        const ClosedFormFrame off = renderClosedForm(gl::ShaderLibrary{}, c, settings, 64);
+        ASSERT_GT(on.error.penumbra, 20u);
+        EXPECT_EQ(on.visibility.data, off.visibility.data);
+    }
+}
+
 TEST_F(RayTraceMethodTest, AVertexBeyondEmbreesRangeIsRefusedNamingTheNode) {
     ClosedFormCase v = straightEdgeCase(1.0f, 5.0f, 1.0f, 0.0f);
     // The box's node scaled so far that its vertices leave float's useful range for a BVH (the

@@ -305,7 +305,9 @@ int captureSize(const CaptureSetup& c, const SizeRun& at, FrameRunner& runner,
         .readBehind = c.threads > 0,
         .clip = timeAxis(script, c.scene),
         // The reference's motion reprojects every method's flicker (FrameScorer::score).
-        .motionLane = 0};
+        .motionLane = 0,
+        // And its surfaces say where acne and peter-panning can show (FrameScorer::score).
+        .biasMasks = true};
     const FrameJob frameJob{script,   lanes,   laneOf, laneDirs, scorer,
                             progress, results, first,  at.index};
     // Declared after everything its tasks use: it finishes them before those go.
@@ -447,6 +449,8 @@ RenderSettings referenceSettings(const CaptureScript& script, RenderSettings bas
         base.options.set(mapSize->flag, script.reference.mapSize);
     if (const MethodOption* pattern = truth.option("pattern"))
         base.options.set(pattern->flag, script.reference.pattern);
+    if (const MethodOption* offset = truth.option("terminatorOffset"))
+        base.options.set(offset->flag, script.reference.terminatorOffset);
     return base;
 }
 

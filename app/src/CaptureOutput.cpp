@@ -69,6 +69,9 @@ CsvTable resultsCsv(const CaptureResults& r) {
                                         "jfa_passes",
                                         "active_share"};
     for (const std::string& p : phases) columns.push_back(csvName(p) + "_ms");
+    for (const char* c :
+         {"acne_percent", "acne_candidates", "peter_panning_percent", "peter_panning_candidates"})
+        columns.push_back(c);
     CsvTable csv(columns);
     for (const MethodRun& m : r.runs)
         for (std::size_t i = 0; i < m.rows.size(); ++i) {
@@ -95,10 +98,114 @@ CsvTable resultsCsv(const CaptureResults& r) {
             else
                 csv.blank().blank();
             for (const std::string& p : phases) csv << m.times.phaseMs(i, p);
+            csv << 100.0 * row.bias.acneShare() << row.bias.acneCandidates
+                << 100.0 * row.bias.peterPanningShare() << row.bias.peterPanningCandidates;
             csv.endRow();
         }
     return csv;
 }
+
+namespace {
+
+// One method's entry of the summary: its frames' metrics pooled, its median times.
+nlohmann::json methodSummary(const MethodRun& m, const std::vector<std::string>& phases,
+                             std::optional<double> hardMs) {
+    double sq = 0.0, sqPen = 0.0, miscl = 0.0, widthErr = 0.0, flick = 0.0, screen = 0.0;
+    double pixels = 0.0, penPixels = 0.0, wm = 0.0, wr = 0.0;
+    int flickN = 0;
+    std::array<double, 4> buckets{};
+    int bucketN = 0;
+    BiasArtifactCounts bias; // pooled over the frames
+    for (const FrameRow& row : m.rows) {
+        const FrameMetrics& f = row.metrics;
+        bias += row.bias;
+        sq += f.sumSquared;
+        sqPen += f.sumSquaredPenumbra;
+        pixels += static_cast<double>(f.pixels);
+        penPixels += static_cast<double>(f.penumbraPixels);
+        miscl += f.misclassified;
+        widthErr += std::abs(f.widthError);
+        wm += f.widthMethod;
+        wr += f.widthReference;
+        if (row.flicker) {
+            flick += *row.flicker;
+            screen += row.screenFlicker.value_or(0.0);
+            ++flickN;
+        }
+        if (row.deltaBuckets) {
+            for (std::size_t k = 0; k < 4; ++k) buckets[k] += (*row.deltaBuckets)[k];
+            ++bucketN;
+        }
+    }
+    const double n = std::max<double>(1.0, static_cast<double>(m.rows.size()));
+    nlohmann::json e;
+    e["label"] = m.label;
+    e["method"] = m.spec.method;
+    e["width"] = m.width;
+    e["height"] = m.height;
+    e["frames"] = m.rows.size();
+    e["rmse"] = pixels > 0 ? std::sqrt(sq / pixels) : 0.0;
+    e["rmsePenumbra"] = penPixels > 0 ? std::sqrt(sqPen / penPixels) : 0.0;
+    e["meanPenumbraPixels"] = penPixels / n;
+    e["misclassifiedPercent"] = 100.0 * miscl / n;
+    e["meanAbsWidthErrorPx"] = widthErr / n;
+    e["meanWidthPx"] = wm / n;
+    e["meanReferenceWidthPx"] = wr / n;
+    e["addedFlicker"] = flickN > 0 ? flick / flickN : 0.0;
+    e["addedFlickerScreen"] = flickN > 0 ? screen / flickN : 0.0;
+    e["acne"] = bias.acneShare();
+    e["peterPanning"] = bias.peterPanningShare();
+    const double frameMs = m.times.medianFrameMs();
+    e["medianFrameMs"] = frameMs;
+    if (hardMs && *hardMs > 0) e["frameTimeOverHard"] = frameMs / *hardMs;
+    nlohmann::json ph = nlohmann::json::object();
+    for (const std::string& p : phases)
+        if (m.times.ran(p)) ph[p] = m.times.medianPhaseMs(p);
+    e["medianPhaseMs"] = ph;
+    if (const std::optional<FloodSample> fl = m.times.medianFlood()) {
+        e["medianJfaPasses"] = fl->passes;
+        e["medianActiveShare"] = fl->activeShare;
+    }
+    e["worstFrame"] = m.worstFrame;
+    e["worstFrameRmse"] = m.worstRmse;
+    if (bucketN > 0) {
+        e["deltaBucketsAgainst"] = m.counterpart;
+        e["meanShareDelta"] = {{"below0.05", buckets[0] / bucketN},
+                               {"0.05to0.1", buckets[1] / bucketN},
+                               {"0.1to0.2", buckets[2] / bucketN},
+                               {"atLeast0.2", buckets[3] / bucketN}};
+    }
+    return e;
+}
+
+// What each figure of the summary means (its "definitions").
+nlohmann::json summaryDefinitions() {
+    return {
+        {"receivers", "the pixels counted: visible surfaces facing the light (N.L > 0), where the "
+                      "visibility changes the image"},
+        {"penumbra", "receivers with reference visibility in (0.02, 0.98)"},
+        {"classes", "umbra <= 0.02, lit >= 0.98, penumbra between"},
+        {"rmse", "pooled over the receivers of all frames"},
+        {"rmsePenumbra", "pooled over the reference's penumbra pixels of all frames"},
+        {"width", "median over receivers with 0.1 <= v <= 0.9 of 0.8 / |grad v|, pixels"},
+        {"addedFlicker", "mean |v_t(p) - v_t-1(reproject(p))| over the receivers whose surface "
+                         "point was a receiver at the same depth in the previous frame, where "
+                         "v_t-1 there is the range its pixels around the point held (a change "
+                         "within it is resampling), of the method minus that of the reference"},
+        {"addedFlickerScreen", "mean |v_t - v_t-1| on the same pixel over receivers in both "
+                               "frames, of the method minus that of the reference (camera "
+                               "motion counts too)"},
+        {"acne", "pooled over the frames: the share of the receivers whose triangle faces the "
+                 "light's centre and whose reference visibility is >= 0.99 that the method "
+                 "darkens by more than 0.1"},
+        {"peterPanning", "pooled over the frames: the share of the receivers in the reference's "
+                         "umbra (<= 0.01) within 3 pixels (Chebyshev) of a contact pixel (a "
+                         "receiver with a neighbour whose surface point rises more than half a "
+                         "pixel footprint off its plane within 3 footprints of it) that the "
+                         "method lights by more than 0.1"}};
+}
+
+} // namespace
 
 nlohmann::json resultsSummary(const CaptureResults& r) {
     const CaptureScript& s = *r.script;
@@ -119,90 +226,15 @@ nlohmann::json resultsSummary(const CaptureResults& r) {
                       {"medianFrameMs", fl::median(r.referenceFrameMs)}};
     if (s.reference.method().option("mapSize")) j["reference"]["mapSize"] = s.reference.mapSize;
     if (s.reference.method().option("pattern")) j["reference"]["pattern"] = s.reference.pattern;
-    j["definitions"] = {
-        {"receivers", "the pixels counted: visible surfaces facing the light (N.L > 0), where the "
-                      "visibility changes the image"},
-        {"penumbra", "receivers with reference visibility in (0.02, 0.98)"},
-        {"classes", "umbra <= 0.02, lit >= 0.98, penumbra between"},
-        {"rmse", "pooled over the receivers of all frames"},
-        {"rmsePenumbra", "pooled over the reference's penumbra pixels of all frames"},
-        {"width", "median over receivers with 0.1 <= v <= 0.9 of 0.8 / |grad v|, pixels"},
-        {"addedFlicker", "mean |v_t(p) - v_t-1(reproject(p))| over the receivers whose surface "
-                         "point was a receiver at the same depth in the previous frame, where "
-                         "v_t-1 there is the range its pixels around the point held (a change "
-                         "within it is resampling), of the method minus that of the reference"},
-        {"addedFlickerScreen", "mean |v_t - v_t-1| on the same pixel over receivers in both "
-                               "frames, of the method minus that of the reference (camera "
-                               "motion counts too)"}};
+    if (s.reference.method().option("terminatorOffset"))
+        j["reference"]["terminatorOffset"] = s.reference.terminatorOffset;
+    j["definitions"] = summaryDefinitions();
     const std::vector<std::string> phases = allPhases(r);
     nlohmann::json methods = nlohmann::json::array();
     std::optional<double> hardMs;
     for (const MethodRun& m : r.runs)
         if (m.spec.method == "hard" && !hardMs) hardMs = m.times.medianFrameMs();
-    for (const MethodRun& m : r.runs) {
-        double sq = 0.0, sqPen = 0.0, miscl = 0.0, widthErr = 0.0, flick = 0.0, screen = 0.0;
-        double pixels = 0.0, penPixels = 0.0, wm = 0.0, wr = 0.0;
-        int flickN = 0;
-        std::array<double, 4> buckets{};
-        int bucketN = 0;
-        for (const FrameRow& row : m.rows) {
-            const FrameMetrics& f = row.metrics;
-            sq += f.sumSquared;
-            sqPen += f.sumSquaredPenumbra;
-            pixels += static_cast<double>(f.pixels);
-            penPixels += static_cast<double>(f.penumbraPixels);
-            miscl += f.misclassified;
-            widthErr += std::abs(f.widthError);
-            wm += f.widthMethod;
-            wr += f.widthReference;
-            if (row.flicker) {
-                flick += *row.flicker;
-                screen += row.screenFlicker.value_or(0.0);
-                ++flickN;
-            }
-            if (row.deltaBuckets) {
-                for (std::size_t k = 0; k < 4; ++k) buckets[k] += (*row.deltaBuckets)[k];
-                ++bucketN;
-            }
-        }
-        const double n = std::max<double>(1.0, static_cast<double>(m.rows.size()));
-        nlohmann::json e;
-        e["label"] = m.label;
-        e["method"] = m.spec.method;
-        e["width"] = m.width;
-        e["height"] = m.height;
-        e["frames"] = m.rows.size();
-        e["rmse"] = pixels > 0 ? std::sqrt(sq / pixels) : 0.0;
-        e["rmsePenumbra"] = penPixels > 0 ? std::sqrt(sqPen / penPixels) : 0.0;
-        e["meanPenumbraPixels"] = penPixels / n;
-        e["misclassifiedPercent"] = 100.0 * miscl / n;
-        e["meanAbsWidthErrorPx"] = widthErr / n;
-        e["meanWidthPx"] = wm / n;
-        e["meanReferenceWidthPx"] = wr / n;
-        e["addedFlicker"] = flickN > 0 ? flick / flickN : 0.0;
-        e["addedFlickerScreen"] = flickN > 0 ? screen / flickN : 0.0;
-        const double frameMs = m.times.medianFrameMs();
-        e["medianFrameMs"] = frameMs;
-        if (hardMs && *hardMs > 0) e["frameTimeOverHard"] = frameMs / *hardMs;
-        nlohmann::json ph = nlohmann::json::object();
-        for (const std::string& p : phases)
-            if (m.times.ran(p)) ph[p] = m.times.medianPhaseMs(p);
-        e["medianPhaseMs"] = ph;
-        if (const std::optional<FloodSample> fl = m.times.medianFlood()) {
-            e["medianJfaPasses"] = fl->passes;
-            e["medianActiveShare"] = fl->activeShare;
-        }
-        e["worstFrame"] = m.worstFrame;
-        e["worstFrameRmse"] = m.worstRmse;
-        if (bucketN > 0) {
-            e["deltaBucketsAgainst"] = m.counterpart;
-            e["meanShareDelta"] = {{"below0.05", buckets[0] / bucketN},
-                                   {"0.05to0.1", buckets[1] / bucketN},
-                                   {"0.1to0.2", buckets[2] / bucketN},
-                                   {"atLeast0.2", buckets[3] / bucketN}};
-        }
-        methods.push_back(e);
-    }
+    for (const MethodRun& m : r.runs) methods.push_back(methodSummary(m, phases, hardMs));
     j["methods"] = methods;
     const auto sample = [](const ResourceSample& at) {
         nlohmann::json gl = nlohmann::json::object();
@@ -232,7 +264,8 @@ nlohmann::json resultsSummary(const CaptureResults& r) {
 void printSummaryTable(const nlohmann::json& summary) {
     std::cout << std::left << std::setw(22) << "method" << std::right << std::setw(10) << "rmse"
               << std::setw(12) << "rmse pen." << std::setw(10) << "miscl.%" << std::setw(11)
-              << "flicker" << std::setw(11) << "frame ms"
+              << "flicker" << std::setw(11) << "frame ms" << std::setw(8) << "acne%"
+              << std::setw(10) << "p.-pan.%"
               << "\n"
               << std::fixed;
     for (const auto& m : summary["methods"])
@@ -242,7 +275,8 @@ void printSummaryTable(const nlohmann::json& summary) {
                   << std::setw(10) << m["misclassifiedPercent"].get<double>()
                   << std::setprecision(5) << std::setw(11) << m["addedFlicker"].get<double>()
                   << std::setprecision(2) << std::setw(11) << m["medianFrameMs"].get<double>()
-                  << "\n";
+                  << std::setw(8) << 100.0 * m["acne"].get<double>() << std::setw(10)
+                  << 100.0 * m["peterPanning"].get<double>() << "\n";
     std::cout << std::defaultfloat;
 }
 

@@ -107,7 +107,9 @@ std::string recordLine(const FrameRecord& r) {
              {"dI", f.row.deltaBuckets ? json(*f.row.deltaBuckets) : json()},
              {"ms", f.frameMs},
              {"phases", phases},
-             {"flood", f.flood ? json{f.flood->passes, f.flood->activeShare} : json()}});
+             {"flood", f.flood ? json{f.flood->passes, f.flood->activeShare} : json()},
+             {"bias", json{f.row.bias.acneCandidates, f.row.bias.acne,
+                           f.row.bias.peterPanningCandidates, f.row.bias.peterPanning}}});
     }
     return json{
         {"size", r.size}, {"frame", r.frame}, {"referenceMs", r.referenceMs}, {"runs", runs}}
@@ -135,6 +137,9 @@ FrameRecord parseRecordLine(const std::string& line) {
             if (!f.at("flood").is_null())
                 run.flood =
                     FloodSample{f["flood"].at(0).get<int>(), f["flood"].at(1).get<double>()};
+            const json& b = f.at("bias");
+            run.row.bias = {b.at(0).get<std::size_t>(), b.at(1).get<std::size_t>(),
+                            b.at(2).get<std::size_t>(), b.at(3).get<std::size_t>()};
             r.runs.push_back(std::move(run));
         }
         return r;

@@ -8,6 +8,7 @@
 #include <gpu/LiveObjects.h>
 
 #include <renderer/io/ImageIO.h>
+#include <renderer/metrics/BiasArtifacts.h>
 #include <renderer/metrics/Metrics.h>
 
 #include <nlohmann/json.hpp>
@@ -32,6 +33,8 @@ struct FrameRow {
     /// |dI| buckets against the standard-flooding counterpart (thesis Fig. 5.4(a)), for JFA
     /// methods whose counterpart is in the script.
     std::optional<std::array<double, 4>> deltaBuckets;
+    /// Acne and peter-panning against the reference (renderer/metrics/BiasArtifacts.h).
+    BiasArtifactCounts bias;
 };
 
 /// A method's worst frame: its visibility, the reference's and the receivers its metrics counted.

@@ -52,6 +52,9 @@ void FrameScorer::score(int i, std::vector<FloatImage>& visibility, const FrameI
         row.frame = i;
         // Every method sees the same surfaces: the reference's receivers are theirs.
         row.metrics = compareWithReference(visibility[k], ref.visibility, ref.receivers);
+        if (!ref.facingLight.data.empty())
+            row.bias = biasArtifacts(visibility[k], ref.visibility,
+                                     {ref.facingLight, ref.contact, ref.receivers});
         if (reprojection) {
             row.flicker = addedSurfaceFlicker(*reprojection, state_.previous[k], visibility[k],
                                               state_.previousReference, ref.visibility);

@@ -245,7 +245,8 @@ CaptureScript parseCaptureScript(const std::string& text, const std::filesystem:
         }
         if (j.contains("reference")) {
             const Json& r = j["reference"];
-            checkKeys(r, "reference", {"kind", "samples", "mapSize", "pattern"});
+            checkKeys(r, "reference",
+                      {"kind", "samples", "mapSize", "pattern", "terminatorOffset"});
             if (r.contains("kind")) {
                 if (!r["kind"].is_string())
                     fail("reference.kind", "expected \"" + groundTruthKinds() + "\"");
@@ -269,6 +270,8 @@ CaptureScript parseCaptureScript(const std::string& text, const std::filesystem:
                 if (const std::string bad = checkOptionValue(*o, given); !bad.empty()) fail(f, bad);
                 if (key == "pattern")
                     s.reference.pattern = given;
+                else if (key == "terminatorOffset")
+                    s.reference.terminatorOffset = given;
                 else
                     (key == "samples" ? s.reference.samples : s.reference.mapSize) =
                         std::stoi(given);

@@ -13,10 +13,11 @@
 //    "shadowMap": {"provider": "uniform" | "tsm", "size": S},
 //    "jfaPasses": P | "auto",                              // default "auto" (as --jfa-passes)
 //    "reference": {"kind": "maps" | "raytrace", "samples": N, "mapSize": S,
-//                  "pattern": "spiral" | "grid" | "jittered"},
+//                  "pattern": "spiral" | "grid" | "jittered", "terminatorOffset": "on" | "off"},
 //                                                          // the ground truth every metric is
 //                                                          // measured against (default maps);
-//                                                          // mapSize, pattern: maps only
+//                                                          // mapSize, pattern: maps only;
+//                                                          // terminatorOffset: raytrace only
 //    "methods": ["hard", "pcss:16/24", "pcf:5", {"method": "jfa-l", "passes": 7, "label": ".."}],
 //                                                          // keys: the method's options in the
 //                                                          // method table ("name:V" sets its
@@ -73,8 +74,9 @@ struct CaptureScript {
     struct Reference {
         std::string kind = "maps";
         int samples = 256;
-        int mapSize = 2048;             // maps only
-        std::string pattern = "spiral"; // maps only: --reference-pattern
+        int mapSize = 2048;                  // maps only
+        std::string pattern = "spiral";      // maps only: --reference-pattern
+        std::string terminatorOffset = "on"; // raytrace only: --terminator-offset
         /// Its row of the method table.
         [[nodiscard]] const MethodDescriptor& method() const { return groundTruth(kind); }
     } reference;

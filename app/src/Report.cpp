@@ -56,7 +56,7 @@ std::string summaryTable(const nlohmann::json& summary) {
     s << "<table id=\"summary\"><tr><th>method</th><th>RMSE</th><th>RMSE penumbra</th>"
          "<th>misclassified %</th><th>|width error| px</th><th>width px (ref.)</th>"
          "<th>added flicker</th><th>(same pixel)</th><th>frame ms (median)</th>"
-         "<th>time / hard</th></tr>";
+         "<th>time / hard</th><th>acne %</th><th>peter-panning %</th></tr>";
     for (const auto& m : summary["methods"]) {
         s << "<tr><td>" << xmlEscape(m["label"].get<std::string>()) << "</td><td>"
           << fmt(m["rmse"].get<double>(), 4) << "</td><td>"
@@ -70,7 +70,8 @@ std::string summaryTable(const nlohmann::json& summary) {
           << fmt(m["medianFrameMs"].get<double>(), 2) << "</td><td>"
           << (m.contains("frameTimeOverHard") ? fmt(m["frameTimeOverHard"].get<double>(), 2)
                                               : std::string("-"))
-          << "</td></tr>";
+          << "</td><td>" << fmt(100.0 * m["acne"].get<double>(), 2) << "</td><td>"
+          << fmt(100.0 * m["peterPanning"].get<double>(), 2) << "</td></tr>";
     }
     return s.str() + "</table>";
 }

@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -22,6 +23,12 @@ namespace {
 void onError(void* user, RTCError code, const char* text) {
     auto* message = static_cast<std::string*>(user);
     if (message->empty()) message->assign(cat("Embree error ", static_cast<int>(code), ": ", text));
+}
+
+void checkNormals(std::span<const glm::vec3> normals, std::size_t vertices) {
+    if (!normals.empty() && normals.size() != vertices)
+        throw std::invalid_argument(
+            cat("raytrace: ", normals.size(), " normals for ", vertices, " vertices"));
 }
 
 void checkVertices(std::span<const glm::vec3> vertices) {
@@ -80,9 +87,11 @@ struct RayScene::Embree {
     RTCDevice device = nullptr;
     RTCScene scene = nullptr;
     RTCGeometry geometry = nullptr;
-    glm::vec3* vertices = nullptr; // Embree's vertex buffer (padded by one float)
+    glm::vec3* vertices = nullptr;          // Embree's vertex buffer (padded by one float)
+    const std::uint32_t* indices = nullptr; // Embree's index buffer
     std::size_t vertexCount = 0;
-    AlphaTest alpha; // the filter's user data: lives as long as the geometry
+    std::vector<glm::vec3> normals; // empty or one per vertex (the terminator offset's)
+    AlphaTest alpha;                // the filter's user data: lives as long as the geometry
 
     ~Embree() {
         if (scene) rtcReleaseScene(scene);
@@ -100,6 +109,7 @@ RayScene::RayScene(const Triangles& t) : e_(std::make_unique<Embree>()) {
         throw std::invalid_argument(
             cat("raytrace: ", t.indices.size(), " indices is not a whole number of triangles"));
     checkVertices(t.vertices);
+    checkNormals(t.normals, t.vertices.size());
     for (std::size_t i = 0; i < t.indices.size(); ++i)
         if (t.indices[i] >= t.vertices.size())
             throw std::invalid_argument(cat("raytrace: triangle ", i / 3, " uses vertex ",
@@ -134,6 +144,8 @@ RayScene::RayScene(const Triangles& t) : e_(std::make_unique<Embree>()) {
     e_->check();
     std::copy(t.vertices.begin(), t.vertices.end(), e_->vertices);
     std::copy(t.indices.begin(), t.indices.end(), indices);
+    e_->indices = indices;
+    e_->normals = t.normals;
     if (std::any_of(t.cutOut.begin(), t.cutOut.end(), [](std::uint8_t f) { return f != 0; })) {
         e_->alpha = {t.cutOut, t.transmits};
         rtcSetGeometryUserData(e_->geometry, &e_->alpha);
@@ -158,13 +170,15 @@ RayScene::~RayScene() = default;
 RayScene::RayScene(RayScene&&) noexcept = default;
 RayScene& RayScene::operator=(RayScene&&) noexcept = default;
 
-void RayScene::refit(std::span<const glm::vec3> vertices) {
+void RayScene::refit(std::span<const glm::vec3> vertices, std::span<const glm::vec3> normals) {
     const auto start = std::chrono::steady_clock::now();
     if (vertices.size() != e_->vertexCount)
         throw std::invalid_argument(cat("raytrace: refit with ", vertices.size(),
                                         " vertices, the scene has ", e_->vertexCount));
     checkVertices(vertices);
+    checkNormals(normals, vertices.size());
     std::copy(vertices.begin(), vertices.end(), e_->vertices);
+    e_->normals.assign(normals.begin(), normals.end());
     rtcUpdateGeometryBuffer(e_->geometry, RTC_BUFFER_TYPE_VERTEX, 0);
     rtcCommitGeometry(e_->geometry);
     rtcCommitScene(e_->scene);
@@ -191,6 +205,37 @@ bool RayScene::occluded(glm::vec3 from, glm::vec3 to) const {
     ray.mask = 0xFFFFFFFFu;
     rtcOccluded1(e_->scene, &context, &ray);
     return ray.tfar < 0.0f; // Embree sets tfar to -inf on a hit
+}
+
+std::optional<SmoothPoint> RayScene::smoothSurface(glm::vec3 eye, glm::vec3 point,
+                                                   glm::vec3 side) const {
+    if (e_->normals.empty()) return std::nullopt;
+    const glm::vec3 d = point - eye;
+    const float distance = glm::length(d);
+    if (!(distance > 0.0f)) return std::nullopt;
+    // The window around the point: its position comes from the depth buffer, a little off the
+    // triangle; the first triangle inside is the one the eye sees there.
+    const float margin = std::max(1e-3f * distance, 16.0f * epsilon_);
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit hit{};
+    hit.ray.org_x = eye.x;
+    hit.ray.org_y = eye.y;
+    hit.ray.org_z = eye.z;
+    hit.ray.dir_x = d.x / distance;
+    hit.ray.dir_y = d.y / distance;
+    hit.ray.dir_z = d.z / distance;
+    hit.ray.tnear = std::max(distance - margin, 0.0f);
+    hit.ray.tfar = distance + margin;
+    hit.ray.mask = 0xFFFFFFFFu;
+    hit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(e_->scene, &context, &hit);
+    if (hit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+    const std::uint32_t* t = e_->indices + 3 * static_cast<std::size_t>(hit.hit.primID);
+    const std::array<glm::vec3, 3> corner{e_->vertices[t[0]], e_->vertices[t[1]],
+                                          e_->vertices[t[2]]};
+    const std::array<glm::vec3, 3> normal{e_->normals[t[0]], e_->normals[t[1]], e_->normals[t[2]]};
+    return terminatorOffset(point, corner, normal, hit.hit.u, hit.hit.v, side);
 }
 
 namespace {
@@ -263,9 +308,15 @@ std::vector<float> diskVisibility(const RayScene& scene, const Disk& disk,
                 if (!rc.valid) continue;
                 // The seen side's normal: rays leave on that side, and the plane blocks what is
                 // behind it.
-                const glm::vec3 n =
+                glm::vec3 n =
                     glm::length(rc.normal) > 0.0f ? glm::normalize(rc.normal) : glm::vec3(0.0f);
-                const glm::vec3 origin = rc.position + eps * n;
+                glm::vec3 origin = rc.position + eps * n;
+                if (s.terminatorOffset && n != glm::vec3(0.0f))
+                    if (const auto smooth = scene.smoothSurface(s.eye, rc.position, n)) {
+                        // From the smooth surface; its tangent plane decides what is behind.
+                        n = smooth->normal;
+                        origin = smooth->position + eps * n;
+                    }
                 int visible = 0;
                 fillDiskSamples(disk, s, r, samples);
                 for (const glm::vec3& q : samples) {

@@ -8,14 +8,18 @@
 // (on the side it is seen from) and stops `epsilon()` short of the disk, with epsilon() = 1e-5 of
 // the scene's bounding-box diagonal. That is far above float rounding at the scene's scale and
 // far below any feature a shadow map resolves (a 4096^2 map's texel is 1/4096 of the scene).
+// With VisibilitySettings::terminatorOffset the ray first moves from the flat triangle onto the
+// smooth surface its vertex normals describe (raytrace/Terminator.h), then by epsilon().
 
 #include <base/Numbers.h>
+#include <raytrace/Terminator.h>
 
 #include <glm/vec3.hpp>
 
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -37,6 +41,10 @@ struct Triangles {
     /// it hits; unflagged triangles block everywhere. Called from many threads at once.
     std::vector<std::uint8_t> cutOut;
     std::function<bool(std::uint32_t triangle, float u, float v)> transmits;
+    /// Empty, or one normal per vertex: the smooth surface the shading interpolates, which the
+    /// terminator offset moves a ray's start onto (raytrace/Terminator.h; a triangle with a
+    /// normal that is not of unit length has none).
+    std::vector<glm::vec3> normals;
 };
 
 /// Largest |coordinate| a vertex may have (fl::kMaxWorldCoordinate): Embree works in float, and
@@ -59,10 +67,16 @@ class RayScene {
 
     /// Moves the vertices (an animated frame: same triangles, new positions) and updates the
     /// BVH (Embree rebuilds it; a refit was measured no faster); the same checks as the
-    /// constructor.
-    void refit(std::span<const glm::vec3> vertices);
+    /// constructor. `normals`: the vertices' new normals, or empty (the scene then has none).
+    void refit(std::span<const glm::vec3> vertices, std::span<const glm::vec3> normals = {});
     /// True when a triangle crosses the segment from `from` to `to` (both ends excluded).
     [[nodiscard]] bool occluded(glm::vec3 from, glm::vec3 to) const;
+    /// The smooth surface (terminatorOffset) under `point`, a point of the surface the eye at
+    /// `eye` sees, on the side `side`: the triangle is the first the ray from `eye` meets within
+    /// 1e-3 of the distance (or 16 epsilon()) of `point`. nullopt when the scene has no normals,
+    /// no triangle lies there or the triangle is flat.
+    [[nodiscard]] std::optional<SmoothPoint> smoothSurface(glm::vec3 eye, glm::vec3 point,
+                                                           glm::vec3 side) const;
     /// The ray offset (see the header comment).
     [[nodiscard]] float epsilon() const { return epsilon_; }
     [[nodiscard]] std::size_t triangleCount() const { return triangleCount_; }
@@ -97,6 +111,12 @@ struct VisibilitySettings {
     /// reference places its point lights (its bands along straight edges are this pattern's).
     bool jitter = true;
     int threads = 0; // 0: every core
+    /// true: each ray starts on the smooth surface of its receiver's triangle (Hanika's terminator
+    /// offset; RayScene::smoothSurface, seen from `eye`), and that surface's tangent plane, not
+    /// the triangle's, blocks the light behind it. Changes nothing on flat triangles or in a
+    /// scene without normals.
+    bool terminatorOffset = false;
+    glm::vec3 eye{0.0f}; // the eye the receivers were seen from (terminatorOffset only)
     /// Called on the caller's thread with the share of receivers done (up to about 100 times,
     /// rising, the last call 1); empty: not called.
     std::function<void(double)> progress;

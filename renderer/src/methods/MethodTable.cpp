@@ -156,6 +156,18 @@ constexpr MethodOption kRayGrid{
     "Rays to the strata's centres, the same points for every pixel (as the shadow-map reference "
     "places its lights with --reference-pattern grid; bands along straight edges), instead of one "
     "random point per stratum"};
+constexpr MethodOption kTerminatorOffset{
+    "--terminator-offset",
+    "terminatorOffset",
+    OptionKind::Choice,
+    "on",
+    "on: each ray starts on the smooth surface the vertex normals describe (Hanika 2021, the "
+    "shadow terminator of low-poly objects), whose tangent plane blocks the light behind it; off: "
+    "on the flat triangle, whose plane does (dark wherever a triangle faces away from the light). "
+    "Flat triangles are the same either way",
+    0,
+    0,
+    "on|off"};
 constexpr MethodOption kVsmBlur{"--vsm-blur",
                                 "blur",
                                 OptionKind::Float,
@@ -183,7 +195,7 @@ constexpr const MethodOption* kPcssOptions[] = {&kPcssPreset};
 constexpr const MethodOption* kGroundTruthOptions[] = {&kReferenceSamples, &kReferenceMapSize,
                                                        &kReferencePattern};
 constexpr const MethodOption* kVsmOptions[] = {&kVsmBlur, &kVsmBleed};
-constexpr const MethodOption* kRayTraceOptions[] = {&kRaySamples, &kRayGrid};
+constexpr const MethodOption* kRayTraceOptions[] = {&kRaySamples, &kRayGrid, &kTerminatorOffset};
 
 // --- Timed phases (step 3's parts, as PassTimer names them) ------------------------------------
 

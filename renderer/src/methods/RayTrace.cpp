@@ -1,7 +1,9 @@
 // raytrace: the ray-traced ground truth. Per pixel of the frame's surfaces (step 2), N shadow
 // rays to stratified points of the disk light, cast on the CPU by Embree over the same
 // triangles the GPU draws (raytrace/ShadowRays.h); visibility is the share nothing blocks. It
-// uses no shadow map, so it carries none of the errors of the methods it judges.
+// uses no shadow map, so it carries none of the errors of the methods it judges. With
+// --terminator-offset on (the default) rays leave the smooth surface the vertex normals describe
+// (raytrace/Terminator.h), as production ray tracers do.
 
 #include <renderer/methods/ShadowMethod.h>
 
@@ -27,8 +29,12 @@ class RayTrace final : public ShadowMethod {
         if (!bvh_ || posedVersion_ != in.scene.poseVersion()) {
             if (in.timer) in.timer->begin("raytrace bvh");
             if (!bvh_) bvh_.emplace(worldTriangles(in.scene.source()));
-            if (const auto& pose = in.scene.pose())
-                bvh_->refit(worldVertices(in.scene.source(), *pose));
+            if (const auto& pose = in.scene.pose()) {
+                std::vector<glm::vec3> normals;
+                const std::vector<glm::vec3> vertices =
+                    worldVertices(in.scene.source(), *pose, &normals);
+                bvh_->refit(vertices, normals);
+            }
             posedVersion_ = in.scene.poseVersion();
             if (in.timer) in.timer->end();
         }
@@ -38,6 +44,8 @@ class RayTrace final : public ShadowMethod {
         rt::VisibilitySettings s;
         s.samples = in.integer("samples");
         s.jitter = !in.flag("grid");
+        s.terminatorOffset = in.text("terminatorOffset") == "on";
+        s.eye = in.camera.eye;
         if (in.progress) s.progress = *in.progress;
         const rt::Disk disk{in.disk.center, in.disk.normal, in.disk.radius};
         const std::vector<float> v = rt::diskVisibility(*bvh_, disk, receivers, s);

@@ -2,7 +2,9 @@
 
 #include <base/Stats.h>
 #include <renderer/io/ImageIO.h>
+#include <renderer/metrics/BiasArtifacts.h>
 #include <renderer/scene/Pose.h>
+#include <renderer/soft/ShadowRayInputs.h>
 
 #include <glm/geometric.hpp>
 
@@ -117,6 +119,12 @@ FrameImages checked(FrameImages frame, const Lane& lane, int i) {
     return frame;
 }
 
+// Moves the acne and peter-panning masks of `from` into `to` (the frame they were made with).
+void moveBiasMasks(FrameImages& from, FrameImages& to) {
+    to.facingLight = std::move(from.facingLight);
+    to.contact = std::move(from.contact);
+}
+
 } // namespace
 
 FrameRunner::FrameRunner(int totalFrames, int done)
@@ -133,7 +141,8 @@ void FrameRunner::run(const FramePlan& plan, std::vector<Lane>& lanes, const OnF
     std::vector<FrameImages> images(lanes.size());
     const bool behind = plan.readBack && plan.readBehind;
     std::vector<FrameReadBack> reads(behind ? lanes.size() : 0);
-    int pending = -1; // the frame whose read-back is in flight (behind only)
+    int pending = -1;                // the frame whose read-back is in flight (behind only)
+    FrameImages masks, pendingMasks; // the motion lane's bias masks: this frame's, pending's
     const int end = plan.last < 0 ? plan.frames : std::min(plan.last + 1, plan.frames);
     if (plan.clip)
         for (Lane& lane : lanes)
@@ -166,12 +175,21 @@ void FrameRunner::run(const FramePlan& plan, std::vector<Lane>& lanes, const OnF
             const Clock::time_point rendered = Clock::now();
             seconds_.render += std::chrono::duration<double>(rendered - renderStart).count();
             if (k < plan.first) continue;
+            const bool withMasks = plan.biasMasks && static_cast<int>(l) == plan.motionLane;
+            if (withMasks) {
+                BiasMasks m = biasMasks(surfaceGeometry(r.surfaces(), cam), r.disk().center);
+                masks.facingLight = std::move(m.facingLight);
+                masks.contact = std::move(m.contact);
+            }
             if (behind) {
                 // This lane's copy of the frame before finished while this frame rendered.
                 if (pending >= 0) images[l] = checked(reads[l].finish(), lanes[l], pending);
+                if (withMasks && pending >= 0) moveBiasMasks(pendingMasks, images[l]);
+                if (withMasks) moveBiasMasks(masks, pendingMasks);
                 reads[l].start(r);
             } else if (plan.readBack) {
                 images[l] = checked(readFrame(r), lanes[l], i);
+                if (withMasks) moveBiasMasks(masks, images[l]);
             }
             lanes[l].times.record(r.timer(), floodSample(r));
             seconds_.readBack += std::chrono::duration<double>(Clock::now() - rendered).count();
@@ -186,6 +204,8 @@ void FrameRunner::run(const FramePlan& plan, std::vector<Lane>& lanes, const OnF
     }
     if (pending >= 0) {
         finishReadBack(reads, lanes, pending, images);
+        if (plan.biasMasks && plan.motionLane >= 0)
+            moveBiasMasks(pendingMasks, images[static_cast<std::size_t>(plan.motionLane)]);
         handOver(pending, images, onFrame);
     }
 }

@@ -6,6 +6,7 @@
 #include <base/Text.h>
 
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -52,6 +53,12 @@ rt::Triangles worldTriangles(const Scene& scene) {
                                                     rt::kMaxCoordinate, ")"));
             t.vertices.push_back(p);
         }
+        // The normals as the vertex stage turns them (the rest pose's inverse transpose); a mesh
+        // built without them gets zero, which the offset reads as none.
+        const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(inst.world)));
+        for (std::size_t v = 0; v < m.positions.size(); ++v)
+            t.normals.push_back(v < m.normals.size() ? glm::normalize(normalMatrix * m.normals[v])
+                                                     : glm::vec3(0.0f));
         for (std::uint32_t i : m.indices) t.indices.push_back(base + i);
     }
     if (test->coverage.any())
@@ -61,11 +68,14 @@ rt::Triangles worldTriangles(const Scene& scene) {
     return t;
 }
 
-std::vector<glm::vec3> worldVertices(const Scene& scene, const Pose& pose) {
-    std::vector<glm::vec3> out, posed;
+std::vector<glm::vec3> worldVertices(const Scene& scene, const Pose& pose,
+                                     std::vector<glm::vec3>* normals) {
+    std::vector<glm::vec3> out, posed, posedNormals;
+    if (normals) normals->clear();
     for (std::size_t i = 0; i < scene.instances.size(); ++i) {
-        posedVertices(scene, pose, i, posed);
+        posedVertices(scene, pose, i, posed, normals ? &posedNormals : nullptr);
         out.insert(out.end(), posed.begin(), posed.end());
+        if (normals) normals->insert(normals->end(), posedNormals.begin(), posedNormals.end());
     }
     return out;
 }
@@ -91,6 +101,28 @@ std::vector<rt::Receiver> surfaceReceivers(const SurfacesPass::Outputs& surfaces
                 p, n, position.at(x, row, 3) != 0.0f}; // w = 0: background
         }
     return receivers;
+}
+
+SurfaceGeometry surfaceGeometry(const SurfacesPass::Outputs& surfaces, const CameraView& camera) {
+    const int w = surfaces.width, h = surfaces.height;
+    const std::vector<rt::Receiver> receivers = surfaceReceivers(surfaces); // GL's row order
+    SurfaceGeometry g;
+    g.positions = {w, h, 4, std::vector<float>(receivers.size() * 4, 0.0f)};
+    g.planes = g.positions;
+    g.receivers = readTexture(surfaces.receivers, 1);
+    g.eye = camera.eye;
+    g.pixelAngle = 2.0f / (camera.proj[1][1] * static_cast<float>(h)); // 2 tan(fovy/2) / h
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const rt::Receiver& r = receivers[static_cast<std::size_t>(h - 1 - y) * w + x];
+            const std::size_t i = (static_cast<std::size_t>(y) * w + x) * 4;
+            for (int c = 0; c < 3; ++c) {
+                g.positions.data[i + c] = r.position[c];
+                g.planes.data[i + c] = r.normal[c];
+            }
+            g.positions.data[i + 3] = r.valid ? 1.0f : 0.0f;
+        }
+    return g;
 }
 
 } // namespace fl

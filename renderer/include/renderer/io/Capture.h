@@ -25,6 +25,10 @@ struct FrameImages {
     /// top, as here), depth there; and its depth now (SurfacesPass's motion target); empty when the
     /// frame wrote none (Renderer::render).
     FloatImage motion;
+    /// 1 channel each, empty unless the frame loop was asked for them (FramePlan::biasMasks):
+    /// the acne candidates' geometry (receivers whose triangle faces the light's centre) and the
+    /// contact pixels (renderer/metrics/BiasArtifacts.h).
+    FloatImage facingLight, contact;
 };
 FrameImages readFrame(const Renderer& renderer);
 

@@ -138,6 +138,10 @@ struct FramePlan {
     /// camera), for flicker on the same surface point; -1: none. The other lanes' surfaces pass
     /// skips it, so their times carry no cost that only scoring adds.
     int motionLane = -1;
+    /// true: the motion lane's frames also carry the acne and peter-panning masks
+    /// (FrameImages::facingLight, contact; renderer/metrics/BiasArtifacts.h), read from its
+    /// surfaces right after it renders.
+    bool biasMasks = false;
 };
 
 /// Drives lanes through one or more plans, with one progress bar over all of them.
