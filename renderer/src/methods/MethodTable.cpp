@@ -39,7 +39,7 @@ constexpr MethodOption kPasses{
     "auto",
     "Flooding passes: penumbrae up to 2^N - 1 shadow-map texels (-l) or pixels (-e) wide; 1 to "
     "log2(size), or auto: the fewest that cover the widest penumbra the frame's occluders can "
-    "cast",
+    "cast (jfa-e, flood-e: how far they travel, --auto-passes)",
     1,
     13,
     {},
