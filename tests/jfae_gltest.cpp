@@ -10,6 +10,7 @@
 #include <renderer/Renderer.h>
 #include <renderer/gltf/GltfLoader.h>
 #include <renderer/io/Capture.h>
+#include <renderer/soft/EyeFloodReach.h>
 #include <renderer/soft/EyeSoftShadow.h>
 
 #include <jfa/CpuKernel.h>
@@ -187,10 +188,15 @@ struct Frame {
     jfa::Grid flooded;      // phase 4 (empty for the hard method)
     std::vector<float> vis; // the frame's visibility, GL row order
     FrameImages pictures;   // for goldens
+    int passes = 0;         // the JFA pass count the flood used
 };
 
+// `extra`: more method options, flag and value.
+using ExtraOptions = std::vector<std::pair<std::string, std::string>>;
+
 Frame renderDefault(std::string_view method, float radius = kTestRadius, bool objectIdFix = true,
-                    bool midpointFix = true, std::string_view occluderPoints = "edge") {
+                    bool midpointFix = true, std::string_view occluderPoints = "edge",
+                    const ExtraOptions& extra = {}) {
     Scene scene = loadGltf(defaultAsset());
     scene.light->radius = radius;
     const gl::ShaderLibrary& shaders = fl::test::testShaders();
@@ -200,6 +206,7 @@ Frame renderDefault(std::string_view method, float radius = kTestRadius, bool ob
     settings.options.set("--no-object-id-fix", !objectIdFix);
     settings.options.set("--no-midpoint-fix", !midpointFix);
     settings.options.set("--occluder-points", std::string(occluderPoints));
+    for (const auto& [flag, value] : extra) settings.options.set(flag, value);
     Renderer r(shaders, scene, settings);
     r.resize(256, 256);
     r.render(makeCameraView(scene, {}, 1.0f));
@@ -207,6 +214,7 @@ Frame renderDefault(std::string_view method, float radius = kTestRadius, bool ob
     if (const FloodFrame* flood = r.flood(); flood && flood->eye) {
         f.image = readEyeImage(*flood);
         f.flooded = jfa::readGrid(*flood->flooded);
+        f.passes = flood->passes;
     }
     f.vis = readR32F(r.visibility());
     f.pictures = readFrame(r);
@@ -344,6 +352,121 @@ TEST_F(JfaETest, JfaEIsCloseToStandardFlooding) {
     ASSERT_GT(penumbra, 500u) << "the default view must show penumbrae";
     EXPECT_LT(static_cast<double>(parity) / n, 0.068);
     EXPECT_GE(static_cast<double>(close) / static_cast<double>(penumbra), 0.9);
+}
+
+// The measured auto count (issue 30 item 2, EyeFloodReach.h): the histogram and pass rule.
+TEST_F(JfaETest, TravelHistogramAndPassRule) {
+    jfa::Grid g(10, 6, jfa::kEmptyCell);
+    const auto seedAt = [&](int x, int y) { return static_cast<float>(y * g.width + x + 1); };
+    g.at(2, 1) = {0, 0, 0, seedAt(2, 1)}; // a seed: 0
+    g.at(9, 1) = {0, 0, 0, seedAt(2, 1)}; // 7 along x
+    g.at(3, 5) = {0, 0, 0, seedAt(2, 1)}; // 4 along y beats 1 along x
+    const std::vector<std::uint32_t> bins = floodTravel(g);
+    ASSERT_EQ(bins.size(), std::size_t(kTravelBins));
+    EXPECT_EQ(bins[0], 1u);
+    EXPECT_EQ(bins[4], 1u);
+    EXPECT_EQ(bins[7], 1u);
+    EXPECT_EQ(maxTravel(bins), 7);
+    EXPECT_EQ(maxTravel(std::vector<std::uint32_t>(kTravelBins, 0u)), -1);
+    // Coarse travel d stands for up to 4(d + 1) - 1 frame pixels.
+    EXPECT_EQ(passesForTravel(7, 4, 9), 5);  // 31
+    EXPECT_EQ(passesForTravel(8, 4, 9), 6);  // 35
+    EXPECT_EQ(passesForTravel(-1, 4, 9), 1); // no cells
+    EXPECT_EQ(passesForTravel(500, 4, 9), 9);
+    EXPECT_EQ(coarseSize(75, 61, 4), glm::ivec2(19, 16));
+    const BoundaryThreshold th = coarseThreshold({1.0f, 2.0f}, 4);
+    EXPECT_EQ(th.absolute2, 16.0f);
+    EXPECT_EQ(th.relative2, 32.0f);
+}
+
+// The coarse flood on the GPU (shaders/jfae_coarse.frag.glsl, the boundary pass,
+// jfae_criterion.glsl, jfae_travel.comp.glsl) against its CPU reference, bin for bin (the same
+// float operations as the phases, which PhasesMatchTheCpuReference compares exactly).
+TEST_F(JfaETest, CoarseFloodTravelMatchesTheCpuReference) {
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
+    EyeFloodEstimator estimator(shaders);
+    struct Case {
+        bool defaultScene;
+        int width, height;
+        bool fixes;
+    };
+    for (const Case& k : {Case{false, 64, 64, true}, Case{false, 75, 61, true},
+                          Case{false, 64, 64, false}, Case{true, 256, 256, true}}) {
+        SCOPED_TRACE(std::string(k.defaultScene ? "default scene " : "box ") +
+                     std::to_string(k.width) + "x" + std::to_string(k.height) +
+                     (k.fixes ? "" : ", fixes off"));
+        SceneView s = k.defaultScene ? SceneView{loadGltf(defaultAsset()), {}} : spotLitBox();
+        if (k.defaultScene) {
+            s.scene.light->radius = kTestRadius;
+            s.camera = makeCameraView(s.scene, {}, 1.0f);
+        }
+        RenderSettings settings;
+        settings.shadow.size = k.defaultScene ? 512 : 128;
+        settings.method = "jfa-e";
+        settings.options.set("--no-object-id-fix", !k.fixes);
+        settings.options.set("--no-midpoint-fix", !k.fixes);
+        Renderer r(shaders, s.scene, settings);
+        r.resize(k.width, k.height);
+        r.render(s.camera);
+        ASSERT_NE(r.flood(), nullptr);
+        CoarseFloodSettings cs;
+        cs.eye = s.camera.eye;
+        cs.threshold = boundaryThreshold(EyeSoftSettings{}, s.camera.proj, k.height);
+        cs.light = r.disk();
+        cs.objectIdFix = cs.midpointFix = k.fixes;
+        const std::vector<std::uint32_t> gpu =
+            estimator.travel(*r.flood()->receivers, *r.flood()->occluders, cs);
+        const std::vector<std::uint32_t> cpu = coarseFloodTravel(readEyeImage(*r.flood()), cs);
+        EXPECT_EQ(gpu, cpu);
+        std::uint64_t cells = 0;
+        for (std::uint32_t n : cpu) cells += n;
+        EXPECT_GT(cells, 10u) << "the coarse flood must hold cells";
+        EXPECT_GT(maxTravel(cpu), 0) << "and spread them";
+        std::printf("%s %dx%d: %llu coarse cells, farthest %d coarse pixels\n",
+                    k.defaultScene ? "default" : "box", k.width, k.height,
+                    static_cast<unsigned long long>(cells), maxTravel(cpu));
+    }
+}
+
+// Issue 30 item 2: auto's count is the fewest that give the full-pass picture, or one more. The
+// full-pass picture is log2(256) = 8 passes; a count "gives" it when the RMS difference of the
+// visibilities over the surface pixels is at most 0.001, which bounds how far its RMSE against
+// any truth can be from the full-pass RMSE (the triangle inequality), the issue's tolerance.
+// Counted by running every count; two light radii, so that the answer is not one number.
+TEST_F(JfaETest, AutoCountIsTheFewestThatGiveTheFullPassPicture) {
+    for (const float radius : {kTestRadius, 0.5f}) {
+        SCOPED_TRACE("radius " + std::to_string(radius));
+        const auto render = [&](const std::string& passes, const std::string& rule) {
+            return renderDefault("jfa-e", radius, true, true, "edge",
+                                 {{"--jfa-passes", passes}, {"--auto-passes", rule}});
+        };
+        const Frame full = render("8", "measured");
+        const auto rmsToFull = [&](const Frame& f) {
+            double sum = 0.0;
+            std::size_t n = 0;
+            for (std::size_t i = 0; i < f.vis.size(); ++i) {
+                if (full.image.points[i].w < 0.0f) continue;
+                const double d = double(f.vis[i]) - double(full.vis[i]);
+                sum += d * d;
+                ++n;
+            }
+            return std::sqrt(sum / double(std::max<std::size_t>(n, 1)));
+        };
+        int fewest = 8;
+        for (int k = 7; k >= 1; --k) { // the smallest k from which every count up gives it
+            if (rmsToFull(render(std::to_string(k), "measured")) > 0.001) break;
+            fewest = k;
+        }
+        const Frame measured = render("auto", "measured");
+        const Frame geometric = render("auto", "geometric");
+        std::printf("radius %.2f: fewest %d, measured auto %d (RMS to full %.5f), geometric "
+                    "auto %d\n",
+                    double(radius), fewest, measured.passes, rmsToFull(measured), geometric.passes);
+        EXPECT_GE(measured.passes, fewest);
+        EXPECT_LE(measured.passes, fewest + 1);
+        EXPECT_LE(rmsToFull(measured), 0.001);
+        EXPECT_LT(measured.passes, geometric.passes) << "the bound over-floods this view";
+    }
 }
 
 // Image regression at 256² with a 512² map; tolerances as for the other soft-shadow goldens

@@ -82,6 +82,21 @@ TEST(SoftCli, PassCountsOutsideTheGridAreRejected) {
     }
 }
 
+// --auto-passes (issue 30 item 2): both rules render; another word is a usage error naming the
+// choices.
+TEST(SoftCli, AutoPassRuleIsAChoice) {
+    const std::string out =
+        " --width 48 --height 48 --shadow-map-size 256 --light-radius 1 --out " +
+        outputDir("soft_cli").string();
+    for (const char* rule : {"measured", "geometric"}) {
+        const Outcome r = run(std::string("render --method jfa-e --auto-passes ") + rule + out);
+        EXPECT_EQ(r.code, 0) << rule << "\n" << r.output;
+    }
+    const Outcome r = run("render --method jfa-e --auto-passes sometimes" + out);
+    EXPECT_EQ(r.code, 2) << r.output;
+    EXPECT_NE(r.output.find("must be one of measured,geometric"), std::string::npos) << r.output;
+}
+
 TEST(SoftCli, CompareWritesCsvSummaryAndTheWorstFrame) {
     const auto dir = freshDir("soft_cli_compare");
     const Outcome r = run("compare --method jfa-l --frames 3 --width 64 --height 64 "

@@ -24,6 +24,8 @@ class EyeMethod final : public ShadowMethod {
         es.occluderPoints = in.text("occluderPoints") == "centre" ? OccluderPoints::TexelCentre
                                                                   : OccluderPoints::Edge;
         es.silhouetteThreshold = silhouetteThreshold(in.sceneBounds.radius());
+        es.autoPasses = in.text("autoPasses") == "geometric" ? EyeAutoPasses::Geometric
+                                                             : EyeAutoPasses::Measured;
         const int passes = requestedPasses(in.method, in.options, in.shadow.depth.width(),
                                            in.width(), in.height());
         const jfa::FloodRegion region = floodRegion(in.options);

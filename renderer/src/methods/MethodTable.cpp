@@ -39,7 +39,7 @@ constexpr MethodOption kPasses{
     "auto",
     "Flooding passes: penumbrae up to 2^N - 1 shadow-map texels (-l) or pixels (-e) wide; 1 to "
     "log2(size), or auto: the fewest that cover the widest penumbra the frame's occluders can "
-    "cast",
+    "cast (jfa-e, flood-e: how far they travel, --auto-passes)",
     1,
     13,
     {},
@@ -101,6 +101,19 @@ constexpr MethodOption kOccluderPoints{
     0,
     0,
     "edge|centre"};
+constexpr MethodOption kAutoPassRule{
+    "--auto-passes",
+    "autoPasses",
+    OptionKind::Choice,
+    "measured",
+    "How --jfa-passes auto chooses jfa-e's and flood-e's count: measured = the fewest that cover "
+    "how far the occluders travel in a quarter-resolution flood of the frame, capped by "
+    "geometric; geometric = the fewest that cover the widest penumbra any boundary seed's "
+    "occluder can cast (the rule before issue 30; 9-10 passes at 512^2 where 6 give the same "
+    "picture)",
+    0,
+    0,
+    "measured|geometric"};
 constexpr MethodOption kPcfKernel{
     "--pcf-kernel",
     "kernel",
@@ -188,8 +201,8 @@ constexpr MethodOption kVsmBleed{"--vsm-bleed",
 constexpr const MethodOption* kLightFloodOptions[] = {&kPasses, &kFullJfa, &kFloodRegion,
                                                       &kBandTile};
 constexpr const MethodOption* kEyeFloodOptions[] = {
-    &kPasses,        &kFullJfa,       &kFloodRegion,       &kBandTile,
-    &kNoObjectIdFix, &kNoMidpointFix, &kBoundaryThreshold, &kOccluderPoints};
+    &kPasses,        &kFullJfa,           &kFloodRegion,    &kBandTile,    &kNoObjectIdFix,
+    &kNoMidpointFix, &kBoundaryThreshold, &kOccluderPoints, &kAutoPassRule};
 constexpr const MethodOption* kPcfOptions[] = {&kPcfKernel};
 constexpr const MethodOption* kPcssOptions[] = {&kPcssPreset};
 constexpr const MethodOption* kGroundTruthOptions[] = {&kReferenceSamples, &kReferenceMapSize,
@@ -203,7 +216,7 @@ constexpr std::string_view kHardPhases[] = {"hard shadows"};
 constexpr std::string_view kLightFloodPhases[] = {"view", "silhouettes", "band", "flood",
                                                   "penumbra lookup"};
 constexpr std::string_view kEyeFloodPhases[] = {
-    "occluder ids", "eye hard shadows", "boundaries", "band", "flood", "composite"};
+    "occluder ids", "eye hard shadows", "boundaries", "pass count", "band", "flood", "composite"};
 constexpr std::string_view kPcfPhases[] = {"pcf filter"};
 constexpr std::string_view kPcssPhases[] = {"blocker search+filter"};
 constexpr std::string_view kGroundTruthPhases[] = {"reference maps", "reference resolve"};

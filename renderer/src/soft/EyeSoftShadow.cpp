@@ -2,6 +2,7 @@
 
 #include <renderer/passes/SurfacesPass.h>
 #include <renderer/scene/GpuScene.h>
+#include <renderer/soft/EyeFloodReach.h>
 #include <renderer/soft/PenumbraCriterion.h>
 
 #include <jfa/CpuKernel.h>
@@ -143,7 +144,9 @@ EyeSoftShadowPass::EyeSoftShadowPass(const gl::ShaderLibrary& shaders)
       composite_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
                                               {GL_FRAGMENT_SHADER, "jfae_composite.frag.glsl"}})),
       emptyVao_(gl::VertexArray::create()), kernel_(shaders, jfa::GlKernelKind::Fragment),
-      bounds_(shaders) {}
+      bounds_(shaders), shaders_(shaders) {}
+
+EyeSoftShadowPass::~EyeSoftShadowPass() = default;
 
 void EyeSoftShadowPass::resize(int width, int height, int shadowSize) {
     if (!ids_ || ids_.width() != shadowSize) ids_ = gl::Texture(GL_R32F, shadowSize, shadowSize);
@@ -157,6 +160,91 @@ void EyeSoftShadowPass::resize(int width, int height, int shadowSize) {
     visibilityFbo_ = gl::Framebuffer::forColor(visibility_, "JFA-E visibility");
 }
 
+void EyeSoftShadowPass::drawOccluderIds(const Inputs& in) {
+    const int shadowSize = in.shadow.depth.width();
+    const gl::Framebuffer fbo =
+        gl::Framebuffer::withTargets({&ids_}, &in.shadow.depth, "JFA-E occluder ids");
+    const float none = -1.0f;
+    glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, &none);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+    glViewport(0, 0, shadowSize, shadowSize);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glDepthMask(GL_FALSE);
+    glDisable(GL_CULL_FACE);
+    lightIds_.set("uLightViewProj", in.shadow.lightViewProj);
+    lightIds_.set("uShadowWarp", in.shadow.warp);
+    lightIds_.set("uSlopeBias", in.shadowSettings.slopeBias);
+    lightIds_.set("uConstantBias", in.shadowSettings.constantBias);
+    in.scene.draw(lightIds_, GpuScene::Uniforms::Material);
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
+    glBindTextureUnit(0, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void EyeSoftShadowPass::drawEyeHardShadows(const Inputs& in) {
+    glBindFramebuffer(GL_FRAMEBUFFER, eyeFbo_.id());
+    glViewport(0, 0, in.width, in.height);
+    glDisable(GL_DEPTH_TEST);
+    eyePass_.set("uHaveObjectIds", in.settings.objectIdFix ? 1 : 0);
+    eyePass_.set("uOccluderEdges", in.settings.occluderPoints == OccluderPoints::Edge ? 1 : 0);
+    eyePass_.set("uSilhouetteThreshold", in.settings.silhouetteThreshold);
+    setDiskLightUniforms(eyePass_, in.light);
+    bindShadowMap(eyePass_, in.shadow);
+    in.positions.bind(eyePass_, 0);
+    in.shadow.receivers->bind(eyePass_, 2);
+    glBindTextureUnit(3, ids_.id());
+    gl::drawFullscreenTriangle(eyePass_, emptyVao_);
+    for (GLuint unit : {0u, 1u, 2u, 3u}) glBindTextureUnit(unit, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void EyeSoftShadowPass::drawBoundaries(const Inputs& in, BoundaryThreshold th) {
+    glBindFramebuffer(GL_FRAMEBUFFER, seedsFbo_.id());
+    glViewport(0, 0, in.width, in.height);
+    glDisable(GL_DEPTH_TEST);
+    boundary_.set("uEye", in.camera.eye);
+    boundary_.set("uAbsolute2", th.absolute2);
+    boundary_.set("uRelative2", th.relative2);
+    // A banded flood lists its seeds here rather than sweeping the frame for them again.
+    const bool listSeeds = jfa::banded(in.region);
+    boundary_.set("uListSeeds", listSeeds ? 1 : 0);
+    if (listSeeds) kernel_.beginSeedList(in.width, in.height);
+    glBindTextureUnit(0, points_.id());
+    glBindTextureUnit(1, occluders_.id());
+    gl::drawFullscreenTriangle(boundary_, emptyVao_);
+    if (listSeeds) kernel_.seedsListed(seeds_);
+    glBindTextureUnit(0, 0);
+    glBindTextureUnit(1, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void EyeSoftShadowPass::drawComposite(const Inputs& in, const gl::Texture& flooded) {
+    glBindFramebuffer(GL_FRAMEBUFFER, visibilityFbo_.id());
+    glViewport(0, 0, in.width, in.height);
+    glDisable(GL_DEPTH_TEST);
+    setDiskLightUniforms(composite_, in.light);
+    glBindTextureUnit(0, points_.id());
+    glBindTextureUnit(1, flooded.id());
+    gl::drawFullscreenTriangle(composite_, emptyVao_);
+    glBindTextureUnit(0, 0);
+    glBindTextureUnit(1, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+int EyeSoftShadowPass::measurePasses(const Inputs& in, BoundaryThreshold threshold, int maxPasses) {
+    if (!estimator_) estimator_ = std::make_unique<EyeFloodEstimator>(shaders_);
+    CoarseFloodSettings s;
+    s.eye = in.camera.eye;
+    s.threshold = threshold;
+    s.light = in.light;
+    s.objectIdFix = in.settings.objectIdFix;
+    s.midpointFix = in.settings.midpointFix;
+    const std::vector<std::uint32_t> bins = estimator_->travel(points_, occluders_, s);
+    return bins.empty() ? -1 : passesForTravel(maxTravel(bins), s.factor, maxPasses);
+}
+
 EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::PassTimer* timer) {
     if (in.shadow.receivers == nullptr)
         throw std::invalid_argument("JFA-E needs the shadow map's receiver positions");
@@ -166,84 +254,40 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::Pass
     const int maxPasses = eyeSoftMaxPasses(in.width, in.height);
     int passes = std::min(in.passes, maxPasses);
     if (passes != 0) (void)eyeSoftPlan(passes, in.standardFlooding, in.width, in.height);
-    const int shadowSize = in.shadow.depth.width();
-    resize(in.width, in.height, shadowSize);
+    resize(in.width, in.height, in.shadow.depth.width());
 
     // Phases 2-5 are the thesis' (§5.4), all within frame step 3.
     // Phase 2a (object-ID fix only): which object the light's centre sees at each texel.
     if (in.settings.objectIdFix) {
         if (timer) timer->begin("occluder ids");
-        const gl::Framebuffer fbo =
-            gl::Framebuffer::withTargets({&ids_}, &in.shadow.depth, "JFA-E occluder ids");
-        const float none = -1.0f;
-        glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, &none);
-        glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
-        glViewport(0, 0, shadowSize, shadowSize);
-        glEnable(GL_DEPTH_TEST);
-        glDepthFunc(GL_LEQUAL);
-        glDepthMask(GL_FALSE);
-        glDisable(GL_CULL_FACE);
-        lightIds_.set("uLightViewProj", in.shadow.lightViewProj);
-        lightIds_.set("uShadowWarp", in.shadow.warp);
-        lightIds_.set("uSlopeBias", in.shadowSettings.slopeBias);
-        lightIds_.set("uConstantBias", in.shadowSettings.constantBias);
-        in.scene.draw(lightIds_, GpuScene::Uniforms::Material);
-        glDepthMask(GL_TRUE);
-        glDepthFunc(GL_LESS);
-        glBindTextureUnit(0, 0);
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        drawOccluderIds(in);
         if (timer) timer->wrote(gl::textureBytes(ids_));
         if (timer) timer->end();
     }
 
     // Phase 2: hard shadows per pixel of the frame's surfaces, with occluders.
     if (timer) timer->begin("eye hard shadows");
-    {
-        glBindFramebuffer(GL_FRAMEBUFFER, eyeFbo_.id());
-        glViewport(0, 0, in.width, in.height);
-        glDisable(GL_DEPTH_TEST);
-        eyePass_.set("uHaveObjectIds", in.settings.objectIdFix ? 1 : 0);
-        eyePass_.set("uOccluderEdges", in.settings.occluderPoints == OccluderPoints::Edge ? 1 : 0);
-        eyePass_.set("uSilhouetteThreshold", in.settings.silhouetteThreshold);
-        setDiskLightUniforms(eyePass_, in.light);
-        bindShadowMap(eyePass_, in.shadow);
-        in.positions.bind(eyePass_, 0);
-        in.shadow.receivers->bind(eyePass_, 2);
-        glBindTextureUnit(3, ids_.id());
-        gl::drawFullscreenTriangle(eyePass_, emptyVao_);
-        for (GLuint unit : {0u, 1u, 2u, 3u}) glBindTextureUnit(unit, 0);
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    }
+    drawEyeHardShadows(in);
     if (timer) timer->wrote(gl::textureBytes(points_) + gl::textureBytes(occluders_));
     if (timer) timer->end();
 
     // Phase 3: boundary pixels become seeds with their occluders.
     if (timer) timer->begin("boundaries");
-    {
-        const BoundaryThreshold th = boundaryThreshold(in.settings, in.camera.proj, in.height);
-        glBindFramebuffer(GL_FRAMEBUFFER, seedsFbo_.id());
-        glViewport(0, 0, in.width, in.height);
-        glDisable(GL_DEPTH_TEST);
-        boundary_.set("uEye", in.camera.eye);
-        boundary_.set("uAbsolute2", th.absolute2);
-        boundary_.set("uRelative2", th.relative2);
-        // A banded flood lists its seeds here rather than sweeping the frame for them again.
-        const bool listSeeds = jfa::banded(in.region);
-        boundary_.set("uListSeeds", listSeeds ? 1 : 0);
-        if (listSeeds) kernel_.beginSeedList(in.width, in.height);
-        glBindTextureUnit(0, points_.id());
-        glBindTextureUnit(1, occluders_.id());
-        gl::drawFullscreenTriangle(boundary_, emptyVao_);
-        if (listSeeds) kernel_.seedsListed(seeds_);
-        glBindTextureUnit(0, 0);
-        glBindTextureUnit(1, 0);
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    }
+    const BoundaryThreshold th = boundaryThreshold(in.settings, in.camera.proj, in.height);
+    drawBoundaries(in, th);
     if (timer) timer->wrote(gl::textureBytes(seeds_));
     if (timer) timer->end();
 
-    // Phase 4: flood the occluders through the penumbrae, in eye space; its band (jfa/Band.h)
-    // and, with auto, its pass count first, timed apart.
+    // Phase 4: flood the occluders through the penumbrae, in eye space. With auto, first how
+    // far they travel in a coarse flood of this frame (EyeFloodReach.h), timed apart.
+    const bool autoPasses = passes == 0;
+    int measured = -1, geometric = -1;
+    if (autoPasses && in.settings.autoPasses == EyeAutoPasses::Measured) {
+        if (timer) timer->begin("pass count");
+        measured = measurePasses(in, th, maxPasses);
+        if (timer) timer->end();
+    }
+    // Then its band (jfa/Band.h).
     if (timer) timer->begin("band");
     EyeSoftCriterion criterion;
     criterion.light = in.light;
@@ -257,8 +301,12 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::Pass
         if (timer) timer->wrote(bounds_.bytes());
     }
     kernel_.setRegion(in.region, in.bandTile);
-    if (passes == 0) // auto: one value read back, since the plan is recorded on the CPU
-        passes = jfa::passesForReach(kernel_.maxSeedReach(seeds_, criterion), maxPasses);
+    if (autoPasses) {
+        // The geometric bound is band step A (one value read back; a banded run reuses the
+        // step). It caps the measured count too: no cell is accepted beyond it.
+        geometric = jfa::passesForReach(kernel_.maxSeedReach(seeds_, criterion), maxPasses);
+        passes = measured < 0 ? geometric : std::min(measured, geometric);
+    }
     const jfa::Plan plan = eyeSoftPlan(passes, in.standardFlooding, in.width, in.height);
     kernel_.prepareBand(plan, seeds_, criterion);
     if (timer) timer->end();
@@ -271,19 +319,11 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::Pass
 
     // Phase 5: visibility per pixel.
     if (timer) timer->begin("composite");
-    glBindFramebuffer(GL_FRAMEBUFFER, visibilityFbo_.id());
-    glViewport(0, 0, in.width, in.height);
-    glDisable(GL_DEPTH_TEST);
-    setDiskLightUniforms(composite_, in.light);
-    glBindTextureUnit(0, points_.id());
-    glBindTextureUnit(1, flooded.id());
-    gl::drawFullscreenTriangle(composite_, emptyVao_);
-    glBindTextureUnit(0, 0);
-    glBindTextureUnit(1, 0);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    drawComposite(in, flooded);
     if (timer) timer->wrote(gl::textureBytes(visibility_));
     if (timer) timer->end();
-    return {points_, occluders_, seeds_, flooded, visibility_, kernel_.passesRun(), passes};
+    return {points_, occluders_, seeds_,  flooded, visibility_, kernel_.passesRun(),
+            passes,  geometric,  measured};
 }
 
 } // namespace fl

@@ -29,9 +29,18 @@
 #include <gpu/ShaderLibrary.h>
 #include <jfa/GlKernel.h>
 
+#include <memory>
+
 namespace fl {
 
 struct CameraView;
+class EyeFloodEstimator; // renderer/soft/EyeFloodReach.h
+
+/// How `--jfa-passes auto` chooses JFA-E's (and flood-E's) count (--auto-passes).
+enum class EyeAutoPasses {
+    Measured,  // how far a coarse flood's cells travel (EyeFloodReach.h), capped by Geometric
+    Geometric, // the widest penumbra any seed's occluder could cast (the rule before issue 30)
+};
 
 /// Switches and thresholds of JFA-E / flood-E (the pass count is PenumbraSettings::passes).
 struct EyeSoftSettings {
@@ -49,6 +58,8 @@ struct EyeSoftSettings {
     OccluderPoints occluderPoints = OccluderPoints::Edge;
     /// Depth jump that makes a silhouette edge (silhouetteThreshold(scene radius)).
     float silhouetteThreshold = 1e-3f;
+    /// The rule of `--jfa-passes auto` (Inputs::passes 0).
+    EyeAutoPasses autoPasses = EyeAutoPasses::Measured;
 };
 
 /// Footprints of the automatic boundary threshold: wide enough for a floor seen at ~80 degrees
@@ -130,6 +141,9 @@ FloatImage eyeSoftVisibility(const EyeImage& image, const jfa::Grid& flooded,
 class EyeSoftShadowPass {
   public:
     explicit EyeSoftShadowPass(const gl::ShaderLibrary& shaders);
+    ~EyeSoftShadowPass();
+    EyeSoftShadowPass(const EyeSoftShadowPass&) = delete;
+    EyeSoftShadowPass& operator=(const EyeSoftShadowPass&) = delete;
 
     struct Inputs {
         const GpuScene& scene; // drawn from the light for the object ids
@@ -154,13 +168,21 @@ class EyeSoftShadowPass {
         const gl::Texture& visibility; // phase 5, R32F
         int passes;                    // flood passes run
         int jfaPasses;                 // the JFA pass count used (auto resolved)
+        /// Auto only: the geometric bound's count, and the measured one (-1 when not measured).
+        int geometricPasses = -1, measuredPasses = -1;
     };
     /// Runs phases 2-5; `timer` (optional) times them as "occluder ids", "eye hard shadows",
-    /// "boundaries", "band", "flood" and "composite".
+    /// "boundaries", "pass count" (measured auto only), "band", "flood" and "composite".
     Outputs execute(const Inputs& in, gl::PassTimer* timer = nullptr);
 
   private:
     void resize(int width, int height, int shadowSize);
+    void drawOccluderIds(const Inputs& in);                           // phase 2a
+    void drawEyeHardShadows(const Inputs& in);                        // phase 2
+    void drawBoundaries(const Inputs& in, BoundaryThreshold th);      // phase 3
+    void drawComposite(const Inputs& in, const gl::Texture& flooded); // phase 5
+    /// The measured auto count (EyeFloodReach.h) at most maxPasses; -1 for a frame too small.
+    int measurePasses(const Inputs& in, BoundaryThreshold threshold, int maxPasses);
 
     gl::Program lightIds_, eyePass_, boundary_, composite_;
     gl::VertexArray emptyVao_;
@@ -168,6 +190,8 @@ class EyeSoftShadowPass {
     gl::Framebuffer eyeFbo_, seedsFbo_, visibilityFbo_;
     jfa::GlFloodKernel<EyeSoftCriterion> kernel_;
     ReceiverBoundsPyramid bounds_; // tightens the band's bound (PenumbraReach)
+    const gl::ShaderLibrary& shaders_;
+    std::unique_ptr<EyeFloodEstimator> estimator_; // built at the first measured auto count
 
   public:
     /// The flood's kernel (its region and the last run's active share).
