@@ -16,7 +16,7 @@ uniform float uRelative2;
 
 uniform int uListSeeds; // append each seed to the band's seed list (jfa_seed_list.glsl)
 
-layout(location = 0) out vec4 oSeed;
+layout(location = 0) out float oSeed; // packed: the seed's index + 1, 0 none (jfae_criterion)
 
 void main() {
     ivec2 t = ivec2(gl_FragCoord.xy);
@@ -36,9 +36,8 @@ void main() {
             boundary = boundary || (inside && n.w == 0.0 && d2 < limit2);
         }
     }
-    vec3 o = texelFetch(uEyeOccluders, t, 0).xyz;
     float index = float(t.y * size.x + t.x + 1);
     bool seed = self.w == 1.0 && boundary;
-    oSeed = seed ? vec4(o, index) : vec4(0.0, 0.0, -1.0, 0.0);
+    oSeed = seed ? index : 0.0;
     if (seed && uListSeeds != 0) jfaListSeed(t);
 }

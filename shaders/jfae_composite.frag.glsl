@@ -6,14 +6,18 @@
 #include "disk_light.glsl"
 
 layout(binding = 0) uniform sampler2D uEyePoints;
-layout(binding = 1) uniform sampler2D uFlooded;
+layout(binding = 1) uniform sampler2D uFlooded;   // packed cells: the seed pixel's index + 1
+layout(binding = 2) uniform sampler2D uOccluders; // phase 2's occluders (the cells' xyz)
 
 layout(location = 0) out float oVisibility;
 
 void main() {
     ivec2 t = ivec2(gl_FragCoord.xy);
     vec4 r = texelFetch(uEyePoints, t, 0);
-    vec4 c = texelFetch(uFlooded, t, 0);
+    float w = texelFetch(uFlooded, t, 0).r;
+    int index = int(w) - 1, width = textureSize(uOccluders, 0).x;
+    vec4 c = vec4(0.0, 0.0, -1.0, w);
+    if (w != 0.0) c.xyz = texelFetch(uOccluders, ivec2(index % width, index / width), 0).xyz;
     bool inside = r.w == 1.0;
     float v = inside ? 0.0 : 1.0;
     if (r.w >= 0.0 && c.w != 0.0) {

@@ -92,6 +92,12 @@ bool jfaBetter(ivec2 p, vec4 a, vec4 b) {
     return da < db || (da == db && tieWins);
 }
 
-// Cells are stored as they are (RGBA32F).
-vec4 jfaLoad(sampler2D grid, ivec2 q) { return texelFetch(grid, q, 0); }
-vec4 jfaStore(vec4 c) { return c; }
+// Cells are packed (JFA_CELL_FORMAT r32f): a texel stores w alone, the seed pixel's index + 1,
+// 4 bytes instead of 16; the occluder is the one phase 2 found at the seed pixel, which the
+// boundary pass copied (jfae_boundary.frag.glsl).
+vec4 jfaLoad(sampler2D grid, ivec2 q) {
+    float w = texelFetch(grid, q, 0).r;
+    if (w == 0.0) return vec4(0.0, 0.0, -1.0, 0.0);
+    return vec4(texelFetch(uEyeOccluders, seedPixelOf(vec4(w)), 0).xyz, w);
+}
+vec4 jfaStore(vec4 c) { return vec4(c.w); }

@@ -12,9 +12,9 @@ void main() {
     ivec2 size = textureSize(uFlooded, 0);
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(p, size))) return;
-    vec4 c = texelFetch(uFlooded, p, 0);
-    if (c.w == 0.0) return;
-    int index = int(c.w) - 1;
+    float w = texelFetch(uFlooded, p, 0).r; // packed cells: w alone (jfae_criterion.glsl)
+    if (w == 0.0) return;
+    int index = int(w) - 1;
     ivec2 d = abs(p - ivec2(index % size.x, index / size.x));
     atomicAdd(bins[min(max(d.x, d.y), bins.length() - 1)], 1u);
 }

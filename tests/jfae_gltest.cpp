@@ -138,7 +138,7 @@ TEST_F(JfaETest, PhasesMatchTheCpuReference) {
         // Phase 3: boundary seeds, exactly.
         const BoundaryThreshold th = boundaryThreshold(eyeSettings, s.camera.proj, k.height);
         const jfa::Grid cpuSeeds = eyeBoundarySeeds(image, s.camera.eye, th);
-        const jfa::Grid gpuSeeds = jfa::readGrid(*out.seeds);
+        const jfa::Grid gpuSeeds = readFloodGrid(out, *out.seeds);
         ASSERT_EQ(gpuSeeds, cpuSeeds) << "boundary seeds differ";
         EXPECT_GT(nonEmpty(cpuSeeds), 20u);
 
@@ -149,7 +149,7 @@ TEST_F(JfaETest, PhasesMatchTheCpuReference) {
         criterion.objectIdFix = criterion.midpointFix = k.fixes;
         const jfa::Plan plan = eyeSoftPlan(4, standardFlooding, k.width, k.height);
         const jfa::Grid cpuFlood = jfa::flood(plan, cpuSeeds, criterion);
-        const jfa::Grid gpuFlood = jfa::readGrid(*out.flooded);
+        const jfa::Grid gpuFlood = readFloodGrid(out, *out.flooded);
         std::size_t differ = 0;
         for (std::size_t i = 0; i < cpuFlood.cells.size(); ++i)
             differ += !(cpuFlood.cells[i] == gpuFlood.cells[i]);
@@ -213,7 +213,7 @@ Frame renderDefault(std::string_view method, float radius = kTestRadius, bool ob
     Frame f;
     if (const FloodFrame* flood = r.flood(); flood && flood->eye) {
         f.image = readEyeImage(*flood);
-        f.flooded = jfa::readGrid(*flood->flooded);
+        f.flooded = readFloodGrid(*flood, *flood->flooded);
         f.passes = flood->passes;
     }
     f.vis = readR32F(r.visibility());
@@ -270,7 +270,7 @@ TEST_F(JfaETest, SceneWithoutCastersIsLitEverywhere) {
     r.render(makeCameraView(scene, {}, 1.0f));
     for (float x : readR32F(r.visibility())) ASSERT_EQ(x, 1.0f);
     ASSERT_NE(r.flood(), nullptr);
-    EXPECT_EQ(nonEmpty(jfa::readGrid(*r.flood()->seeds)), 0u);
+    EXPECT_EQ(nonEmpty(readFloodGrid(*r.flood(), *r.flood()->seeds)), 0u);
 }
 
 TEST_F(JfaETest, PassCountsOutsideTheRangeAreRejected) {

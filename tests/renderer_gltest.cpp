@@ -213,8 +213,8 @@ TEST_F(RendererTest, BytesWrittenAreTheTargetsFormatsTimesTheirTexels) {
         const std::map<std::string, std::int64_t> b = bytesOf(r);
         const bool light = std::string(method) == "jfa-l";
         EXPECT_EQ(b.at("shadow map"), texels * (4 + 4)) << method; // + the receiver target (R32F)
-        // JFA-L's cells are packed (a seed's tag, R32F); JFA-E's are RGBA32F.
-        EXPECT_EQ(b.at("flood"), 3 * (light ? texels * 4 : pixels * 16)) << method;
+        // Both methods' cells are packed in one R32F texel (a seed's tag / index + 1).
+        EXPECT_EQ(b.at("flood"), 3 * (light ? texels : pixels) * 4) << method;
     }
 }
 

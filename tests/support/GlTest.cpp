@@ -75,7 +75,7 @@ FloodRun renderFlood(const gl::ShaderLibrary& shaders, const Scene& scene, const
     const FloodFrame* flood = r.flood();
     if (!flood || !flood->flooded || !flood->kernel)
         throw std::invalid_argument("renderFlood: " + settings.method + " does not flood");
-    return {jfa::readGrid(*flood->flooded), flood->kernel->lastRunBanded(),
+    return {readFloodGrid(*flood, *flood->flooded), flood->kernel->lastRunBanded(),
             flood->kernel->activeShare()};
 }
 

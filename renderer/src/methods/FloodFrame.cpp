@@ -1,4 +1,5 @@
 #include <renderer/methods/ShadowMethod.h>
+#include <renderer/soft/EyeSoftShadow.h>
 #include <renderer/soft/PenumbraMap.h>
 
 #include <jfa/GlKernel.h>
@@ -8,7 +9,7 @@
 namespace fl {
 
 jfa::Grid readFloodGrid(const FloodFrame& frame, const gl::Texture& grid) {
-    if (frame.eye) return jfa::readGrid(grid);
+    if (frame.eye) return readEyeGrid(grid, *frame.occluders);
     if (frame.map == nullptr)
         throw std::logic_error("readFloodGrid: a light-space flood without its shadow map");
     const jfa::Grid decoded = jfa::readGrid(frame.map->decoded());

@@ -93,22 +93,18 @@ const gl::Texture& floodFrame(State& s, const Renderer& r, const Soft& soft,
 }
 
 // A grid of the frame's flood read back as cells, and a texture of them the canvas can draw:
-// light grids are packed on the GPU (PenumbraCriterion::packedCells), so they are drawn from an
-// upload of their cells; eye grids as they are.
+// the GPU's grids are packed (PenumbraCriterion/EyeSoftCriterion::packedCells), so they are
+// drawn from an upload of their cells.
 struct Cells {
     jfa::Grid grid;
-    gl::Texture unpacked;                // light only
-    const gl::Texture* stored = nullptr; // eye only
-    [[nodiscard]] const gl::Texture& texture() const { return unpacked ? unpacked : *stored; }
+    gl::Texture unpacked;
+    [[nodiscard]] const gl::Texture& texture() const { return unpacked; }
 };
 
 Cells readCells(const Soft& soft, const gl::Texture& grid) {
     Cells c;
     c.grid = readFloodGrid(soft, grid);
-    if (soft.eye)
-        c.stored = &grid;
-    else
-        c.unpacked = jfa::uploadGrid(c.grid);
+    c.unpacked = jfa::uploadGrid(c.grid);
     return c;
 }
 

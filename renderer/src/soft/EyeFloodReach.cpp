@@ -87,7 +87,7 @@ void EyeFloodEstimator::resize(glm::ivec2 size) {
     if (points_ && points_.width() == size.x && points_.height() == size.y) return;
     points_ = gl::Texture(GL_RGBA32F, size.x, size.y);
     occluders_ = gl::Texture(GL_RGBA32F, size.x, size.y);
-    seeds_ = gl::Texture(GL_RGBA32F, size.x, size.y);
+    seeds_ = gl::Texture(GL_R32F, size.x, size.y); // packed cells (EyeSoftCriterion)
     imageFbo_ =
         gl::Framebuffer::withTargets({&points_, &occluders_}, nullptr, "JFA-E coarse image");
     seedsFbo_ = gl::Framebuffer::forColor(seeds_, "JFA-E coarse seeds");
@@ -148,6 +148,9 @@ std::vector<std::uint32_t> EyeFloodEstimator::travel(const gl::Texture& points,
     glBindTextureUnit(0, 0);
     glUseProgram(0);
     std::vector<std::uint32_t> bins(kTravelBins, 0u);
+    bytes_ = gl::textureBytes(points_) + gl::textureBytes(occluders_) + gl::textureBytes(seeds_) +
+             std::int64_t(plan.passCount()) * gl::textureBytes(flooded) +
+             std::int64_t(bins.size() * sizeof(bins[0]));
     glGetNamedBufferSubData(bins_.id(), 0, static_cast<GLsizeiptr>(bins.size() * sizeof(bins[0])),
                             bins.data());
     return bins;

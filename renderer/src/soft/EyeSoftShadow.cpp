@@ -117,6 +117,25 @@ void setCriterionUniforms(const gl::Program& program, const EyeSoftCriterion& cr
     glBindTextureUnit(3, criterion.occludersTexture);
 }
 
+jfa::Grid readEyeGrid(const gl::Texture& packed, const gl::Texture& occluders) {
+    const int w = packed.width(), h = packed.height();
+    std::vector<float> tags(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
+    glGetTextureImage(packed.id(), 0, GL_RED, GL_FLOAT,
+                      static_cast<GLsizei>(tags.size() * sizeof(float)), tags.data());
+    gl::throwIfErrors("eye grid read-back");
+    const jfa::Grid occ = jfa::readGrid(occluders);
+    jfa::Grid out(w, h, jfa::kEmptyCell);
+    for (std::size_t i = 0; i < tags.size(); ++i) {
+        if (tags[i] == 0.0f) continue;
+        const auto seed = static_cast<std::size_t>(tags[i]) - 1;
+        if (seed >= occ.cells.size())
+            throw std::logic_error("readEyeGrid: a seed index beyond the occluders");
+        const jfa::Cell& o = occ.cells[seed];
+        out.cells[i] = {o.x, o.y, o.z, tags[i]};
+    }
+    return out;
+}
+
 FloatImage eyeSoftVisibility(const EyeImage& im, const jfa::Grid& flooded, const DiskLight& light) {
     FloatImage out{im.width, im.height, 1, std::vector<float>(im.points.size(), 1.0f)};
     for (std::size_t i = 0; i < im.points.size(); ++i) {
@@ -153,7 +172,7 @@ void EyeSoftShadowPass::resize(int width, int height, int shadowSize) {
     if (points_ && points_.width() == width && points_.height() == height) return;
     points_ = gl::Texture(GL_RGBA32F, width, height);
     occluders_ = gl::Texture(GL_RGBA32F, width, height);
-    seeds_ = gl::Texture(GL_RGBA32F, width, height);
+    seeds_ = gl::Texture(GL_R32F, width, height); // packed cells (EyeSoftCriterion)
     visibility_ = gl::Texture(GL_R32F, width, height);
     eyeFbo_ = gl::Framebuffer::withTargets({&points_, &occluders_}, nullptr, "JFA-E eye pass");
     seedsFbo_ = gl::Framebuffer::forColor(seeds_, "JFA-E boundary seeds");
@@ -227,9 +246,9 @@ void EyeSoftShadowPass::drawComposite(const Inputs& in, const gl::Texture& flood
     setDiskLightUniforms(composite_, in.light);
     glBindTextureUnit(0, points_.id());
     glBindTextureUnit(1, flooded.id());
+    glBindTextureUnit(2, occluders_.id());
     gl::drawFullscreenTriangle(composite_, emptyVao_);
-    glBindTextureUnit(0, 0);
-    glBindTextureUnit(1, 0);
+    for (GLuint unit : {0u, 1u, 2u}) glBindTextureUnit(unit, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
@@ -285,6 +304,7 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::Pass
     if (autoPasses && in.settings.autoPasses == EyeAutoPasses::Measured) {
         if (timer) timer->begin("pass count");
         measured = measurePasses(in, th, maxPasses);
+        if (timer && estimator_) timer->wrote(estimator_->bytes());
         if (timer) timer->end();
     }
     // Then its band (jfa/Band.h).

@@ -62,6 +62,9 @@ class EyeFloodEstimator {
     /// histogram back (one sync point); empty when the coarse grid is too small to flood.
     std::vector<std::uint32_t> travel(const gl::Texture& points, const gl::Texture& occluders,
                                       const CoarseFloodSettings& s);
+    /// Bytes the last travel() wrote: the coarse images and seeds, every pass of its flood and
+    /// the histogram (what PassTimer counts for the "pass count" phase).
+    [[nodiscard]] std::int64_t bytes() const { return bytes_; }
 
   private:
     void resize(glm::ivec2 size);
@@ -72,6 +75,7 @@ class EyeFloodEstimator {
     gl::Framebuffer imageFbo_, seedsFbo_;
     gl::Buffer bins_;
     jfa::GlFloodKernel<EyeSoftCriterion> kernel_;
+    std::int64_t bytes_ = 0;
 };
 
 } // namespace fl

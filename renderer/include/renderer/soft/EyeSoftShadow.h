@@ -110,6 +110,9 @@ jfa::Grid eyeBoundarySeeds(const EyeImage& image, glm::vec3 eye, BoundaryThresho
 struct EyeSoftCriterion {
     static constexpr const char* glslFile = "jfae_criterion.glsl";
     static constexpr bool keyed = true; // the GLSL has jfaKey (jfa_select.glsl)
+    /// GL grids hold a cell as its w alone (R32F; jfaLoad takes the occluder from the
+    /// occluders texture at the seed pixel): readEyeGrid turns one back into cells.
+    static constexpr bool packedCells = true;
     DiskLight light;
     bool objectIdFix = true;
     bool midpointFix = true;
@@ -133,6 +136,11 @@ void setCriterionUniforms(const gl::Program& program, const EyeSoftCriterion& cr
 
 /// CPU reference of phase 5 (shaders/jfae_composite.frag.glsl): one visibility per pixel.
 /// Uses std::acos, so equal to the GL result only to float rounding (~1e-6).
+/// A JFA-E grid as the GL kernels store it (R32F, packed cells: the seed pixel's index + 1, 0
+/// empty; EyeSoftCriterion::packedCells) turned back into cells, each occluder read from
+/// `occluders` (phase 2's, EyeImage::occluders) at its seed pixel: jfaLoad's CPU twin.
+jfa::Grid readEyeGrid(const gl::Texture& packed, const gl::Texture& occluders);
+
 FloatImage eyeSoftVisibility(const EyeImage& image, const jfa::Grid& flooded,
                              const DiskLight& light);
 
@@ -163,8 +171,8 @@ class EyeSoftShadowPass {
     struct Outputs {
         const gl::Texture& points;     // phase 2, RGBA32F (EyeImage::points)
         const gl::Texture& occluders;  // phase 2, RGBA32F (EyeImage::occluders)
-        const gl::Texture& seeds;      // phase 3, RGBA32F cells
-        const gl::Texture& flooded;    // phase 4, RGBA32F cells
+        const gl::Texture& seeds;      // phase 3, packed cells (R32F, readEyeGrid)
+        const gl::Texture& flooded;    // phase 4, packed cells (R32F, readEyeGrid)
         const gl::Texture& visibility; // phase 5, R32F
         int passes;                    // flood passes run
         int jfaPasses;                 // the JFA pass count used (auto resolved)
