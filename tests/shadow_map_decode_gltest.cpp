@@ -8,10 +8,12 @@
 
 #include <renderer/Renderer.h>
 #include <renderer/passes/ShadowMapDecode.h>
+#include <renderer/soft/PenumbraReach.h>
 
 #include <jfa/GlKernel.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -98,6 +100,47 @@ TEST_F(ShadowMapDecodeTest, SeedTagsAreDistinctNonZeroNormalFloatsUpToTheLargest
     }
     EXPECT_NE(shadowmap::seedTag(1, 0, width), shadowmap::seedTag(0, 1, width));
     EXPECT_NE(shadowmap::seedTag(8190, 8191, width), shadowmap::seedTag(8191, 8191, width));
+}
+
+// The reach bounds pyramid built straight from the receiver target (MAP_RECEIVERS, JFA-L's
+// path) equals the one built from the decoded positions (the eye path's shader): the same boxes
+// to the decoders' last bit.
+TEST_F(ShadowMapDecodeTest, BoundsPyramidFromTheTargetEqualsTheOneFromDecodedPositions) {
+    const SceneView s = spotLitBox();
+    RenderSettings settings;
+    settings.shadow.size = 128;
+    settings.shadow.provider = ShadowMapProvider::Tsm;
+    settings.method = "jfa-l";
+    Renderer r(fl::test::testShaders(), s.scene, settings);
+    r.resize(64, 64);
+    r.render(s.camera);
+    const MapPositions& map = *r.shadow()->receivers;
+    ReceiverBoundsPyramid fromTarget(fl::test::testShaders());
+    ReceiverBoundsPyramid fromDecoded(fl::test::testShaders());
+    std::array<PenumbraReach, 2> reach{};
+    fromTarget.build(map, r.disk(), reach[0]);
+    fromDecoded.build(r.decodedShadowReceivers(), 0.5f, r.disk(), reach[1]);
+    ASSERT_EQ(reach[0].boundsLevels, reach[1].boundsLevels);
+    ASSERT_GT(reach[0].boundsLevels, 1);
+    float worst = 0.0f;
+    std::size_t boxes = 0;
+    for (int level = 0, side = 16; level < reach[0].boundsLevels;
+         ++level, side = std::max(1, side / 2))
+        for (GLuint PenumbraReach::*tex : {&PenumbraReach::boundsLo, &PenumbraReach::boundsHi}) {
+            std::array<std::vector<float>, 2> v;
+            for (int i = 0; i < 2; ++i) {
+                v[std::size_t(i)].resize(std::size_t(side * side * 4));
+                glGetTextureImage(reach[std::size_t(i)].*tex, level, GL_RGBA, GL_FLOAT,
+                                  GLsizei(v[std::size_t(i)].size() * sizeof(float)),
+                                  v[std::size_t(i)].data());
+            }
+            for (std::size_t k = 0; k < v[0].size(); ++k) {
+                boxes += std::abs(v[0][k]) < 1e29f;
+                worst = std::max(worst, std::abs(v[0][k] - v[1][k]));
+            }
+        }
+    EXPECT_GT(boxes, 100u);
+    EXPECT_LT(worst, 1e-5f);
 }
 
 } // namespace
