@@ -73,6 +73,13 @@ TEST(Cli, TsmStabilityStepsOutOfRangeAreOneUsageError) {
                            "--tsm-quantize 0.5 --tsm-snap 0 --tsm-hysteresis 0.5 --out " +
                            outputDir("cli_tsm_ranges").string());
     EXPECT_EQ(ok.code, 0) << ok.output;
+    // On the uniform map a stability step is a conflicting option: one message, exit 2.
+    const Outcome uniform = run("render --width 32 --height 32 --tsm-hysteresis 0.1 --out " +
+                                outputDir("cli").string());
+    EXPECT_EQ(uniform.code, 2) << uniform.output;
+    EXPECT_NE(uniform.output.find("--tsm-hysteresis: only with --shadow-map tsm"),
+              std::string::npos)
+        << uniform.output;
 }
 
 TEST(Cli, BadCameraIsAnInputError) {

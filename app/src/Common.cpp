@@ -287,6 +287,13 @@ RenderSettings makeRenderSettings(const SceneOptions& o) {
     s.shadow.size = o.shadowMapSize;
     s.shadow.provider = parseProvider(o.shadowMap).value_or(ShadowMapProvider::Uniform);
     s.shadow.tsm = o.tsm;
+    // A TSM stability step on the uniform map would do nothing: refused like a method option
+    // the method does not take (the window, which can switch providers, lets it through).
+    if (o.strictMethodOptions && s.shadow.provider != ShadowMapProvider::Tsm)
+        for (const TsmOption& t : tsmOptions())
+            if (o.tsm.*t.field != 0.0f)
+                throw UsageError(std::string(t.flag) + ": only with --shadow-map tsm (the " +
+                                 "shadow map is " + o.shadowMap + ")");
     const MethodDescriptor* method = findMethod(o.method);
     if (!method)
         throw UsageError("--method " + o.method + ": unknown method (valid: " + methodNames() +
