@@ -11,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <sys/wait.h>
 #include <unistd.h>
 
 namespace fl {
@@ -112,6 +113,30 @@ TEST(OutputFiles, TemporariesOfKilledWritersAreRemovedAndNothingElse) {
     EXPECT_FALSE(fs::exists(d / "frames" / ".a.exr.tmp999999999.3"));
     for (const fs::path& f : {d / mine, d / "keep.png", d / ".hidden", d / "x.tmp12.1"})
         EXPECT_TRUE(fs::exists(f)) << f;
+}
+
+// A killed writer its parent has not reaped yet (a zombie, which kill(pid, 0) still finds) is
+// dead too: its temporary goes (seen in capture_resume_cli_test before it reaped its run).
+TEST(OutputFiles, TemporariesOfAnUnreapedKilledWriterAreRemoved) {
+    const fs::path d = freshDir("zombie");
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) ::_exit(0); // exits at once and stays a zombie until waited for
+    // Wait until it is a zombie (state Z), without reaping it.
+    for (int i = 0; i < 500; ++i) {
+        std::ifstream stat("/proc/" + std::to_string(child) + "/stat");
+        std::string line;
+        std::getline(stat, line);
+        const std::size_t close = line.rfind(')');
+        if (close != std::string::npos && close + 2 < line.size() && line[close + 2] == 'Z') break;
+        ::usleep(2000);
+    }
+    const fs::path tmp = d / (".c.png.tmp" + std::to_string(child) + ".0");
+    std::ofstream(tmp) << "x";
+    EXPECT_EQ(removeKilledTemporaries(d), 1u);
+    EXPECT_FALSE(fs::exists(tmp));
+    int status = 0;
+    ::waitpid(child, &status, 0);
 }
 
 } // namespace

@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <csignal>
 #include <cstring>
+#include <fstream>
 #include <regex>
 #include <string>
 #include <system_error>
@@ -18,6 +19,21 @@ namespace fl {
 namespace {
 
 thread_local OutputSet* current = nullptr;
+
+// Whether process `pid` still runs. A killed process its parent has not reaped yet is a zombie:
+// kill(pid, 0) still finds it, but it writes nothing any more (Linux: state Z or X in
+// /proc/PID/stat, the field after the command name's closing parenthesis).
+bool processRuns(pid_t pid) {
+    if (pid == ::getpid()) return true;
+    if (::kill(pid, 0) != 0 && errno != EPERM) return false;
+    std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+    std::string line;
+    if (!stat || !std::getline(stat, line)) return true; // no /proc: trust kill()
+    const std::size_t close = line.rfind(')');
+    if (close == std::string::npos || close + 2 >= line.size()) return true;
+    const char state = line[close + 2];
+    return state != 'Z' && state != 'X';
+}
 
 [[noreturn]] void fail(const std::filesystem::path& path, const std::string& problem) {
     throw OutputFileError(path.string() + ": " + problem);
@@ -110,7 +126,7 @@ std::size_t removeKilledTemporaries(const std::filesystem::path& dir) {
         const std::string leaf = it->path().filename().string();
         if (!it->is_regular_file(ec) || !std::regex_match(leaf, m, name)) continue;
         const auto pid = static_cast<pid_t>(std::stol(m[1].str()));
-        if (pid == ::getpid() || (::kill(pid, 0) == 0 || errno == EPERM)) continue; // alive
+        if (processRuns(pid)) continue; // a live writer's
         std::error_code gone;
         if (std::filesystem::remove(it->path(), gone)) ++removed;
     }
