@@ -8,9 +8,7 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-#ifndef JFA_CELL_FORMAT
-#define JFA_CELL_FORMAT rgba32f // the kernel defines r32f for packed cells
-#endif
+// JFA_CELL_FORMAT: rgba32f, or r32f for packed cells (jfa::detail::cellFormatDefine).
 layout(binding = 0, JFA_CELL_FORMAT) uniform writeonly image2D uDst;
 uniform ivec2 uSize;
 

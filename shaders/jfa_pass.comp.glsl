@@ -4,9 +4,7 @@
 // (jfa_band_compact.comp.glsl) by an indirect dispatch: group x = the list entry, group y = the
 // 8x8 block within the tile.
 #include "jfa_select.glsl"
-#ifndef JFA_CELL_FORMAT
-#define JFA_CELL_FORMAT rgba32f // the kernel defines r32f for packed cells
-#endif
+// JFA_CELL_FORMAT: rgba32f, or r32f for packed cells (jfa::detail::cellFormatDefine).
 
 layout(local_size_x = 8, local_size_y = 8) in;
 

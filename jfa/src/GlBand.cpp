@@ -55,8 +55,7 @@ void GlFloodKernelBase::buildBandPrograms() {
     markProgram_ = gl::Program::build(shaders_, {{GL_COMPUTE_SHADER, "jfa_band_mark.comp.glsl"}});
     compactProgram_ =
         gl::Program::build(shaders_, {{GL_COMPUTE_SHADER, "jfa_band_compact.comp.glsl"}});
-    std::vector<std::string> cellDefines;
-    if (cellFormat_ == GL_R32F) cellDefines.emplace_back("JFA_CELL_FORMAT r32f");
+    const std::vector<std::string> cellDefines{detail::cellFormatDefine(cellFormat_ == GL_R32F)};
     clearProgram_ = gl::Program::build(shaders_, {{GL_COMPUTE_SHADER, "jfa_band_clear.comp.glsl"}},
                                        cellDefines);
     viewProgram_ = gl::Program::build(shaders_, {{GL_COMPUTE_SHADER, "jfa_band_view.comp.glsl"}});

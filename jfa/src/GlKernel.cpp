@@ -35,12 +35,30 @@ Grid readGrid(const gl::Texture& texture) {
     return g;
 }
 
+Grid readPackedGrid(const gl::Texture& packed, const Grid& source,
+                    std::size_t (*seedIndex)(float stored)) {
+    std::vector<float> stored(static_cast<std::size_t>(packed.width()) *
+                              static_cast<std::size_t>(packed.height()));
+    glGetTextureImage(packed.id(), 0, GL_RED, GL_FLOAT,
+                      static_cast<GLsizei>(stored.size() * sizeof(float)), stored.data());
+    gl::throwIfErrors("jfa packed grid read-back");
+    Grid out(packed.width(), packed.height(), kEmptyCell);
+    for (std::size_t i = 0; i < stored.size(); ++i) {
+        if (stored[i] == 0.0f) continue;
+        const std::size_t seed = seedIndex(stored[i]);
+        if (seed >= source.cells.size())
+            throw std::logic_error("readPackedGrid: a seed index beyond the source grid");
+        const Cell& o = source.cells[seed];
+        out.cells[i] = {o.x, o.y, o.z, stored[i]};
+    }
+    return out;
+}
+
 namespace {
 
 gl::Program buildKernel(const gl::ShaderLibrary& shaders, const std::string& criterionFile,
                         GlKernelKind kind, bool expand, bool keyed, bool packed) {
-    std::vector<std::string> defines;
-    if (packed) defines.emplace_back("JFA_CELL_FORMAT r32f");
+    std::vector<std::string> defines{detail::cellFormatDefine(packed)};
     if (expand) defines.emplace_back("JFA_EXPAND");
     if (keyed) defines.emplace_back("JFA_KEYED");
     if (kind == GlKernelKind::Fragment)
@@ -55,6 +73,10 @@ gl::Program buildKernel(const gl::ShaderLibrary& shaders, const std::string& cri
 }
 
 } // namespace
+
+std::string detail::cellFormatDefine(bool packed) {
+    return packed ? "JFA_CELL_FORMAT r32f" : "JFA_CELL_FORMAT rgba32f";
+}
 
 GlFloodKernelBase::GlFloodKernelBase(const gl::ShaderLibrary& shaders,
                                      const std::string& criterionFile, GlKernelKind kind,

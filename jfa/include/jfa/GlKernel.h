@@ -38,6 +38,11 @@ void setCriterionUniforms(const gl::Program& program, const NearestSite& criteri
 gl::Texture uploadGrid(const Grid& grid);
 /// Reads an RGBA32F texture back into a grid.
 Grid readGrid(const gl::Texture& texture);
+/// Reads a grid of packed cells (R32F, 0 empty; see PackedCells) back: the cell of stored value
+/// v is source's cell seedIndex(v) with w = v (the criterion's jfaLoad, on the CPU). Throws
+/// std::logic_error for an index beyond `source`.
+Grid readPackedGrid(const gl::Texture& packed, const Grid& source,
+                    std::size_t (*seedIndex)(float stored));
 
 /// Widens a set of tiles by `reach` tiles per axis, a square, on the GPU: one uint per tile of a
 /// tiles.x x tiles.y grid, row-major, nonzero where set (shaders/tile_dilate.comp.glsl, along x
@@ -223,6 +228,12 @@ template <class C>
 concept Keyed = requires {
     requires C::keyed;
 };
+
+namespace detail {
+/// The define every program that writes a kernel's cells is built with: "JFA_CELL_FORMAT r32f"
+/// for packed cells, else "JFA_CELL_FORMAT rgba32f".
+std::string cellFormatDefine(bool packed);
+} // namespace detail
 
 /// Criteria whose cells the GL kernels store packed in one R32F texel (the GLSL's jfaLoad and
 /// jfaStore unpack and pack them); the GL textures of their grids hold that form.

@@ -8,15 +8,24 @@
 
 namespace fl {
 
-jfa::Grid readFloodGrid(const FloodFrame& frame, const gl::Texture& grid) {
-    if (frame.eye) return readEyeGrid(grid, *frame.occluders);
+namespace {
+const gl::Texture& unpackSource(const FloodFrame& frame) {
+    if (frame.eye) return *frame.occluders;
     if (frame.map == nullptr)
-        throw std::logic_error("readFloodGrid: a light-space flood without its shadow map");
-    const jfa::Grid decoded = jfa::readGrid(frame.map->decoded());
-    ReceiverGrid receivers{decoded.width, decoded.height, {}};
-    receivers.points.reserve(decoded.cells.size());
-    for (const jfa::Cell& c : decoded.cells) receivers.points.emplace_back(c.x, c.y, c.z, c.w);
-    return readPenumbraGrid(grid, receivers);
+        throw std::logic_error("FloodGridReader: a light-space flood without its shadow map");
+    return frame.map->decoded();
+}
+} // namespace
+
+FloodGridReader::FloodGridReader(const FloodFrame& frame)
+    : eye_(frame.eye), source_(jfa::readGrid(unpackSource(frame))) {}
+
+jfa::Grid FloodGridReader::read(const gl::Texture& grid) const {
+    return eye_ ? readEyeGrid(grid, source_) : readPenumbraGrid(grid, source_);
+}
+
+jfa::Grid readFloodGrid(const FloodFrame& frame, const gl::Texture& grid) {
+    return FloodGridReader(frame).read(grid);
 }
 
 } // namespace fl

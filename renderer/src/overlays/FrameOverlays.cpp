@@ -101,9 +101,9 @@ struct Cells {
     [[nodiscard]] const gl::Texture& texture() const { return unpacked; }
 };
 
-Cells readCells(const Soft& soft, const gl::Texture& grid) {
+Cells readCells(const FloodGridReader& reader, const gl::Texture& grid) {
     Cells c;
-    c.grid = readFloodGrid(soft, grid);
+    c.grid = reader.read(grid);
     c.unpacked = jfa::uploadGrid(c.grid);
     return c;
 }
@@ -132,7 +132,7 @@ Lines drawSeeds(State& s, const Frame& f) {
     const std::optional<Soft> soft = softOf(f.renderer);
     if (!soft) return {kNeedsSoft};
     const glm::ivec4 vp = viewportOf(*soft, f);
-    Cells seeds = readCells(*soft, *soft->seeds);
+    Cells seeds = readCells(FloodGridReader(*soft), *soft->seeds);
     f.bindTarget();
     s.canvas.drawGrid({GridMode::Seeds, &seeds.texture()}, vp);
     s.result.grid = std::move(seeds.grid);
@@ -147,7 +147,7 @@ Lines drawSeeds(State& s, const Frame& f) {
 // and keeps it as the overlay's result.
 static void drawOccluders(State& s, const Frame& f, const Soft& soft, const gl::Texture& grid) {
     const glm::ivec4 vp = viewportOf(soft, f);
-    Cells cells = readCells(soft, grid);
+    Cells cells = readCells(FloodGridReader(soft), grid);
     // Light space: the map's positions decoded (the bits the flood's criterion read).
     GridDraw g{GridMode::Occluder, &cells.texture(),
                soft.eye ? soft.receivers : &f.renderer.decodedShadowReceivers()};
@@ -236,12 +236,13 @@ Lines drawJfaVsFlood(State& s, const Frame& f) {
     key.push_back(soft->eye ? 1.0f : 0.0f);
     key.push_back(soft->objectIdFix ? 1.0f : 0.0f);
     key.push_back(soft->midpointFix ? 1.0f : 0.0f);
-    jfa::Grid seeds = readFloodGrid(*soft, *soft->seeds);
+    const FloodGridReader reader(*soft); // the unpacking source read once for all three grids
+    jfa::Grid seeds = reader.read(*soft->seeds);
     ReferenceCache& cache = s.reference;
     const bool reused = cache.key == key && cache.seeds == seeds;
     if (!reused) {
         const auto t0 = std::chrono::steady_clock::now();
-        cache.reference = readFloodGrid(*soft, floodFrame(s, f.renderer, *soft, plan));
+        cache.reference = reader.read(floodFrame(s, f.renderer, *soft, plan));
         cache.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
                        .count();
         cache.texture = jfa::uploadGrid(cache.reference);
@@ -251,7 +252,7 @@ Lines drawJfaVsFlood(State& s, const Frame& f) {
     const gl::Texture& other = cache.texture;
     const double ms = cache.ms;
     s.result.reference = cache.reference;
-    Cells flooded = readCells(*soft, *soft->flooded);
+    Cells flooded = readCells(reader, *soft->flooded);
     s.result.grid = flooded.grid;
     s.result.mask.assign(s.result.grid.cells.size(), 0);
     for (std::size_t i = 0; i < s.result.mask.size(); ++i)

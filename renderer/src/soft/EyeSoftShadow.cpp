@@ -117,23 +117,10 @@ void setCriterionUniforms(const gl::Program& program, const EyeSoftCriterion& cr
     glBindTextureUnit(3, criterion.occludersTexture);
 }
 
-jfa::Grid readEyeGrid(const gl::Texture& packed, const gl::Texture& occluders) {
-    const int w = packed.width(), h = packed.height();
-    std::vector<float> tags(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
-    glGetTextureImage(packed.id(), 0, GL_RED, GL_FLOAT,
-                      static_cast<GLsizei>(tags.size() * sizeof(float)), tags.data());
-    gl::throwIfErrors("eye grid read-back");
-    const jfa::Grid occ = jfa::readGrid(occluders);
-    jfa::Grid out(w, h, jfa::kEmptyCell);
-    for (std::size_t i = 0; i < tags.size(); ++i) {
-        if (tags[i] == 0.0f) continue;
-        const auto seed = static_cast<std::size_t>(tags[i]) - 1;
-        if (seed >= occ.cells.size())
-            throw std::logic_error("readEyeGrid: a seed index beyond the occluders");
-        const jfa::Cell& o = occ.cells[seed];
-        out.cells[i] = {o.x, o.y, o.z, tags[i]};
-    }
-    return out;
+jfa::Grid readEyeGrid(const gl::Texture& packed, const jfa::Grid& occluders) {
+    return jfa::readPackedGrid(packed, occluders, [](float w) -> std::size_t {
+        return static_cast<std::size_t>(w) - 1; // w = the seed pixel's index + 1
+    });
 }
 
 FloatImage eyeSoftVisibility(const EyeImage& im, const jfa::Grid& flooded, const DiskLight& light) {

@@ -45,22 +45,9 @@ jfa::Plan penumbraPlan(const PenumbraSettings& settings, int size) {
     return jfa::Plan("JFA " + std::to_string(settings.passes) + " passes", {stage});
 }
 
-jfa::Grid readPenumbraGrid(const gl::Texture& packed, const ReceiverGrid& receivers) {
-    const int w = packed.width(), h = packed.height();
-    std::vector<float> tags(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
-    glGetTextureImage(packed.id(), 0, GL_RED, GL_FLOAT,
-                      static_cast<GLsizei>(tags.size() * sizeof(float)), tags.data());
-    gl::throwIfErrors("penumbra grid read-back");
-    jfa::Grid out(w, h, jfa::kEmptyCell);
-    for (std::size_t i = 0; i < tags.size(); ++i) {
-        if (tags[i] == 0.0f) continue;
-        const std::uint32_t seed = shadowmap::seedIndex(tags[i]);
-        if (seed >= receivers.points.size())
-            throw std::logic_error("readPenumbraGrid: a seed tag beyond the receiver grid");
-        const glm::vec4& o = receivers.points[seed];
-        out.cells[i] = {o.x, o.y, o.z, tags[i]};
-    }
-    return out;
+jfa::Grid readPenumbraGrid(const gl::Texture& packed, const jfa::Grid& positions) {
+    return jfa::readPackedGrid(packed, positions,
+                               [](float tag) -> std::size_t { return shadowmap::seedIndex(tag); });
 }
 
 jfa::Grid silhouetteSeeds(const ReceiverGrid& r, const DiskLight& light, float threshold,

@@ -77,9 +77,21 @@ struct FloodFrame {
     const MapPositions* map = nullptr; // light only: the shadow map's receiver target
 };
 
-/// One of `frame`'s grids (its seeds, its flood, or an overlay's re-run of it) as cells: eye
-/// grids as stored, light grids unpacked (readPenumbraGrid) with the map's positions as the
-/// shaders decode them.
+/// Reads `frame`'s grids (its seeds, its flood, or an overlay's re-run of it) back as cells. The
+/// GPU's cells are packed: eye cells unpack with phase 2's occluders (readEyeGrid), light cells
+/// with the map's positions as the shaders decode them (readPenumbraGrid); those are read back
+/// once, when the reader is made, for every grid it then reads.
+class FloodGridReader {
+  public:
+    explicit FloodGridReader(const FloodFrame& frame);
+    [[nodiscard]] jfa::Grid read(const gl::Texture& grid) const;
+
+  private:
+    bool eye_;
+    jfa::Grid source_; // eye: the occluders; light: the decoded map positions
+};
+
+/// One grid of `frame` as cells: FloodGridReader(frame).read(grid).
 jfa::Grid readFloodGrid(const FloodFrame& frame, const gl::Texture& grid);
 
 class ShadowMethod {

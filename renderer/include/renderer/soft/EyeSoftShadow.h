@@ -138,8 +138,9 @@ void setCriterionUniforms(const gl::Program& program, const EyeSoftCriterion& cr
 /// Uses std::acos, so equal to the GL result only to float rounding (~1e-6).
 /// A JFA-E grid as the GL kernels store it (R32F, packed cells: the seed pixel's index + 1, 0
 /// empty; EyeSoftCriterion::packedCells) turned back into cells, each occluder read from
-/// `occluders` (phase 2's, EyeImage::occluders) at its seed pixel: jfaLoad's CPU twin.
-jfa::Grid readEyeGrid(const gl::Texture& packed, const gl::Texture& occluders);
+/// `occluders` (phase 2's, jfa::readGrid of EyeImage::occluders) at its seed pixel: jfaLoad's
+/// CPU twin.
+jfa::Grid readEyeGrid(const gl::Texture& packed, const jfa::Grid& occluders);
 
 FloatImage eyeSoftVisibility(const EyeImage& image, const jfa::Grid& flooded,
                              const DiskLight& light);

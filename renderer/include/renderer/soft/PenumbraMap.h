@@ -38,10 +38,10 @@ jfa::Plan penumbraPlan(const PenumbraSettings& settings, int size);
 /// CPU reference of the silhouette pass (shaders/silhouette.frag.glsl); with `region`, only the
 /// texels of its tiles can be seeds.
 /// A JFA-L grid as the GL kernels store it (R32F, packed cells: a seed's tag, 0 empty; see
-/// PenumbraCriterion::packedCells) turned back into cells, the occluders taken from `receivers`
-/// (the map's positions as the shaders decode them, ShadowMapPass::decodedReceivers): the CPU
-/// twin of mapSeedCell() in shaders/shadow_map_decode.glsl.
-jfa::Grid readPenumbraGrid(const gl::Texture& packed, const ReceiverGrid& receivers);
+/// PenumbraCriterion::packedCells) turned back into cells, the occluders taken from `positions`
+/// (the map's positions as the shaders decode them: jfa::readGrid of
+/// ShadowMapPass::decodedReceivers): the CPU twin of mapSeedCell() in shadow_map_decode.glsl.
+jfa::Grid readPenumbraGrid(const gl::Texture& packed, const jfa::Grid& positions);
 
 jfa::Grid silhouetteSeeds(const ReceiverGrid& receivers, const DiskLight& light, float threshold,
                           const jfa::Band* region = nullptr);
