@@ -112,6 +112,26 @@ std::string optionText(const Json& v) {
     return v.dump();
 }
 
+// Why `key` is not an option of method `d`: another method's option, or no option at all.
+std::string unknownKeyProblem(const MethodDescriptor& d, const std::string& name,
+                              const std::string& key) {
+    const std::string takers = methodNamesWhere(
+        [&key](const MethodDescriptor& other) { return other.option(key) != nullptr; });
+    if (!takers.empty()) return "only " + takers + " take(s) \"" + key + "\"";
+    std::string keys;
+    for (const MethodOption* k : d.options) {
+        if (!keys.empty()) keys += ", ";
+        keys += k->key;
+    }
+    if (keys.empty()) keys = "no options";
+    std::string problem = "unknown key (";
+    problem += name;
+    problem += " takes: ";
+    problem += keys;
+    problem += ")";
+    return problem;
+}
+
 MethodSpec parseMethodEntry(const Json& j, const std::string& field) {
     MethodSpec m;
     std::string name;
@@ -144,22 +164,7 @@ MethodSpec parseMethodEntry(const Json& j, const std::string& field) {
     for (const auto& [key, value] : given) {
         const std::string f = field + "." + key;
         const MethodOption* o = d->option(key);
-        if (!o) {
-            // Another method's option, or no option at all: say which.
-            // Captured by name: clang before 16 cannot capture a structured binding.
-            const std::string takers = methodNamesWhere(
-                [&k = key](const MethodDescriptor& other) { return other.option(k) != nullptr; });
-            fail(f, takers.empty()
-                        ? "unknown key (" + name + " takes: " +
-                              [&] {
-                                  std::string keys;
-                                  for (const MethodOption* k : d->options)
-                                      keys += (keys.empty() ? "" : ", ") + std::string(k->key);
-                                  return keys.empty() ? std::string("no options") : keys;
-                              }() +
-                              ")"
-                        : "only " + takers + " take(s) \"" + key + "\"");
-        }
+        if (!o) fail(f, unknownKeyProblem(*d, name, key));
         const std::string problem = checkOptionValue(*o, value);
         if (!problem.empty()) fail(f, problem);
         m.options.set(o->flag, value);
@@ -176,6 +181,166 @@ MethodSpec parseMethodEntry(const Json& j, const std::string& field) {
     return m;
 }
 
+void parseResolutions(const Json& r, CaptureScript& s) {
+    if (!r.is_array() || r.empty()) fail("resolutions", "expected [[W, H], ...]");
+    for (std::size_t i = 0; i < r.size(); ++i) {
+        const std::string f = "resolutions[" + std::to_string(i) + "]";
+        if (!r[i].is_array() || r[i].size() != 2) fail(f, "expected [W, H]");
+        s.resolutions.emplace_back(readInt(r[i][0], f + "[0]", 1, 8192),
+                                   readInt(r[i][1], f + "[1]", 1, 8192));
+    }
+}
+
+void parseShadowMap(const Json& m, CaptureScript& s) {
+    std::set<std::string> keys{"provider", "size"};
+    for (const TsmOption& t : tsmOptions()) keys.emplace(t.key);
+    checkKeys(m, "shadowMap", keys);
+    if (m.contains("provider")) {
+        if (m["provider"] != "uniform" && m["provider"] != "tsm")
+            fail("shadowMap.provider", "expected \"uniform\" or \"tsm\"");
+        s.shadowMapProvider = m["provider"].get<std::string>();
+    }
+    if (m.contains("size")) s.shadowMapSize = readInt(m["size"], "shadowMap.size", 16, 8192);
+    for (const TsmOption& t : tsmOptions())
+        if (m.contains(t.key))
+            s.tsm.*t.field = static_cast<float>(readNumber(
+                m[std::string(t.key)], "shadowMap." + std::string(t.key), t.min, t.max, false));
+}
+
+// The --jfa-passes option's own validation: 1 to 13, or "auto".
+void parseJfaPasses(const Json& p, CaptureScript& s) {
+    if (p.is_number_integer())
+        s.jfaPasses = std::to_string(p.get<long long>());
+    else if (p.is_string())
+        s.jfaPasses = p.get<std::string>();
+    else
+        fail("jfaPasses", "expected an integer or \"auto\"");
+    if (const std::string bad = checkOptionValue(floodPassesOption(), s.jfaPasses); !bad.empty())
+        fail("jfaPasses", bad);
+}
+
+void parseReference(const Json& r, CaptureScript& s) {
+    checkKeys(r, "reference", {"kind", "samples", "mapSize", "pattern", "terminatorOffset"});
+    if (r.contains("kind")) {
+        if (!r["kind"].is_string())
+            fail("reference.kind", "expected \"" + groundTruthKinds() + "\"");
+        s.reference.kind = r["kind"].get<std::string>();
+        try {
+            (void)s.reference.method();
+        } catch (const std::invalid_argument&) {
+            fail("reference.kind",
+                 "\"" + s.reference.kind + "\" is not one of " + groundTruthKinds());
+        }
+    }
+    // Each option by the chosen ground truth's row of the method table (its range or
+    // choices), as the methods' own options are checked.
+    const MethodDescriptor& truth = s.reference.method();
+    for (const auto& [key, value] : r.items()) {
+        if (key == "kind") continue;
+        const std::string f = "reference." + key;
+        const MethodOption* o = truth.option(key);
+        if (!o) fail(f, "the " + s.reference.kind + " reference does not take it");
+        const std::string given = optionText(value);
+        if (const std::string bad = checkOptionValue(*o, given); !bad.empty()) fail(f, bad);
+        if (key == "pattern")
+            s.reference.pattern = given;
+        else if (key == "terminatorOffset")
+            s.reference.terminatorOffset = given;
+        else
+            (key == "samples" ? s.reference.samples : s.reference.mapSize) = std::stoi(given);
+    }
+}
+
+void parseMethods(const Json& j, CaptureScript& s) {
+    if (!j.contains("methods")) fail("methods", "missing (a list of method names)");
+    if (!j["methods"].is_array() || j["methods"].empty())
+        fail("methods", "expected a non-empty list of methods");
+    std::set<std::string> labels;
+    for (std::size_t i = 0; i < j["methods"].size(); ++i) {
+        const std::string f = "methods[" + std::to_string(i) + "]";
+        MethodSpec m = parseMethodEntry(j["methods"][i], f);
+        if (!labels.insert(m.label).second)
+            fail(f, "\"" + m.label + "\" is listed twice (give a \"label\")");
+        s.methods.push_back(std::move(m));
+    }
+}
+
+void parseGround(const Json& g, CaptureScript& s) {
+    if (!g.is_string() || !parseGroundMode(g.get<std::string>())) {
+        std::string names; // "auto|on|off", from the one list
+        for (std::string_view n : kGroundModeNames)
+            names += (names.empty() ? "" : "|") + std::string(n);
+        fail("ground", "expected \"" + names + "\"");
+    }
+    s.ground = g.get<std::string>();
+}
+
+void parseAnimation(const Json& a, CaptureScript& s) {
+    checkKeys(a, "animation", {"name", "start", "fps"});
+    if (a.contains("name")) {
+        const Json& n = a["name"];
+        if (n.is_number_integer() && n.get<long long>() >= 0)
+            s.animation.name = std::to_string(n.get<long long>());
+        else if (n.is_string())
+            s.animation.name = n.get<std::string>();
+        else
+            fail("animation.name", "expected \"all\", \"none\", a name or an index");
+    }
+    if (a.contains("start"))
+        s.animation.start =
+            readNumber(a["start"], "animation.start", 0.0, kMaxAnimationTime, false);
+    if (a.contains("fps"))
+        s.animation.fps = readNumber(a["fps"], "animation.fps", 0.0, 1000.0, false);
+}
+
+// Options the map cannot use (JFA passes beyond its size) are one clear error here, not a
+// failure later. The eye-space methods are checked against each resolution.
+void checkMethodsFit(const CaptureScript& s) {
+    for (const MethodSpec& m : s.methods) {
+        const MethodDescriptor& d = methodOrThrow(m.method);
+        if (!d.check) continue;
+        MethodOptions o = m.options;
+        if (!o.has(floodPassesOption().flag)) o.set(floodPassesOption().flag, s.jfaPasses);
+        for (const auto& [w, h] : s.resolutions) try {
+                d.check(o, d, s.shadowMapSize, w, h);
+            } catch (const std::invalid_argument& e) {
+                fail((m.options.has(floodPassesOption().flag) ? "methods (" + m.label + ").passes"
+                                                              : std::string("jfaPasses")) +
+                         " at " + std::to_string(w) + "x" + std::to_string(h),
+                     e.what());
+            }
+    }
+}
+
+// Every field of the script's top-level object, in the order the errors are reported.
+void parseScriptFields(const Json& j, const std::filesystem::path& dir, CaptureScript& s) {
+    checkKeys(j, "script",
+              {"scene", "camera", "light", "resolutions", "shadowMap", "jfaPasses", "reference",
+               "methods", "saveFrames", "ground", "animation", "comment"});
+    if (j.contains("scene")) {
+        if (!j["scene"].is_string()) fail("scene", "expected \"default\" or a file name");
+        if (j["scene"] != "default") s.scene = dir / j["scene"].get<std::string>();
+    }
+    if (!j.contains("camera")) fail("camera", "missing ({\"frames\": N, ...})");
+    parseCamera(j["camera"], dir, s);
+    if (j.contains("light")) parseLight(j["light"], s);
+    if (j.contains("resolutions"))
+        parseResolutions(j["resolutions"], s);
+    else
+        s.resolutions = {{512, 512}};
+    if (j.contains("shadowMap")) parseShadowMap(j["shadowMap"], s);
+    if (j.contains("jfaPasses")) parseJfaPasses(j["jfaPasses"], s);
+    if (j.contains("reference")) parseReference(j["reference"], s);
+    parseMethods(j, s);
+    if (j.contains("ground")) parseGround(j["ground"], s);
+    if (j.contains("animation")) parseAnimation(j["animation"], s);
+    if (j.contains("saveFrames")) {
+        if (!j["saveFrames"].is_boolean()) fail("saveFrames", "expected true or false");
+        s.saveFrames = j["saveFrames"].get<bool>();
+    }
+    checkMethodsFit(s);
+}
+
 } // namespace
 
 CaptureScript parseCaptureScript(const std::string& text, const std::filesystem::path& file) {
@@ -188,155 +353,8 @@ CaptureScript parseCaptureScript(const std::string& text, const std::filesystem:
     }
     CaptureScript s;
     s.file = file;
-    const std::filesystem::path dir = file.parent_path();
     try {
-        checkKeys(j, "script",
-                  {"scene", "camera", "light", "resolutions", "shadowMap", "jfaPasses", "reference",
-                   "methods", "saveFrames", "ground", "animation", "comment"});
-        if (j.contains("scene")) {
-            if (!j["scene"].is_string()) fail("scene", "expected \"default\" or a file name");
-            if (j["scene"] != "default") s.scene = dir / j["scene"].get<std::string>();
-        }
-        if (!j.contains("camera")) fail("camera", "missing ({\"frames\": N, ...})");
-        parseCamera(j["camera"], dir, s);
-        if (j.contains("light")) parseLight(j["light"], s);
-        if (j.contains("resolutions")) {
-            const Json& r = j["resolutions"];
-            if (!r.is_array() || r.empty()) fail("resolutions", "expected [[W, H], ...]");
-            for (std::size_t i = 0; i < r.size(); ++i) {
-                const std::string f = "resolutions[" + std::to_string(i) + "]";
-                if (!r[i].is_array() || r[i].size() != 2) fail(f, "expected [W, H]");
-                s.resolutions.emplace_back(readInt(r[i][0], f + "[0]", 1, 8192),
-                                           readInt(r[i][1], f + "[1]", 1, 8192));
-            }
-        } else {
-            s.resolutions = {{512, 512}};
-        }
-        if (j.contains("shadowMap")) {
-            const Json& m = j["shadowMap"];
-            std::set<std::string> keys{"provider", "size"};
-            for (const TsmOption& t : tsmOptions()) keys.emplace(t.key);
-            checkKeys(m, "shadowMap", keys);
-            if (m.contains("provider")) {
-                if (m["provider"] != "uniform" && m["provider"] != "tsm")
-                    fail("shadowMap.provider", "expected \"uniform\" or \"tsm\"");
-                s.shadowMapProvider = m["provider"].get<std::string>();
-            }
-            if (m.contains("size"))
-                s.shadowMapSize = readInt(m["size"], "shadowMap.size", 16, 8192);
-            for (const TsmOption& t : tsmOptions())
-                if (m.contains(t.key))
-                    s.tsm.*t.field = static_cast<float>(
-                        readNumber(m[std::string(t.key)], "shadowMap." + std::string(t.key), t.min,
-                                   t.max, false));
-        }
-        if (j.contains("jfaPasses")) {
-            // The --jfa-passes option's own validation: 1 to 13, or "auto".
-            const Json& p = j["jfaPasses"];
-            if (p.is_number_integer())
-                s.jfaPasses = std::to_string(p.get<long long>());
-            else if (p.is_string())
-                s.jfaPasses = p.get<std::string>();
-            else
-                fail("jfaPasses", "expected an integer or \"auto\"");
-            if (const std::string bad = checkOptionValue(floodPassesOption(), s.jfaPasses);
-                !bad.empty())
-                fail("jfaPasses", bad);
-        }
-        if (j.contains("reference")) {
-            const Json& r = j["reference"];
-            checkKeys(r, "reference",
-                      {"kind", "samples", "mapSize", "pattern", "terminatorOffset"});
-            if (r.contains("kind")) {
-                if (!r["kind"].is_string())
-                    fail("reference.kind", "expected \"" + groundTruthKinds() + "\"");
-                s.reference.kind = r["kind"].get<std::string>();
-                try {
-                    (void)s.reference.method();
-                } catch (const std::invalid_argument&) {
-                    fail("reference.kind",
-                         "\"" + s.reference.kind + "\" is not one of " + groundTruthKinds());
-                }
-            }
-            // Each option by the chosen ground truth's row of the method table (its range or
-            // choices), as the methods' own options are checked.
-            const MethodDescriptor& truth = s.reference.method();
-            for (const auto& [key, value] : r.items()) {
-                if (key == "kind") continue;
-                const std::string f = "reference." + key;
-                const MethodOption* o = truth.option(key);
-                if (!o) fail(f, "the " + s.reference.kind + " reference does not take it");
-                const std::string given = optionText(value);
-                if (const std::string bad = checkOptionValue(*o, given); !bad.empty()) fail(f, bad);
-                if (key == "pattern")
-                    s.reference.pattern = given;
-                else if (key == "terminatorOffset")
-                    s.reference.terminatorOffset = given;
-                else
-                    (key == "samples" ? s.reference.samples : s.reference.mapSize) =
-                        std::stoi(given);
-            }
-        }
-        if (!j.contains("methods")) fail("methods", "missing (a list of method names)");
-        if (!j["methods"].is_array() || j["methods"].empty())
-            fail("methods", "expected a non-empty list of methods");
-        std::set<std::string> labels;
-        for (std::size_t i = 0; i < j["methods"].size(); ++i) {
-            const std::string f = "methods[" + std::to_string(i) + "]";
-            MethodSpec m = parseMethodEntry(j["methods"][i], f);
-            if (!labels.insert(m.label).second)
-                fail(f, "\"" + m.label + "\" is listed twice (give a \"label\")");
-            s.methods.push_back(std::move(m));
-        }
-        if (j.contains("ground")) {
-            const Json& g = j["ground"];
-            if (!g.is_string() || !parseGroundMode(g.get<std::string>())) {
-                std::string names; // "auto|on|off", from the one list
-                for (std::string_view n : kGroundModeNames)
-                    names += (names.empty() ? "" : "|") + std::string(n);
-                fail("ground", "expected \"" + names + "\"");
-            }
-            s.ground = g.get<std::string>();
-        }
-        if (j.contains("animation")) {
-            const Json& a = j["animation"];
-            checkKeys(a, "animation", {"name", "start", "fps"});
-            if (a.contains("name")) {
-                const Json& n = a["name"];
-                if (n.is_number_integer() && n.get<long long>() >= 0)
-                    s.animation.name = std::to_string(n.get<long long>());
-                else if (n.is_string())
-                    s.animation.name = n.get<std::string>();
-                else
-                    fail("animation.name", "expected \"all\", \"none\", a name or an index");
-            }
-            if (a.contains("start"))
-                s.animation.start =
-                    readNumber(a["start"], "animation.start", 0.0, kMaxAnimationTime, false);
-            if (a.contains("fps"))
-                s.animation.fps = readNumber(a["fps"], "animation.fps", 0.0, 1000.0, false);
-        }
-        if (j.contains("saveFrames")) {
-            if (!j["saveFrames"].is_boolean()) fail("saveFrames", "expected true or false");
-            s.saveFrames = j["saveFrames"].get<bool>();
-        }
-        // Options the map cannot use (JFA passes beyond its size) are one clear error here, not
-        // a failure later. The eye-space methods are checked against each resolution.
-        for (const MethodSpec& m : s.methods) {
-            const MethodDescriptor& d = methodOrThrow(m.method);
-            if (!d.check) continue;
-            MethodOptions o = m.options;
-            if (!o.has(floodPassesOption().flag)) o.set(floodPassesOption().flag, s.jfaPasses);
-            for (const auto& [w, h] : s.resolutions) try {
-                    d.check(o, d, s.shadowMapSize, w, h);
-                } catch (const std::invalid_argument& e) {
-                    fail((m.options.has(floodPassesOption().flag)
-                              ? "methods (" + m.label + ").passes"
-                              : std::string("jfaPasses")) +
-                             " at " + std::to_string(w) + "x" + std::to_string(h),
-                         e.what());
-                }
-        }
+        parseScriptFields(j, file.parent_path(), s);
     } catch (const CaptureScriptError& e) {
         throw CaptureScriptError(name + ": " + e.what());
     }
