@@ -69,52 +69,55 @@ CsvTable compareCsv(const std::vector<SoftStats>& stats, const std::vector<Lane>
     return csv;
 }
 
-int runCompare(const CompareRequest& r) {
-    const std::string method = r.method;
-    const std::optional<std::string> reference = referenceOf(method);
-    if (!reference) {
-        const std::string valid =
-            methodNamesWhere([](const MethodDescriptor& d) { return !d.reference.empty(); });
-        throw InputError("--method " + method + ": no standard-flooding reference for it (" +
-                         valid + " have one)");
-    }
-    const Scene scene = loadScene(r.scene);
-    CameraPath path = [&] {
-        if (r.path != "default") {
-            try {
-                return readCameraPath(r.path, "--path");
-            } catch (const std::runtime_error& e) {
-                throw InputError(e.what());
-            }
-        }
-        return defaultWalkthrough(initialCamera(scene, r.scene, r.width, r.height), scene.bounds);
-    }();
-    auto context = EglContext::create();
-    const gl::ShaderLibrary shaders = makeShaderLibrary(r.scene);
-    RenderSettings settings = makeRenderSettings(r.scene);
-    settings.method = method;
-    checkMethodOptions(settings, r.width, r.height);
-    const int passes = requestedPasses(methodOrThrow(method), settings.options,
-                                       settings.shadow.size, r.width, r.height);
-    const std::string passesText = passes == kAutoPasses ? "auto" : std::to_string(passes);
-    Renderer methodRenderer(shaders, scene, settings);
-    settings.method = *reference;
-    Renderer referenceRenderer(shaders, scene, settings);
-    methodRenderer.resize(r.width, r.height);
-    referenceRenderer.resize(r.width, r.height);
-    std::cout << "context: " << context->description() << "\n"
-              << "scene: " << scene.source << " (" << scene.triangleCount() << " triangles)\n"
-              << method << " vs " << *reference << ", " << r.frames << " frames at " << r.width
-              << "x" << r.height << ", shadow map " << providerName(settings.shadow.provider) << " "
-              << settings.shadow.size << "^2, " << passesText << " passes\n";
+// The method's standard-flooding reference, or one clear error naming the methods with one.
+std::string referenceOrThrow(const std::string& method) {
+    if (const std::optional<std::string> reference = referenceOf(method)) return *reference;
+    const std::string valid =
+        methodNamesWhere([](const MethodDescriptor& d) { return !d.reference.empty(); });
+    throw InputError("--method " + method + ": no standard-flooding reference for it (" + valid +
+                     " have one)");
+}
 
-    // Lane labels are also the CSV column and JSON key prefixes ("method_flood_ms").
-    std::vector<Lane> lanes = {{"method", &methodRenderer, {}},
-                               {"reference", &referenceRenderer, {}}};
+// The walkthrough: --path's file, or the default swing around the scene's first view.
+CameraPath comparePath(const CompareRequest& r, const Scene& scene) {
+    if (r.path != "default") {
+        try {
+            return readCameraPath(r.path, "--path");
+        } catch (const std::runtime_error& e) {
+            throw InputError(e.what());
+        }
+    }
+    return defaultWalkthrough(initialCamera(scene, r.scene, r.width, r.height), scene.bounds);
+}
+
+// Every frame's statistics and the worst frame's pictures.
+struct CompareFrames {
     std::vector<SoftStats> all;
     int worst = -1;
     double worstScore = -1.0;
     FrameImages worstMethod, worstReference;
+
+    // Keeps frame i's statistics, and its pictures if it is the worst so far: most pixels off
+    // by 0.1 or more, then the largest mean difference.
+    void add(int i, std::vector<FrameImages>& images) {
+        const SoftStats s = compareSoftShadows(images[0].visibility, images[1].visibility);
+        all.push_back(s);
+        const double score =
+            (s.deltaBuckets[2] + s.deltaBuckets[3]) * static_cast<double>(s.penumbraEither) +
+            s.meanDelta;
+        if (score > worstScore) {
+            worstScore = score;
+            worst = i;
+            worstMethod = std::move(images[0]);
+            worstReference = std::move(images[1]);
+        }
+    }
+};
+
+// Renders both lanes along the path, frame by frame.
+CompareFrames runCompareFrames(const CompareRequest& r, const Scene& scene, CameraPath path,
+                               std::vector<Lane>& lanes) {
+    CompareFrames frames;
     FrameRunner runner(r.frames);
     FramePlan::Clip clip;
     try {
@@ -128,33 +131,24 @@ int runCompare(const CompareRequest& r) {
                 .width = r.width,
                 .height = r.height,
                 .clip = clip},
-               lanes, [&](int i, std::vector<FrameImages>& images) {
-                   const SoftStats s =
-                       compareSoftShadows(images[0].visibility, images[1].visibility);
-                   all.push_back(s);
-                   // The worst frame: most pixels off by 0.1 or more, then the largest mean
-                   // difference.
-                   const double score = (s.deltaBuckets[2] + s.deltaBuckets[3]) *
-                                            static_cast<double>(s.penumbraEither) +
-                                        s.meanDelta;
-                   if (score > worstScore) {
-                       worstScore = score;
-                       worst = i;
-                       worstMethod = std::move(images[0]);
-                       worstReference = std::move(images[1]);
-                   }
-               });
+               lanes, [&](int i, std::vector<FrameImages>& images) { frames.add(i, images); });
     runner.finish();
+    return frames;
+}
 
-    // Summary.
+// summary.json: the run's settings, the means and extremes of the statistics, the phases.
+nlohmann::json compareSummary(const CompareRequest& r, const std::string& reference,
+                              const RenderSettings& settings, int passes,
+                              const CompareFrames& frames, const std::vector<Lane>& lanes) {
+    const std::vector<SoftStats>& all = frames.all;
     auto mean = [&](auto get) {
         double sum = 0.0;
         for (const SoftStats& s : all) sum += get(s);
         return all.empty() ? 0.0 : sum / static_cast<double>(all.size());
     };
     nlohmann::json j;
-    j["method"] = method;
-    j["reference"] = *reference;
+    j["method"] = r.method;
+    j["reference"] = reference;
     j["frames"] = r.frames;
     j["width"] = r.width;
     j["height"] = r.height;
@@ -178,46 +172,83 @@ int runCompare(const CompareRequest& r) {
     j["meanParityShare"] = mean([](const SoftStats& s) { return s.parityShare; });
     j["maxParityShare"] = maxParity;
     j["minShareDeltaBelow0.05"] = minBelow;
-    j["worstFrame"] = worst;
+    j["worstFrame"] = frames.worst;
     nlohmann::json times;
     for (const Lane& lane : lanes)
         for (const std::string& p : phaseNames({&lanes[0].times, &lanes[1].times}))
             times[lane.label + " " + p] = {{"medianMs", lane.times.medianPhaseMs(p)}};
     j["phases"] = times;
-    const double floodRatio = lanes[1].times.medianPhaseMs("flood") /
-                              std::max(lanes[0].times.medianPhaseMs("flood"), 1e-9);
-    j["floodTimeReferenceOverMethod"] = floodRatio;
+    j["floodTimeReferenceOverMethod"] = lanes[1].times.medianPhaseMs("flood") /
+                                        std::max(lanes[0].times.medianPhaseMs("flood"), 1e-9);
     for (const Lane& lane : lanes)
         if (const std::optional<FloodSample> f = lane.times.medianFlood())
             j["flood"][lane.label] = {{"medianPasses", f->passes},
                                       {"medianActiveShare", f->activeShare}};
+    return j;
+}
+
+// The worst frame side by side (method | reference | difference) as PNG, and as an EXR of
+// three channels; returns the files' stem.
+std::string writeWorstFrame(const std::filesystem::path& dir, const CompareRequest& r,
+                            const CompareFrames& frames) {
+    const std::string stem = "worst_frame_" + std::to_string(frames.worst);
+    const FloatImage& method = frames.worstMethod.visibility;
+    const FloatImage& reference = frames.worstReference.visibility;
+    writePng(dir / (stem + ".png"),
+             sideBySide({visibilityToGrey(method), visibilityToGrey(reference),
+                         differencePicture(method, reference)}));
+    std::vector<float> diff(method.data.size());
+    for (std::size_t k = 0; k < diff.size(); ++k) diff[k] = method.data[k] - reference.data[k];
+    writeExr(dir / (stem + ".exr"), r.width, r.height,
+             {{"method", method.data}, {"reference", reference.data}, {"difference", diff}});
+    return stem;
+}
+
+int runCompare(const CompareRequest& r) {
+    const std::string& method = r.method;
+    const std::string reference = referenceOrThrow(method);
+    const Scene scene = loadScene(r.scene);
+    CameraPath path = comparePath(r, scene);
+    auto context = EglContext::create();
+    const gl::ShaderLibrary shaders = makeShaderLibrary(r.scene);
+    RenderSettings settings = makeRenderSettings(r.scene);
+    settings.method = method;
+    checkMethodOptions(settings, r.width, r.height);
+    const int passes = requestedPasses(methodOrThrow(method), settings.options,
+                                       settings.shadow.size, r.width, r.height);
+    const std::string passesText = passes == kAutoPasses ? "auto" : std::to_string(passes);
+    Renderer methodRenderer(shaders, scene, settings);
+    settings.method = reference;
+    Renderer referenceRenderer(shaders, scene, settings);
+    methodRenderer.resize(r.width, r.height);
+    referenceRenderer.resize(r.width, r.height);
+    std::cout << "context: " << context->description() << "\n"
+              << "scene: " << scene.source << " (" << scene.triangleCount() << " triangles)\n"
+              << method << " vs " << reference << ", " << r.frames << " frames at " << r.width
+              << "x" << r.height << ", shadow map " << providerName(settings.shadow.provider) << " "
+              << settings.shadow.size << "^2, " << passesText << " passes\n";
+
+    // Lane labels are also the CSV column and JSON key prefixes ("method_flood_ms").
+    std::vector<Lane> lanes = {{"method", &methodRenderer, {}},
+                               {"reference", &referenceRenderer, {}}};
+    const CompareFrames frames = runCompareFrames(r, scene, std::move(path), lanes);
+    const nlohmann::json j = compareSummary(r, reference, settings, passes, frames, lanes);
 
     // Everything is computed; now write (each file under a temporary name, then renamed).
     const std::filesystem::path dir(r.out);
-    writeCsv(dir / "frames.csv", compareCsv(all, lanes));
+    writeCsv(dir / "frames.csv", compareCsv(frames.all, lanes));
     writeJson(dir / "summary.json", j);
-    const std::string stem = "worst_frame_" + std::to_string(worst);
-    writePng(dir / (stem + ".png"),
-             sideBySide({visibilityToGrey(worstMethod.visibility),
-                         visibilityToGrey(worstReference.visibility),
-                         differencePicture(worstMethod.visibility, worstReference.visibility)}));
-    std::vector<float> diff(worstMethod.visibility.data.size());
-    for (std::size_t k = 0; k < diff.size(); ++k)
-        diff[k] = worstMethod.visibility.data[k] - worstReference.visibility.data[k];
-    writeExr(dir / (stem + ".exr"), r.width, r.height,
-             {{"method", worstMethod.visibility.data},
-              {"reference", worstReference.visibility.data},
-              {"difference", diff}});
-
+    const std::string stem = writeWorstFrame(dir, r, frames);
     std::cout << std::fixed << std::setprecision(3)
               << "penumbra pixels (reference, mean per frame): "
               << j["meanPenumbraPixelsReference"].get<double>() << "\n"
               << "|dI| < 0.05: " << 100 * j["meanShareDeltaBelow0.05"].get<double>()
-              << "% of penumbra pixels (mean; worst frame " << 100 * minBelow << "%)\n"
+              << "% of penumbra pixels (mean; worst frame "
+              << 100 * j["minShareDeltaBelow0.05"].get<double>() << "%)\n"
               << "parity differs: " << 100 * j["meanParityShare"].get<double>()
-              << "% of pixels (mean; max " << 100 * maxParity << "%)\n"
-              << "flood time " << *reference << " / " << method << ": " << floodRatio
-              << " (medians)\n"
+              << "% of pixels (mean; max " << 100 * j["maxParityShare"].get<double>() << "%)\n"
+              << "flood time " << reference << " / " << method << ": "
+              << j["floodTimeReferenceOverMethod"].get<double>() << " (medians)\n"
               << "wrote " << (dir / "frames.csv").string() << ", "
               << (dir / "summary.json").string() << ", " << (dir / (stem + ".png")).string() << ", "
               << (dir / (stem + ".exr")).string() << "\n";
