@@ -67,6 +67,13 @@ class Viewer {
     void applyScriptEvent(const ScriptEvent& e);
     void loadDropped(const std::string& path);
     void act(Action a);
+    /// The actions that change the renderer's settings (method, map, passes, region): true when
+    /// `a` is one of them, with `s` changed.
+    bool changeSettings(Action a, RenderSettings& s);
+    /// The overlays' actions (mode, variant, step, new points): true when `a` is one of them.
+    bool actOnOverlay(Action a);
+    /// The window's, camera's, light's and animation's actions: true when `a` is one of them.
+    bool actOnView(Action a);
     void renderFrame(glm::ivec2 size, float dt);
     /// Advances the animation clock by dt (when playing; looping over the longest animation)
     /// and poses the renderer's scene there.

@@ -45,14 +45,17 @@ int log2Floor(int v) {
 } // namespace
 
 void Viewer::act(Action a) {
+    if (a == Action::None || actOnOverlay(a) || actOnView(a)) return;
     RenderSettings s = renderer_->settings();
+    if (!changeSettings(a, s)) return;
+    renderer_->setSettings(s);
+    std::cout << "method " << s.method << ", shadow map " << providerName(s.shadow.provider) << " "
+              << s.shadow.size << "^2, JFA passes " << s.options.text(floodPassesOption()) << "\n";
+}
+
+bool Viewer::changeSettings(Action a, RenderSettings& s) {
     const int maxPasses = log2Floor(s.shadow.size);
     switch (a) {
-    case Action::None:
-        return;
-    case Action::Quit:
-        glfwSetWindowShouldClose(window_->handle(), GLFW_TRUE);
-        return;
     case Action::NextMethod:
     case Action::PrevMethod: {
         const std::vector<std::string> methods = cycledMethods();
@@ -61,33 +64,33 @@ void Viewer::act(Action a) {
     }
         stats_.reset();
         openingNote_.clear(); // the user chose: the note about the opening method is stale
-        break;
+        return true;
     case Action::ToggleProvider:
         s.shadow.provider = s.shadow.provider == ShadowMapProvider::Uniform
                                 ? ShadowMapProvider::Tsm
                                 : ShadowMapProvider::Uniform;
-        break;
+        return true;
     case Action::NextFloodRegion: {
         const std::vector<std::string> regions = optionChoices(floodRegionOption());
         s.options.set(floodRegionOption().flag, cycle(std::span<const std::string>(regions),
                                                       s.options.text(floodRegionOption()), 1));
-        break;
+        return true;
     }
     case Action::ShadowMapSmaller:
         s.shadow.size = std::max(256, s.shadow.size / 2);
         if (s.options.integer(floodPassesOption()) != kAutoPasses) // auto adapts by itself
             s.options.set(floodPassesOption().flag, std::min(s.options.integer(floodPassesOption()),
                                                              log2Floor(s.shadow.size)));
-        break;
+        return true;
     case Action::ShadowMapLarger:
         s.shadow.size = std::min(4096, s.shadow.size * 2);
-        break;
+        return true;
     case Action::FewerPasses: {
         // From auto, one fewer than the passes auto chose last frame.
         int now = s.options.integer(floodPassesOption());
         if (now == kAutoPasses) now = renderer_->flood() ? renderer_->flood()->passes : maxPasses;
         s.options.set(floodPassesOption().flag, std::max(1, now - 1));
-        break;
+        return true;
     }
     case Action::MorePasses: {
         // Past the most the map allows comes auto again.
@@ -96,17 +99,24 @@ void Viewer::act(Action a) {
             s.options.set(floodPassesOption().flag, std::string(floodPassesOption().word));
         else
             s.options.set(floodPassesOption().flag, now + 1);
-        break;
+        return true;
     }
+    default:
+        return false;
+    }
+}
+
+bool Viewer::actOnOverlay(Action a) {
+    switch (a) {
     case Action::NextVariant: {
         const auto n = static_cast<int>(OverlayRenderer::variantNames().size());
         if (n > 0) overlayControls_.variant = (overlayControls_.variant + 1) % n;
-        return;
+        return true;
     }
     case Action::NextOverlay:
     case Action::PrevOverlay:
         overlayMode_ = cycle(allOverlayModes(), overlayMode_, a == Action::NextOverlay ? 1 : -1);
-        return;
+        return true;
     case Action::StepBack:
     case Action::StepForward: {
         const int d = a == Action::StepForward ? 1 : -1;
@@ -123,58 +133,67 @@ void Viewer::act(Action a) {
             else
                 p = p < 0 ? (1 << 20) : std::max(0, p - 1);
         }
-        return;
+        return true;
     }
     case Action::NewPoints:
         overlayControls_.regenerate = true; // the overlay picks a new seed and clears clicks
-        return;
+        return true;
+    default:
+        return false;
+    }
+}
+
+bool Viewer::actOnView(Action a) {
+    switch (a) {
+    case Action::Quit:
+        glfwSetWindowShouldClose(window_->handle(), GLFW_TRUE);
+        return true;
     case Action::ToggleHelp:
         showHelp_ = !showHelp_;
-        return;
+        return true;
     case Action::ToggleHud:
         showHud_ = !showHud_;
-        return;
+        return true;
     case Action::Screenshot:
         pendingScreenshots_.push_back("");
-        return;
+        return true;
     case Action::Stats:
         statsRequested_ = true;
-        return;
+        return true;
     case Action::ToggleCameraMode:
         controller_->toggleMode();
-        return;
+        return true;
     case Action::ResetView:
         controller_->reset();
-        return;
+        return true;
     case Action::LightLeft:
     case Action::LightRight:
         moveLight(a == Action::LightLeft ? -kLightStep : kLightStep, 0.0f);
-        return;
+        return true;
     case Action::LightUp:
     case Action::LightDown:
         moveLight(0.0f, a == Action::LightUp ? kLightStep : -kLightStep);
-        return;
+        return true;
     case Action::LightSmaller:
     case Action::LightLarger:
         scaleLight(a == Action::LightLarger ? 1.25f : 0.8f);
-        return;
+        return true;
     case Action::PlayPause:
         animationPlaying_ = !animationPlaying_;
-        return;
+        return true;
     case Action::AnimationBack:
     case Action::AnimationForward:
         animationPlaying_ = false;
         animationStep_ += a == Action::AnimationForward ? 1 : -1;
-        return;
+        return true;
     case Action::AnimationSlower:
     case Action::AnimationFaster:
         animationSpeed_ = std::clamp(animationSpeed_ * (a == Action::AnimationFaster ? 2.0 : 0.5),
                                      1.0 / 64.0, 64.0);
-        return;
+        return true;
+    default:
+        return false;
     }
-    renderer_->setSettings(s);
-    std::cout << "method " << s.method << ", shadow map " << providerName(s.shadow.provider) << " "
-              << s.shadow.size << "^2, JFA passes " << s.options.text(floodPassesOption()) << "\n";
 }
 
 void Viewer::moveLight(float dAzimuth, float dElevation) {
