@@ -454,6 +454,42 @@ RenderSettings referenceSettings(const CaptureScript& script, RenderSettings bas
     return base;
 }
 
+// Every resolution's frames, within --stop-after's budget; on a failure, says how to resume.
+void renderSizes(const CaptureSetup& setup, const CaptureRequest& req,
+                 const std::vector<std::vector<const FrameRecord*>>& done, FrameRunner& runner,
+                 CaptureResults& results, CaptureProgress& progress, int total) {
+    int budget = req.stopAfter > 0 ? req.stopAfter : -1;
+    try {
+        for (std::size_t s = 0; s < setup.script.resolutions.size(); ++s) {
+            const auto [w, h] = setup.script.resolutions[s];
+            const int rendered = captureSize(setup, {static_cast<int>(s), w, h, done[s], budget},
+                                             runner, results, progress);
+            if (budget >= 0) budget -= rendered;
+        }
+    } catch (const std::exception&) {
+        runner.finish();
+        if (progress.finished() > 0)
+            std::cerr << "note: " << progress.finished() << " of " << total
+                      << " frames are finished in " << setup.dir.string()
+                      << "; add --resume to continue from there\n";
+        throw;
+    }
+    runner.finish();
+}
+
+// The outputs, the summary and the report, once every frame is measured.
+void finishCapture(const fs::path& dir, const CaptureScript& script, CaptureResults& results,
+                   CaptureProgress& progress) {
+    const nlohmann::json summary = writeOutputs(dir, results);
+    progress.finish();
+    printSummaryTable(summary);
+    printResources(results);
+    printPhaseSplit(results);
+    std::cout << "wrote " << (dir / "frames.csv").string() << ", "
+              << (dir / "summary.json").string() << ", " << (dir / "report.html").string()
+              << (script.saveFrames ? ", frames under " + (dir / "frames").string() : "") << "\n";
+}
+
 int runCapture(const CaptureRequest& req) {
     const auto started = std::chrono::steady_clock::now();
     CaptureScript script;
@@ -498,23 +534,7 @@ int runCapture(const CaptureRequest& req) {
     if (finished > 0)
         std::cout << "resuming: " << finished << " of " << total << " frames finished earlier\n";
     FrameRunner runner(total, finished);
-    int budget = req.stopAfter > 0 ? req.stopAfter : -1;
-    try {
-        for (std::size_t s = 0; s < script.resolutions.size(); ++s) {
-            const auto [w, h] = script.resolutions[s];
-            const int rendered = captureSize(setup, {static_cast<int>(s), w, h, done[s], budget},
-                                             runner, results, *progress);
-            if (budget >= 0) budget -= rendered;
-        }
-    } catch (const std::exception&) {
-        runner.finish();
-        if (progress->finished() > 0)
-            std::cerr << "note: " << progress->finished() << " of " << total
-                      << " frames are finished in " << dir.string()
-                      << "; add --resume to continue from there\n";
-        throw;
-    }
-    runner.finish();
+    renderSizes(setup, req, done, runner, results, *progress, total);
     results.split.render = runner.seconds().render;
     results.split.readBack = runner.seconds().readBack;
     results.split.wall =
@@ -525,16 +545,7 @@ int runCapture(const CaptureRequest& req) {
                   << " finished in " << dir.string() << "; add --resume to continue\n";
         return kStoppedEarly;
     }
-
-    // Everything is measured; now the outputs, the summary and the report last.
-    const nlohmann::json summary = writeOutputs(dir, results);
-    progress->finish();
-    printSummaryTable(summary);
-    printResources(results);
-    printPhaseSplit(results);
-    std::cout << "wrote " << (dir / "frames.csv").string() << ", "
-              << (dir / "summary.json").string() << ", " << (dir / "report.html").string()
-              << (script.saveFrames ? ", frames under " + (dir / "frames").string() : "") << "\n";
+    finishCapture(dir, script, results, *progress);
     return 0;
 }
 
