@@ -10,8 +10,7 @@
 #include <jfa/GlKernel.h>
 #include <jfa/Sites.h>
 
-#include <base/Stats.h>
-
+#include <BenchSupport.h>
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -48,65 +47,56 @@ void row(const std::string& what, const Timing& t, int passes) {
               << t.median / std::max(passes, 1) << " ms/pass)\n";
 }
 
-} // namespace
+// Random integer sites on an n x n grid (seed 1), as a texture.
+gl::Texture seedTexture(int sites, int n) {
+    return jfa::uploadGrid(
+        jfa::seedPoints(jfa::randomIntegerSites(sites, n, n, 1), n, n, true).grid);
+}
 
-int main(int argc, char** argv) {
-    CLI::App app{"jfa_bench: GL flooding kernels (fragment vs compute, JFA vs standard flooding)"};
-    int size = 512, runs = 5, floodRuns = 3;
-    std::vector<int> scaling{512, 1024, 2048};
-    app.add_option("--size", size, "Grid side")->check(CLI::Range(8, 4096))->capture_default_str();
-    app.add_option("--runs", runs, "Timed runs per configuration")
-        ->check(CLI::Range(1, 1000))
-        ->capture_default_str();
-    app.add_option("--flood-runs", floodRuns, "Timed runs of the (slow) standard flooding")
-        ->check(CLI::Range(1, 1000))
-        ->capture_default_str();
-    app.add_option("--scaling-sizes", scaling, "Grid sides for the JFA size sweep (GL and CPU)")
-        ->delimiter(',');
-    CLI11_PARSE(app, argc, argv);
-    try {
-        auto ctx = EglContext::create(false);
-        std::cout << "context: " << ctx->description() << "\n"
-                  << "grid " << size << "x" << size << ", " << runs
-                  << " runs each (min / median), glFinish wall time\n";
-        const gl::ShaderLibrary shaders;
-        const jfa::NearestSite crit{true};
-        std::map<std::string, double> median;
+// The configurations, each timed and kept by name for the ratios.
+struct Bench {
+    int size, runs, floodRuns;
+    const gl::ShaderLibrary& shaders;
+    const jfa::NearestSite crit{true};
+    std::map<std::string, double> median;
+
+    void time(const std::string& name, int timedRuns, const std::function<void()>& f,
+              const std::function<int()>& passes) {
+        const Timing t = timeRuns(timedRuns, f);
+        row(name, t, passes());
+        median[name] = t.median;
+    }
+
+    // JFA's variants with few and many sites, and standard flooding as many passes as JFA
+    // reaches (n - 1, all step 1), on each kernel kind.
+    void kernels() {
         for (jfa::GlKernelKind kind : {jfa::GlKernelKind::Fragment, jfa::GlKernelKind::Compute}) {
             jfa::GlFloodKernel<jfa::NearestSite> kernel(shaders, kind);
             const std::string k = jfa::kernelName(kind);
             for (int sites : {100, 10000}) {
-                const jfa::Grid seeds =
-                    jfa::seedPoints(jfa::randomIntegerSites(sites, size, size, 1), size, size, true)
-                        .grid;
-                const gl::Texture in = jfa::uploadGrid(seeds);
+                const gl::Texture in = seedTexture(sites, size);
                 for (const char* spec : {"jfa", "1+jfa", "jfa+2", "half:jfa+2"}) {
                     const jfa::Plan plan = jfa::parsePlan(spec, size, size);
-                    const Timing t = timeRuns(runs, [&] { kernel.run(plan, in, crit); });
-                    const std::string name =
-                        k + " " + plan.name() + ", " + std::to_string(sites) + " sites";
-                    row(name, t, plan.passCount());
-                    median[name] = t.median;
+                    time(
+                        k + " " + plan.name() + ", " + std::to_string(sites) + " sites", runs,
+                        [&] { kernel.run(plan, in, crit); }, [&] { return plan.passCount(); });
                 }
             }
-            // Standard flooding as many passes as JFA reaches: n - 1 (all step 1).
-            const jfa::Grid seeds =
-                jfa::seedPoints(jfa::randomIntegerSites(100, size, size, 1), size, size, true).grid;
-            const gl::Texture in = jfa::uploadGrid(seeds);
+            const gl::Texture in = seedTexture(100, size);
             const jfa::Plan flood = jfa::Plan::flood(size - 1, size, size);
-            const Timing t = timeRuns(floodRuns, [&] { kernel.run(flood, in, crit); });
-            const std::string name = k + " " + flood.name() + ", 100 sites";
-            row(name, t, flood.passCount());
-            median[name] = t.median;
+            time(
+                k + " " + flood.name() + ", 100 sites", floodRuns,
+                [&] { kernel.run(flood, in, crit); }, [&] { return flood.passCount(); });
         }
-        // Band-limited flooding (jfa/Band.h) against the full grid on plans of limited reach
-        // (few sites: a small band), with each kernel kind (band passes are compute for both
-        // kinds: instanced tile quads through the fragment kernel measured twice as slow).
+    }
+
+    // Band-limited flooding (jfa/Band.h) against the full grid on plans of limited reach (few
+    // sites: a small band), with each kernel kind (band passes are compute for both kinds:
+    // instanced tile quads through the fragment kernel measured twice as slow).
+    void bands() {
         for (jfa::GlKernelKind kind : {jfa::GlKernelKind::Fragment, jfa::GlKernelKind::Compute}) {
             jfa::GlFloodKernel<jfa::NearestSite> kernel(shaders, kind);
-            const jfa::Grid seeds =
-                jfa::seedPoints(jfa::randomIntegerSites(20, size, size, 1), size, size, true).grid;
-            const gl::Texture in = jfa::uploadGrid(seeds);
+            const gl::Texture in = seedTexture(20, size);
             for (const char* spec : {"flood:15", "flood:63"}) {
                 const jfa::Plan plan = jfa::parsePlan(spec, size, size);
                 for (jfa::FloodRegion region : {jfa::FloodRegion::Full, jfa::FloodRegion::Band}) {
@@ -120,25 +110,24 @@ int main(int argc, char** argv) {
                 }
             }
         }
-        // Until unchanged: standard flooding run to completion (it stops when nothing changes).
-        for (jfa::GlKernelKind kind : {jfa::GlKernelKind::Fragment}) {
-            jfa::GlFloodKernel<jfa::NearestSite> kernel(shaders, kind);
-            for (int sites : {100, 1000}) {
-                const jfa::Grid seeds =
-                    jfa::seedPoints(jfa::randomIntegerSites(sites, size, size, 1), size, size, true)
-                        .grid;
-                const gl::Texture in = jfa::uploadGrid(seeds);
-                const jfa::Plan plan = jfa::parsePlan("flood", size, size);
-                const Timing t = timeRuns(floodRuns, [&] { kernel.run(plan, in, crit); });
-                const std::string name = std::string(jfa::kernelName(kind)) +
-                                         " flood until unchanged, " + std::to_string(sites) +
-                                         " sites";
-                row(name, t, kernel.passesRun());
-                median[name] = t.median;
-            }
+    }
+
+    // Standard flooding run to completion (it stops when nothing changes).
+    void untilUnchanged() {
+        jfa::GlFloodKernel<jfa::NearestSite> kernel(shaders, jfa::GlKernelKind::Fragment);
+        for (int sites : {100, 1000}) {
+            const gl::Texture in = seedTexture(sites, size);
+            const jfa::Plan plan = jfa::parsePlan("flood", size, size);
+            time(
+                std::string(jfa::kernelName(jfa::GlKernelKind::Fragment)) +
+                    " flood until unchanged, " + std::to_string(sites) + " sites",
+                floodRuns, [&] { kernel.run(plan, in, crit); }, [&] { return kernel.passesRun(); });
         }
-        // Size sweep: the whole JFA plan on the GL fragment kernel and the CPU kernel (2 threads),
-        // and JFA's defining property, cost independent of the number of sites.
+    }
+
+    // The whole JFA plan on the GL fragment kernel and the CPU kernel (all threads) by grid
+    // size, and JFA's defining property, cost independent of the number of sites.
+    void sizeSweep(const std::vector<int>& scaling) {
         std::cout << "JFA plan time by grid size (GL fragment kernel; CPU kernel, all threads):\n";
         jfa::GlFloodKernel<jfa::NearestSite> fragment(shaders, jfa::GlKernelKind::Fragment);
         for (int n : scaling) {
@@ -157,11 +146,14 @@ int main(int argc, char** argv) {
                 median["CPU " + tag] = c.median;
             }
         }
+    }
 
-        auto ratio = [&](const std::string& a, const std::string& b) {
-            std::cout << "  " << a << " / " << b << " = " << std::setprecision(3)
-                      << median.at(a) / median.at(b) << "\n";
-        };
+    void ratio(const std::string& a, const std::string& b) const {
+        std::cout << "  " << a << " / " << b << " = " << std::setprecision(3)
+                  << median.at(a) / median.at(b) << "\n";
+    }
+
+    void ratios(const std::vector<int>& scaling) const {
         std::cout << "ratios of medians:\n";
         const std::string floodName = jfa::Plan::flood(size - 1, size, size).name();
         for (const char* k : {"fragment", "compute"}) {
@@ -179,9 +171,37 @@ int main(int argc, char** argv) {
             ratio("CPU " + base + "100 sites", "GL " + base + "100 sites");
         }
         ratio("compute JFA, 10000 sites", "fragment JFA, 10000 sites");
-    } catch (const std::exception& e) {
-        std::cerr << "error: " << e.what() << "\n";
-        return 1;
     }
-    return 0;
+};
+
+} // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"jfa_bench: GL flooding kernels (fragment vs compute, JFA vs standard flooding)"};
+    int size = 512, runs = 5, floodRuns = 3;
+    std::vector<int> scaling{512, 1024, 2048};
+    app.add_option("--size", size, "Grid side")->check(CLI::Range(8, 4096))->capture_default_str();
+    app.add_option("--runs", runs, "Timed runs per configuration")
+        ->check(CLI::Range(1, 1000))
+        ->capture_default_str();
+    app.add_option("--flood-runs", floodRuns, "Timed runs of the (slow) standard flooding")
+        ->check(CLI::Range(1, 1000))
+        ->capture_default_str();
+    app.add_option("--scaling-sizes", scaling, "Grid sides for the JFA size sweep (GL and CPU)")
+        ->delimiter(',');
+    CLI11_PARSE(app, argc, argv);
+    return fl::bench::guarded([&] {
+        auto ctx = EglContext::create(false);
+        std::cout << "context: " << ctx->description() << "\n"
+                  << "grid " << size << "x" << size << ", " << runs
+                  << " runs each (min / median), glFinish wall time\n";
+        const gl::ShaderLibrary shaders;
+        Bench bench{size, runs, floodRuns, shaders}; // crit and median: their defaults
+        bench.kernels();
+        bench.bands();
+        bench.untilUnchanged();
+        bench.sizeSweep(scaling);
+        bench.ratios(scaling);
+        return 0;
+    });
 }

@@ -14,6 +14,7 @@
 #include <renderer/scene/Pose.h>
 #include <renderer/scene/SceneGenerator.h>
 
+#include <BenchSupport.h>
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -101,11 +102,8 @@ void printPhaseRows(const fl::PhaseTimes& times,
     if (!poseMs.empty()) row("pose (CPU)", poseMs, std::nullopt);
 }
 
-} // namespace
-
-int main(int argc, char** argv) {
-    CLI::App app{"floodlight_bench: frame and pass times (min/median) of a shadow method, and "
-                 "peak RSS"};
+// The command line: the scene, the frame, the method with any option of the table, the clock.
+struct Options {
     std::string scenePath;
     std::size_t triangles = 0;
     int width = 512, height = 512, shadowMap = 1024, frames = 20, warmup = 3;
@@ -115,166 +113,185 @@ int main(int argc, char** argv) {
     std::string animation = "all";
     double time = 0.0, fps = 0.0;
     bool bake = false;
-    app.add_option("--scene", scenePath, "glTF scene (default: generated, see --triangles)");
-    app.add_option("--triangles", triangles,
+    fl::bench::MethodFlags methodFlags;
+};
+
+void addOptions(CLI::App& app, Options& o) {
+    app.add_option("--scene", o.scenePath, "glTF scene (default: generated, see --triangles)");
+    app.add_option("--triangles", o.triangles,
                    "Generate the default-style scene with this many triangles");
-    app.add_option("--width", width)->check(CLI::Range(1, 8192))->capture_default_str();
-    app.add_option("--height", height)->check(CLI::Range(1, 8192))->capture_default_str();
-    app.add_option("--shadow-map-size", shadowMap)
+    app.add_option("--width", o.width)->check(CLI::Range(1, 8192))->capture_default_str();
+    app.add_option("--height", o.height)->check(CLI::Range(1, 8192))->capture_default_str();
+    app.add_option("--shadow-map-size", o.shadowMap)
         ->check(CLI::Range(16, 8192))
         ->capture_default_str();
-    app.add_option("--frames", frames)->check(CLI::Range(1, 100000))->capture_default_str();
-    app.add_option("--warmup", warmup)->check(CLI::Range(0, 1000))->capture_default_str();
-    app.add_option("--method", method, "Shadow method (" + fl::methodNames() + ")")
+    app.add_option("--frames", o.frames)->check(CLI::Range(1, 100000))->capture_default_str();
+    app.add_option("--warmup", o.warmup)->check(CLI::Range(0, 1000))->capture_default_str();
+    app.add_option("--method", o.method, "Shadow method (" + fl::methodNames() + ")")
         ->capture_default_str();
-    app.add_option("--light-radius", lightRadius, "Disk light radius (default: the scene's)");
+    app.add_option("--light-radius", o.lightRadius, "Disk light radius (default: the scene's)");
     // Every method option of the table (--jfa-passes, --flood-region, --pcss-preset, ...), as the
     // app registers them; values are checked by the table's own rules.
-    std::map<std::string, std::string> optionText;
-    std::map<std::string, bool> optionFlags;
-    for (const fl::MethodOption* o : fl::allMethodOptions()) {
-        const std::string flag(o->flag), help(o->help);
-        if (o->kind == fl::OptionKind::Flag)
-            app.add_flag(flag, optionFlags[flag], help);
-        else
-            app.add_option(flag, optionText[flag],
-                           help + " (default " + std::string(o->defaultValue) + ")");
-    }
-    app.add_option("--animation", animation,
+    o.methodFlags.add(app);
+    app.add_option("--animation", o.animation,
                    "Animations that play: all, none, or one by name or index")
         ->capture_default_str();
-    app.add_option("--time", time, "Seconds into the animations at the first frame")
+    app.add_option("--time", o.time, "Seconds into the animations at the first frame")
         ->check(CLI::Range(0.0, fl::kMaxAnimationTime))
         ->capture_default_str();
-    app.add_option("--animate", fps,
+    app.add_option("--animate", o.fps,
                    "Advance the time by 1/FPS seconds each frame, looping over the longest "
                    "animation (0: every frame at --time)")
         ->check(CLI::Range(0.0, 10000.0))
         ->capture_default_str();
-    app.add_flag("--static", bake,
+    app.add_flag("--static", o.bake,
                  "Bake the pose at --time into plain meshes and render that static scene");
-    app.add_option("--shader-dir", shaderDir,
+    app.add_option("--shader-dir", o.shaderDir,
                    "Load shaders from this folder instead of the binary (to time shader edits)");
+}
+
+// The scene the options ask for, with the animations that play (none once baked).
+fl::Scene benchScene(const Options& o, std::vector<int>& playing) {
+    fl::Scene scene = !o.scenePath.empty()
+                          ? fl::loadGltf(o.scenePath)
+                          : fl::generateScene({o.triangles ? o.triangles : 6320, 1});
+    if (o.lightRadius && scene.light) scene.light->radius = *o.lightRadius;
+    playing = fl::chooseAnimations(scene, o.animation);
+    if (o.bake) {
+        scene = baked(scene, fl::evaluatePose(scene, playing, o.time));
+        playing.clear(); // the baked scene has no animations left
+    }
+    return scene;
+}
+
+// The scene's clock: frame k at --time + k / --animate, wrapped into the longest clip as the
+// viewer plays it; pose() times the CPU's share (evaluating the pose, uploading its joints).
+struct PoseClock {
+    fl::Renderer& renderer;
+    double time, fps, duration;
+    bool animated;
+    std::vector<double> poseMs;
+
+    [[nodiscard]] double timeAt(int k) const {
+        double t = time + (fps > 0.0 ? k / fps : 0.0);
+        if (duration > 0.0 && t > duration) t = std::fmod(t, duration);
+        return t;
+    }
+    void pose(int k) {
+        if (!animated) return;
+        const auto start = std::chrono::steady_clock::now();
+        renderer.setTime(timeAt(k), timeAt(std::max(k - 1, 0)));
+        poseMs.push_back(
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count());
+    }
+};
+
+// What ran: the context, scene, method and its options, the clock.
+void printHeader(const Options& o, const fl::EglContext& ctx, const fl::Scene& scene,
+                 const std::vector<int>& playing, const fl::RenderSettings& settings) {
+    std::cout << "context: " << ctx.description() << "\n"
+              << "scene: " << scene.source << ", " << scene.triangleCount() << " triangles\n"
+              << "method: " << o.method << ", light radius "
+              << (scene.light ? scene.light->radius : 0.0f) << "\n";
+    if (fl::isAnimated(scene)) {
+        std::string names;
+        for (int a : playing)
+            names +=
+                (names.empty() ? "" : ", ") + scene.animations[static_cast<std::size_t>(a)].name;
+        std::cout << "animation: " << (names.empty() ? "none (rest pose, skinned)" : names)
+                  << ", from t " << o.time << " s"
+                  << (o.fps > 0.0 ? ", " + std::to_string(o.fps) + " frames per second"
+                                  : std::string(", held"))
+                  << "\n";
+    } else if (o.bake) {
+        std::cout << "animation: baked at t " << o.time << " s (static)\n";
+    }
+    for (const auto& [flag, value] : settings.options.values())
+        std::cout << "  " << flag << " " << value << "\n";
+}
+
+// The flood's pass counts and shares over the frames, for the methods that flood.
+void printFloodRows(const fl::PhaseTimes& times) {
+    std::set<int> passCounts;
+    std::vector<double> activeShare, computedShare;
+    for (std::size_t i = 0; i < times.frames(); ++i)
+        if (const auto& f = times.flood(i)) {
+            passCounts.insert(f->passes);
+            activeShare.push_back(f->activeShare);
+            computedShare.push_back(f->computedShare);
+        }
+    if (!passCounts.empty()) {
+        std::cout << "flood passes:";
+        for (int p : passCounts) std::cout << " " << p;
+        std::cout << "\n";
+    }
+    if (!activeShare.empty()) {
+        std::cout << "active share: min " << fl::minimum(activeShare) << " median "
+                  << fl::median(activeShare) << "\n";
+        std::cout << "computed share per pass (within the front): min "
+                  << fl::minimum(computedShare) << " median " << fl::median(computedShare) << "\n";
+    }
+}
+
+int runBench(const Options& o, const CLI::App& app) {
+    std::vector<int> playing;
+    const fl::Scene scene = benchScene(o, playing);
+    const long rssScene = peakRssKiB();
+    auto ctx = fl::EglContext::create(false);
+    const fl::gl::ShaderLibrary shaders(
+        o.shaderDir.empty() ? std::nullopt : std::optional<std::filesystem::path>(o.shaderDir));
+    fl::RenderSettings settings;
+    settings.shadow.size = o.shadowMap;
+    settings.method = o.method;
+    o.methodFlags.apply(app, settings.options);
+    fl::Renderer renderer(shaders, scene, settings);
+    renderer.resize(o.width, o.height);
+    PoseClock clock{
+        renderer, o.time, o.fps, fl::animationDuration(scene, playing), fl::isAnimated(scene), {}};
+    if (clock.animated) {
+        renderer.setAnimations(playing);
+        clock.pose(0);
+    }
+    // The frame loop of capture/compare (renderer/run/FrameRunner.h): one camera held,
+    // timed only (no read-back between frames).
+    std::vector<fl::Lane> lanes{{o.method, &renderer, {}}};
+    fl::FrameRunner runner(o.frames);
+    runner.run({.scene = &scene,
+                .camera = fl::makeCameraView(
+                    scene, {}, static_cast<float>(o.width) / static_cast<float>(o.height)),
+                .frames = o.frames,
+                .width = o.width,
+                .height = o.height,
+                .warmup = o.warmup,
+                .readBack = false},
+               lanes, [&](int frame, std::vector<fl::FrameImages>&) { clock.pose(frame + 1); });
+    runner.finish();
+    const fl::PhaseTimes& times = lanes.front().times;
+    printHeader(o, *ctx, scene, playing, settings);
+    printFloodRows(times);
+    std::cout << "frame " << o.width << "x" << o.height << ", shadow map " << o.shadowMap << "^2, "
+              << o.frames << " frames after " << o.warmup
+              << " warm-up, timing: " << renderer.timer().modeName() << "\n"
+              << std::fixed << std::setprecision(2);
+    printPhaseRows(times, fl::writtenBytes(renderer), clock.poseMs);
+    std::cout << "peak RSS: " << peakRssKiB() / 1024
+              << " MiB (after loading the scene: " << rssScene / 1024 << " MiB)\n";
+    return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"floodlight_bench: frame and pass times (min/median) of a shadow method, and "
+                 "peak RSS"};
+    Options o;
+    addOptions(app, o);
     CLI11_PARSE(app, argc, argv);
-    if (!fl::findMethod(method)) {
-        std::cerr << "error: --method: unknown shadow method '" << method
+    if (!fl::findMethod(o.method)) {
+        std::cerr << "error: --method: unknown shadow method '" << o.method
                   << "' (valid: " << fl::methodNames() << ")\n";
         return 2;
     }
-
-    try {
-        fl::Scene scene;
-        if (!scenePath.empty())
-            scene = fl::loadGltf(scenePath);
-        else
-            scene = fl::generateScene({triangles ? triangles : 6320, 1});
-        if (lightRadius && scene.light) scene.light->radius = *lightRadius;
-        std::vector<int> playing = fl::chooseAnimations(scene, animation);
-        if (bake) {
-            scene = baked(scene, fl::evaluatePose(scene, playing, time));
-            playing.clear(); // the baked scene has no animations left
-        }
-        const long rssScene = peakRssKiB();
-        auto ctx = fl::EglContext::create(false);
-        const fl::gl::ShaderLibrary shaders(
-            shaderDir.empty() ? std::nullopt : std::optional<std::filesystem::path>(shaderDir));
-        fl::RenderSettings settings;
-        settings.shadow.size = shadowMap;
-        settings.method = method;
-        for (const auto& [flag, value] : optionText)
-            if (!app.get_option(flag)->empty()) settings.options.set(flag, value);
-        for (const auto& [flag, on] : optionFlags)
-            if (on) settings.options.set(flag, true);
-        for (const fl::MethodOption* o : fl::allMethodOptions())
-            if (settings.options.has(o->flag)) (void)settings.options.text(*o); // validates
-        fl::Renderer renderer(shaders, scene, settings);
-        renderer.resize(width, height);
-        const bool animated = fl::isAnimated(scene);
-        const double duration = fl::animationDuration(scene, playing);
-        // Frame k's time: --time + k / --animate, wrapped into the longest clip as the viewer
-        // plays it.
-        const auto timeAt = [&](int k) {
-            double t = time + (fps > 0.0 ? k / fps : 0.0);
-            if (duration > 0.0 && t > duration) t = std::fmod(t, duration);
-            return t;
-        };
-        std::vector<double> poseMs; // CPU: evaluating the pose and uploading its joints
-        const auto pose = [&](int k) {
-            if (!animated) return;
-            const auto start = std::chrono::steady_clock::now();
-            renderer.setTime(timeAt(k), timeAt(std::max(k - 1, 0)));
-            poseMs.push_back(
-                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-                    .count());
-        };
-        if (animated) {
-            renderer.setAnimations(playing);
-            pose(0);
-        }
-        // The frame loop of capture/compare (renderer/run/FrameRunner.h): one camera held,
-        // timed only (no read-back between frames).
-        std::vector<fl::Lane> lanes{{method, &renderer, {}}};
-        fl::FrameRunner runner(frames);
-        runner.run({.scene = &scene,
-                    .camera = fl::makeCameraView(
-                        scene, {}, static_cast<float>(width) / static_cast<float>(height)),
-                    .frames = frames,
-                    .width = width,
-                    .height = height,
-                    .warmup = warmup,
-                    .readBack = false},
-                   lanes, [&](int frame, std::vector<fl::FrameImages>&) { pose(frame + 1); });
-        runner.finish();
-        const fl::PhaseTimes& times = lanes.front().times;
-        std::set<int> passCounts;
-        std::vector<double> activeShare, computedShare;
-        for (std::size_t i = 0; i < times.frames(); ++i)
-            if (const auto& f = times.flood(i)) {
-                passCounts.insert(f->passes);
-                activeShare.push_back(f->activeShare);
-                computedShare.push_back(f->computedShare);
-            }
-        std::cout << "context: " << ctx->description() << "\n"
-                  << "scene: " << scene.source << ", " << scene.triangleCount() << " triangles\n"
-                  << "method: " << method << ", light radius "
-                  << (scene.light ? scene.light->radius : 0.0f) << "\n";
-        if (animated) {
-            std::string names;
-            for (int a : playing)
-                names += (names.empty() ? "" : ", ") +
-                         scene.animations[static_cast<std::size_t>(a)].name;
-            std::cout << "animation: " << (names.empty() ? "none (rest pose, skinned)" : names)
-                      << ", from t " << time << " s"
-                      << (fps > 0.0 ? ", " + std::to_string(fps) + " frames per second"
-                                    : std::string(", held"))
-                      << "\n";
-        } else if (bake) {
-            std::cout << "animation: baked at t " << time << " s (static)\n";
-        }
-        for (const auto& [flag, value] : settings.options.values())
-            std::cout << "  " << flag << " " << value << "\n";
-        if (!passCounts.empty()) {
-            std::cout << "flood passes:";
-            for (int p : passCounts) std::cout << " " << p;
-            std::cout << "\n";
-        }
-        if (!activeShare.empty()) {
-            std::cout << "active share: min " << fl::minimum(activeShare) << " median "
-                      << fl::median(activeShare) << "\n";
-            std::cout << "computed share per pass (within the front): min "
-                      << fl::minimum(computedShare) << " median " << fl::median(computedShare)
-                      << "\n";
-        }
-        std::cout << "frame " << width << "x" << height << ", shadow map " << shadowMap << "^2, "
-                  << frames << " frames after " << warmup
-                  << " warm-up, timing: " << renderer.timer().modeName() << "\n"
-                  << std::fixed << std::setprecision(2);
-        printPhaseRows(times, fl::writtenBytes(renderer), poseMs);
-        std::cout << "peak RSS: " << peakRssKiB() / 1024
-                  << " MiB (after loading the scene: " << rssScene / 1024 << " MiB)\n";
-    } catch (const std::exception& e) {
-        std::cerr << "error: " << e.what() << "\n";
-        return 1;
-    }
-    return 0;
+    return fl::bench::guarded([&] { return runBench(o, app); });
 }

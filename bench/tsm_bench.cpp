@@ -22,6 +22,7 @@
 
 #include <base/Stats.h>
 
+#include <BenchSupport.h>
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -63,157 +64,184 @@ struct Series {
     int degenerateFrames = 0, heldFrames = 0;
 };
 
+struct Options {
+    std::string scenePath;
+    int size = 512, shadowMap = 1024, frames = 120, timedFrames = 20, saveEvery = 0;
+    std::string saveDir;
+    fl::geom::TrapezoidParams tsm;
+    bool withOff = false;
+};
+
+void addOptions(CLI::App& app, Options& o) {
+    app.add_option("--scene", o.scenePath, "glTF scene (default: assets/default.glb)");
+    fl::bench::addFrameSizeOptions(app, o.size, o.shadowMap);
+    app.add_option("--frames", o.frames, "Walkthrough frames measured")
+        ->check(CLI::Range(2, 100000))
+        ->capture_default_str();
+    app.add_option("--timed-frames", o.timedFrames, "Frames timed per provider (interleaved)")
+        ->check(CLI::Range(1, 100000))
+        ->capture_default_str();
+    app.add_option("--save", o.saveDir,
+                   "Write uniform | TSM side-by-side PNGs of every --save-every-th frame here");
+    app.add_option("--save-every", o.saveEvery, "Frame interval for --save (0 = only the first)")
+        ->check(CLI::NonNegativeNumber);
+    for (const fl::TsmOption& t : fl::tsmOptions())
+        app.add_option(std::string(t.flag), o.tsm.*t.field, std::string(t.help))
+            ->check(CLI::Range(t.min, t.max))
+            ->capture_default_str();
+    app.add_flag(
+        "--with-tsm-off", o.withOff,
+        "Also measure TSM with every stability option 0 (the paper's fit) in a third lane");
+}
+
+// Lanes: uniform, TSM with the options given, and (--with-tsm-off) TSM without them; every
+// lane renders hard shadows with diagnostics (footprint, flicker).
+std::vector<std::unique_ptr<fl::Renderer>> makeRenderers(const Options& o,
+                                                         const fl::gl::ShaderLibrary& shaders,
+                                                         const fl::Scene& scene, int lanes) {
+    std::vector<std::unique_ptr<fl::Renderer>> renderers;
+    for (int k = 0; k < lanes; ++k) {
+        fl::RenderSettings s;
+        s.shadow.size = o.shadowMap;
+        s.shadow.provider = k ? fl::ShadowMapProvider::Tsm : fl::ShadowMapProvider::Uniform;
+        if (k == 1) s.shadow.tsm = o.tsm;
+        if (k == 2)
+            for (const fl::TsmOption& t : fl::tsmOptions()) s.shadow.tsm.*t.field = 0.0f;
+        s.diagnostics = true;
+        renderers.push_back(std::make_unique<fl::Renderer>(shaders, scene, s));
+        renderers.back()->resize(o.size, o.size);
+    }
+    return renderers;
+}
+
+// One walkthrough frame's figures for every lane, and (--save) the side-by-side picture.
+void measureFrame(const Options& o, int i,
+                  const std::vector<std::unique_ptr<fl::Renderer>>& renderers,
+                  std::vector<Series>& series) {
+    std::vector<fl::ByteImage> pictures;
+    const bool save = !o.saveDir.empty() && (o.saveEvery > 0 ? i % o.saveEvery == 0 : i == 0);
+    for (std::size_t k = 0; k < renderers.size(); ++k) {
+        if (save && k < 2)
+            pictures.push_back(fl::toSrgb8(fl::readTexture(renderers[k]->color(), 4)));
+        const fl::FloatImage d = fl::readTexture(*renderers[k]->diagnostics(), 4);
+        const fl::ShadowMapStats st = fl::summarizeShadowDiagnostics(d);
+        Series& s = series[k];
+        s.fpMed.push_back(st.footprint.median);
+        s.fpP95.push_back(st.footprint.p95);
+        s.nearMed.push_back(st.footprintNear.median);
+        s.nearP95.push_back(st.footprintNear.p95);
+        if (const fl::geom::TrapezoidFit* fit = renderers[k]->shadow()->trapezoid) {
+            s.degenerateFrames += fit->degenerate;
+            s.heldFrames += fit->held;
+        }
+        if (i == 0) continue; // the first frame has no previous map
+        s.flicker.push_back(st.flickerShare);
+        const double e = edgeShare(d);
+        s.flickerPerEdge.push_back(e > 0 ? st.flickerShare / e : 0.0);
+    }
+    if (pictures.size() == 2) {
+        std::filesystem::create_directories(o.saveDir);
+        char name[64];
+        std::snprintf(name, sizeof name, "walk_%04d.uniform-vs-tsm.png", i);
+        fl::writePng(std::filesystem::path(o.saveDir) / name, fl::sideBySide(pictures));
+    }
+}
+
+// Every lane's figures, then the ratios to uniform (and to tsm-off).
+void printReport(const Options& o, const std::vector<std::string>& names,
+                 const std::vector<Series>& series, const std::vector<fl::Lane>& timed,
+                 const std::vector<std::unique_ptr<fl::Renderer>>& renderers) {
+    std::cout << std::fixed << std::setprecision(3);
+    for (std::size_t k = 0; k < names.size(); ++k) {
+        const Series& s = series[k];
+        std::cout << names[k] << ":\n"
+                  << "  footprint (px/texel), median over frames: all median "
+                  << fl::median(s.fpMed) << " p95 " << fl::median(s.fpP95) << "; near median "
+                  << fl::median(s.nearMed) << " p95 " << fl::median(s.nearP95) << "\n"
+                  << "  flicker (share of receivers flipping per frame): mean "
+                  << 100 * mean(s.flicker) << "% max " << 100 * maxOf(s.flicker)
+                  << "%; per shadow-edge pixel: mean " << 100 * mean(s.flickerPerEdge) << "% max "
+                  << 100 * maxOf(s.flickerPerEdge) << "%\n"
+                  << "  frame (hard shadows, no diagnostics): min "
+                  << fl::minimum(timed[k].times.frameMs()) << " ms, median "
+                  << timed[k].times.medianFrameMs() << " ms (" << renderers[k]->timer().modeName()
+                  << ")\n";
+        if (k > 0)
+            std::cout << "  frames with the uniform fallback blended in: " << s.degenerateFrames
+                      << " of " << o.frames
+                      << "; frames that kept the previous fit: " << s.heldFrames << "\n";
+    }
+    std::cout << "ratios uniform / tsm footprint near the viewer: median "
+              << fl::median(series[0].nearMed) / fl::median(series[1].nearMed) << ", p95 "
+              << fl::median(series[0].nearP95) / fl::median(series[1].nearP95) << "\n";
+    const auto ratio = [&](std::size_t a, std::size_t b) {
+        return std::make_pair(fl::minimum(timed[a].times.frameMs()) /
+                                  fl::minimum(timed[b].times.frameMs()),
+                              timed[a].times.medianFrameMs() / timed[b].times.medianFrameMs());
+    };
+    for (std::size_t k = 1; k < names.size(); ++k) {
+        const auto [min, median] = ratio(k, 0);
+        std::cout << names[k] << " / uniform frame time: min " << min << ", median " << median
+                  << "\n";
+    }
+    if (o.withOff) {
+        const auto [min, median] = ratio(1, 2);
+        std::cout << "tsm / tsm-off frame time: min " << min << ", median " << median << "\n";
+    }
+}
+
+int runBench(const Options& o) {
+    const fl::Scene scene = fl::bench::loadBenchScene(o.scenePath);
+    auto ctx = fl::EglContext::create(false);
+    const fl::gl::ShaderLibrary shaders;
+    const fl::CameraPath path =
+        fl::defaultWalkthrough(fl::makeCameraView(scene, {}, 1.0f), scene.bounds);
+    std::vector<std::string> names{"uniform", "tsm"};
+    if (o.withOff) names.emplace_back("tsm-off");
+    const std::vector<std::unique_ptr<fl::Renderer>> renderers =
+        makeRenderers(o, shaders, scene, static_cast<int>(names.size()));
+    std::vector<Series> series(names.size());
+    std::vector<fl::Lane> lanes = fl::bench::lanesOf(names, renderers);
+    fl::FrameRunner runner(o.frames + o.timedFrames);
+    fl::FramePlan plan{.scene = &scene,
+                       .camera = path,
+                       .frames = o.frames,
+                       .width = o.size,
+                       .height = o.size,
+                       .readBack = false};
+    runner.run(plan, lanes, [&](int i, std::vector<fl::FrameImages>&) {
+        measureFrame(o, i, renderers, series);
+    });
+    // Timing without diagnostics, providers interleaved frame by frame over the same path,
+    // after two warm-up frames.
+    for (const auto& r : renderers) {
+        fl::RenderSettings s = r->settings();
+        s.diagnostics = false;
+        r->setSettings(s);
+    }
+    std::vector<fl::Lane> timed = fl::bench::lanesOf(names, renderers);
+    plan.frames = o.timedFrames;
+    plan.warmup = 2;
+    runner.run(plan, timed);
+    runner.finish();
+    std::cout << "context: " << ctx->description() << "\n"
+              << "scene: " << scene.source << ", " << scene.triangleCount() << " triangles\n"
+              << "walkthrough: " << o.frames << " frames at " << o.size << "x" << o.size
+              << ", shadow map " << o.shadowMap << "^2 (every lane)\n"
+              << "tsm lane:";
+    for (const fl::TsmOption& t : fl::tsmOptions())
+        std::cout << " " << t.flag << " " << o.tsm.*t.field;
+    std::cout << "\n";
+    printReport(o, names, series, timed, renderers);
+    return 0;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
     CLI::App app{"tsm_bench: TSM vs uniform shadow map along a walkthrough, side by side"};
-    std::string scenePath;
-    int size = 512, shadowMap = 1024, frames = 120, timedFrames = 20, saveEvery = 0;
-    std::string saveDir;
-    app.add_option("--scene", scenePath, "glTF scene (default: assets/default.glb)");
-    app.add_option("--size", size, "Frame width and height")->capture_default_str();
-    app.add_option("--shadow-map-size", shadowMap)->capture_default_str();
-    app.add_option("--frames", frames, "Walkthrough frames measured")
-        ->check(CLI::Range(2, 100000))
-        ->capture_default_str();
-    app.add_option("--timed-frames", timedFrames, "Frames timed per provider (interleaved)")
-        ->check(CLI::Range(1, 100000))
-        ->capture_default_str();
-    app.add_option("--save", saveDir,
-                   "Write uniform | TSM side-by-side PNGs of every --save-every-th frame here");
-    app.add_option("--save-every", saveEvery, "Frame interval for --save (0 = only the first)")
-        ->check(CLI::NonNegativeNumber);
-    fl::geom::TrapezoidParams tsm;
-    for (const fl::TsmOption& t : fl::tsmOptions())
-        app.add_option(std::string(t.flag), tsm.*t.field, std::string(t.help))
-            ->check(CLI::Range(t.min, t.max))
-            ->capture_default_str();
-    bool withOff = false;
-    app.add_flag(
-        "--with-tsm-off", withOff,
-        "Also measure TSM with every stability option 0 (the paper's fit) in a third lane");
+    Options o;
+    addOptions(app, o);
     CLI11_PARSE(app, argc, argv);
-    try {
-        const fl::Scene scene = fl::loadGltf(
-            scenePath.empty() ? std::string(FLOODLIGHT_SOURCE_DIR) + "/assets/default.glb"
-                              : scenePath);
-        auto ctx = fl::EglContext::create(false);
-        const fl::gl::ShaderLibrary shaders;
-        const fl::CameraPath path =
-            fl::defaultWalkthrough(fl::makeCameraView(scene, {}, 1.0f), scene.bounds);
-        // Lanes: uniform, TSM with the options given, and (--with-tsm-off) TSM without them.
-        std::vector<std::string> names{"uniform", "tsm"};
-        if (withOff) names.emplace_back("tsm-off");
-        const int laneCount = static_cast<int>(names.size());
-        std::vector<std::unique_ptr<fl::Renderer>> renderers;
-        for (int k = 0; k < laneCount; ++k) {
-            fl::RenderSettings s;
-            s.shadow.size = shadowMap;
-            s.shadow.provider = k ? fl::ShadowMapProvider::Tsm : fl::ShadowMapProvider::Uniform;
-            if (k == 1) s.shadow.tsm = tsm;
-            if (k == 2)
-                for (const fl::TsmOption& t : fl::tsmOptions()) s.shadow.tsm.*t.field = 0.0f;
-            s.diagnostics = true;
-            renderers.push_back(std::make_unique<fl::Renderer>(shaders, scene, s));
-            renderers.back()->resize(size, size);
-        }
-        std::vector<Series> series(names.size());
-        std::vector<fl::Lane> lanes;
-        for (int k = 0; k < laneCount; ++k) lanes.push_back({names[k], renderers[k].get(), {}});
-        fl::FrameRunner runner(frames + timedFrames);
-        fl::FramePlan plan{.scene = &scene,
-                           .camera = path,
-                           .frames = frames,
-                           .width = size,
-                           .height = size,
-                           .readBack = false};
-        runner.run(plan, lanes, [&](int i, std::vector<fl::FrameImages>&) {
-            std::vector<fl::ByteImage> pictures;
-            const bool save = !saveDir.empty() && (saveEvery > 0 ? i % saveEvery == 0 : i == 0);
-            for (int k = 0; k < laneCount; ++k) {
-                if (save && k < 2)
-                    pictures.push_back(fl::toSrgb8(fl::readTexture(renderers[k]->color(), 4)));
-                const fl::FloatImage d = fl::readTexture(*renderers[k]->diagnostics(), 4);
-                const fl::ShadowMapStats st = fl::summarizeShadowDiagnostics(d);
-                Series& s = series[k];
-                s.fpMed.push_back(st.footprint.median);
-                s.fpP95.push_back(st.footprint.p95);
-                s.nearMed.push_back(st.footprintNear.median);
-                s.nearP95.push_back(st.footprintNear.p95);
-                if (const fl::geom::TrapezoidFit* fit = renderers[k]->shadow()->trapezoid) {
-                    s.degenerateFrames += fit->degenerate;
-                    s.heldFrames += fit->held;
-                }
-                if (i == 0) continue; // the first frame has no previous map
-                s.flicker.push_back(st.flickerShare);
-                const double e = edgeShare(d);
-                s.flickerPerEdge.push_back(e > 0 ? st.flickerShare / e : 0.0);
-            }
-            if (pictures.size() == 2) {
-                std::filesystem::create_directories(saveDir);
-                char name[64];
-                std::snprintf(name, sizeof name, "walk_%04d.uniform-vs-tsm.png", i);
-                fl::writePng(std::filesystem::path(saveDir) / name, fl::sideBySide(pictures));
-            }
-        });
-        // Timing without diagnostics, providers interleaved frame by frame over the same path,
-        // after two warm-up frames.
-        for (auto& r : renderers) {
-            fl::RenderSettings s = r->settings();
-            s.diagnostics = false;
-            r->setSettings(s);
-        }
-        std::vector<fl::Lane> timed;
-        for (const fl::Lane& l : lanes) timed.push_back({l.label, l.renderer, {}});
-        plan.frames = timedFrames;
-        plan.warmup = 2;
-        runner.run(plan, timed);
-        runner.finish();
-        std::cout << "context: " << ctx->description() << "\n"
-                  << "scene: " << scene.source << ", " << scene.triangleCount() << " triangles\n"
-                  << "walkthrough: " << frames << " frames at " << size << "x" << size
-                  << ", shadow map " << shadowMap << "^2 (every lane)\n"
-                  << "tsm lane:";
-        for (const fl::TsmOption& t : fl::tsmOptions())
-            std::cout << " " << t.flag << " " << tsm.*t.field;
-        std::cout << "\n" << std::fixed << std::setprecision(3);
-        for (int k = 0; k < laneCount; ++k) {
-            const Series& s = series[k];
-            std::cout << names[k] << ":\n"
-                      << "  footprint (px/texel), median over frames: all median "
-                      << fl::median(s.fpMed) << " p95 " << fl::median(s.fpP95) << "; near median "
-                      << fl::median(s.nearMed) << " p95 " << fl::median(s.nearP95) << "\n"
-                      << "  flicker (share of receivers flipping per frame): mean "
-                      << 100 * mean(s.flicker) << "% max " << 100 * maxOf(s.flicker)
-                      << "%; per shadow-edge pixel: mean " << 100 * mean(s.flickerPerEdge)
-                      << "% max " << 100 * maxOf(s.flickerPerEdge) << "%\n"
-                      << "  frame (hard shadows, no diagnostics): min "
-                      << fl::minimum(timed[k].times.frameMs()) << " ms, median "
-                      << timed[k].times.medianFrameMs() << " ms ("
-                      << renderers[k]->timer().modeName() << ")\n";
-            if (k > 0)
-                std::cout << "  frames with the uniform fallback blended in: " << s.degenerateFrames
-                          << " of " << frames
-                          << "; frames that kept the previous fit: " << s.heldFrames << "\n";
-        }
-        std::cout << "ratios uniform / tsm footprint near the viewer: median "
-                  << fl::median(series[0].nearMed) / fl::median(series[1].nearMed) << ", p95 "
-                  << fl::median(series[0].nearP95) / fl::median(series[1].nearP95) << "\n";
-        for (int k = 1; k < laneCount; ++k)
-            std::cout << names[k] << " / uniform frame time: min "
-                      << fl::minimum(timed[k].times.frameMs()) /
-                             fl::minimum(timed[0].times.frameMs())
-                      << ", median "
-                      << timed[k].times.medianFrameMs() / timed[0].times.medianFrameMs() << "\n";
-        if (withOff)
-            std::cout << "tsm / tsm-off frame time: min "
-                      << fl::minimum(timed[1].times.frameMs()) /
-                             fl::minimum(timed[2].times.frameMs())
-                      << ", median "
-                      << timed[1].times.medianFrameMs() / timed[2].times.medianFrameMs() << "\n";
-    } catch (const std::exception& e) {
-        std::cerr << "error: " << e.what() << "\n";
-        return 1;
-    }
-    return 0;
+    return fl::bench::guarded([&] { return runBench(o); });
 }

@@ -1,0 +1,52 @@
+#pragma once
+// What every benchmark's main shares: the command-line pieces they spell alike (frame and map
+// sizes, the method table's options, --set FLAG=VALUE), the default scene, the lanes of the
+// frame-loop runner (renderer/run/FrameRunner.h), and one error rule: an exception ends the
+// bench with "error: WHAT" and exit 1.
+
+#include <renderer/Renderer.h>
+#include <renderer/run/FrameRunner.h>
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace fl::bench {
+
+/// Runs a bench's body; an exception is printed as "error: WHAT" on stderr and exits 1.
+int guarded(const std::function<int()>& body);
+
+/// assets/default.glb, or the glTF file `path` when it is not empty.
+Scene loadBenchScene(const std::string& path = {});
+
+/// Registers --size (the square frame's side) and --shadow-map-size with their defaults shown.
+void addFrameSizeOptions(CLI::App& app, int& size, int& shadowMap);
+
+/// Every option of the method table (--jfa-passes, --pcss-preset, ...) on a bench's command
+/// line, as the app registers them; apply() copies the given ones into a method's options,
+/// checked by the table's own rules.
+class MethodFlags {
+  public:
+    /// Registers every option of the table on `app`.
+    void add(CLI::App& app);
+    /// Sets the options given on `app` (after parsing) in `options`; throws on a bad value.
+    void apply(const CLI::App& app, MethodOptions& options) const;
+
+  private:
+    std::map<std::string, std::string> text_;
+    std::map<std::string, bool> flags_;
+};
+
+/// Parses --set's FLAG=VALUE pairs; returns the problem ("--set X: ...") or nothing.
+std::optional<std::string> parseSets(const std::vector<std::string>& sets, MethodOptions& out);
+
+/// One lane per renderer for the frame-loop runner, labelled in order.
+std::vector<Lane> lanesOf(const std::vector<std::string>& labels,
+                          const std::vector<std::unique_ptr<Renderer>>& renderers);
+
+} // namespace fl::bench
