@@ -264,32 +264,33 @@ void SvgPicture::setBackground(std::string colour) {
     background_ = std::move(colour);
 }
 
-std::string SvgPicture::render() const {
-    Bounds bounds;
-    std::size_t markers = 0, segments = 0;
-    for (const SvgLayer& layer : layers_) {
-        markers += layer.markerCount();
-        segments += layer.segmentCount();
-        if (fixedBounds_) continue;
-        for (const SvgLayer::Shape& shape : layer.shapes()) {
-            if (const auto* m = std::get_if<SvgLayer::Marker>(&shape)) bounds.add(m->p);
-            if (const auto* c = std::get_if<SvgLayer::Circle>(&shape)) {
-                bounds.add(c->centre - c->radius);
-                bounds.add(c->centre + c->radius);
-            }
-            if (const auto* s = std::get_if<SvgLayer::Segments>(&shape))
-                for (const glm::dvec2& p : s->ends) bounds.add(p);
-            if (const auto* p = std::get_if<SvgLayer::Poly>(&shape))
-                for (const glm::dvec2& v : p->vertices) bounds.add(v);
-            if (const auto* r = std::get_if<SvgLayer::Rect>(&shape)) {
-                bounds.add(r->min);
-                bounds.add(r->max);
-            }
-        }
-    }
-    if (fixedBounds_) bounds = {min_, max_};
-    if (!bounds.valid()) bounds = {glm::dvec2(0.0), glm::dvec2(1.0)};
+namespace {
 
+// Grows `bounds` by what `shape` covers.
+void addShapeBounds(const SvgLayer::Shape& shape, Bounds& bounds) {
+    if (const auto* m = std::get_if<SvgLayer::Marker>(&shape)) bounds.add(m->p);
+    if (const auto* c = std::get_if<SvgLayer::Circle>(&shape)) {
+        bounds.add(c->centre - c->radius);
+        bounds.add(c->centre + c->radius);
+    }
+    if (const auto* s = std::get_if<SvgLayer::Segments>(&shape))
+        for (const glm::dvec2& p : s->ends) bounds.add(p);
+    if (const auto* p = std::get_if<SvgLayer::Poly>(&shape))
+        for (const glm::dvec2& v : p->vertices) bounds.add(v);
+    if (const auto* r = std::get_if<SvgLayer::Rect>(&shape)) {
+        bounds.add(r->min);
+        bounds.add(r->max);
+    }
+}
+
+// The picture's view box (y up in the scene, down in SVG) and its pixel scale and sizes.
+struct SvgFrame {
+    glm::dvec2 viewMin, view;
+    double pxPerUnit, markerPx, linePx;
+};
+
+SvgFrame svgFrame(const Bounds& bounds, double marginFraction, int size, std::size_t markers,
+                  std::size_t segments) {
     const glm::dvec2 extent = bounds.max - bounds.min;
     double span = std::max(extent.x, extent.y);
     if (span == 0.0) {
@@ -297,104 +298,128 @@ std::string SvgPicture::render() const {
         const glm::dvec2 a = glm::abs(bounds.min);
         span = std::max(1.0, 1e-6 * std::max(a.x, a.y));
     }
-    const double margin = margin_ * span;
+    const double margin = marginFraction * span;
     const glm::dvec2 viewMin(bounds.min.x - margin, -(bounds.max.y + margin));
     const glm::dvec2 view = extent + 2.0 * margin;
     if (!std::isfinite(view.x) || !std::isfinite(view.y) || !std::isfinite(viewMin.x) ||
         !std::isfinite(viewMin.y) || !(view.x > 0 && view.y > 0))
         throw std::invalid_argument("the picture's extent overflows a double");
-
     // Pixel sizes from the mean spacing of the points on the nominal picture: markers 15% of
     // it, lines a sixteenth, clamped so that few points do not get blobs and many do not vanish.
-    const double pxPerUnit = size_ / std::max(view.x, view.y);
     const double count = static_cast<double>(std::max<std::size_t>({1, markers, segments / 3}));
-    const double spacingPx = size_ / std::sqrt(count);
-    const double markerPx = std::clamp(0.15 * spacingPx, 0.8, 4.0);
-    const double linePx = std::clamp(0.06 * spacingPx, 0.35, 1.5);
+    const double spacingPx = size / std::sqrt(count);
+    return {viewMin, view, size / std::max(view.x, view.y), std::clamp(0.15 * spacingPx, 0.8, 4.0),
+            std::clamp(0.06 * spacingPx, 0.35, 1.5)};
+}
 
-    Writer w;
+// The <svg> element's opening and the background.
+void writeSvgOpening(Writer& w, const SvgFrame& f, const std::string& background) {
     w.out += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"";
-    w.size(std::max(1.0, std::round(view.x * pxPerUnit)));
+    w.size(std::max(1.0, std::round(f.view.x * f.pxPerUnit)));
     w.out += "\" height=\"";
-    w.size(std::max(1.0, std::round(view.y * pxPerUnit)));
+    w.size(std::max(1.0, std::round(f.view.y * f.pxPerUnit)));
     w.out += "\" viewBox=\"";
-    w.number(viewMin.x);
+    w.number(f.viewMin.x);
     w.out += ' ';
-    w.number(viewMin.y);
+    w.number(f.viewMin.y);
     w.out += ' ';
-    w.number(view.x);
+    w.number(f.view.x);
     w.out += ' ';
-    w.number(view.y);
+    w.number(f.view.y);
     w.out += "\">\n";
-    if (!background_.empty()) {
-        w.out += "<rect";
-        w.attr("x", viewMin.x);
-        w.attr("y", viewMin.y);
-        w.attr("width", view.x);
-        w.attr("height", view.y);
-        w.colourAttr("fill", background_);
-        w.out += "/>\n";
-    }
+    if (background.empty()) return;
+    w.out += "<rect";
+    w.attr("x", f.viewMin.x);
+    w.attr("y", f.viewMin.y);
+    w.attr("width", f.view.x);
+    w.attr("height", f.view.y);
+    w.colourAttr("fill", background);
+    w.out += "/>\n";
+}
 
+// A layer's <g> with its style.
+void writeGroupOpening(Writer& w, const SvgLayer& layer, const SvgFrame& f) {
+    const SvgStyle& st = layer.style();
+    w.out += "<g id=\"" + fl::xmlEscape(layer.id()) + "\"";
+    w.colourAttr("fill", st.fill);
+    w.colourAttr("stroke", st.stroke);
+    w.out += " stroke-width=\"";
+    w.size(f.linePx * st.strokeWidth / f.pxPerUnit);
+    w.out += "\" stroke-linecap=\"round\" stroke-linejoin=\"round\"";
+    if (st.opacity != 1.0) {
+        w.out += " opacity=\"";
+        w.size(st.opacity);
+        w.out += '"';
+    }
+    if (st.crispEdges) w.out += " shape-rendering=\"crispEdges\"";
+    w.out += ">\n";
+}
+
+// One shape as an SVG element; markers get radius `markerR` (scene units).
+void writeShape(Writer& w, const SvgLayer::Shape& shape, double markerR) {
+    if (const auto* m = std::get_if<SvgLayer::Marker>(&shape)) {
+        w.out += "<circle";
+        w.attr("cx", m->p.x);
+        w.attr("cy", -m->p.y);
+        w.out += " r=\"";
+        w.size(markerR);
+        w.out += '"';
+        w.colourAttr("fill", m->colour);
+    } else if (const auto* c = std::get_if<SvgLayer::Circle>(&shape)) {
+        w.out += "<circle";
+        w.attr("cx", c->centre.x);
+        w.attr("cy", -c->centre.y);
+        w.attr("r", c->radius);
+        w.colourAttr("fill", c->colour);
+    } else if (const auto* s = std::get_if<SvgLayer::Segments>(&shape)) {
+        w.out += "<path fill=\"none\" d=\"";
+        for (std::size_t i = 0; i < s->ends.size(); i += 2) {
+            w.out += i == 0 ? "M" : " M";
+            w.point(s->ends[i]);
+            w.out += 'L';
+            w.point(s->ends[i + 1]);
+        }
+        w.out += '"';
+        w.colourAttr("stroke", s->colour);
+    } else if (const auto* p = std::get_if<SvgLayer::Poly>(&shape)) {
+        w.out += p->closed ? "<polygon points=\"" : "<polyline fill=\"none\" points=\"";
+        for (std::size_t i = 0; i < p->vertices.size(); ++i) {
+            if (i > 0) w.out += ' ';
+            w.point(p->vertices[i]);
+        }
+        w.out += '"';
+        w.colourAttr(p->closed ? "fill" : "stroke", p->colour);
+    } else if (const auto* r = std::get_if<SvgLayer::Rect>(&shape)) {
+        w.out += "<rect";
+        w.attr("x", r->min.x);
+        w.attr("y", -r->max.y);
+        w.attr("width", r->max.x - r->min.x);
+        w.attr("height", r->max.y - r->min.y);
+        w.colourAttr("fill", r->colour);
+    }
+    w.out += "/>\n";
+}
+
+} // namespace
+
+std::string SvgPicture::render() const {
+    Bounds bounds;
+    std::size_t markers = 0, segments = 0;
     for (const SvgLayer& layer : layers_) {
-        const SvgStyle& st = layer.style();
-        w.out += "<g id=\"" + fl::xmlEscape(layer.id()) + "\"";
-        w.colourAttr("fill", st.fill);
-        w.colourAttr("stroke", st.stroke);
-        w.out += " stroke-width=\"";
-        w.size(linePx * st.strokeWidth / pxPerUnit);
-        w.out += "\" stroke-linecap=\"round\" stroke-linejoin=\"round\"";
-        if (st.opacity != 1.0) {
-            w.out += " opacity=\"";
-            w.size(st.opacity);
-            w.out += '"';
-        }
-        if (st.crispEdges) w.out += " shape-rendering=\"crispEdges\"";
-        w.out += ">\n";
-        const double markerR = markerPx * st.markerRadius / pxPerUnit;
-        for (const SvgLayer::Shape& shape : layer.shapes()) {
-            if (const auto* m = std::get_if<SvgLayer::Marker>(&shape)) {
-                w.out += "<circle";
-                w.attr("cx", m->p.x);
-                w.attr("cy", -m->p.y);
-                w.out += " r=\"";
-                w.size(markerR);
-                w.out += '"';
-                w.colourAttr("fill", m->colour);
-            } else if (const auto* c = std::get_if<SvgLayer::Circle>(&shape)) {
-                w.out += "<circle";
-                w.attr("cx", c->centre.x);
-                w.attr("cy", -c->centre.y);
-                w.attr("r", c->radius);
-                w.colourAttr("fill", c->colour);
-            } else if (const auto* s = std::get_if<SvgLayer::Segments>(&shape)) {
-                w.out += "<path fill=\"none\" d=\"";
-                for (std::size_t i = 0; i < s->ends.size(); i += 2) {
-                    w.out += i == 0 ? "M" : " M";
-                    w.point(s->ends[i]);
-                    w.out += 'L';
-                    w.point(s->ends[i + 1]);
-                }
-                w.out += '"';
-                w.colourAttr("stroke", s->colour);
-            } else if (const auto* p = std::get_if<SvgLayer::Poly>(&shape)) {
-                w.out += p->closed ? "<polygon points=\"" : "<polyline fill=\"none\" points=\"";
-                for (std::size_t i = 0; i < p->vertices.size(); ++i) {
-                    if (i > 0) w.out += ' ';
-                    w.point(p->vertices[i]);
-                }
-                w.out += '"';
-                w.colourAttr(p->closed ? "fill" : "stroke", p->colour);
-            } else if (const auto* r = std::get_if<SvgLayer::Rect>(&shape)) {
-                w.out += "<rect";
-                w.attr("x", r->min.x);
-                w.attr("y", -r->max.y);
-                w.attr("width", r->max.x - r->min.x);
-                w.attr("height", r->max.y - r->min.y);
-                w.colourAttr("fill", r->colour);
-            }
-            w.out += "/>\n";
-        }
+        markers += layer.markerCount();
+        segments += layer.segmentCount();
+        if (fixedBounds_) continue;
+        for (const SvgLayer::Shape& shape : layer.shapes()) addShapeBounds(shape, bounds);
+    }
+    if (fixedBounds_) bounds = {min_, max_};
+    if (!bounds.valid()) bounds = {glm::dvec2(0.0), glm::dvec2(1.0)};
+    const SvgFrame f = svgFrame(bounds, margin_, size_, markers, segments);
+    Writer w;
+    writeSvgOpening(w, f, background_);
+    for (const SvgLayer& layer : layers_) {
+        writeGroupOpening(w, layer, f);
+        const double markerR = f.markerPx * layer.style().markerRadius / f.pxPerUnit;
+        for (const SvgLayer::Shape& shape : layer.shapes()) writeShape(w, shape, markerR);
         w.out += "</g>\n";
     }
     w.out += "</svg>\n";
