@@ -90,6 +90,96 @@ bool isMeshoptFallback(const tinygltf::Buffer& buffer) {
     return fallback.IsBool() && fallback.Get<bool>();
 }
 
+namespace {
+
+// The extension's fields, checked against each other, the view and the source buffer.
+struct MeshoptSource {
+    const tinygltf::Buffer* buffer = nullptr;
+    std::uint64_t bufferIndex = 0, offset = 0, length = 0, stride = 0, count = 0;
+    Mode mode = Mode::Attributes;
+    Filter filter = Filter::None;
+};
+
+MeshoptSource readMeshoptSource(const Context& ctx, const tinygltf::Model& model,
+                                const tinygltf::BufferView& view, const tinygltf::Value& ext,
+                                const std::string& extElement) {
+    if (!ext.IsObject()) ctx.fail(extElement, "is not an object");
+    MeshoptSource m;
+    m.bufferIndex = wholeNumber(ctx, ext, "buffer", extElement, 1u << 30);
+    m.buffer = &ctx.lookup(model.buffers, static_cast<int>(m.bufferIndex), extElement, "buffer",
+                           "buffers");
+    if (isMeshoptFallback(*m.buffer))
+        ctx.fail(extElement, cat("reads buffers[", m.bufferIndex, "], a fallback buffer"));
+    m.offset = wholeNumber(ctx, ext, "byteOffset", extElement, 1ull << 40, 0);
+    m.length = wholeNumber(ctx, ext, "byteLength", extElement, 1ull << 40);
+    m.stride = wholeNumber(ctx, ext, "byteStride", extElement, 1u << 30);
+    m.count = wholeNumber(ctx, ext, "count", extElement, std::uint64_t{1} << 40);
+    m.mode = static_cast<Mode>(choice(
+        ctx, ext, "mode", extElement,
+        std::array<std::string_view, 3>{"ATTRIBUTES", "TRIANGLES", "INDICES"}, std::nullopt));
+    m.filter = static_cast<Filter>(choice(
+        ctx, ext, "filter", extElement,
+        std::array<std::string_view, 4>{"NONE", "OCTAHEDRAL", "QUATERNION", "EXPONENTIAL"}, 0));
+
+    // Sizes first, all bounded before any multiplication: count by the accessor limit, stride
+    // by 256 (strideProblem), so count * stride cannot overflow.
+    if (m.count == 0 || m.count > kMaxAccessorCount)
+        ctx.fail(extElement, cat("count ", m.count, " outside 1..", kMaxAccessorCount));
+    if (const std::string problem = strideProblem(m.mode, m.filter, m.stride, m.count);
+        !problem.empty())
+        ctx.fail(extElement, problem);
+    const std::uint64_t decodedSize = m.count * m.stride;
+    if (decodedSize != view.byteLength)
+        ctx.fail(extElement, cat("count ", m.count, " * byteStride ", m.stride, " = ", decodedSize,
+                                 " bytes, but the bufferView's byteLength is ", view.byteLength));
+    if (view.byteStride != 0 && view.byteStride != m.stride)
+        ctx.fail(extElement,
+                 cat("byteStride ", m.stride, " differs from the bufferView's ", view.byteStride));
+    const std::size_t size = m.buffer->data.size();
+    if (m.offset > size || m.length > size - m.offset)
+        ctx.fail(extElement,
+                 cat("byteOffset ", m.offset, " + byteLength ", m.length,
+                     " past the end of buffers[", m.bufferIndex, "] (byteLength ", size, ")"));
+    return m;
+}
+
+// The decoded bytes of a checked source: meshoptimizer's decoder for the mode, then the filter.
+std::vector<unsigned char> decodeMeshopt(const Context& ctx, const MeshoptSource& m,
+                                         const std::string& extElement) {
+    std::vector<unsigned char> decoded(m.count * m.stride);
+    const unsigned char* data = m.buffer->data.data() + m.offset;
+    int rc = 0;
+    switch (m.mode) {
+    case Mode::Attributes:
+        rc = meshopt_decodeVertexBuffer(decoded.data(), m.count, m.stride, data, m.length);
+        break;
+    case Mode::Triangles:
+        rc = meshopt_decodeIndexBuffer(decoded.data(), m.count, m.stride, data, m.length);
+        break;
+    case Mode::Indices:
+        rc = meshopt_decodeIndexSequence(decoded.data(), m.count, m.stride, data, m.length);
+        break;
+    }
+    if (rc != 0)
+        ctx.fail(extElement, cat("compressed data is corrupt (meshoptimizer error ", rc, ")"));
+    switch (m.filter) {
+    case Filter::None:
+        break;
+    case Filter::Octahedral:
+        meshopt_decodeFilterOct(decoded.data(), m.count, m.stride);
+        break;
+    case Filter::Quaternion:
+        meshopt_decodeFilterQuat(decoded.data(), m.count, m.stride);
+        break;
+    case Filter::Exponential:
+        meshopt_decodeFilterExp(decoded.data(), m.count, m.stride);
+        break;
+    }
+    return decoded;
+}
+
+} // namespace
+
 void decodeMeshoptView(const Context& ctx, tinygltf::Model& model, int index) {
     const std::string element = elem("bufferViews", static_cast<std::size_t>(index));
     tinygltf::BufferView& view = model.bufferViews[static_cast<std::size_t>(index)];
@@ -105,73 +195,9 @@ void decodeMeshoptView(const Context& ctx, tinygltf::Model& model, int index) {
         return;
     }
     const std::string extElement = element + ".extensions.EXT_meshopt_compression";
-    const tinygltf::Value& ext = it->second;
-    if (!ext.IsObject()) ctx.fail(extElement, "is not an object");
-
-    const std::uint64_t bufferIndex = wholeNumber(ctx, ext, "buffer", extElement, 1u << 30);
-    const auto& source =
-        ctx.lookup(model.buffers, static_cast<int>(bufferIndex), extElement, "buffer", "buffers");
-    if (isMeshoptFallback(source))
-        ctx.fail(extElement, cat("reads buffers[", bufferIndex, "], a fallback buffer"));
-    const std::uint64_t offset = wholeNumber(ctx, ext, "byteOffset", extElement, 1ull << 40, 0);
-    const std::uint64_t length = wholeNumber(ctx, ext, "byteLength", extElement, 1ull << 40);
-    const std::uint64_t stride = wholeNumber(ctx, ext, "byteStride", extElement, 1u << 30);
-    const std::uint64_t count = wholeNumber(ctx, ext, "count", extElement, std::uint64_t{1} << 40);
-    const auto mode = static_cast<Mode>(choice(
-        ctx, ext, "mode", extElement,
-        std::array<std::string_view, 3>{"ATTRIBUTES", "TRIANGLES", "INDICES"}, std::nullopt));
-    const auto filter = static_cast<Filter>(choice(
-        ctx, ext, "filter", extElement,
-        std::array<std::string_view, 4>{"NONE", "OCTAHEDRAL", "QUATERNION", "EXPONENTIAL"}, 0));
-
-    // Sizes first, all bounded before any multiplication: count by the accessor limit, stride
-    // by 256 (strideProblem), so count * stride cannot overflow.
-    if (count == 0 || count > kMaxAccessorCount)
-        ctx.fail(extElement, cat("count ", count, " outside 1..", kMaxAccessorCount));
-    if (const std::string problem = strideProblem(mode, filter, stride, count); !problem.empty())
-        ctx.fail(extElement, problem);
-    const std::uint64_t decodedSize = count * stride;
-    if (decodedSize != view.byteLength)
-        ctx.fail(extElement, cat("count ", count, " * byteStride ", stride, " = ", decodedSize,
-                                 " bytes, but the bufferView's byteLength is ", view.byteLength));
-    if (view.byteStride != 0 && view.byteStride != stride)
-        ctx.fail(extElement,
-                 cat("byteStride ", stride, " differs from the bufferView's ", view.byteStride));
-    if (offset > source.data.size() || length > source.data.size() - offset)
-        ctx.fail(extElement,
-                 cat("byteOffset ", offset, " + byteLength ", length, " past the end of buffers[",
-                     bufferIndex, "] (byteLength ", source.data.size(), ")"));
-    ctx.charge((decodedSize + 3) / 4, extElement);
-
-    std::vector<unsigned char> decoded(decodedSize);
-    const unsigned char* data = source.data.data() + offset;
-    int rc = 0;
-    switch (mode) {
-    case Mode::Attributes:
-        rc = meshopt_decodeVertexBuffer(decoded.data(), count, stride, data, length);
-        break;
-    case Mode::Triangles:
-        rc = meshopt_decodeIndexBuffer(decoded.data(), count, stride, data, length);
-        break;
-    case Mode::Indices:
-        rc = meshopt_decodeIndexSequence(decoded.data(), count, stride, data, length);
-        break;
-    }
-    if (rc != 0)
-        ctx.fail(extElement, cat("compressed data is corrupt (meshoptimizer error ", rc, ")"));
-    switch (filter) {
-    case Filter::None:
-        break;
-    case Filter::Octahedral:
-        meshopt_decodeFilterOct(decoded.data(), count, stride);
-        break;
-    case Filter::Quaternion:
-        meshopt_decodeFilterQuat(decoded.data(), count, stride);
-        break;
-    case Filter::Exponential:
-        meshopt_decodeFilterExp(decoded.data(), count, stride);
-        break;
-    }
+    const MeshoptSource source = readMeshoptSource(ctx, model, view, it->second, extElement);
+    ctx.charge((source.count * source.stride + 3) / 4, extElement);
+    std::vector<unsigned char> decoded = decodeMeshopt(ctx, source, extElement);
 
     // The view now reads the decoded bytes; without the extension it is an ordinary view.
     tinygltf::Buffer buffer;
