@@ -134,9 +134,11 @@ double animationDuration(const Scene& scene, std::span<const int> animations) {
     return d;
 }
 
-Pose evaluatePose(const Scene& scene, std::span<const int> animations, double time) {
-    Pose pose;
-    pose.time = time;
+namespace {
+
+// Every node's local state at `time`: its rest TRS, overridden by the animations' channels.
+std::vector<NodeState> animatedStates(const Scene& scene, std::span<const int> animations,
+                                      double time) {
     std::vector<NodeState> state(scene.nodes.size());
     for (std::size_t i = 0; i < scene.nodes.size(); ++i)
         state[i] = {
@@ -166,8 +168,12 @@ Pose evaluatePose(const Scene& scene, std::span<const int> animations, double ti
             }
         }
     }
-    // World transforms, parents first (the graph is acyclic: the loader checked).
-    pose.nodeWorld.assign(scene.nodes.size(), glm::mat4(1.0f));
+    return state;
+}
+
+// World transforms, parents first (the graph is acyclic: the loader checked).
+std::vector<glm::mat4> nodeWorlds(const Scene& scene, const std::vector<NodeState>& state) {
+    std::vector<glm::mat4> world(scene.nodes.size(), glm::mat4(1.0f));
     std::vector<char> done(scene.nodes.size(), 0);
     std::vector<std::size_t> chain;
     for (std::size_t i = 0; i < scene.nodes.size(); ++i) {
@@ -177,13 +183,41 @@ Pose evaluatePose(const Scene& scene, std::span<const int> animations, double ti
             chain.push_back(static_cast<std::size_t>(n));
         for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
             const Node& node = scene.nodes[*it];
-            const glm::mat4 parent = node.parent >= 0
-                                         ? pose.nodeWorld[static_cast<std::size_t>(node.parent)]
-                                         : glm::mat4(1.0f);
-            pose.nodeWorld[*it] = parent * localMatrix(node, state[*it]);
+            const glm::mat4 parent =
+                node.parent >= 0 ? world[static_cast<std::size_t>(node.parent)] : glm::mat4(1.0f);
+            world[*it] = parent * localMatrix(node, state[*it]);
             done[*it] = 1;
         }
     }
+    return world;
+}
+
+// An instance's morph weights: the node's animated ones, else the node's, else the mesh's;
+// as many as the mesh has targets (none without targets).
+std::vector<float> instanceWeights(const Scene& scene, const Instance& inst, const Mesh& mesh,
+                                   const std::vector<NodeState>& state) {
+    std::vector<float> weights;
+    if (mesh.targets.empty()) return weights;
+    weights = mesh.morphWeights;
+    if (inst.node >= 0) {
+        const NodeState& s = state.at(static_cast<std::size_t>(inst.node));
+        const Node& node = scene.nodes[static_cast<std::size_t>(inst.node)];
+        if (!s.weights.empty())
+            weights = s.weights;
+        else if (!node.weights.empty())
+            weights = node.weights;
+    }
+    weights.resize(mesh.targets.size(), 0.0f);
+    return weights;
+}
+
+} // namespace
+
+Pose evaluatePose(const Scene& scene, std::span<const int> animations, double time) {
+    Pose pose;
+    pose.time = time;
+    const std::vector<NodeState> state = animatedStates(scene, animations, time);
+    pose.nodeWorld = nodeWorlds(scene, state);
     for (const Skin& skin : scene.skins) {
         std::vector<glm::mat4> joints(skin.joints.size());
         for (std::size_t j = 0; j < skin.joints.size(); ++j)
@@ -199,20 +233,7 @@ Pose evaluatePose(const Scene& scene, std::span<const int> animations, double ti
         else if (inst.node >= 0)
             world = pose.nodeWorld.at(static_cast<std::size_t>(inst.node));
         pose.instanceWorld.push_back(world);
-        std::vector<float> weights;
-        if (!mesh.targets.empty()) {
-            weights = mesh.morphWeights;
-            if (inst.node >= 0) {
-                const NodeState& s = state.at(static_cast<std::size_t>(inst.node));
-                const Node& node = scene.nodes[static_cast<std::size_t>(inst.node)];
-                if (!s.weights.empty())
-                    weights = s.weights;
-                else if (!node.weights.empty())
-                    weights = node.weights;
-            }
-            weights.resize(mesh.targets.size(), 0.0f);
-        }
-        pose.morphWeights.push_back(std::move(weights));
+        pose.morphWeights.push_back(instanceWeights(scene, inst, mesh, state));
     }
     return pose;
 }
