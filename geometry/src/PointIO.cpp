@@ -208,88 +208,102 @@ std::string readWholeFile(const std::filesystem::path& path, PointFormat format)
 
 // --- Parsers ------------------------------------------------------------------------------------
 
+namespace {
+
+// A .node file's header: "#vertices [dimension [#attributes [#markers]]]", Triangle's defaults
+// filling the rest.
+struct NodeHeader {
+    std::uint64_t count = 0, attributes = 0, markers = 0;
+};
+
+NodeHeader parseNodeHeader(const std::vector<std::string_view>& fields, const Where& header) {
+    if (fields.size() > 4) {
+        header.fail("header has " + std::to_string(fields.size()) +
+                    " values; expected '#vertices [dimension [#attributes [#markers]]]'");
+    }
+    NodeHeader h;
+    h.count = toInteger<std::uint64_t>(fields[0], header, "vertex count");
+    const auto dim = fields.size() > 1 ? toInteger<std::uint64_t>(fields[1], header, "dimension")
+                                       : std::uint64_t{2};
+    if (dim != 2) header.fail("dimension is " + std::to_string(dim) + "; only 2D points are read");
+    h.attributes = fields.size() > 2
+                       ? toInteger<std::uint64_t>(fields[2], header, "attribute count")
+                       : std::uint64_t{0};
+    // A bound that keeps 3 + attributes from overflowing; no real file comes near it.
+    if (h.attributes > 100000)
+        header.fail("attribute count " + std::to_string(h.attributes) + " is implausibly large");
+    h.markers = fields.size() > 3
+                    ? toInteger<std::uint64_t>(fields[3], header, "boundary marker count")
+                    : std::uint64_t{0};
+    if (h.markers > 1)
+        header.fail("boundary marker count is " + std::to_string(h.markers) + "; expected 0 or 1");
+    return h;
+}
+
+// One vertex line of `fields` (already split, not empty), appended to out.points.
+void parseNodeVertex(const std::vector<std::string_view>& fields, const Where& where,
+                     const NodeHeader& h, NodeFile& out) {
+    const std::size_t perLine = 3 + h.attributes + h.markers;
+    if (fields.size() != perLine) {
+        std::string layout = "index x y";
+        if (h.attributes > 0) layout += " + " + plural(h.attributes, "attribute", "attributes");
+        if (h.markers > 0) layout += " + marker";
+        where.fail("expected " + std::to_string(perLine) + " values (" + layout + "), found " +
+                   std::to_string(fields.size()));
+    }
+    const auto index = toInteger<long long>(fields[0], where, "vertex index");
+    if (out.points.empty()) {
+        if (index != 0 && index != 1)
+            where.fail("first vertex index is " + std::to_string(index) + "; expected 0 or 1");
+        out.indexBase = static_cast<int>(index);
+    } else {
+        const auto expected = out.indexBase + static_cast<long long>(out.points.size());
+        if (index != expected) {
+            where.fail("vertex index " + std::to_string(index) + " where " +
+                       std::to_string(expected) + " was expected (indices must be consecutive)");
+        }
+    }
+    const double x = toDouble(fields[1], where, "x");
+    const double y = toDouble(fields[2], where, "y");
+    for (std::size_t a = 0; a < h.attributes; ++a)
+        toDouble(fields[3 + a], where, "attribute " + std::to_string(a + 1));
+    if (h.markers > 0) toInteger<long long>(fields.back(), where, "boundary marker");
+    out.points.emplace_back(x, y);
+}
+
+} // namespace
+
 NodeFile parseNode(std::string_view text, const std::string& name) {
     LineReader reader(text);
     std::vector<std::string_view> fields;
     std::string_view line;
     NodeFile out;
-
-    // Header: "#vertices [dimension [#attributes [#markers]]]"; Triangle's defaults fill the rest.
     for (;;) {
         if (!reader.next(line)) return out; // nothing but comments: 0 points
         splitFields(line, false, {name, reader.line()}, fields);
         if (!fields.empty()) break;
     }
-    const Where header{name, reader.line()};
-    if (fields.size() > 4) {
-        header.fail("header has " + std::to_string(fields.size()) +
-                    " values; expected '#vertices [dimension [#attributes [#markers]]]'");
-    }
-    const auto count = toInteger<std::uint64_t>(fields[0], header, "vertex count");
-    const auto dim = fields.size() > 1 ? toInteger<std::uint64_t>(fields[1], header, "dimension")
-                                       : std::uint64_t{2};
-    if (dim != 2) header.fail("dimension is " + std::to_string(dim) + "; only 2D points are read");
-    const auto attributes = fields.size() > 2
-                                ? toInteger<std::uint64_t>(fields[2], header, "attribute count")
-                                : std::uint64_t{0};
-    // A bound that keeps 3 + attributes from overflowing; no real file comes near it.
-    if (attributes > 100000)
-        header.fail("attribute count " + std::to_string(attributes) + " is implausibly large");
-    const auto markers = fields.size() > 3
-                             ? toInteger<std::uint64_t>(fields[3], header, "boundary marker count")
-                             : std::uint64_t{0};
-    if (markers > 1)
-        header.fail("boundary marker count is " + std::to_string(markers) + "; expected 0 or 1");
-    out.attributeCount = attributes;
-    out.hasBoundaryMarkers = markers == 1;
-
-    const std::size_t perLine = 3 + attributes + markers;
-    std::string layout = "index x y";
-    if (attributes > 0) layout += " + " + plural(attributes, "attribute", "attributes");
-    if (markers > 0) layout += " + marker";
+    const NodeHeader h = parseNodeHeader(fields, Where{name, reader.line()});
+    out.attributeCount = h.attributes;
+    out.hasBoundaryMarkers = h.markers == 1;
     // The header may lie; never reserve more than the text could hold.
-    out.points.reserve(std::min<std::uint64_t>(count, text.size() / 6 + 1));
-
-    while (out.points.size() < count) {
+    out.points.reserve(std::min<std::uint64_t>(h.count, text.size() / 6 + 1));
+    while (out.points.size() < h.count) {
         if (!reader.next(line)) {
             Where{name, reader.line()}.fail("file ends after " + std::to_string(out.points.size()) +
-                                            " of the " + plural(count, "vertex", "vertices") +
+                                            " of the " + plural(h.count, "vertex", "vertices") +
                                             " the header announced");
         }
         const Where where{name, reader.line()};
         splitFields(line, false, where, fields);
-        if (fields.empty()) continue;
-        if (fields.size() != perLine) {
-            where.fail("expected " + std::to_string(perLine) + " values (" + layout + "), found " +
-                       std::to_string(fields.size()));
-        }
-        const auto index = toInteger<long long>(fields[0], where, "vertex index");
-        if (out.points.empty()) {
-            if (index != 0 && index != 1)
-                where.fail("first vertex index is " + std::to_string(index) + "; expected 0 or 1");
-            out.indexBase = static_cast<int>(index);
-        } else {
-            const auto expected = out.indexBase + static_cast<long long>(out.points.size());
-            if (index != expected) {
-                where.fail("vertex index " + std::to_string(index) + " where " +
-                           std::to_string(expected) +
-                           " was expected (indices must be consecutive)");
-            }
-        }
-        const double x = toDouble(fields[1], where, "x");
-        const double y = toDouble(fields[2], where, "y");
-        for (std::size_t a = 0; a < attributes; ++a)
-            toDouble(fields[3 + a], where, "attribute " + std::to_string(a + 1));
-        if (markers > 0) toInteger<long long>(fields.back(), where, "boundary marker");
-        out.points.emplace_back(x, y);
+        if (!fields.empty()) parseNodeVertex(fields, where, h, out);
     }
-
     // Content after the announced vertices means the header and the body disagree.
     while (reader.next(line)) {
         const Where where{name, reader.line()};
         splitFields(line, false, where, fields);
         if (!fields.empty()) {
-            where.fail("unexpected values after the " + plural(count, "vertex", "vertices") +
+            where.fail("unexpected values after the " + plural(h.count, "vertex", "vertices") +
                        " the header announced");
         }
     }
