@@ -263,6 +263,5 @@ int main(int argc, char** argv) {
                  "side"};
     Options o;
     addOptions(app, o);
-    CLI11_PARSE(app, argc, argv);
-    return fl::bench::guarded([&] { return runBench(o); });
+    return fl::bench::parseAndRun(app, argc, argv, [&] { return runBench(o); });
 }

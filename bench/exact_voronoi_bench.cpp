@@ -20,6 +20,7 @@
 #include <jfa/Reference.h>
 #include <jfa/Sites.h>
 
+#include <BenchSupport.h>
 #include <CLI/CLI.hpp>
 
 #include <chrono>
@@ -225,8 +226,7 @@ int main(int argc, char** argv) {
     app.add_option("--backends", c.backends, "cpu, gl")
         ->delimiter(',')
         ->check(CLI::IsMember({"cpu", "gl"}));
-    CLI11_PARSE(app, argc, argv);
-    try {
+    return fl::bench::parseAndRun(app, argc, argv, [&] {
         auto ctx = EglContext::create(false);
         const gl::ShaderLibrary shaders;
         std::cout << "context: " << ctx->description() << "\n"
@@ -244,9 +244,6 @@ int main(int argc, char** argv) {
                               << (results["gl"] == results["cpu"] ? "yes" : "NO") << "\n";
                 if (results.size() == 2 && results["gl"] != results["cpu"]) return 1;
             }
-    } catch (const std::exception& e) {
-        std::cerr << "error: " << e.what() << "\n";
-        return 1;
-    }
-    return 0;
+        return 0;
+    });
 }

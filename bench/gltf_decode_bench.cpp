@@ -9,6 +9,7 @@
 
 #include "CompressedGltf.h"
 
+#include <BenchSupport.h>
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -49,8 +50,7 @@ int main(int argc, char** argv) {
     app.add_option("--runs", runs, "Loads per file")
         ->check(CLI::Range(1, 1000))
         ->capture_default_str();
-    CLI11_PARSE(app, argc, argv);
-    try {
+    return fl::bench::parseAndRun(app, argc, argv, [&] {
         using fl::test::Container;
         const fl::test::GridMesh mesh = fl::test::gridMesh(grid);
         const auto draco = fl::test::dracoGltf(mesh);
@@ -72,9 +72,6 @@ int main(int argc, char** argv) {
                         static_cast<double>(std::filesystem::file_size(path)) / (1 << 20),
                         triangles, t.min, t.median);
         }
-    } catch (const std::exception& e) {
-        std::cerr << "error: " << e.what() << "\n";
-        return 1;
-    }
-    return 0;
+        return 0;
+    });
 }

@@ -189,8 +189,7 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_option("--scaling-sizes", scaling, "Grid sides for the JFA size sweep (GL and CPU)")
         ->delimiter(',');
-    CLI11_PARSE(app, argc, argv);
-    return fl::bench::guarded([&] {
+    return fl::bench::parseAndRun(app, argc, argv, [&] {
         auto ctx = EglContext::create(false);
         std::cout << "context: " << ctx->description() << "\n"
                   << "grid " << size << "x" << size << ", " << runs

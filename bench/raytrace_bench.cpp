@@ -12,6 +12,7 @@
 #include <base/Parallel.h>
 #include <base/Stats.h>
 
+#include <BenchSupport.h>
 #include <CLI/CLI.hpp>
 
 #include <chrono>
@@ -41,8 +42,7 @@ int main(int argc, char** argv) {
     app.add_option("--light-radius", radius)->capture_default_str();
     app.add_option("--samples", samples, "Rays per pixel to time (each)")->capture_default_str();
     app.add_option("--repeats", repeats)->check(CLI::Range(1, 1000))->capture_default_str();
-    CLI11_PARSE(app, argc, argv);
-    try {
+    return fl::bench::parseAndRun(app, argc, argv, [&] {
         fl::Scene scene =
             triangles
                 ? fl::generateScene({triangles, 1})
@@ -95,9 +95,6 @@ int main(int argc, char** argv) {
                         fl::median(ms), *std::max_element(rate.begin(), rate.end()),
                         fl::median(rate));
         }
-    } catch (const std::exception& e) {
-        std::cerr << "error: " << e.what() << "\n";
-        return 1;
-    }
-    return 0;
+        return 0;
+    });
 }

@@ -287,11 +287,12 @@ int main(int argc, char** argv) {
                  "peak RSS"};
     Options o;
     addOptions(app, o);
-    CLI11_PARSE(app, argc, argv);
-    if (!fl::findMethod(o.method)) {
-        std::cerr << "error: --method: unknown shadow method '" << o.method
-                  << "' (valid: " << fl::methodNames() << ")\n";
-        return 2;
-    }
-    return fl::bench::guarded([&] { return runBench(o, app); });
+    return fl::bench::parseAndRun(app, argc, argv, [&] {
+        if (!fl::findMethod(o.method)) {
+            std::cerr << "error: --method: unknown shadow method '" << o.method
+                      << "' (valid: " << fl::methodNames() << ")\n";
+            return 2;
+        }
+        return runBench(o, app);
+    });
 }

@@ -242,6 +242,5 @@ int main(int argc, char** argv) {
     CLI::App app{"tsm_bench: TSM vs uniform shadow map along a walkthrough, side by side"};
     Options o;
     addOptions(app, o);
-    CLI11_PARSE(app, argc, argv);
-    return fl::bench::guarded([&] { return runBench(o); });
+    return fl::bench::parseAndRun(app, argc, argv, [&] { return runBench(o); });
 }

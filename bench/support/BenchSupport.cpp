@@ -16,6 +16,11 @@ int guarded(const std::function<int()>& body) {
     }
 }
 
+int parseAndRun(CLI::App& app, int argc, char** argv, const std::function<int()>& body) {
+    CLI11_PARSE(app, argc, argv);
+    return guarded(body);
+}
+
 Scene loadBenchScene(const std::string& path) {
     return loadGltf(path.empty() ? std::string(FLOODLIGHT_SOURCE_DIR) + "/assets/default.glb"
                                  : path);

@@ -21,6 +21,10 @@ namespace fl::bench {
 /// Runs a bench's body; an exception is printed as "error: WHAT" on stderr and exits 1.
 int guarded(const std::function<int()>& body);
 
+/// A bench's main after its options are registered on `app`: parses argv (CLI11's exit for
+/// --help and usage errors), then runs `body` guarded.
+int parseAndRun(CLI::App& app, int argc, char** argv, const std::function<int()>& body);
+
 /// assets/default.glb, or the glTF file `path` when it is not empty.
 Scene loadBenchScene(const std::string& path = {});
 
