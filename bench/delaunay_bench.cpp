@@ -210,7 +210,11 @@ int runChild(const ChildOptions& o) {
             res << " total=" << wall << " g1=" << g.g1 << " g2=" << g.g2 << " g3=" << g.g3
                 << " g4=" << g.g4 << " g5=" << g.g5 << " g6=" << g.g6 << " c1=" << c.c1
                 << " c2=" << c.c2 << " c3=" << c.c3 << " c4=" << c.c4;
-            if (gl) res << " rb=" << gl->steps.extras().readbackMs;
+            if (gl) {
+                const fl::geom::GlDiscreteExtras& x = gl->steps.extras();
+                res << " rb=" << x.readbackMs << " snap=" << x.snapMs << " up=" << x.uploads
+                    << " down=" << x.readbacks;
+            }
         }
         res << " texture=" << opt.discrete.size << " missing=" << r.discrete.missing().size()
             << " flips=" << r.counts.flips + r.counts.insertFlips
@@ -336,7 +340,8 @@ void writeRows(const std::string& d, int texture, const ChildRun& base, const Ch
           << " | " << fmt(med(o, "flips"), 0) << " | " << fmt(med(o, "triangles"), 0) << " | "
           << same << " | " << fmt(perPoint(cgal), 0) << " | " << fmt(perPoint(ours), 0) << " |\n";
     steps << "| " << d << " | " << fmt(points, 0) << " | " << fmt(side, 0);
-    for (const char* k : {"g1", "g2", "g3", "g4", "g5", "g6", "rb", "c1", "c2", "c3", "c4"})
+    for (const char* k :
+         {"g1", "snap", "g2", "g3", "g4", "g5", "g6", "rb", "up", "down", "c1", "c2", "c3", "c4"})
         steps << " | " << fmt(med(o, k));
     steps << " |\n";
 }
@@ -397,9 +402,11 @@ int main(int argc, char** argv) {
     table << "| distribution | n | N | CGAL ms | ours ms | G1-G6 ms | C1-C4 ms | ours/CGAL | "
              "C1-C4/CGAL | missing | flips | triangles | same | CGAL B/pt | ours B/pt |\n"
           << "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|---|--:|--:|\n";
-    // rb: the GL backend's read-back outside G1-G6 ("-" on the CPU backend).
-    steps << "| distribution | n | N | G1 | G2 | G3 | G4 | G5 | G6 | rb | C1 | C2 | C3 | C4 |\n"
-          << "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
+    // GL backend only ("-" on the CPU backend): snap, the host's share of G1; rb, the read-back
+    // outside G1-G6; up / down, its uploads and read-backs per run.
+    steps << "| distribution | n | N | G1 | snap | G2 | G3 | G4 | G5 | G6 | rb | up | down | C1 | "
+             "C2 | C3 | C4 |\n"
+          << "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
     const std::string tmp = "/tmp/delaunay_bench." + std::to_string(getpid());
     for (const std::string& size : sizes) {
         for (const std::string& d : dists) {
