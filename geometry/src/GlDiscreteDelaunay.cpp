@@ -51,16 +51,23 @@ std::size_t innerCorners(int w, int h) {
     return w < 2 || h < 2 ? 0 : std::size_t(w - 1) * std::size_t(h - 1);
 }
 
-// G1's host part: the double-precision mapping and snap, as snapSites does.
-void snapOnHost(const std::vector<glm::dvec2>& sites, int n, SnappedSites& snapped) {
+// G1's host part: the double-precision mapping and snap, as snapSites does, the snap spread
+// over `threads` (each pixel depends on its site alone, so the result is the same).
+void snapOnHost(const std::vector<glm::dvec2>& sites, int n, int threads, SnappedSites& snapped) {
     snapped.mapping = fitTextureMapping(sites, n);
     snapped.pixels.resize(sites.size());
-    for (std::size_t i = 0; i < sites.size(); ++i)
-        snapped.pixels[i] = snapped.mapping.pixelOf(sites[i]);
+    jfa::parallelRows(static_cast<int>(sites.size()), threads, [&](int begin, int end, int) {
+        for (int i = begin; i < end; ++i)
+            snapped.pixels[std::size_t(i)] = snapped.mapping.pixelOf(sites[std::size_t(i)]);
+    });
 }
 
 // S' and the missing sites from each site's keeper (itself if it kept its pixel).
 void splitKeepers(const std::vector<std::uint32_t>& keepers, SnappedSites& snapped) {
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < keepers.size(); ++i) kept += keepers[i] == i ? 1 : 0;
+    snapped.kept.reserve(kept);
+    snapped.missing.reserve(keepers.size() - kept);
     for (std::size_t i = 0; i < keepers.size(); ++i) {
         const auto site = static_cast<std::uint32_t>(i);
         if (keepers[i] == site)
@@ -116,7 +123,7 @@ DiscreteDelaunay GlDiscreteDelaunay::run(const std::vector<glm::dvec2>& sites,
 
     // G1: the double-precision mapping stays on the host (as snapSites; extras.snapMs says what
     // it costs); its pixels are the one upload. The GPU resolves who keeps each pixel.
-    snapOnHost(sites, n, r.snapped);
+    snapOnHost(sites, n, options.threads, r.snapped);
     g.extras.snapMs = clock.lap();
     r.timings.g1 = g.extras.snapMs;
     g.resize(n, n);

@@ -43,11 +43,11 @@ DiscreteTriangles parseMesh(const std::uint32_t* words, const ResultLayout& layo
     const std::size_t vertexCount = data.header[kHeadVertices];
     const std::size_t triangleCount = data.header[kHeadTriangles];
     const std::uint32_t* v = words + layout.vertices / sizeof(std::uint32_t);
-    mesh.vertices.resize(vertexCount);
+    mesh.vertices.reserve(vertexCount); // not resize: each vertex is written once
     for (std::size_t k = 0; k < vertexCount; ++k, v += 6)
-        mesh.vertices[k] = VoronoiVertex{{int(v[0] & 0xffffu), int(v[0] >> 16)},
-                                         static_cast<CornerCase>(v[1]),
-                                         {v[2], v[3], v[4], v[5]}};
+        mesh.vertices.push_back(VoronoiVertex{{int(v[0] & 0xffffu), int(v[0] >> 16)},
+                                              static_cast<CornerCase>(v[1]),
+                                              {v[2], v[3], v[4], v[5]}});
     const std::uint32_t* t = words + layout.triangles / sizeof(std::uint32_t);
     mesh.triangles.assign(t, t + 3 * triangleCount);
     const std::uint32_t* tv = words + layout.triangleVertex / sizeof(std::uint32_t);

@@ -70,7 +70,7 @@ class GlDiscreteDelaunay {
     /// timings, which are GPU wall times per step (glFinish; llvmpipe's timer queries read 0
     /// for compute), and the stages: `voronoi` only with countIslands or setReadStages(true),
     /// `corners` and `chain` only with setReadStages(true) (each one more read-back).
-    /// `threads` is validated and otherwise unused. Throws std::invalid_argument as
+    /// `threads` runs G1's host part (the snap). Throws std::invalid_argument as
     /// discreteDelaunay does.
     DiscreteDelaunay run(const std::vector<glm::dvec2>& sites,
                          const DiscreteDelaunayOptions& options = {});
