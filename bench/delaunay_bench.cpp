@@ -17,9 +17,10 @@
 
 #include <base/Stats.h>
 #include <geometry/Delaunay.h>
+#include <geometry/GlDiscreteDelaunay.h>
+#include <gpu/ShaderLibrary.h>
 #include <jfa/Sites.h>
-
-#include <base/Stats.h>
+#include <renderer/context/EglContext.h>
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -153,7 +154,7 @@ int autoTexture(std::size_t n) {
 }
 
 struct ChildOptions {
-    std::string side, dist, trianglesOut;
+    std::string side, dist, trianglesOut, backend = "cpu";
     std::size_t n = 0;
     std::uint64_t seed = 1;
     int runs = 3, texture = 0, threads = 0;
@@ -183,6 +184,21 @@ int runChild(const ChildOptions& o) {
         fl::geom::DelaunayOptions opt;
         opt.discrete.size = o.texture > 0 ? o.texture : autoTexture(points.size());
         opt.discrete.threads = o.threads;
+        // GL: context, shaders and programs are made once, before the first run's clock starts
+        // (as `floodlight delaunay --backend gl` does).
+        struct Gl {
+            std::unique_ptr<fl::EglContext> context = fl::EglContext::create();
+            fl::gl::ShaderLibrary shaders;
+            fl::geom::GlDiscreteDelaunay steps{shaders};
+        };
+        std::unique_ptr<Gl> gl;
+        if (o.backend == "gl") {
+            gl = std::make_unique<Gl>();
+            opt.discreteBackend = [&gl](const std::vector<glm::dvec2>& s,
+                                        const fl::geom::DiscreteDelaunayOptions& d) {
+                return gl->steps.run(s, d);
+            };
+        }
         DelaunayResult r;
         for (int run = 0; run < o.runs; ++run) {
             r = {}; // or the peak RSS would hold the previous run's result next to this one
@@ -194,6 +210,11 @@ int runChild(const ChildOptions& o) {
             res << " total=" << wall << " g1=" << g.g1 << " g2=" << g.g2 << " g3=" << g.g3
                 << " g4=" << g.g4 << " g5=" << g.g5 << " g6=" << g.g6 << " c1=" << c.c1
                 << " c2=" << c.c2 << " c3=" << c.c3 << " c4=" << c.c4;
+            if (gl) {
+                const fl::geom::GlDiscreteExtras& x = gl->steps.extras();
+                res << " rb=" << x.readbackMs << " snap=" << x.snapMs << " up=" << x.uploads
+                    << " down=" << x.readbacks;
+            }
         }
         res << " texture=" << opt.discrete.size << " missing=" << r.discrete.missing().size()
             << " flips=" << r.counts.flips + r.counts.insertFlips
@@ -319,7 +340,8 @@ void writeRows(const std::string& d, int texture, const ChildRun& base, const Ch
           << " | " << fmt(med(o, "flips"), 0) << " | " << fmt(med(o, "triangles"), 0) << " | "
           << same << " | " << fmt(perPoint(cgal), 0) << " | " << fmt(perPoint(ours), 0) << " |\n";
     steps << "| " << d << " | " << fmt(points, 0) << " | " << fmt(side, 0);
-    for (const char* k : {"g1", "g2", "g3", "g4", "g5", "g6", "c1", "c2", "c3", "c4"})
+    for (const char* k :
+         {"g1", "snap", "g2", "g3", "g4", "g5", "g6", "rb", "up", "down", "c1", "c2", "c3", "c4"})
         steps << " | " << fmt(med(o, k));
     steps << " |\n";
 }
@@ -330,6 +352,7 @@ int main(int argc, char** argv) {
     CLI::App app{"delaunay_bench: our G1-G6 + C1-C4 pipeline vs CGAL Delaunay_triangulation_2"};
     std::vector<std::string> dists = kDistributions, sizes{"10k", "100k", "1M"};
     std::vector<int> textures{0};
+    std::string backend = "cpu";
     int runs = 3, threads = 0, timeoutS = 600;
     std::uint64_t seed = 1;
     bool noCheck = false;
@@ -343,6 +366,9 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_option("--runs", runs, "Runs per measurement (min/median)")
         ->check(CLI::Range(1, 1000))
+        ->capture_default_str();
+    app.add_option("--backend", backend, "G1-G6 on the CPU or through GL (headless EGL)")
+        ->check(CLI::IsMember({"cpu", "gl"}))
         ->capture_default_str();
     app.add_option("--threads", threads, "Threads for G1-G6 (0: all)")->capture_default_str();
     app.add_option("--seed", seed)->capture_default_str();
@@ -361,21 +387,26 @@ int main(int argc, char** argv) {
         child.runs = runs;
         child.texture = textures.front();
         child.threads = threads;
+        child.backend = backend;
         child.check = !noCheck;
         return runChild(child);
     }
 
     std::cout << "delaunay_bench: CGAL " << CGAL_VERSION_STR
-              << " Delaunay_triangulation_2 (Epick, range insert) vs floodlight delaunay() (CPU "
-              << "backend, G1-G6 threads: " << (threads ? std::to_string(threads) : "all") << ")\n"
+              << " Delaunay_triangulation_2 (Epick, range insert) vs floodlight delaunay() ("
+              << backend
+              << " backend, G1-G6 threads: " << (threads ? std::to_string(threads) : "all") << ")\n"
               << "runs " << runs << ", seed " << seed << "; times in ms (min / median); each "
               << "measurement in a fresh process\n\n";
     std::ostringstream table, steps;
     table << "| distribution | n | N | CGAL ms | ours ms | G1-G6 ms | C1-C4 ms | ours/CGAL | "
              "C1-C4/CGAL | missing | flips | triangles | same | CGAL B/pt | ours B/pt |\n"
           << "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|---|--:|--:|\n";
-    steps << "| distribution | n | N | G1 | G2 | G3 | G4 | G5 | G6 | C1 | C2 | C3 | C4 |\n"
-          << "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
+    // GL backend only ("-" on the CPU backend): snap, the host's share of G1; rb, the read-back
+    // outside G1-G6; up / down, its uploads and read-backs per run.
+    steps << "| distribution | n | N | G1 | snap | G2 | G3 | G4 | G5 | G6 | rb | up | down | C1 | "
+             "C2 | C3 | C4 |\n"
+          << "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
     const std::string tmp = "/tmp/delaunay_bench." + std::to_string(getpid());
     for (const std::string& size : sizes) {
         for (const std::string& d : dists) {
@@ -388,7 +419,8 @@ int main(int argc, char** argv) {
                                            "--child-n",    n,
                                            "--seed",       std::to_string(seed),
                                            "--runs",       std::to_string(runs),
-                                           "--threads",    std::to_string(threads)};
+                                           "--threads",    std::to_string(threads),
+                                           "--backend",    backend};
                 if (noCheck) a.push_back("--no-check");
                 return a;
             };

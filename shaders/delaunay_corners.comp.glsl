@@ -2,14 +2,15 @@
 // Step G4 (thesis §6.3.2), classifyCorner in geometry/DiscreteTriangles.h: the corner
 // (x + 0.5, y + 0.5) by the colours of its pixels 1 = (x, y), 2 = (x+1, y), 3 = (x+1, y+1),
 // 4 = (x, y+1), stored at pixel 1; the last row and column (border corners) are case 1. Each
-// non-None corner also bumps its case's count (None is the rest, which the host derives).
+// non-None corner also bumps its case's count in the result header (None is the rest, which the
+// host derives).
 #include "delaunay_common.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(binding = 0) uniform usampler2D uIds;
 layout(binding = 0, r8ui) uniform writeonly uimage2D uCorners;
-layout(std430, binding = 0) buffer Counts { uint counts[9]; };
+layout(std430, binding = 0) buffer Header { uint header[]; };
 uniform ivec2 uSize;
 
 uint classifyCorner(uint c1, uint c2, uint c3, uint c4) {
@@ -37,7 +38,7 @@ void main() {
         c = classifyCorner(texelFetch(uIds, p, 0).r, texelFetch(uIds, p + ivec2(1, 0), 0).r,
                            texelFetch(uIds, p + ivec2(1, 1), 0).r,
                            texelFetch(uIds, p + ivec2(0, 1), 0).r);
-        if (c != kCaseNone) atomicAdd(counts[c], 1u);
+        if (c != kCaseNone) atomicAdd(header[kHeadCorners + c], 1u);
     }
     imageStore(uCorners, p, uvec4(c));
 }

@@ -1,10 +1,12 @@
 #version 450 core
 // Step G6 (thesis §6.3.2), buildTriangles in geometry/DiscreteTriangles.h: one invocation per
 // corner row (the thesis' one CUDA thread per row) walks the row's G5 chain from vertex to
-// vertex and makes one triangle per three-colour vertex, two per four-colour vertex. A row first
-// counts what it will write, reserves that many vertices and triangles with one atomicAdd each
-// (rows land in any order, every row's records contiguous and in chain order) and notes where in
-// `rows`, so the host restores the CPU's row-major order by copying blocks, without a sort.
+// vertex and makes one triangle per three-colour vertex, two per four-colour vertex. Two walks:
+// mode 0 counts each row's vertices and triangles into `rows`; delaunay_rows_scan turns the
+// counts into each row's first vertex and triangle; mode 1 walks again and writes the records
+// there, so they lie in the CPU's order (rows bottom to top, chain order within a row) in the
+// result buffer that run() reads back once. Writes past the capacities are dropped; the header's
+// totals tell the host to grow the buffer and run again.
 #include "delaunay_common.glsl"
 
 layout(local_size_x = 64) in;
@@ -13,19 +15,18 @@ layout(binding = 0) uniform usampler2D uIds;     // G3's texture
 layout(binding = 1) uniform usampler2D uCorners; // G4's cases
 layout(binding = 2) uniform isampler2D uChain;   // G5's chain
 layout(std430, binding = 0) readonly buffer Pixels { ivec2 pixels[]; };
-// Reservation counters and TriangleStats (three-colour, four-colour, degenerate, clockwise).
-layout(std430, binding = 1) buffer Counters {
-    uint vertexCount;
-    uint triangleCount;
-    uint stats[4];
-};
-// Per corner row: first vertex, vertices, first triangle, triangles.
-layout(std430, binding = 2) writeonly buffer Rows { uvec4 rows[]; };
-// Per vertex: x, case, colours of pixels 1-4.
+// The result header: TriangleStats (three-colour, four-colour, degenerate, clockwise).
+layout(std430, binding = 1) buffer Header { uint header[]; };
+// Per corner row: vertices, triangles (mode 0 writes); first vertex, first triangle (the scan's).
+layout(std430, binding = 2) buffer Rows { uvec4 rows[]; };
+// Per vertex: x | y << 16, case, colours of pixels 1-4.
 layout(std430, binding = 3) writeonly buffer Vertices { uint vertexData[]; };
-// Per triangle: three site ids (counterclockwise), the row-local index of its vertex.
-layout(std430, binding = 4) writeonly buffer Triangles { uvec4 triangles[]; };
+// Per triangle: three site ids (counterclockwise).
+layout(std430, binding = 4) writeonly buffer Triangles { uint triangleData[]; };
+// Per triangle: the index of its vertex.
+layout(std430, binding = 5) writeonly buffer TriangleVertex { uint triangleVertex[]; };
 uniform ivec2 uSize;
+uniform int uMode; // 0: count, 1: write
 uniform int uVertexCapacity;
 uniform int uTriangleCapacity;
 
@@ -67,20 +68,25 @@ int inCircleSign(ivec2 a, ivec2 b, ivec2 c, ivec2 d) {
 
 uint gThree = 0u, gFour = 0u, gDegenerate = 0u, gClockwise = 0u;
 
-void emit(uint slot, uint a, uint b, uint c, uint localVertex) {
+void emit(uint slot, uint a, uint b, uint c, uint vertex) {
     int o = orient(pixels[a], pixels[b], pixels[c]);
     gDegenerate += uint(o == 0);
     gClockwise += uint(o < 0);
-    if (slot < uint(uTriangleCapacity)) triangles[slot] = uvec4(a, b, c, localVertex);
+    if (slot < uint(uTriangleCapacity)) {
+        triangleData[3u * slot] = a;
+        triangleData[3u * slot + 1u] = b;
+        triangleData[3u * slot + 2u] = c;
+        triangleVertex[slot] = vertex;
+    }
 }
 
 // Emits the vertex's triangles from `slot` on; returns how many (as the CPU's MeshBuilder).
-uint vertexTriangles(uint kind, uvec4 col, uint slot, uint localVertex) {
+uint vertexTriangles(uint kind, uvec4 col, uint slot, uint vertex) {
     if (kind != kCaseFour) {
         ++gThree;
         // The three colours counterclockwise around the corner, the repeated one skipped.
         uvec3 t = kind == kCaseThreeA ? col.xzw : (kind == kCaseThreeB ? col.xyw : col.xyz);
-        emit(slot, t.x, t.y, t.z, localVertex);
+        emit(slot, t.x, t.y, t.z, vertex);
         return 1u;
     }
     ++gFour;
@@ -92,11 +98,11 @@ uint vertexTriangles(uint kind, uvec4 col, uint slot, uint localVertex) {
     bool useBd = bdValid && !acValid;
     if (acValid && bdValid) useBd = inCircleSign(pa, pb, pc, pd) > 0;
     if (useBd) {
-        emit(slot, col.x, col.y, col.w, localVertex);
-        emit(slot + 1u, col.y, col.z, col.w, localVertex);
+        emit(slot, col.x, col.y, col.w, vertex);
+        emit(slot + 1u, col.y, col.z, col.w, vertex);
     } else {
-        emit(slot, col.x, col.y, col.z, localVertex);
-        emit(slot + 1u, col.x, col.z, col.w, localVertex);
+        emit(slot, col.x, col.y, col.z, vertex);
+        emit(slot + 1u, col.x, col.z, col.w, vertex);
     }
     return 2u;
 }
@@ -110,15 +116,17 @@ void main() {
     // Corner rows 0..h-2; the top row's corners lie on the border.
     if (y >= uSize.y - 1) return;
     int first = texelFetch(uChain, ivec2(0, y), 0).r;
-    uint vertices = 0u, tris = 0u;
-    for (int x = first; x != kNoVertex; x = nextVertex(x, y)) {
-        ++vertices;
-        tris += texelFetch(uCorners, ivec2(x, y), 0).r == kCaseFour ? 2u : 1u;
+    if (uMode == 0) {
+        uint vertices = 0u, tris = 0u;
+        for (int x = first; x != kNoVertex; x = nextVertex(x, y)) {
+            ++vertices;
+            tris += texelFetch(uCorners, ivec2(x, y), 0).r == kCaseFour ? 2u : 1u;
+        }
+        rows[y] = uvec4(vertices, tris, 0u, 0u);
+        return;
     }
-    uint v0 = atomicAdd(vertexCount, vertices);
-    uint t0 = atomicAdd(triangleCount, tris);
-    rows[y] = uvec4(v0, vertices, t0, tris);
-    uint v = 0u, t = t0;
+    uint v0 = rows[y].z;
+    uint v = 0u, t = rows[y].w;
     for (int x = first; x != kNoVertex; x = nextVertex(x, y), ++v) {
         ivec2 p = ivec2(x, y);
         uint kind = texelFetch(uCorners, p, 0).r;
@@ -127,17 +135,17 @@ void main() {
                           texelFetch(uIds, p + ivec2(0, 1), 0).r);
         uint slot = v0 + v;
         if (slot < uint(uVertexCapacity)) {
-            vertexData[6u * slot] = uint(x);
+            vertexData[6u * slot] = uint(x) | uint(y) << 16;
             vertexData[6u * slot + 1u] = kind;
             vertexData[6u * slot + 2u] = col.x;
             vertexData[6u * slot + 3u] = col.y;
             vertexData[6u * slot + 4u] = col.z;
             vertexData[6u * slot + 5u] = col.w;
         }
-        t += vertexTriangles(kind, col, t, v);
+        t += vertexTriangles(kind, col, t, slot);
     }
-    atomicAdd(stats[0], gThree);
-    atomicAdd(stats[1], gFour);
-    atomicAdd(stats[2], gDegenerate);
-    atomicAdd(stats[3], gClockwise);
+    atomicAdd(header[kHeadStats], gThree);
+    atomicAdd(header[kHeadStats + 1u], gFour);
+    atomicAdd(header[kHeadStats + 2u], gDegenerate);
+    atomicAdd(header[kHeadStats + 3u], gClockwise);
 }

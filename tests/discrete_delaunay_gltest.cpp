@@ -3,9 +3,11 @@
 // sites, both id textures, island statistics, corner cases and counts, row chains, vertices,
 // triangles in the same order, triangle statistics), for random and dense site sets, plans that
 // leave islands, and hand-made textures for the corner cases of Fig. 6.6 and the four-colour
-// split.
+// split. Without stages, run() makes one upload and one read-back (issue 31) and still gives the
+// CPU's result, on the benchmark's distributions and when its first bounds fall short.
 #include "GlTest.h"
 
+#include <geometry/Delaunay.h>
 #include <geometry/GlDiscreteDelaunay.h>
 
 #include <gpu/ShaderLibrary.h>
@@ -13,10 +15,12 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <tuple>
@@ -29,8 +33,13 @@ namespace {
 class DiscreteDelaunayGlTest : public test::GlTest {
   public:
     // One compiled backend for the whole suite: it is what callers are meant to hold.
+    // It reads every stage back (the tests compare them) unless a test says otherwise.
     static GlDiscreteDelaunay& backend() {
-        static GlDiscreteDelaunay instance{gl::ShaderLibrary{}, floodKind()};
+        static GlDiscreteDelaunay instance = [] {
+            GlDiscreteDelaunay b{gl::ShaderLibrary{}, floodKind()};
+            b.setReadStages(true);
+            return b;
+        }();
         return instance;
     }
     // FLOODLIGHT_GL_DELAUNAY_KERNEL=compute switches G2 to the compute flood kernel.
@@ -82,6 +91,8 @@ void expectSameStages(const DiscreteDelaunay& cpu, const DiscreteDelaunay& gl) {
     EXPECT_EQ(cpu.mesh.triangleVertex, gl.mesh.triangleVertex) << "G6 triangle vertices";
     EXPECT_EQ(cpu.mesh.stats, gl.mesh.stats) << "G6 stats";
 }
+
+void expectSameResult(const DiscreteDelaunay& cpu, const DiscreteDelaunay& gl);
 
 DiscreteDelaunay expectSameAsCpu(const std::vector<glm::dvec2>& sites,
                                  const DiscreteDelaunayOptions& options) {
@@ -305,10 +316,134 @@ TEST_F(DiscreteDelaunayGlTest, OneBackendServesChangingSizes) {
         expectSameAsCpu(randomSites(size * 4, std::uint64_t(size), {0.0, 0.0}, {2.0, 1.0}),
                         optionsFor(size));
     }
-    // The one-off function, too.
+    // The one-off function, too (it reads no stages back but G2's, which countIslands needs).
     const auto sites = randomSites(300, 5, {0.0, 0.0}, {1.0, 1.0});
-    expectSameStages(discreteDelaunay(sites, optionsFor(128)),
-                     glDiscreteDelaunay(sites, optionsFor(128)));
+    const DiscreteDelaunay cpu = discreteDelaunay(sites, optionsFor(128));
+    const DiscreteDelaunay gl = glDiscreteDelaunay(sites, optionsFor(128));
+    expectSameResult(cpu, gl);
+    EXPECT_TRUE(cpu.voronoi == gl.voronoi);
+    EXPECT_EQ(cpu.islandsBefore, gl.islandsBefore);
+    EXPECT_TRUE(gl.corners.cases.empty() && gl.chain.next.empty());
+}
+
+// The benchmark's distributions (bench/delaunay_bench.cpp), small: `count` points of `name`.
+std::vector<glm::dvec2> distribution(const std::string& name, int count, std::uint64_t seed) {
+    jfa::SplitMix64 rng(seed);
+    std::vector<glm::dvec2> p;
+    const double twoPi = 2.0 * std::numbers::pi;
+    if (name == "grid") {
+        const int side = int(std::lround(std::sqrt(double(count))));
+        for (int y = 0; y < side; ++y)
+            for (int x = 0; x < side; ++x) p.emplace_back(double(x), double(y));
+        return p;
+    }
+    for (int i = 0; i < count; ++i) {
+        const double u = rng.unit(), v = rng.unit();
+        if (name == "uniform") {
+            p.emplace_back(u, v);
+        } else if (name == "gaussian") { // Box-Muller, sigma 1
+            const double r = std::sqrt(-2.0 * std::log(1.0 - u));
+            p.emplace_back(r * std::cos(twoPi * v), r * std::sin(twoPi * v));
+        } else if (name == "circle") {
+            p.emplace_back(std::cos(twoPi * u), std::sin(twoPi * u));
+        } else { // two-lines: half on y = x, half on y = 1 - x
+            p.emplace_back(u, i % 2 == 0 ? u : 1.0 - u);
+        }
+    }
+    return p;
+}
+
+// What the CPU steps C1-C4 take from G1-G6 (and the rest a lean run() still fills), equal.
+void expectSameResult(const DiscreteDelaunay& cpu, const DiscreteDelaunay& gl) {
+    EXPECT_EQ(cpu.snapped.pixels, gl.snapped.pixels) << "G1 pixels";
+    EXPECT_EQ(cpu.snapped.kept, gl.snapped.kept) << "G1 kept";
+    EXPECT_EQ(cpu.missing(), gl.missing()) << "G1 missing";
+    EXPECT_TRUE(cpu.cleaned == gl.cleaned) << "G3 texture";
+    EXPECT_EQ(cpu.islands.passes, gl.islands.passes) << "G3 passes";
+    EXPECT_EQ(cpu.islands.reassigned, gl.islands.reassigned) << "G3 reassigned";
+    EXPECT_EQ(cpu.islands.converged, gl.islands.converged) << "G3 converged";
+    EXPECT_TRUE(cpu.mesh == gl.mesh)
+        << "G6: " << cpu.mesh.triangleCount() << " vs " << gl.mesh.triangleCount() << " triangles";
+}
+
+// Lets a test run the shared backend without stage read-backs or with other bounds.
+class LeanRuns {
+  public:
+    explicit LeanRuns(const GlDiscreteBounds& bounds = {}) {
+        DiscreteDelaunayGlTest::backend().setReadStages(false);
+        DiscreteDelaunayGlTest::backend().setBounds(bounds);
+    }
+    ~LeanRuns() {
+        DiscreteDelaunayGlTest::backend().setReadStages(true);
+        DiscreteDelaunayGlTest::backend().setBounds({});
+    }
+    LeanRuns(const LeanRuns&) = delete;
+    LeanRuns& operator=(const LeanRuns&) = delete;
+};
+
+TEST_F(DiscreteDelaunayGlTest, RunMakesOneUploadAndOneReadBack) {
+    const LeanRuns lean;
+    std::size_t missing = 0;
+    for (const char* name : {"uniform", "gaussian", "grid", "circle", "two-lines"}) {
+        for (auto [size, count] : {std::pair{64, 900}, {128, 3000}, {256, 5000}}) {
+            SCOPED_TRACE(testing::Message()
+                         << name << ", " << count << " points, " << size << "^2");
+            const auto sites = distribution(name, count, std::uint64_t(size));
+            DiscreteDelaunayOptions options = optionsFor(size);
+            options.countIslands = false;
+            const DiscreteDelaunay gl = backend().run(sites, options);
+            const GlDiscreteExtras extras = backend().extras();
+            EXPECT_EQ(extras.uploads, 1);
+            EXPECT_EQ(extras.readbacks, 1);
+            EXPECT_EQ(extras.attempts, 1);
+            const DiscreteDelaunay cpu = discreteDelaunay(sites, options);
+            expectSameResult(cpu, gl);
+            // The stages stayed on the GPU.
+            EXPECT_TRUE(gl.voronoi.ids.empty() && gl.corners.cases.empty() &&
+                        gl.chain.next.empty());
+            missing += gl.missing().size();
+            // The whole pipeline (C1-C4 on the GL result) gives the CPU backend's triangulation.
+            DelaunayOptions cpuPipeline, glPipeline;
+            cpuPipeline.discrete = glPipeline.discrete = options;
+            glPipeline.discreteBackend = [](const std::vector<glm::dvec2>& s,
+                                            const DiscreteDelaunayOptions& o) {
+                return backend().run(s, o);
+            };
+            EXPECT_EQ(delaunay(sites, cpuPipeline).mesh.triangles,
+                      delaunay(sites, glPipeline).mesh.triangles);
+        }
+    }
+    EXPECT_GT(missing, std::size_t(0)); // the missing-site list came back non-empty somewhere
+    // Asking for the stages costs one read-back each.
+    backend().setReadStages(true);
+    const auto sites = distribution("uniform", 500, 3);
+    expectSameAsCpu(sites, optionsFor(64));
+    EXPECT_EQ(backend().extras().uploads, 1);
+    EXPECT_EQ(backend().extras().readbacks, 4);
+}
+
+TEST_F(DiscreteDelaunayGlTest, ShortBoundsRunAgainWithTheSameResult) {
+    // One queued G3 pass where plain JFA needs several, and no room for G6's records: the first
+    // attempt's read-back says so and the second runs with the full bounds.
+    GlDiscreteBounds shortBounds;
+    shortBounds.islandPasses = 1;
+    shortBounds.meshPerSite = 0.0;
+    shortBounds.meshSlack = 0;
+    const LeanRuns lean(shortBounds);
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+        SCOPED_TRACE(testing::Message() << "seed " << seed);
+        const auto sites = randomSites(2000, seed, {0.0, 0.0}, {1.0, 1.0});
+        DiscreteDelaunayOptions options = optionsFor(256, "JFA");
+        options.countIslands = false;
+        const DiscreteDelaunay gl = backend().run(sites, options);
+        const DiscreteDelaunay cpu = discreteDelaunay(sites, options);
+        EXPECT_GT(cpu.islands.passes, 1); // so one queued pass was too few
+        EXPECT_EQ(backend().extras().attempts, 2);
+        EXPECT_EQ(backend().extras().uploads, 1);
+        EXPECT_EQ(backend().extras().readbacks, 2);
+        expectSameResult(cpu, gl);
+        backend().setBounds(shortBounds); // forget the passes this run needed
+    }
 }
 
 TEST_F(DiscreteDelaunayGlTest, BadInputIsRejectedAsOnTheCpu) {

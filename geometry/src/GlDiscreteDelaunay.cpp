@@ -1,10 +1,12 @@
-// G1-G6 on the GL side in a row, timed, plus the read-backs that fill DiscreteDelaunay (thesis
-// §6.3.2); the steps themselves are in GlDiscreteDelaunaySteps.cpp.
+// G1-G6 on the GL side in a row, timed, with the one upload and the one read-back that fill
+// DiscreteDelaunay (thesis §6.3.2); the steps themselves are in GlDiscreteDelaunaySteps.cpp, the
+// read-backs in GlDiscreteDelaunayResult.cpp.
 #include "GlDiscreteDelaunayDetail.h"
 
 #include <gpu/ShaderLibrary.h>
 #include <jfa/CpuKernel.h>
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 #include <string>
@@ -44,55 +46,38 @@ void checkShape(const IdTexture& ids, const char* what) {
                                     ") does not match its data");
 }
 
-// glGetTextureImage into a vector of the texture's texel type, rows packed tight.
-template <typename T>
-void readTexture(const gl::Texture& texture, GLenum format, GLenum type, std::vector<T>& out) {
-    out.resize(std::size_t(texture.width()) * std::size_t(texture.height()));
-    GLint alignment = 4;
-    glGetIntegerv(GL_PACK_ALIGNMENT, &alignment);
-    // One-byte texels (the corner cases) would otherwise pad rows to 4 bytes.
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glGetTextureImage(texture.id(), 0, format, type, static_cast<GLsizei>(out.size() * sizeof(T)),
-                      out.data());
-    glPixelStorei(GL_PACK_ALIGNMENT, alignment);
+// Corners of a W x H texture that can be Voronoi vertices (the last row and column cannot).
+std::size_t innerCorners(int w, int h) {
+    return w < 2 || h < 2 ? 0 : std::size_t(w - 1) * std::size_t(h - 1);
 }
 
-// A one-channel integer texture read back into a grid struct (width, height, texels).
-template <class GridT, typename T>
-GridT readGrid(const gl::Texture& texture, GLenum type, std::vector<T> GridT::*texels) {
-    GridT grid;
-    grid.width = texture.width();
-    grid.height = texture.height();
-    readTexture(texture, GL_RED_INTEGER, type, grid.*texels);
-    return grid;
+// G1's host part: the double-precision mapping and snap, as snapSites does, the snap spread
+// over `threads` (each pixel depends on its site alone, so the result is the same).
+void snapOnHost(const std::vector<glm::dvec2>& sites, int n, int threads, SnappedSites& snapped) {
+    snapped.mapping = fitTextureMapping(sites, n);
+    snapped.pixels.resize(sites.size());
+    jfa::parallelRows(static_cast<int>(sites.size()), threads, [&](int begin, int end, int) {
+        for (int i = begin; i < end; ++i)
+            snapped.pixels[std::size_t(i)] = snapped.mapping.pixelOf(sites[std::size_t(i)]);
+    });
+}
+
+// S' and the missing sites from each site's keeper (itself if it kept its pixel).
+void splitKeepers(const std::vector<std::uint32_t>& keepers, SnappedSites& snapped) {
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < keepers.size(); ++i) kept += keepers[i] == i ? 1 : 0;
+    snapped.kept.reserve(kept);
+    snapped.missing.reserve(keepers.size() - kept);
+    for (std::size_t i = 0; i < keepers.size(); ++i) {
+        const auto site = static_cast<std::uint32_t>(i);
+        if (keepers[i] == site)
+            snapped.kept.push_back(site);
+        else
+            snapped.missing.push_back({site, keepers[i]});
+    }
 }
 
 } // namespace
-
-namespace gl_stages {
-
-void uploadIds(const gl::Texture& texture, const IdTexture& ids) {
-    glTextureSubImage2D(texture.id(), 0, 0, 0, ids.width, ids.height, GL_RED_INTEGER,
-                        GL_UNSIGNED_INT, ids.ids.data());
-}
-
-IdTexture readIds(const gl::Texture& texture) {
-    return readGrid<IdTexture>(texture, GL_UNSIGNED_INT, &IdTexture::ids);
-}
-
-CornerTexture readCorners(const gl::Texture& texture, const CornerCounts& counts) {
-    static_assert(sizeof(CornerCase) == 1, "CornerCase is read back as r8ui bytes");
-    CornerTexture corners =
-        readGrid<CornerTexture>(texture, GL_UNSIGNED_BYTE, &CornerTexture::cases);
-    corners.counts = counts;
-    return corners;
-}
-
-VertexChain readChain(const gl::Texture& texture) {
-    return readGrid<VertexChain>(texture, GL_INT, &VertexChain::next);
-}
-
-} // namespace gl_stages
 
 using gl_stages::readChain;
 using gl_stages::readCorners;
@@ -109,6 +94,15 @@ const GlDiscreteExtras& GlDiscreteDelaunay::extras() const {
     return impl_->extras;
 }
 
+void GlDiscreteDelaunay::setReadStages(bool read) {
+    impl_->readStages = read;
+}
+
+void GlDiscreteDelaunay::setBounds(const GlDiscreteBounds& bounds) {
+    impl_->bounds = bounds;
+    impl_->neededPasses = 0;
+}
+
 DiscreteDelaunay GlDiscreteDelaunay::run(const std::vector<glm::dvec2>& sites,
                                          const DiscreteDelaunayOptions& options) {
     // Bad input fails before any work and with discreteDelaunay's messages: the thread count,
@@ -123,72 +117,113 @@ DiscreteDelaunay GlDiscreteDelaunay::run(const std::vector<glm::dvec2>& sites,
                                     " fit (ids are stored in floats)");
     }
     Impl& g = *impl_;
+    g.extras = {};
     DiscreteDelaunay r;
     Stopwatch clock;
 
-    // G1: the double-precision mapping stays on the host (as snapSites); the GPU resolves who
-    // keeps each pixel.
-    SnappedSites& snapped = r.snapped;
-    snapped.mapping = fitTextureMapping(sites, n);
-    snapped.pixels.resize(sites.size());
-    for (std::size_t i = 0; i < sites.size(); ++i)
-        snapped.pixels[i] = snapped.mapping.pixelOf(sites[i]);
+    // G1: the double-precision mapping stays on the host (as snapSites; extras.snapMs says what
+    // it costs); its pixels are the one upload. The GPU resolves who keeps each pixel.
+    snapOnHost(sites, n, options.threads, r.snapped);
+    g.extras.snapMs = clock.lap();
+    r.timings.g1 = g.extras.snapMs;
     g.resize(n, n);
-    g.uploadPixels(snapped.pixels);
-    const std::vector<std::uint32_t> keepers = g.claimPixels(sites.size());
-    for (std::size_t i = 0; i < keepers.size(); ++i) {
-        const auto site = static_cast<std::uint32_t>(i);
-        if (keepers[i] == site)
-            snapped.kept.push_back(site);
-        else
-            snapped.missing.push_back({site, keepers[i]});
+    g.uploadPixels(r.snapped.pixels);
+    r.timings.g1 += clock.lap();
+
+    // Room for a Delaunay triangulation of the sites (fewer than 2 triangles per site) and then
+    // some, never more than the corners allow.
+    const std::size_t corners = innerCorners(n, n);
+    const auto estimate =
+        std::size_t(g.bounds.meshPerSite * double(sites.size())) + g.bounds.meshSlack;
+    std::size_t vertexCap = std::min(corners, estimate);
+    std::size_t triangleCap = std::min(2 * corners, estimate);
+    const int queued = g.bounds.islandPasses > 0 ? g.bounds.islandPasses : std::max(32, n / 8);
+    int islandPasses = std::max(queued, g.neededPasses);
+    gl_stages::ResultData data;
+    while (true) {
+        data = g.runSteps(plan, sites.size(), islandPasses, vertexCap, triangleCap, r.timings);
+        const bool islandsEnded = data.header[gl_stages::kHeadUnfinished] == 0;
+        if (islandsEnded && data.meshFits(g.layout)) break;
+        // The second attempt queues the CPU's cap of G3 passes and exactly the room G6 named.
+        if (g.extras.attempts > 1)
+            throw std::logic_error("GL discrete Delaunay: a second run still did not fit");
+        if (!islandsEnded) islandPasses = 2 * n;
+        vertexCap = std::max<std::size_t>(vertexCap, data.header[gl_stages::kHeadVertices]);
+        triangleCap = std::max<std::size_t>(triangleCap, data.header[gl_stages::kHeadTriangles]);
     }
-    checkStep("G1");
-    r.timings.g1 = clock.lap();
+    Stopwatch readClock;
+    data.checkMeshCounts();
+    r.islands = data.islandStats();
+    g.neededPasses = r.islands.passes;
+    splitKeepers(data.keepers, r.snapped);
+    r.cleaned = std::move(data.cleaned);
+    r.mesh = std::move(data.mesh);
 
-    g.flood(plan);
-    checkStep("G2");
-    r.timings.g2 = clock.lap();
-
-    const gl::Texture& cleaned = g.removeIslands(g.voronoi, r.islands);
-    checkStep("G3");
-    r.timings.g3 = clock.lap();
-
-    const CornerCounts counts = g.classifyCorners(cleaned);
-    checkStep("G4");
-    r.timings.g4 = clock.lap();
-
-    const gl::Texture& chain = g.chainRows();
-    checkStep("G5");
-    r.timings.g5 = clock.lap();
-
-    r.mesh = g.buildTriangles(cleaned, chain, counts);
-    checkStep("G6");
-    r.timings.g6 = clock.lap();
-
-    // The intermediate stages, for the step pictures and the visualiser; the CPU steps need
-    // only the mesh, the missing sites and (C1) the cleaned texture.
-    r.voronoi = readIds(g.voronoi);
-    r.cleaned = readIds(cleaned);
-    r.corners = readCorners(g.corners, counts);
-    r.chain = readChain(chain);
+    // The intermediate stages only when asked for (the step pictures, the visualiser, tests):
+    // the CPU steps need only the mesh, the missing sites and (C1) the cleaned texture.
+    if (g.readStages || options.countIslands) {
+        r.voronoi = readIds(g.voronoi);
+        ++g.extras.readbacks;
+    }
+    if (g.readStages) {
+        r.corners = readCorners(g.corners, data.cornerCounts(n, n));
+        r.chain = readChain(*g.finalChain);
+        g.extras.readbacks += 2;
+    }
     checkStep("read-back");
-    g.extras.readbackMs = clock.lap();
+    g.extras.readbackMs += readClock.lap();
 
-    if (options.countIslands) r.islandsBefore = countIslandComponents(r.voronoi, snapped.pixels);
+    if (options.countIslands) r.islandsBefore = countIslandComponents(r.voronoi, r.snapped.pixels);
     return r;
+}
+
+gl_stages::ResultData GlDiscreteDelaunay::Impl::runSteps(const jfa::Plan& plan, std::size_t sites,
+                                                         int islandPasses, std::size_t vertexCap,
+                                                         std::size_t triangleCap,
+                                                         DiscreteTimings& timings) {
+    Stopwatch clock;
+    ++extras.attempts;
+    const int n = width;
+    prepareResult(sites, std::size_t(n) * std::size_t(n), vertexCap, triangleCap);
+    claimPixels(sites);
+    checkStep("G1");
+    timings.g1 += clock.lap();
+    flood(plan);
+    checkStep("G2");
+    timings.g2 += clock.lap();
+    removeIslands(voronoi, islandPasses);
+    checkStep("G3");
+    timings.g3 += clock.lap();
+    classifyCorners(cleaned);
+    checkStep("G4");
+    timings.g4 += clock.lap();
+    finalChain = &chainRows();
+    checkStep("G5");
+    timings.g5 += clock.lap();
+    buildTriangles(cleaned, *finalChain);
+    checkStep("G6");
+    timings.g6 += clock.lap();
+    packCleaned();
+    gl_stages::ResultData data = readResult();
+    checkStep("read-back");
+    extras.readbackMs += clock.lap();
+    return data;
 }
 
 IslandStats GlDiscreteDelaunay::removeIslands(IdTexture& ids,
                                               const std::vector<glm::ivec2>& pixels) {
     checkShape(ids, "GL removeIslands");
     Impl& g = *impl_;
+    g.extras = {};
     g.resize(ids.width, ids.height);
     g.uploadPixels(pixels);
     uploadIds(g.voronoi, ids);
-    IslandStats stats;
-    const gl::Texture& out = g.removeIslands(g.voronoi, stats);
-    ids = readIds(out);
+    ++g.extras.uploads;
+    g.prepareResult(0, 0, 0, 0);
+    g.removeIslands(g.voronoi, 2 * std::max(ids.width, ids.height));
+    ids = readIds(g.cleaned);
+    ++g.extras.readbacks;
+    const IslandStats stats = g.readResult().islandStats();
     checkStep("G3");
     return stats;
 }
@@ -198,16 +233,24 @@ DiscreteTriangles GlDiscreteDelaunay::buildTriangles(const IdTexture& ids,
                                                      CornerTexture* corners, VertexChain* chain) {
     checkShape(ids, "GL buildTriangles");
     Impl& g = *impl_;
+    g.extras = {};
     g.resize(ids.width, ids.height);
     g.uploadPixels(pixels);
     uploadIds(g.voronoi, ids);
-    const CornerCounts counts = g.classifyCorners(g.voronoi);
+    ++g.extras.uploads;
+    // Every corner a vertex, two triangles each: room for anything, so one attempt.
+    const std::size_t cornerCount = innerCorners(ids.width, ids.height);
+    g.prepareResult(0, 0, cornerCount, 2 * cornerCount);
+    g.classifyCorners(g.voronoi);
     const gl::Texture& chainTexture = g.chainRows();
-    DiscreteTriangles mesh = g.buildTriangles(g.voronoi, chainTexture, counts);
-    if (corners) *corners = readCorners(g.corners, counts);
+    g.buildTriangles(g.voronoi, chainTexture);
+    gl_stages::ResultData data = g.readResult();
+    data.checkMeshCounts();
+    if (corners) *corners = readCorners(g.corners, data.cornerCounts(ids.width, ids.height));
     if (chain) *chain = readChain(chainTexture);
+    g.extras.readbacks += (corners ? 1 : 0) + (chain ? 1 : 0);
     checkStep("G4-G6");
-    return mesh;
+    return std::move(data.mesh);
 }
 
 DiscreteDelaunay glDiscreteDelaunay(const std::vector<glm::dvec2>& sites,

@@ -1,5 +1,7 @@
 // Steps G1-G6 of the thesis (§6.3.2) as GL compute dispatches (shaders/delaunay_*.glsl); the
-// CPU twins are in DiscreteVoronoi*.cpp and DiscreteTriangles*.cpp.
+// CPU twins are in DiscreteVoronoi*.cpp and DiscreteTriangles*.cpp. No step reads anything back:
+// every count a later step needs stays on the GPU (indirect dispatch, a prefix sum), and what the
+// host needs lands in one result buffer (GlDiscreteDelaunayResult.cpp reads it).
 #include "GlDiscreteDelaunayDetail.h"
 
 #include <jfa/CpuKernel.h>
@@ -16,14 +18,16 @@ namespace {
 constexpr GLuint kNoSiteValue = kNoSite;
 constexpr int kItemGroup = 64; // local size of the 1D kernels (sites, rows)
 constexpr int kTileSide = 8;   // local size of the 2D kernels (8 x 8 texels)
+constexpr GLsizeiptr kControlWords = 16;
+constexpr GLintptr kChangedOffset = 9 * sizeof(GLuint); // kCtlChanged
 
-// Every later reader of a step's output: samplers, images, atomic counters, SSBOs and the
-// host's glGet*/readbacks. One generous barrier per dispatch costs little next to the dispatch
-// and leaves no reader to forget.
-constexpr GLbitfield kAfterWrites = GL_TEXTURE_FETCH_BARRIER_BIT |
-                                    GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
-                                    GL_TEXTURE_UPDATE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT |
-                                    GL_ATOMIC_COUNTER_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT;
+// Every later reader of a step's output: samplers, images, atomic counters, SSBOs, indirect
+// dispatches, pixel-pack copies and the host's map. One generous barrier per dispatch costs
+// little next to the dispatch and leaves no reader to forget.
+constexpr GLbitfield kAfterWrites =
+    GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+    GL_TEXTURE_UPDATE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_ATOMIC_COUNTER_BARRIER_BIT |
+    GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_PIXEL_BUFFER_BARRIER_BIT;
 
 gl::Program buildStep(const gl::ShaderLibrary& shaders, const char* file) {
     return gl::Program::build(shaders, {{GL_COMPUTE_SHADER, file}});
@@ -31,26 +35,12 @@ gl::Program buildStep(const gl::ShaderLibrary& shaders, const char* file) {
 
 // A buffer of at least `bytes` (never empty: zero-sized storage is a GL error, and the kernels
 // declare every buffer whether or not a run uses it); keeps the contents only when it fits.
-void ensureBuffer(gl::Buffer& buffer, std::size_t bytes) {
+void ensureBuffer(gl::Buffer& buffer, std::size_t bytes, GLbitfield flags = 0) {
     const auto need = static_cast<GLsizeiptr>(std::max<std::size_t>(bytes, 16));
     if (buffer && buffer.size() >= need) return;
     // Growing by half again keeps repeated runs with slowly rising counts from reallocating.
     const GLsizeiptr size = std::max(need, buffer.size() + buffer.size() / 2);
-    buffer = gl::Buffer(size, nullptr, GL_DYNAMIC_STORAGE_BIT);
-}
-
-void zeroBuffer(const gl::Buffer& buffer) {
-    const GLuint zero = 0;
-    glClearNamedBufferData(buffer.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-}
-
-template <typename T>
-std::vector<T> readBuffer(const gl::Buffer& buffer, std::size_t count) {
-    std::vector<T> out(count);
-    if (count > 0)
-        glGetNamedBufferSubData(buffer.id(), 0, static_cast<GLsizeiptr>(count * sizeof(T)),
-                                out.data());
-    return out;
+    buffer = gl::Buffer(size, nullptr, GL_DYNAMIC_STORAGE_BIT | flags);
 }
 
 // One invocation per item; more than 65535 groups (2^24 sites) spill into y (dispatchIndex()).
@@ -62,10 +52,19 @@ void dispatchItems(std::size_t count) {
     glMemoryBarrier(kAfterWrites);
 }
 
+glm::ivec2 texelGroups(int w, int h) {
+    return {(w + kTileSide - 1) / kTileSide, (h + kTileSide - 1) / kTileSide};
+}
+
 // One invocation per texel of a W x H texture.
 void dispatchTexels(int w, int h) {
-    glDispatchCompute(static_cast<GLuint>((w + kTileSide - 1) / kTileSide),
-                      static_cast<GLuint>((h + kTileSide - 1) / kTileSide), 1);
+    const glm::ivec2 groups = texelGroups(w, h);
+    glDispatchCompute(static_cast<GLuint>(groups.x), static_cast<GLuint>(groups.y), 1);
+    glMemoryBarrier(kAfterWrites);
+}
+
+void dispatchOne() {
+    glDispatchCompute(1, 1, 1);
     glMemoryBarrier(kAfterWrites);
 }
 
@@ -76,26 +75,68 @@ void unbindAll() {
     for (GLuint unit = 0; unit < 3; ++unit) glBindTextureUnit(unit, 0);
     for (GLuint unit = 0; unit < 2; ++unit)
         glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
-    for (GLuint index = 0; index < 5; ++index) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, index, 0);
+    for (GLuint index = 0; index < 6; ++index) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, index, 0);
     glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, 0, 0);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
 }
 
 void bindImage(GLuint unit, const gl::Texture& texture, GLenum access) {
     glBindImageTexture(unit, texture.id(), 0, GL_FALSE, 0, access, texture.format());
 }
 
+// Binds `bytes` at `offset` of `buffer` (a result part; never an empty range, a GL error).
+void bindPart(GLuint index, const gl::Buffer& buffer, std::size_t offset, std::size_t bytes) {
+    glBindBufferRange(GL_SHADER_STORAGE_BUFFER, index, buffer.id(), static_cast<GLintptr>(offset),
+                      static_cast<GLsizeiptr>(std::max<std::size_t>(bytes, sizeof(GLuint))));
+}
+
+std::size_t alignUp(std::size_t bytes, std::size_t alignment) {
+    return (bytes + alignment - 1) / alignment * alignment;
+}
+
 } // namespace
+
+namespace gl_stages {
+
+ResultLayout layoutResult(std::size_t sites, std::size_t texels, std::size_t vertexCap,
+                          std::size_t triangleCap, std::size_t alignment) {
+    ResultLayout l;
+    l.sites = sites;
+    l.texels = texels;
+    l.vertexCap = vertexCap;
+    l.triangleCap = triangleCap;
+    // Each part gets at least a word so that binding it is never an empty range.
+    std::size_t at = alignUp(kHeaderWords * sizeof(GLuint), alignment);
+    const auto place = [&](std::size_t& offset, std::size_t words) {
+        offset = at;
+        at = alignUp(at + std::max<std::size_t>(words, 1) * sizeof(GLuint), alignment);
+    };
+    place(l.keepers, sites);
+    place(l.cleaned, texels);
+    place(l.vertices, 6 * vertexCap);
+    place(l.triangles, 3 * triangleCap);
+    place(l.triangleVertex, triangleCap);
+    l.end = at;
+    return l;
+}
+
+} // namespace gl_stages
 
 GlDiscreteDelaunay::Impl::Impl(const gl::ShaderLibrary& shaders, jfa::GlKernelKind flood)
     : sitesProgram(buildStep(shaders, "delaunay_sites.comp.glsl")),
       idsProgram(buildStep(shaders, "delaunay_ids.comp.glsl")),
       islandsProgram(buildStep(shaders, "delaunay_islands.comp.glsl")),
+      controlProgram(buildStep(shaders, "delaunay_islands_control.comp.glsl")),
+      resolveProgram(buildStep(shaders, "delaunay_islands_resolve.comp.glsl")),
       cornersProgram(buildStep(shaders, "delaunay_corners.comp.glsl")),
       chainProgram(buildStep(shaders, "delaunay_chain.comp.glsl")),
       trianglesProgram(buildStep(shaders, "delaunay_triangles.comp.glsl")),
-      floodKernel(shaders, flood), changed(sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT),
-      cornerCounts(GLsizeiptr(kCornerCaseCount * sizeof(GLuint)), nullptr, GL_DYNAMIC_STORAGE_BIT),
-      meshCounters(6 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT) {
+      scanProgram(buildStep(shaders, "delaunay_rows_scan.comp.glsl")), floodKernel(shaders, flood),
+      control(kControlWords * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT) {
+    GLint alignment = 0;
+    glGetIntegerv(GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT, &alignment);
+    storageAlignment = std::max<std::size_t>(storageAlignment, std::size_t(alignment));
     gl::throwIfErrors("GL discrete Delaunay setup");
 }
 
@@ -105,6 +146,7 @@ void GlDiscreteDelaunay::Impl::resize(int w, int h) {
     seeds = gl::Texture(GL_RGBA32F, w, h);
     voronoi = gl::Texture(GL_R32UI, w, h);
     for (gl::Texture& t : islands) t = gl::Texture(GL_R32UI, w, h);
+    cleaned = gl::Texture(GL_R32UI, w, h);
     corners = gl::Texture(GL_R8UI, w, h);
     for (gl::Texture& t : chain) t = gl::Texture(GL_R32I, w, h);
     width = w;
@@ -114,23 +156,32 @@ void GlDiscreteDelaunay::Impl::resize(int w, int h) {
 void GlDiscreteDelaunay::Impl::uploadPixels(const std::vector<glm::ivec2>& sitePixels) {
     static_assert(sizeof(glm::ivec2) == 2 * sizeof(GLint), "std430 ivec2 layout");
     ensureBuffer(pixels, sitePixels.size() * sizeof(glm::ivec2));
-    if (!sitePixels.empty())
-        glNamedBufferSubData(pixels.id(), 0,
-                             static_cast<GLsizeiptr>(sitePixels.size() * sizeof(glm::ivec2)),
-                             sitePixels.data());
+    if (sitePixels.empty()) return;
+    glNamedBufferSubData(pixels.id(), 0,
+                         static_cast<GLsizeiptr>(sitePixels.size() * sizeof(glm::ivec2)),
+                         sitePixels.data());
+    ++extras.uploads;
 }
 
-std::vector<std::uint32_t> GlDiscreteDelaunay::Impl::claimPixels(std::size_t count) {
+void GlDiscreteDelaunay::Impl::prepareResult(std::size_t sites, std::size_t texels,
+                                             std::size_t vertexCap, std::size_t triangleCap) {
+    layout = gl_stages::layoutResult(sites, texels, vertexCap, triangleCap, storageAlignment);
+    ensureBuffer(result, layout.end, GL_MAP_READ_BIT);
+    const GLuint zero = 0;
+    glClearNamedBufferSubData(result.id(), GL_R32UI, 0, gl_stages::kHeaderWords * sizeof(GLuint),
+                              GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+}
+
+void GlDiscreteDelaunay::Impl::claimPixels(std::size_t count) {
     glClearTexImage(owner.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &kNoSiteValue);
     const jfa::Cell empty = jfa::kEmptyCell;
     glClearTexImage(seeds.id(), 0, GL_RGBA, GL_FLOAT, &empty);
-    if (count == 0) return {};
-    ensureBuffer(keepers, count * sizeof(GLuint));
+    if (count == 0) return;
     glUseProgram(sitesProgram.id());
     bindImage(0, owner, GL_READ_WRITE);
     bindImage(1, seeds, GL_WRITE_ONLY);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, pixels.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, keepers.id());
+    bindPart(1, result, layout.keepers, count * sizeof(GLuint));
     sitesProgram.set("uCount", static_cast<int>(count));
     // Two dispatches: every claim must land before any site reads its pixel's owner.
     for (int mode : {0, 1}) {
@@ -138,7 +189,6 @@ std::vector<std::uint32_t> GlDiscreteDelaunay::Impl::claimPixels(std::size_t cou
         dispatchItems(count);
     }
     unbindAll();
-    return readBuffer<std::uint32_t>(keepers, count);
 }
 
 void GlDiscreteDelaunay::Impl::flood(const jfa::Plan& plan) {
@@ -153,59 +203,56 @@ void GlDiscreteDelaunay::Impl::flood(const jfa::Plan& plan) {
     unbindAll();
 }
 
-const gl::Texture& GlDiscreteDelaunay::Impl::removeIslands(const gl::Texture& in,
-                                                           IslandStats& stats) {
-    stats = {};
+void GlDiscreteDelaunay::Impl::removeIslands(const gl::Texture& in, int bound) {
     // The CPU's cap (removeIslands): 2 N passes end it should recolouring ever cycle.
     const int cap = 2 * std::max(width, height);
-    const gl::Texture* src = &in;
-    int next = 0;
-    glUseProgram(islandsProgram.id());
+    const int passes = std::clamp(bound, 1, cap);
+    glUseProgram(controlProgram.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, control.id());
+    controlProgram.set("uGroups", texelGroups(width, height));
+    controlProgram.set("uCap", cap);
+    controlProgram.set("uReset", 1);
+    dispatchOne();
+    controlProgram.set("uReset", 0);
     islandsProgram.set("uSize", glm::ivec2(width, height));
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, control.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, pixels.id());
-    glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, 0, changed.id());
-    while (true) {
-        // Ping-pong: a pass reads only the previous pass' texture, as on the CPU.
-        const gl::Texture& dst = islands[next];
-        zeroBuffer(changed);
+    glBindBufferRange(GL_ATOMIC_COUNTER_BUFFER, 0, control.id(), kChangedOffset, sizeof(GLuint));
+    const gl::Texture* src = &in;
+    for (int pass = 0; pass < passes; ++pass) {
+        // Ping-pong: a pass reads only the previous pass' texture, as on the CPU. Once the loop
+        // has ended the control pass has set the dispatch to zero groups: queued, never run.
+        const gl::Texture& dst = islands[pass % 2];
+        glUseProgram(islandsProgram.id());
         glBindTextureUnit(0, src->id());
         bindImage(0, dst, GL_WRITE_ONLY);
-        dispatchTexels(width, height);
-        ++stats.passes;
-        // Reading the counter waits for the pass: the thesis' occlusion-query loop.
-        const GLuint count = readBuffer<GLuint>(changed, 1)[0];
-        if (count == 0) break;
-        stats.reassigned += count;
+        glDispatchComputeIndirect(0);
+        glMemoryBarrier(kAfterWrites);
+        glUseProgram(controlProgram.id());
+        dispatchOne();
         src = &dst;
-        next ^= 1;
-        if (stats.passes >= cap) {
-            stats.converged = false;
-            break;
-        }
     }
     unbindAll();
-    return *src;
+    glUseProgram(resolveProgram.id());
+    glBindTextureUnit(0, in.id());
+    glBindTextureUnit(1, islands[0].id());
+    glBindTextureUnit(2, islands[1].id());
+    bindImage(0, cleaned, GL_WRITE_ONLY);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, control.id());
+    bindPart(1, result, 0, gl_stages::kHeaderWords * sizeof(GLuint));
+    resolveProgram.set("uSize", glm::ivec2(width, height));
+    dispatchTexels(width, height);
+    unbindAll();
 }
 
-CornerCounts GlDiscreteDelaunay::Impl::classifyCorners(const gl::Texture& ids) {
-    zeroBuffer(cornerCounts);
+void GlDiscreteDelaunay::Impl::classifyCorners(const gl::Texture& ids) {
     glUseProgram(cornersProgram.id());
     glBindTextureUnit(0, ids.id());
     bindImage(0, corners, GL_WRITE_ONLY);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, cornerCounts.id());
+    bindPart(0, result, 0, gl_stages::kHeaderWords * sizeof(GLuint));
     cornersProgram.set("uSize", glm::ivec2(width, height));
     dispatchTexels(width, height);
     unbindAll();
-    const std::vector<GLuint> raw = readBuffer<GLuint>(cornerCounts, kCornerCaseCount);
-    CornerCounts counts{};
-    std::int64_t vertexLike = 0;
-    for (std::size_t k = 1; k < kCornerCaseCount; ++k) {
-        counts[k] = raw[k];
-        vertexLike += raw[k];
-    }
-    // The kernel counts only the rare cases; case 1 is every other corner, border ones included.
-    counts[0] = std::int64_t(width) * height - vertexLike;
-    return counts;
 }
 
 const gl::Texture& GlDiscreteDelaunay::Impl::chainRows() {
@@ -235,75 +282,49 @@ const gl::Texture& GlDiscreteDelaunay::Impl::chainRows() {
     return chain[current];
 }
 
-DiscreteTriangles GlDiscreteDelaunay::Impl::buildTriangles(const gl::Texture& ids,
-                                                           const gl::Texture& chainTexture,
-                                                           const CornerCounts& counts) {
-    DiscreteTriangles out;
+void GlDiscreteDelaunay::Impl::buildTriangles(const gl::Texture& ids,
+                                              const gl::Texture& chainTexture) {
     const int rowCount = height - 1; // corner rows; the top row's corners lie on the border
-    if (rowCount <= 0 || width < 2) return out;
-    std::int64_t vertexTotal = 0, triangleTotal = 0;
-    for (CornerCase c : {CornerCase::ThreeA, CornerCase::ThreeB, CornerCase::ThreeC,
-                         CornerCase::ThreeD, CornerCase::Four}) {
-        vertexTotal += counts[std::size_t(c)];
-        triangleTotal += std::int64_t(trianglesOf(c)) * counts[std::size_t(c)];
-    }
-    // G4's counts size the buffers exactly (the thesis pre-allocates from counts, too).
+    if (rowCount <= 0 || width < 2) return;
     ensureBuffer(rows, std::size_t(rowCount) * 4 * sizeof(GLuint));
-    ensureBuffer(vertices, std::size_t(vertexTotal) * 6 * sizeof(GLuint));
-    ensureBuffer(triangles, std::size_t(triangleTotal) * 4 * sizeof(GLuint));
-    zeroBuffer(meshCounters);
     glUseProgram(trianglesProgram.id());
     glBindTextureUnit(0, ids.id());
     glBindTextureUnit(1, corners.id());
     glBindTextureUnit(2, chainTexture.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, pixels.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, meshCounters.id());
+    bindPart(1, result, 0, gl_stages::kHeaderWords * sizeof(GLuint));
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, rows.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, vertices.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, triangles.id());
+    bindPart(3, result, layout.vertices, 6 * layout.vertexCap * sizeof(GLuint));
+    bindPart(4, result, layout.triangles, 3 * layout.triangleCap * sizeof(GLuint));
+    bindPart(5, result, layout.triangleVertex, layout.triangleCap * sizeof(GLuint));
     trianglesProgram.set("uSize", glm::ivec2(width, height));
-    trianglesProgram.set("uVertexCapacity", static_cast<int>(vertexTotal));
-    trianglesProgram.set("uTriangleCapacity", static_cast<int>(triangleTotal));
+    trianglesProgram.set("uVertexCapacity", static_cast<int>(layout.vertexCap));
+    trianglesProgram.set("uTriangleCapacity", static_cast<int>(layout.triangleCap));
+    trianglesProgram.set("uMode", 0);
+    dispatchItems(std::size_t(rowCount));
+    // Each row's first vertex and triangle: the CPU's row-major order, no host copying.
+    glUseProgram(scanProgram.id());
+    scanProgram.set("uRows", rowCount);
+    dispatchOne();
+    glUseProgram(trianglesProgram.id());
+    trianglesProgram.set("uMode", 1);
     dispatchItems(std::size_t(rowCount));
     unbindAll();
+}
 
-    const std::vector<GLuint> counters = readBuffer<GLuint>(meshCounters, 6);
-    if (counters[0] != vertexTotal || counters[1] != triangleTotal)
-        throw std::logic_error("GL buildTriangles: the chains name " + std::to_string(counters[0]) +
-                               " vertices and " + std::to_string(counters[1]) +
-                               " triangles, G4 counted " + std::to_string(vertexTotal) + " and " +
-                               std::to_string(triangleTotal));
-    const auto rowData = readBuffer<glm::uvec4>(rows, std::size_t(rowCount));
-    const auto vertexData = readBuffer<GLuint>(vertices, std::size_t(vertexTotal) * 6);
-    const auto triangleData = readBuffer<glm::uvec4>(triangles, std::size_t(triangleTotal));
-
-    // Rows reserved their blocks in whatever order they ran; copying the blocks row by row
-    // gives the CPU's order (rows bottom to top, chain order within a row).
-    out.vertices.reserve(std::size_t(vertexTotal));
-    out.triangles.reserve(std::size_t(triangleTotal) * 3);
-    out.triangleVertex.reserve(std::size_t(triangleTotal));
-    for (int y = 0; y < rowCount; ++y) {
-        const glm::uvec4 r = rowData[std::size_t(y)];
-        if (std::int64_t(r.x) + r.y > vertexTotal || std::int64_t(r.z) + r.w > triangleTotal)
-            throw std::logic_error("GL buildTriangles: row " + std::to_string(y) +
-                                   " overruns the buffers");
-        const auto base = static_cast<std::uint32_t>(out.vertices.size());
-        for (GLuint k = 0; k < r.y; ++k) {
-            const GLuint* v = &vertexData[std::size_t(r.x + k) * 6];
-            out.vertices.push_back(VoronoiVertex{
-                {int(v[0]), y}, static_cast<CornerCase>(v[1]), {v[2], v[3], v[4], v[5]}});
-        }
-        for (GLuint k = 0; k < r.w; ++k) {
-            const glm::uvec4 t = triangleData[std::size_t(r.z + k)];
-            out.triangles.insert(out.triangles.end(), {t.x, t.y, t.z});
-            out.triangleVertex.push_back(base + t.w);
-        }
-    }
-    out.stats.threeColour = counters[2];
-    out.stats.fourColour = counters[3];
-    out.stats.degenerate = counters[4];
-    out.stats.clockwise = counters[5];
-    return out;
+void GlDiscreteDelaunay::Impl::packCleaned() {
+    if (layout.texels == 0) return;
+    // A copy on the GPU into the result buffer, so that the one read-back brings it along.
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, result.id());
+    GLint alignment = 4;
+    glGetIntegerv(GL_PACK_ALIGNMENT, &alignment);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTextureImage(cleaned.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT,
+                      static_cast<GLsizei>(layout.texels * sizeof(GLuint)),
+                      reinterpret_cast<void*>(static_cast<std::uintptr_t>(layout.cleaned)));
+    glPixelStorei(GL_PACK_ALIGNMENT, alignment);
+    glMemoryBarrier(kAfterWrites);
+    unbindAll();
 }
 
 } // namespace fl::geom
