@@ -133,6 +133,20 @@ struct Band {
 Band markTiles(int width, int height, int tile, const std::vector<ReachRect>& tileRects,
                long long planReach = kUnboundedReach);
 
+/// Calls f(x, y, rect) for every seed of `seeds` (cells the criterion does not call empty) with
+/// the rect where the criterion may accept its cell, clipped to the grid.
+template <Criterion C, typename F>
+void forEachSeedRect(const Grid& seeds, const C& criterion, F&& f) {
+    for (int y = 0; y < seeds.height; ++y)
+        for (int x = 0; x < seeds.width; ++x) {
+            const Cell& c = seeds.at(x, y);
+            if (criterion.empty(c)) continue;
+            f(x, y,
+              clipRect(criterionRect(criterion, x, y, c), x, y, kUnboundedReach, seeds.width,
+                       seeds.height));
+        }
+}
+
 /// The band of `plan` over full-resolution `seeds` with `criterion`: the union of each tile's
 /// seeds' criterion rects, within the square the plan can reach from the tile (planBandReach).
 /// Band::full when that is every tile.
@@ -142,19 +156,13 @@ Band floodBand(const Plan& plan, const Grid& seeds, const C& criterion,
     const long long planReach = planBandReach(plan);
     const int tilesX = (seeds.width + tile - 1) / tile, tilesY = (seeds.height + tile - 1) / tile;
     std::vector<ReachRect> rects(std::size_t(tilesX) * std::size_t(tilesY), ReachRect{1, 1, 0, 0});
-    for (int y = 0; y < seeds.height; ++y)
-        for (int x = 0; x < seeds.width; ++x) {
-            const Cell& c = seeds.at(x, y);
-            if (criterion.empty(c)) continue;
-            const ReachRect r = clipRect(criterionRect(criterion, x, y, c), x, y, kUnboundedReach,
-                                         seeds.width, seeds.height);
-            if (r.empty()) continue;
-            ReachRect& u =
-                rects[std::size_t(y / tile) * std::size_t(tilesX) + std::size_t(x / tile)];
-            u = u.empty() ? r
-                          : ReachRect{std::min(u.x0, r.x0), std::min(u.y0, r.y0),
-                                      std::max(u.x1, r.x1), std::max(u.y1, r.y1)};
-        }
+    forEachSeedRect(seeds, criterion, [&](int x, int y, const ReachRect& r) {
+        if (r.empty()) return;
+        ReachRect& u = rects[std::size_t(y / tile) * std::size_t(tilesX) + std::size_t(x / tile)];
+        u = u.empty() ? r
+                      : ReachRect{std::min(u.x0, r.x0), std::min(u.y0, r.y0), std::max(u.x1, r.x1),
+                                  std::max(u.y1, r.y1)};
+    });
     return markTiles(seeds.width, seeds.height, tile, rects, planReach);
 }
 
@@ -164,14 +172,9 @@ Band floodBand(const Plan& plan, const Grid& seeds, const C& criterion,
 template <Criterion C>
 long long maxSeedReach(const Grid& seeds, const C& criterion) {
     long long best = -1;
-    for (int y = 0; y < seeds.height; ++y)
-        for (int x = 0; x < seeds.width; ++x) {
-            const Cell& c = seeds.at(x, y);
-            if (criterion.empty(c)) continue;
-            const ReachRect r = clipRect(criterionRect(criterion, x, y, c), x, y, kUnboundedReach,
-                                         seeds.width, seeds.height);
-            best = std::max(best, rectReach(r, x, y));
-        }
+    forEachSeedRect(seeds, criterion, [&](int x, int y, const ReachRect& r) {
+        best = std::max(best, rectReach(r, x, y));
+    });
     return best;
 }
 
