@@ -52,8 +52,8 @@ TEST(EyeCellPacking, PointAndOccluderFollowTheState) {
         const std::uint32_t cell = eyecell::pack(kStates[i], {1, 1}, 1u | (2u << 2));
         const glm::vec4 p = eyecell::point(cell, surface);
         EXPECT_EQ(p.w, flags[i]);
-        EXPECT_EQ(glm::vec3(p), kStates[i] == State::Background ? glm::vec3(0.0f)
-                                                                : glm::vec3(surface));
+        EXPECT_EQ(glm::vec3(p),
+                  kStates[i] == State::Background ? glm::vec3(0.0f) : glm::vec3(surface));
         const glm::vec4 o = eyecell::occluder(cell, map, &ids);
         const bool inMap = kStates[i] == State::Shadowed || kStates[i] == State::Lit;
         EXPECT_EQ(o.w, inMap ? 7.0f : -1.0f);
@@ -114,8 +114,8 @@ TEST_F(EyeDecodeTest, GpuDecodeMatchesTheCpuTwin) {
                 EXPECT_GT(shadowed, 200u) << "the view must show hard shadows";
                 EXPECT_GT(background, 0u);
                 EXPECT_EQ(withId > 0, ids) << "ids are decoded exactly when the fix is on";
-                std::printf("%s: %zu shadowed, %zu background, worst position error %g\n",
-                            points, shadowed, background, double(worstError));
+                std::printf("%s: %zu shadowed, %zu background, worst position error %g\n", points,
+                            shadowed, background, double(worstError));
             }
 }
 

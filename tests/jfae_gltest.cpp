@@ -414,8 +414,7 @@ TEST_F(JfaETest, CoarseFloodTravelMatchesTheCpuReference) {
         cs.threshold = boundaryThreshold(EyeSoftSettings{}, s.camera.proj, k.height);
         cs.light = r.disk();
         cs.objectIdFix = cs.midpointFix = k.fixes;
-        const std::vector<std::uint32_t> gpu =
-            estimator.travel(*r.flood()->eyeCells, cs);
+        const std::vector<std::uint32_t> gpu = estimator.travel(*r.flood()->eyeCells, cs);
         const std::vector<std::uint32_t> cpu = coarseFloodTravel(readEyeImage(*r.flood()), cs);
         EXPECT_EQ(gpu, cpu);
         std::uint64_t cells = 0;

@@ -14,13 +14,17 @@ std::uint32_t pack(State state, glm::ivec2 t, std::uint32_t edgeCode) {
            (static_cast<std::uint32_t>(t.x) << 6u) | (static_cast<std::uint32_t>(t.y) << 19u);
 }
 
-State state(std::uint32_t cell) { return static_cast<State>(cell & 3u); }
+State state(std::uint32_t cell) {
+    return static_cast<State>(cell & 3u);
+}
 
 glm::ivec2 texel(std::uint32_t cell) {
     return {static_cast<int>((cell >> 6u) & 8191u), static_cast<int>(cell >> 19u)};
 }
 
-std::uint32_t edgeCode(std::uint32_t cell) { return (cell >> 2u) & 15u; }
+std::uint32_t edgeCode(std::uint32_t cell) {
+    return (cell >> 2u) & 15u;
+}
 
 glm::vec4 point(std::uint32_t cell, glm::vec4 surfacePosition) {
     const State s = state(cell);
@@ -34,10 +38,10 @@ glm::vec4 occluder(std::uint32_t cell, const ReceiverGrid& receivers,
     const State s = state(cell);
     if (s == State::Background || s == State::OutsideMap) return {0.0f, 0.0f, 0.0f, -1.0f};
     const glm::ivec2 t = texel(cell);
-    const float id = ids ? (*ids)[static_cast<std::size_t>(t.y) *
-                                      static_cast<std::size_t>(receivers.width) +
-                                  static_cast<std::size_t>(t.x)]
-                         : -1.0f;
+    const float id =
+        ids ? (*ids)[static_cast<std::size_t>(t.y) * static_cast<std::size_t>(receivers.width) +
+                     static_cast<std::size_t>(t.x)]
+            : -1.0f;
     return glm::vec4(occluderEdgeApply(receivers, t.x, t.y, edgeCode(cell)), id);
 }
 
@@ -62,8 +66,8 @@ void EyeCells::bind(const gl::Program& program, int factor) const {
     glBindTextureUnit(7, objectIds ? ids->id() : 0);
     program.set("uEyeObjectIds", objectIds ? 1 : 0);
     program.set("uEyeFactor", factor);
-    program.set("uEyeGrid", glm::ivec2((width() + factor - 1) / factor,
-                                       (height() + factor - 1) / factor));
+    program.set("uEyeGrid",
+                glm::ivec2((width() + factor - 1) / factor, (height() + factor - 1) / factor));
 }
 
 void unbindEyeCells() {

@@ -134,8 +134,7 @@ std::vector<std::uint32_t> EyeFloodEstimator::travel(const EyeCells& eye,
     glBindTextureUnit(0, 0);
     glUseProgram(0);
     std::vector<std::uint32_t> bins(kTravelBins, 0u);
-    bytes_ = gl::textureBytes(seeds_) +
-             std::int64_t(plan.passCount()) * gl::textureBytes(flooded) +
+    bytes_ = gl::textureBytes(seeds_) + std::int64_t(plan.passCount()) * gl::textureBytes(flooded) +
              std::int64_t(bins.size() * sizeof(bins[0]));
     glGetNamedBufferSubData(bins_.id(), 0, static_cast<GLsizeiptr>(bins.size() * sizeof(bins[0])),
                             bins.data());

@@ -155,6 +155,22 @@ EyeSoftShadowPass::EyeSoftShadowPass(const gl::ShaderLibrary& shaders)
 
 EyeSoftShadowPass::~EyeSoftShadowPass() = default;
 
+void EyeSoftShadowPass::prepare(const Inputs& in) {
+    const int shadowSize = in.shadow.depth.width();
+    if (shadowSize > eyecell::kMaxMapSize)
+        throw std::invalid_argument("JFA-E's eye cells address shadow maps up to " +
+                                    std::to_string(eyecell::kMaxMapSize) + " texels per side");
+    resize(in.width, in.height, shadowSize);
+    eye_ = {&cells_,
+            &in.positions.depth,
+            in.positions.inverseViewProj,
+            *in.shadow.receivers,
+            &ids_,
+            in.settings.objectIdFix,
+            this};
+    decodedStale_ = true;
+}
+
 void EyeSoftShadowPass::resize(int width, int height, int shadowSize) {
     if (!ids_ || ids_.width() != shadowSize) ids_ = gl::Texture(GL_R32F, shadowSize, shadowSize);
     if (cells_ && cells_.width() == width && cells_.height() == height) return;
@@ -197,8 +213,8 @@ void EyeSoftShadowPass::drawEyeHardShadows(const Inputs& in) {
     eyePass_.set("uSilhouetteThreshold", in.settings.silhouetteThreshold);
     setDiskLightUniforms(eyePass_, in.light);
     bindShadowMap(eyePass_, in.shadow);
-    in.positions.bind(eyePass_, 3);               // eye_decode.glsl's uEyeDepth
-    in.shadow.receivers->bind(eyePass_, 6);       // and uEyeReceivers
+    in.positions.bind(eyePass_, 3);         // eye_decode.glsl's uEyeDepth
+    in.shadow.receivers->bind(eyePass_, 6); // and uEyeReceivers
     gl::drawFullscreenTriangle(eyePass_, emptyVao_);
     glBindTextureUnit(1, 0);
     unbindEyeCells();
@@ -257,13 +273,7 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::Pass
     const int maxPasses = eyeSoftMaxPasses(in.width, in.height);
     int passes = std::min(in.passes, maxPasses);
     if (passes != 0) (void)eyeSoftPlan(passes, in.standardFlooding, in.width, in.height);
-    if (in.shadow.depth.width() > eyecell::kMaxMapSize)
-        throw std::invalid_argument("JFA-E's eye cells address shadow maps up to " +
-                                    std::to_string(eyecell::kMaxMapSize) + " texels per side");
-    resize(in.width, in.height, in.shadow.depth.width());
-    eye_ = {&cells_,        &in.positions.depth,          in.positions.inverseViewProj,
-            *in.shadow.receivers, &ids_, in.settings.objectIdFix, this};
-    decodedStale_ = true;
+    prepare(in);
 
     // Phases 2-5 are the thesis' (§5.4), all within frame step 3.
     // Phase 2a (object-ID fix only): which object the light's centre sees at each texel.

@@ -51,8 +51,7 @@ glm::vec3 occluderEdgeApply(const ReceiverGrid& r, int x, int y, std::uint32_t c
         if (c == 0) continue;
         const int s = c == 1 ? -1 : 1;
         const glm::vec4 n = axis == 0 ? r.at(x + s, y) : r.at(x, y + s);
-        o = {o.x + 0.5f * (self.x - n.x), o.y + 0.5f * (self.y - n.y),
-             o.z + 0.5f * (self.z - n.z)};
+        o = {o.x + 0.5f * (self.x - n.x), o.y + 0.5f * (self.y - n.y), o.z + 0.5f * (self.z - n.z)};
     }
     return o;
 }

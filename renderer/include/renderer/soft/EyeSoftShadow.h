@@ -174,6 +174,7 @@ class EyeSoftShadowPass {
     [[nodiscard]] std::pair<const gl::Texture&, const gl::Texture&> decodedEyeImage() const;
 
   private:
+    void prepare(const Inputs& in); // checks the map size, sizes the targets, sets eye_
     void resize(int width, int height, int shadowSize);
     void drawOccluderIds(const Inputs& in);                           // phase 2a
     void drawEyeHardShadows(const Inputs& in);                        // phase 2
