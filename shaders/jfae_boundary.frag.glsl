@@ -4,11 +4,15 @@
 // across a depth jump is another surface, not the other side of a shadow edge). A boundary
 // pixel becomes a seed: its occluder's position, and w = its pixel index + 1 (the midpoint
 // check needs to know where an occluder entered the flood; its object id is read there too).
-// Same as fl::eyeBoundarySeeds on the CPU.
+// Same as fl::eyeBoundarySeeds on the CPU. The grid is the frame, or the coarse estimate's
+// (uEyeFactor, eye_decode.glsl); its pixels' points decode from phase 2's packed cells.
 #include "jfa_seed_list.glsl"
+#include "disk_light.glsl"
+#include "shadow_map_decode.glsl"
+#include "occluder_edge.glsl"
+#include "surface_decode.glsl"
+#include "eye_decode.glsl"
 
-layout(binding = 0) uniform sampler2D uEyePoints;
-layout(binding = 1) uniform sampler2D uEyeOccluders;
 uniform vec3 uEye;
 // A neighbour at squared distance d2 counts when d2 < uAbsolute2 + uRelative2 * |p - eye|^2.
 uniform float uAbsolute2;
@@ -20,8 +24,8 @@ layout(location = 0) out float oSeed; // packed: the seed's index + 1, 0 none (j
 
 void main() {
     ivec2 t = ivec2(gl_FragCoord.xy);
-    ivec2 size = textureSize(uEyePoints, 0);
-    vec4 self = texelFetch(uEyePoints, t, 0);
+    ivec2 size = uEyeGrid;
+    vec4 self = eyePoint(t);
     precise vec3 toEye = self.xyz - uEye;
     precise float e2 = toEye.x * toEye.x + toEye.y * toEye.y + toEye.z * toEye.z;
     precise float limit2 = uAbsolute2 + uRelative2 * e2;
@@ -30,7 +34,7 @@ void main() {
         for (int i = -1; i <= 1; ++i) {
             ivec2 q = t + ivec2(i, j);
             bool inside = all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, size));
-            vec4 n = texelFetch(uEyePoints, clamp(q, ivec2(0), size - 1), 0);
+            vec4 n = eyePoint(clamp(q, ivec2(0), size - 1));
             precise vec3 d = n.xyz - self.xyz;
             precise float d2 = d.x * d.x + d.y * d.y + d.z * d.z;
             boundary = boundary || (inside && n.w == 0.0 && d2 < limit2);

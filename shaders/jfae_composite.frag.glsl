@@ -3,21 +3,23 @@
 // the flood is in penumbra; its intensity is recomputed at its own world position with the
 // inside flag (inner penumbrae see the part of the light away from the centre). Otherwise the
 // hard shadow decides: 0 inside, 1 lit (and 1 for background). Same as fl::eyeSoftVisibility.
+// Points and occluders decode from phase 2's packed cells (eye_decode.glsl).
 #include "disk_light.glsl"
+#include "shadow_map_decode.glsl"
+#include "occluder_edge.glsl"
+#include "surface_decode.glsl"
+#include "eye_decode.glsl"
 
-layout(binding = 0) uniform sampler2D uEyePoints;
-layout(binding = 1) uniform sampler2D uFlooded;   // packed cells: the seed pixel's index + 1
-layout(binding = 2) uniform sampler2D uOccluders; // phase 2's occluders (the cells' xyz)
+layout(binding = 1) uniform sampler2D uFlooded; // packed cells: the seed pixel's index + 1
 
 layout(location = 0) out float oVisibility;
 
 void main() {
     ivec2 t = ivec2(gl_FragCoord.xy);
-    vec4 r = texelFetch(uEyePoints, t, 0);
+    vec4 r = eyePoint(t);
     float w = texelFetch(uFlooded, t, 0).r;
-    int index = int(w) - 1, width = textureSize(uOccluders, 0).x;
     vec4 c = vec4(0.0, 0.0, -1.0, w);
-    if (w != 0.0) c.xyz = texelFetch(uOccluders, ivec2(index % width, index / width), 0).xyz;
+    if (w != 0.0) c.xyz = eyeOccluder(eyeSeedPixel(w)).xyz;
     bool inside = r.w == 1.0;
     float v = inside ? 0.0 : 1.0;
     if (r.w >= 0.0 && c.w != 0.0) {

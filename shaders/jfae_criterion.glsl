@@ -1,7 +1,7 @@
 #version 450 core
 // JFA-E flooding criterion (thesis §5.2, §5.4), bit for bit fl::EyeSoftCriterion on the CPU.
 // A cell is an occluder point (xyz) and w = the index + 1 of the boundary pixel it was seeded
-// at (w = 0 empty). Grid point p is the eye pixel whose world position (uEyePoints) receives.
+// at (w = 0 empty). Grid point p is the eye pixel whose world position (eyePoint) receives.
 // Ranking: inside the hard shadow the thesis keeps the highest intensity, outside the lowest;
 // both are the occluder whose ray from p meets the light's plane nearest the centre (intensity
 // inside = segmentFraction(|cq| / r), falling in |cq|; outside = 1 - that, rising), so one key,
@@ -9,29 +9,21 @@
 // Accepted only if the ray from p through the occluder reaches the light (else p is umbra or
 // lit, and must not pass the occluder on), and with the thesis' two jump-too-far fixes (§5.4.2):
 //  - object ID: a hard-shadowed p takes only occluders of the object that occludes p itself
-//    (its own occluder's id, uEyeOccluders.w); lit pixels are not restricted, since they have
+//    (its own occluder's id, eyeOccluderId); lit pixels are not restricted, since they have
 //    no occluder and the wrong penumbrae the fix is for are inner ones;
 //  - midpoint: the pixel midway between the occluder's boundary pixel and p must be a surface
 //    whose ray through the occluder reaches the light too (it would have a penumbra intensity).
+// Points and occluders decode from phase 2's packed cells (eye_decode.glsl).
 #include "disk_light.glsl"
+#include "shadow_map_decode.glsl"
+#include "occluder_edge.glsl"
+#include "surface_decode.glsl"
+#include "eye_decode.glsl"
 
-layout(binding = 2) uniform sampler2D uEyePoints;
-layout(binding = 3) uniform sampler2D uEyeOccluders;
 uniform int uObjectIdFix;
 uniform int uMidpointFix;
 
-// The pixel cell c was seeded at (w = y * width + x + 1), without an integer division: a SIMD
-// rasteriser (llvmpipe) divides lane by lane, which cost 6-9% of the flood. The float quotient
-// is within one row of y (the index is exact in a float below 2^24, y is below a texture's
-// height, and GLSL's division is good to 2.5 ulp), and the integer checks correct it.
-ivec2 seedPixelOf(vec4 c) {
-    int width = textureSize(uEyePoints, 0).x;
-    int index = int(c.w) - 1;
-    int y = int(float(index) / float(width));
-    y -= y * width > index ? 1 : 0;
-    y += (y + 1) * width <= index ? 1 : 0;
-    return ivec2(index - y * width, y);
-}
+ivec2 seedPixelOf(vec4 c) { return eyeSeedPixel(c.w); }
 
 bool jfaEmpty(vec4 c) { return c.w == 0.0; }
 
@@ -43,13 +35,13 @@ ivec2 jfaSeedPixel(vec4 c) { return ivec2(-1); }
 ivec4 jfaSeedRect(ivec2 p, vec4 c) { return penumbraRect(c.xyz); }
 
 bool jfaAccept(ivec2 p, vec4 c) {
-    vec4 r = texelFetch(uEyePoints, p, 0);
+    vec4 r = eyePoint(p);
     ivec2 s = seedPixelOf(c);
     bool ok = r.w >= 0.0 && penumbraHit(r.xyz, c.xyz) >= 0.0;
     if (ok && uObjectIdFix != 0 && r.w == 1.0)
-        ok = texelFetch(uEyeOccluders, p, 0).w == texelFetch(uEyeOccluders, s, 0).w;
+        ok = eyeOccluderId(p) == eyeOccluderId(s);
     if (ok && uMidpointFix != 0) {
-        vec4 m = texelFetch(uEyePoints, (p + s) / 2, 0);
+        vec4 m = eyePoint((p + s) / 2);
         ok = m.w >= 0.0 && penumbraHit(m.xyz, c.xyz) >= 0.0;
     }
     return ok;
@@ -60,8 +52,8 @@ bool jfaAccept(ivec2 p, vec4 c) {
 // too, into a shader-private global, instead of once per candidate.
 float gOwnOccluderId;
 vec4 jfaContext(ivec2 p) {
-    gOwnOccluderId = texelFetch(uEyeOccluders, p, 0).w;
-    return texelFetch(uEyePoints, p, 0);
+    gOwnOccluderId = eyeOccluderId(p);
+    return eyePoint(p);
 }
 float jfaKey(ivec2 p, vec4 r, vec4 c) {
     float k = r.w >= 0.0 ? penumbraHit(r.xyz, c.xyz) : -1.0;
@@ -69,9 +61,9 @@ float jfaKey(ivec2 p, vec4 r, vec4 c) {
     if (ok && (uObjectIdFix != 0 || uMidpointFix != 0)) {
         ivec2 s = seedPixelOf(c);
         if (uObjectIdFix != 0 && r.w == 1.0)
-            ok = gOwnOccluderId == texelFetch(uEyeOccluders, s, 0).w;
+            ok = gOwnOccluderId == eyeOccluderId(s);
         if (ok && uMidpointFix != 0) {
-            vec4 m = texelFetch(uEyePoints, (p + s) / 2, 0);
+            vec4 m = eyePoint((p + s) / 2);
             ok = m.w >= 0.0 && penumbraHit(m.xyz, c.xyz) >= 0.0;
         }
     }
@@ -83,7 +75,7 @@ bool jfaTieWins(vec4 a, vec4 b) {
 }
 
 bool jfaBetter(ivec2 p, vec4 a, vec4 b) {
-    vec3 r = texelFetch(uEyePoints, p, 0).xyz;
+    vec3 r = eyePoint(p).xyz;
     float da = penumbraHit(r, a.xyz);
     float db = penumbraHit(r, b.xyz);
     bool tieWins = a.x < b.x ||
@@ -93,11 +85,11 @@ bool jfaBetter(ivec2 p, vec4 a, vec4 b) {
 }
 
 // Cells are packed (JFA_CELL_FORMAT r32f): a texel stores w alone, the seed pixel's index + 1,
-// 4 bytes instead of 16; the occluder is the one phase 2 found at the seed pixel, which the
-// boundary pass copied (jfae_boundary.frag.glsl).
+// 4 bytes instead of 16; the occluder is the one phase 2 found at the seed pixel, decoded from
+// its packed cell (eyeOccluder).
 vec4 jfaLoad(sampler2D grid, ivec2 q) {
     float w = texelFetch(grid, q, 0).r;
     if (w == 0.0) return vec4(0.0, 0.0, -1.0, 0.0);
-    return vec4(texelFetch(uEyeOccluders, seedPixelOf(vec4(w)), 0).xyz, w);
+    return vec4(eyeOccluder(eyeSeedPixel(w)).xyz, w);
 }
 vec4 jfaStore(vec4 c) { return vec4(c.w); }

@@ -30,15 +30,16 @@ bool acrossSilhouette(vec4 self, vec4 n, float threshold) {
     return n.w == 0.0 || deeper > allowed;
 }
 
-// The occluder point of texel t: its receiver, moved half a texel along the occluder's own
-// surface toward each axis neighbour across a silhouette edge (the step is the texel's distance
-// to the neighbour on the other side, which is on the same surface). A texel with edges on both
-// sides of an axis, or none, or at the map's border, stays put on that axis.
-vec3 occluderEdgePoint(sampler2D receivers, ivec2 t, float threshold) {
+// Which axis neighbours of texel t lie across a silhouette edge on one side only: per axis two
+// bits (x in bits 0-1, y in bits 2-3), 1 when the edge is on the high side (the point moves away
+// from the low neighbour), 2 when on the low side, 0 for none, both, or the map's border. Kept
+// apart from occluderEdgeApply so a packed occluder (JFA-E's eye cells, eye_decode.glsl) stores
+// the four bits and decodes without the neighbourhood test.
+uint occluderEdgeCode(sampler2D receivers, ivec2 t, float threshold) {
     ivec2 size = textureSize(receivers, 0);
     vec4 self = mapReceiver(receivers, t);
-    precise vec3 o = self.xyz;
-    if (self.w == 0.0) return o;
+    uint code = 0u;
+    if (self.w == 0.0) return code;
     for (int axis = 0; axis < 2; ++axis) {
         ivec2 a = axis == 0 ? ivec2(1, 0) : ivec2(0, 1);
         ivec2 lo = t - a, hi = t + a;
@@ -48,8 +49,31 @@ vec3 occluderEdgePoint(sampler2D receivers, ivec2 t, float threshold) {
         vec4 nHi = mapReceiver(receivers, clamp(hi, ivec2(0), size - 1));
         bool edgeLo = inLo && acrossSilhouette(self, nLo, threshold);
         bool edgeHi = inHi && acrossSilhouette(self, nHi, threshold);
-        if (edgeHi && !edgeLo && inLo) o = o + 0.5 * (self.xyz - nLo.xyz);
-        if (edgeLo && !edgeHi && inHi) o = o + 0.5 * (self.xyz - nHi.xyz);
+        if (edgeHi && !edgeLo && inLo) code |= 1u << (2 * axis);
+        if (edgeLo && !edgeHi && inHi) code |= 2u << (2 * axis);
+    }
+    return code;
+}
+
+// The occluder point of texel t with edge code `code` (occluderEdgeCode): its receiver moved half
+// a texel along the occluder's own surface toward each axis neighbour across a silhouette edge
+// (the step is the texel's distance to the neighbour on the other side, which is on the same
+// surface).
+vec3 occluderEdgeApply(sampler2D receivers, ivec2 t, uint code) {
+    vec4 self = mapReceiver(receivers, t);
+    precise vec3 o = self.xyz;
+    for (int axis = 0; axis < 2; ++axis) {
+        uint c = (code >> uint(2 * axis)) & 3u;
+        if (c == 0u) continue;
+        ivec2 a = axis == 0 ? ivec2(1, 0) : ivec2(0, 1);
+        vec4 n = mapReceiver(receivers, c == 1u ? t - a : t + a);
+        o = o + 0.5 * (self.xyz - n.xyz);
     }
     return o;
+}
+
+// The occluder point of texel t: occluderEdgeApply of its own edge code. A texel with edges on
+// both sides of an axis, or none, or at the map's border, stays put on that axis.
+vec3 occluderEdgePoint(sampler2D receivers, ivec2 t, float threshold) {
+    return occluderEdgeApply(receivers, t, occluderEdgeCode(receivers, t, threshold));
 }

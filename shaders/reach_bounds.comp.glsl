@@ -5,10 +5,16 @@
 // uDstHi (lo = 1e30, hi = -1e30 where there is none). Level L + 1 bounds 2x2 cells of level L
 // (the last cell of an odd level: 3 cells). uMode 0 builds level 0 from the receiver positions,
 // 1 one level from the one below. With MAP_RECEIVERS the source is the shadow map's receiver
-// target (positions through mapReceiver), else a texture of positions (JFA-E's eye points).
+// target (positions through mapReceiver), with EYE_CELLS JFA-E's packed eye cells (positions
+// through eyePoint), else a texture of positions.
 #include "disk_light.glsl"
-#ifdef MAP_RECEIVERS
+#if defined(MAP_RECEIVERS) || defined(EYE_CELLS)
 #include "shadow_map_decode.glsl"
+#endif
+#ifdef EYE_CELLS
+#include "occluder_edge.glsl"
+#include "surface_decode.glsl"
+#include "eye_decode.glsl"
 #endif
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -46,8 +52,10 @@ void main() {
             for (int i = 0; i < 8; ++i) {
                 ivec2 q = t * 8 + ivec2(i, j);
                 if (any(greaterThanEqual(q, uSrcSize))) continue;
-#ifdef MAP_RECEIVERS
+#if defined(MAP_RECEIVERS)
                 vec4 p = mapReceiver(uPositions, q);
+#elif defined(EYE_CELLS)
+                vec4 p = eyePoint(q);
 #else
                 vec4 p = texelFetch(uPositions, q, 0);
 #endif

@@ -10,12 +10,15 @@ uniform mat4 uSurfaceInverseViewProj;
 const float kSurfaceBackgroundDepth = 0.0; // reversed Z: the cleared far plane
 
 // World position of pixel `p` from the depth target: (xyz, 1), or vec4(0) for background.
+// `precise`: JFA-E decodes a pixel in several shaders (boundaries, flood, composite) whose
+// comparisons need the same bits everywhere, as phase 2's stored points gave them.
 vec4 surfacePosition(sampler2D depth, ivec2 p) {
     float d = texelFetch(depth, p, 0).r;
     if (d == kSurfaceBackgroundDepth) return vec4(0.0);
-    vec2 ndc = (vec2(p) + 0.5) / vec2(textureSize(depth, 0)) * 2.0 - 1.0;
-    vec4 w = uSurfaceInverseViewProj * vec4(ndc, d, 1.0);
-    return vec4(w.xyz / w.w, 1.0);
+    precise vec2 ndc = (vec2(p) + 0.5) / vec2(textureSize(depth, 0)) * 2.0 - 1.0;
+    precise vec4 w = uSurfaceInverseViewProj * vec4(ndc, d, 1.0);
+    precise vec3 world = w.xyz / w.w;
+    return vec4(world, 1.0);
 }
 
 float surfaceSignNotZero(float v) { return v >= 0.0 ? 1.0 : -1.0; }

@@ -41,10 +41,11 @@ std::vector<float> readR32F(const gl::Texture& t) {
     return v;
 }
 
-// Phase 2's output of an eye-space flood (FloodFrame::receivers are EyeImage::points).
+// Phase 2's output of an eye-space flood, decoded from its packed cells by the GPU's helpers
+// (eye_decode.glsl): the bits the phases read.
 EyeImage readEyeImage(const FloodFrame& f) {
-    return {f.receivers->width(), f.receivers->height(), readVec4(*f.receivers),
-            readVec4(*f.occluders)};
+    const auto [points, occluders] = f.eyeCells->decoded();
+    return {points.width(), points.height(), readVec4(points), readVec4(occluders)};
 }
 
 std::size_t nonEmpty(const jfa::Grid& g) {
@@ -92,8 +93,7 @@ TEST_F(JfaETest, PhasesMatchTheCpuReference) {
         ASSERT_NE(r.flood(), nullptr);
         const FloodFrame& out = *r.flood();
         ASSERT_TRUE(out.eye);
-        ASSERT_NE(out.receivers, nullptr);
-        ASSERT_NE(out.occluders, nullptr);
+        ASSERT_NE(out.eyeCells, nullptr);
         EXPECT_EQ(out.passes, 4);
         EXPECT_EQ(out.standardFlooding, standardFlooding);
         EXPECT_EQ(out.objectIdFix, k.fixes);
@@ -379,7 +379,7 @@ TEST_F(JfaETest, TravelHistogramAndPassRule) {
     EXPECT_EQ(th.relative2, 32.0f);
 }
 
-// The coarse flood on the GPU (shaders/jfae_coarse.frag.glsl, the boundary pass,
+// The coarse flood on the GPU (the boundary pass reading the frame's cells coarsely,
 // jfae_criterion.glsl, jfae_travel.comp.glsl) against its CPU reference, bin for bin (the same
 // float operations as the phases, which PhasesMatchTheCpuReference compares exactly).
 TEST_F(JfaETest, CoarseFloodTravelMatchesTheCpuReference) {
@@ -414,8 +414,7 @@ TEST_F(JfaETest, CoarseFloodTravelMatchesTheCpuReference) {
         cs.threshold = boundaryThreshold(EyeSoftSettings{}, s.camera.proj, k.height);
         cs.light = r.disk();
         cs.objectIdFix = cs.midpointFix = k.fixes;
-        const std::vector<std::uint32_t> gpu =
-            estimator.travel(*r.flood()->receivers, *r.flood()->occluders, cs);
+        const std::vector<std::uint32_t> gpu = estimator.travel(*r.flood()->eyeCells, cs);
         const std::vector<std::uint32_t> cpu = coarseFloodTravel(readEyeImage(*r.flood()), cs);
         EXPECT_EQ(gpu, cpu);
         std::uint64_t cells = 0;

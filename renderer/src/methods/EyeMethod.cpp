@@ -36,9 +36,8 @@ class EyeMethod final : public ShadowMethod {
                            in.shadowSettings, in.disk, es, passes, standardFlooding_, in.width(),
                            in.height(), region, reach, bandTile(in.options)},
                           in.timer);
-        flood_ = {
-            &out.seeds,    &out.flooded,   &out.points,    &out.occluders, true,  standardFlooding_,
-            out.jfaPasses, es.objectIdFix, es.midpointFix, region,         reach, &pass_.kernel()};
+        flood_ = {&out.seeds,     &out.flooded,   &out.eye, true,  standardFlooding_, out.jfaPasses,
+                  es.objectIdFix, es.midpointFix, region,   reach, &pass_.kernel()};
         return out.visibility;
     }
     [[nodiscard]] const FloodFrame* flood() const override { return &flood_; }

@@ -1,4 +1,5 @@
 #include <renderer/methods/ShadowMethod.h>
+#include <renderer/soft/EyeDecode.h>
 #include <renderer/soft/EyeSoftShadow.h>
 #include <renderer/soft/PenumbraMap.h>
 
@@ -10,7 +11,7 @@ namespace fl {
 
 namespace {
 const gl::Texture& unpackSource(const FloodFrame& frame) {
-    if (frame.eye) return *frame.occluders;
+    if (frame.eye) return frame.eyeCells->decoded().second;
     if (frame.map == nullptr)
         throw std::logic_error("FloodGridReader: a light-space flood without its shadow map");
     return frame.map->decoded();

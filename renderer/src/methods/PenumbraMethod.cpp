@@ -44,7 +44,6 @@ class PenumbraMethod final : public ShadowMethod {
         flood_ = {&pm.seeds,
                   &pm.penumbraMap,
                   nullptr,
-                  nullptr,
                   false,
                   standardFlooding_,
                   pm.jfaPasses,

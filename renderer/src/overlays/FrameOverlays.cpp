@@ -73,11 +73,9 @@ const gl::Texture& floodFrame(State& s, const Renderer& r, const Soft& soft,
         c.light = r.disk();
         c.objectIdFix = soft.objectIdFix;
         c.midpointFix = soft.midpointFix;
-        c.pointsTexture = soft.receivers->id();
-        c.occludersTexture = soft.occluders->id();
+        c.cells = soft.eyeCells;
         const gl::Texture& out = s.eyeKernel.run(plan, *soft.seeds, c);
-        glBindTextureUnit(2, 0);
-        glBindTextureUnit(3, 0);
+        unbindEyeCells();
         unbindPenumbraReach();
         return out;
     }
@@ -150,7 +148,7 @@ static void drawOccluders(State& s, const Frame& f, const Soft& soft, const gl::
     Cells cells = readCells(FloodGridReader(soft), grid);
     // Light space: the map's positions decoded (the bits the flood's criterion read).
     GridDraw g{GridMode::Occluder, &cells.texture(),
-               soft.eye ? soft.receivers : &f.renderer.decodedShadowReceivers()};
+               soft.eye ? &soft.eyeCells->decoded().first : &f.renderer.decodedShadowReceivers()};
     g.eyeSpace = soft.eye;
     g.light = &f.renderer.disk();
     f.bindTarget();

@@ -74,9 +74,7 @@ std::vector<std::uint32_t> coarseFloodTravel(const EyeImage& image, const Coarse
 }
 
 EyeFloodEstimator::EyeFloodEstimator(const gl::ShaderLibrary& shaders)
-    : coarse_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
-                                           {GL_FRAGMENT_SHADER, "jfae_coarse.frag.glsl"}})),
-      boundary_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
+    : boundary_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
                                              {GL_FRAGMENT_SHADER, "jfae_boundary.frag.glsl"}})),
       travel_(gl::Program::build(shaders, {{GL_COMPUTE_SHADER, "jfae_travel.comp.glsl"}})),
       emptyVao_(gl::VertexArray::create()),
@@ -84,42 +82,31 @@ EyeFloodEstimator::EyeFloodEstimator(const gl::ShaderLibrary& shaders)
       kernel_(shaders, jfa::GlKernelKind::Fragment) {}
 
 void EyeFloodEstimator::resize(glm::ivec2 size) {
-    if (points_ && points_.width() == size.x && points_.height() == size.y) return;
-    points_ = gl::Texture(GL_RGBA32F, size.x, size.y);
-    occluders_ = gl::Texture(GL_RGBA32F, size.x, size.y);
+    if (seeds_ && seeds_.width() == size.x && seeds_.height() == size.y) return;
     seeds_ = gl::Texture(GL_R32F, size.x, size.y); // packed cells (EyeSoftCriterion)
-    imageFbo_ =
-        gl::Framebuffer::withTargets({&points_, &occluders_}, nullptr, "JFA-E coarse image");
     seedsFbo_ = gl::Framebuffer::forColor(seeds_, "JFA-E coarse seeds");
 }
 
-std::vector<std::uint32_t> EyeFloodEstimator::travel(const gl::Texture& points,
-                                                     const gl::Texture& occluders,
+std::vector<std::uint32_t> EyeFloodEstimator::travel(const EyeCells& eye,
                                                      const CoarseFloodSettings& s) {
-    const glm::ivec2 size = coarseSize(points.width(), points.height(), s.factor);
+    const glm::ivec2 size = coarseSize(eye.width(), eye.height(), s.factor);
     const int passes = eyeSoftMaxPasses(size.x, size.y);
     if (passes < 1) return {};
     resize(size);
     glDisable(GL_DEPTH_TEST);
     glViewport(0, 0, size.x, size.y);
 
-    // The coarse phase 2 and phase 3: the same images and boundary rule, one pixel in factor².
-    glBindFramebuffer(GL_FRAMEBUFFER, imageFbo_.id());
-    coarse_.set("uFactor", s.factor);
-    glBindTextureUnit(0, points.id());
-    glBindTextureUnit(1, occluders.id());
-    gl::drawFullscreenTriangle(coarse_, emptyVao_);
+    // The coarse phase 3 on the frame's phase 2, one pixel in factor² (read in place through
+    // EyeCells::bind's factor, no coarse copy): the same boundary rule.
     const BoundaryThreshold th = coarseThreshold(s.threshold, s.factor);
     glBindFramebuffer(GL_FRAMEBUFFER, seedsFbo_.id());
     boundary_.set("uEye", s.eye);
     boundary_.set("uAbsolute2", th.absolute2);
     boundary_.set("uRelative2", th.relative2);
     boundary_.set("uListSeeds", 0);
-    glBindTextureUnit(0, points_.id());
-    glBindTextureUnit(1, occluders_.id());
+    eye.bind(boundary_, s.factor);
     gl::drawFullscreenTriangle(boundary_, emptyVao_);
-    glBindTextureUnit(0, 0);
-    glBindTextureUnit(1, 0);
+    unbindEyeCells();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 
     // The coarse phase 4: full JFA on the whole coarse grid (no band: it is small).
@@ -127,12 +114,11 @@ std::vector<std::uint32_t> EyeFloodEstimator::travel(const gl::Texture& points,
     criterion.light = s.light;
     criterion.objectIdFix = s.objectIdFix;
     criterion.midpointFix = s.midpointFix;
-    criterion.pointsTexture = points_.id();
-    criterion.occludersTexture = occluders_.id();
+    criterion.cells = &eye;
+    criterion.cellsFactor = s.factor;
     const jfa::Plan plan = eyeSoftPlan(passes, false, size.x, size.y);
     const gl::Texture& flooded = kernel_.run(plan, seeds_, criterion);
-    glBindTextureUnit(2, 0);
-    glBindTextureUnit(3, 0);
+    unbindEyeCells();
     unbindPenumbraReach();
 
     // How far each cell travelled, one histogram for the frame.
@@ -148,8 +134,7 @@ std::vector<std::uint32_t> EyeFloodEstimator::travel(const gl::Texture& points,
     glBindTextureUnit(0, 0);
     glUseProgram(0);
     std::vector<std::uint32_t> bins(kTravelBins, 0u);
-    bytes_ = gl::textureBytes(points_) + gl::textureBytes(occluders_) + gl::textureBytes(seeds_) +
-             std::int64_t(plan.passCount()) * gl::textureBytes(flooded) +
+    bytes_ = gl::textureBytes(seeds_) + std::int64_t(plan.passCount()) * gl::textureBytes(flooded) +
              std::int64_t(bins.size() * sizeof(bins[0]));
     glGetNamedBufferSubData(bins_.id(), 0, static_cast<GLsizeiptr>(bins.size() * sizeof(bins[0])),
                             bins.data());

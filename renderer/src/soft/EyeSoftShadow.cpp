@@ -113,8 +113,7 @@ void setCriterionUniforms(const gl::Program& program, const EyeSoftCriterion& cr
     setPenumbraReachUniforms(program, criterion.reachBound);
     program.set("uObjectIdFix", criterion.objectIdFix ? 1 : 0);
     program.set("uMidpointFix", criterion.midpointFix ? 1 : 0);
-    glBindTextureUnit(2, criterion.pointsTexture);
-    glBindTextureUnit(3, criterion.occludersTexture);
+    if (criterion.cells != nullptr) criterion.cells->bind(program, criterion.cellsFactor);
 }
 
 jfa::Grid readEyeGrid(const gl::Texture& packed, const jfa::Grid& occluders) {
@@ -149,19 +148,36 @@ EyeSoftShadowPass::EyeSoftShadowPass(const gl::ShaderLibrary& shaders)
                                              {GL_FRAGMENT_SHADER, "jfae_boundary.frag.glsl"}})),
       composite_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
                                               {GL_FRAGMENT_SHADER, "jfae_composite.frag.glsl"}})),
+      unpack_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
+                                           {GL_FRAGMENT_SHADER, "jfae_unpack.frag.glsl"}})),
       emptyVao_(gl::VertexArray::create()), kernel_(shaders, jfa::GlKernelKind::Fragment),
       bounds_(shaders), shaders_(shaders) {}
 
 EyeSoftShadowPass::~EyeSoftShadowPass() = default;
 
+void EyeSoftShadowPass::prepare(const Inputs& in) {
+    const int shadowSize = in.shadow.depth.width();
+    if (shadowSize > eyecell::kMaxMapSize)
+        throw std::invalid_argument("JFA-E's eye cells address shadow maps up to " +
+                                    std::to_string(eyecell::kMaxMapSize) + " texels per side");
+    resize(in.width, in.height, shadowSize);
+    eye_ = {&cells_,
+            &in.positions.depth,
+            in.positions.inverseViewProj,
+            *in.shadow.receivers,
+            &ids_,
+            in.settings.objectIdFix,
+            this};
+    decodedStale_ = true;
+}
+
 void EyeSoftShadowPass::resize(int width, int height, int shadowSize) {
     if (!ids_ || ids_.width() != shadowSize) ids_ = gl::Texture(GL_R32F, shadowSize, shadowSize);
-    if (points_ && points_.width() == width && points_.height() == height) return;
-    points_ = gl::Texture(GL_RGBA32F, width, height);
-    occluders_ = gl::Texture(GL_RGBA32F, width, height);
-    seeds_ = gl::Texture(GL_R32F, width, height); // packed cells (EyeSoftCriterion)
+    if (cells_ && cells_.width() == width && cells_.height() == height) return;
+    cells_ = gl::Texture(GL_R32UI, width, height); // packed eye cells (EyeDecode.h)
+    seeds_ = gl::Texture(GL_R32F, width, height);  // packed flood cells (EyeSoftCriterion)
     visibility_ = gl::Texture(GL_R32F, width, height);
-    eyeFbo_ = gl::Framebuffer::withTargets({&points_, &occluders_}, nullptr, "JFA-E eye pass");
+    eyeFbo_ = gl::Framebuffer::forColor(cells_, "JFA-E eye pass");
     seedsFbo_ = gl::Framebuffer::forColor(seeds_, "JFA-E boundary seeds");
     visibilityFbo_ = gl::Framebuffer::forColor(visibility_, "JFA-E visibility");
 }
@@ -193,16 +209,15 @@ void EyeSoftShadowPass::drawEyeHardShadows(const Inputs& in) {
     glBindFramebuffer(GL_FRAMEBUFFER, eyeFbo_.id());
     glViewport(0, 0, in.width, in.height);
     glDisable(GL_DEPTH_TEST);
-    eyePass_.set("uHaveObjectIds", in.settings.objectIdFix ? 1 : 0);
     eyePass_.set("uOccluderEdges", in.settings.occluderPoints == OccluderPoints::Edge ? 1 : 0);
     eyePass_.set("uSilhouetteThreshold", in.settings.silhouetteThreshold);
     setDiskLightUniforms(eyePass_, in.light);
     bindShadowMap(eyePass_, in.shadow);
-    in.positions.bind(eyePass_, 0);
-    in.shadow.receivers->bind(eyePass_, 2);
-    glBindTextureUnit(3, ids_.id());
+    in.positions.bind(eyePass_, 3);         // eye_decode.glsl's uEyeDepth
+    in.shadow.receivers->bind(eyePass_, 6); // and uEyeReceivers
     gl::drawFullscreenTriangle(eyePass_, emptyVao_);
-    for (GLuint unit : {0u, 1u, 2u, 3u}) glBindTextureUnit(unit, 0);
+    glBindTextureUnit(1, 0);
+    unbindEyeCells();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
@@ -217,12 +232,10 @@ void EyeSoftShadowPass::drawBoundaries(const Inputs& in, BoundaryThreshold th) {
     const bool listSeeds = jfa::banded(in.region);
     boundary_.set("uListSeeds", listSeeds ? 1 : 0);
     if (listSeeds) kernel_.beginSeedList(in.width, in.height);
-    glBindTextureUnit(0, points_.id());
-    glBindTextureUnit(1, occluders_.id());
+    eye_.bind(boundary_);
     gl::drawFullscreenTriangle(boundary_, emptyVao_);
     if (listSeeds) kernel_.seedsListed(seeds_);
-    glBindTextureUnit(0, 0);
-    glBindTextureUnit(1, 0);
+    unbindEyeCells();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
@@ -231,11 +244,11 @@ void EyeSoftShadowPass::drawComposite(const Inputs& in, const gl::Texture& flood
     glViewport(0, 0, in.width, in.height);
     glDisable(GL_DEPTH_TEST);
     setDiskLightUniforms(composite_, in.light);
-    glBindTextureUnit(0, points_.id());
+    eye_.bind(composite_);
     glBindTextureUnit(1, flooded.id());
-    glBindTextureUnit(2, occluders_.id());
     gl::drawFullscreenTriangle(composite_, emptyVao_);
-    for (GLuint unit : {0u, 1u, 2u}) glBindTextureUnit(unit, 0);
+    glBindTextureUnit(1, 0);
+    unbindEyeCells();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
@@ -247,7 +260,7 @@ int EyeSoftShadowPass::measurePasses(const Inputs& in, BoundaryThreshold thresho
     s.light = in.light;
     s.objectIdFix = in.settings.objectIdFix;
     s.midpointFix = in.settings.midpointFix;
-    const std::vector<std::uint32_t> bins = estimator_->travel(points_, occluders_, s);
+    const std::vector<std::uint32_t> bins = estimator_->travel(eye_, s);
     return bins.empty() ? -1 : passesForTravel(maxTravel(bins), s.factor, maxPasses);
 }
 
@@ -260,7 +273,7 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::Pass
     const int maxPasses = eyeSoftMaxPasses(in.width, in.height);
     int passes = std::min(in.passes, maxPasses);
     if (passes != 0) (void)eyeSoftPlan(passes, in.standardFlooding, in.width, in.height);
-    resize(in.width, in.height, in.shadow.depth.width());
+    prepare(in);
 
     // Phases 2-5 are the thesis' (§5.4), all within frame step 3.
     // Phase 2a (object-ID fix only): which object the light's centre sees at each texel.
@@ -274,7 +287,7 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::Pass
     // Phase 2: hard shadows per pixel of the frame's surfaces, with occluders.
     if (timer) timer->begin("eye hard shadows");
     drawEyeHardShadows(in);
-    if (timer) timer->wrote(gl::textureBytes(points_) + gl::textureBytes(occluders_));
+    if (timer) timer->wrote(gl::textureBytes(cells_));
     if (timer) timer->end();
 
     // Phase 3: boundary pixels become seeds with their occluders.
@@ -300,11 +313,10 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::Pass
     criterion.light = in.light;
     criterion.objectIdFix = in.settings.objectIdFix;
     criterion.midpointFix = in.settings.midpointFix;
-    criterion.pointsTexture = points_.id();
-    criterion.occludersTexture = occluders_.id();
+    criterion.cells = &eye_;
     criterion.reachBound = in.reach;
     if (criterion.reachBound.enabled) { // receivers are the surface pixels (w >= 0)
-        bounds_.build(points_, -0.5f, in.light, criterion.reachBound);
+        bounds_.build(eye_, in.light, criterion.reachBound);
         if (timer) timer->wrote(bounds_.bytes());
     }
     kernel_.setRegion(in.region, in.bandTile);
@@ -319,8 +331,7 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::Pass
     if (timer) timer->end();
     if (timer) timer->begin("flood");
     const gl::Texture& flooded = kernel_.run(plan, seeds_, criterion);
-    glBindTextureUnit(2, 0);
-    glBindTextureUnit(3, 0);
+    unbindEyeCells();
     unbindPenumbraReach();
     if (timer) timer->end();
 
@@ -329,8 +340,30 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::Pass
     drawComposite(in, flooded);
     if (timer) timer->wrote(gl::textureBytes(visibility_));
     if (timer) timer->end();
-    return {points_, occluders_, seeds_,  flooded, visibility_, kernel_.passesRun(),
-            passes,  geometric,  measured};
+    return {eye_, seeds_, flooded, visibility_, kernel_.passesRun(), passes, geometric, measured};
+}
+
+std::pair<const gl::Texture&, const gl::Texture&> EyeSoftShadowPass::decodedEyeImage() const {
+    if (eye_.cells == nullptr) throw std::logic_error("JFA-E: no frame to decode");
+    const int w = eye_.width(), h = eye_.height();
+    if (!decodedPoints_ || decodedPoints_.width() != w || decodedPoints_.height() != h) {
+        decodedPoints_ = gl::Texture(GL_RGBA32F, w, h);
+        decodedOccluders_ = gl::Texture(GL_RGBA32F, w, h);
+        decodedFbo_ = gl::Framebuffer::withTargets({&decodedPoints_, &decodedOccluders_}, nullptr,
+                                                   "JFA-E decoded eye image");
+        decodedStale_ = true;
+    }
+    if (decodedStale_) {
+        glBindFramebuffer(GL_FRAMEBUFFER, decodedFbo_.id());
+        glViewport(0, 0, w, h);
+        glDisable(GL_DEPTH_TEST);
+        eye_.bind(unpack_);
+        gl::drawFullscreenTriangle(unpack_, emptyVao_);
+        unbindEyeCells();
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        decodedStale_ = false;
+    }
+    return {decodedPoints_, decodedOccluders_};
 }
 
 } // namespace fl

@@ -1,6 +1,7 @@
 #include <renderer/soft/OccluderEdge.h>
 
 #include <cmath>
+#include <cstdint>
 
 namespace fl {
 
@@ -21,28 +22,43 @@ bool acrossSilhouette(const DiskLight& light, glm::vec4 self, glm::vec4 n, float
     return n.w == 0.0f || deeper > allowed;
 }
 
-glm::vec3 occluderEdgePoint(const ReceiverGrid& r, const DiskLight& light, int x, int y,
-                            float threshold) {
+std::uint32_t occluderEdgeCode(const ReceiverGrid& r, const DiskLight& light, int x, int y,
+                               float threshold) {
     const glm::vec4 self = r.at(x, y);
-    glm::vec3 o(self);
-    if (self.w == 0.0f) return o;
-    const auto step = [&](bool inLo, bool inHi, glm::vec4 lo, glm::vec4 hi) {
-        const bool edgeLo = inLo && acrossSilhouette(light, self, lo, threshold);
-        const bool edgeHi = inHi && acrossSilhouette(light, self, hi, threshold);
-        if (edgeHi && !edgeLo && inLo)
-            o = {o.x + 0.5f * (self.x - lo.x), o.y + 0.5f * (self.y - lo.y),
-                 o.z + 0.5f * (self.z - lo.z)};
-        if (edgeLo && !edgeHi && inHi)
-            o = {o.x + 0.5f * (self.x - hi.x), o.y + 0.5f * (self.y - hi.y),
-                 o.z + 0.5f * (self.z - hi.z)};
-    };
+    std::uint32_t code = 0;
+    if (self.w == 0.0f) return code;
     // Out-of-grid neighbours read as the texel itself, as the shader's clamped fetch does.
     const auto at = [&](int qx, int qy) {
         return (qx < 0 || qy < 0 || qx >= r.width || qy >= r.height) ? self : r.at(qx, qy);
     };
-    step(x > 0, x + 1 < r.width, at(x - 1, y), at(x + 1, y));
-    step(y > 0, y + 1 < r.height, at(x, y - 1), at(x, y + 1));
+    for (int axis = 0; axis < 2; ++axis) {
+        const int ax = axis == 0 ? 1 : 0, ay = axis == 0 ? 0 : 1;
+        const bool inLo = x - ax >= 0 && y - ay >= 0;
+        const bool inHi = x + ax < r.width && y + ay < r.height;
+        const bool edgeLo = inLo && acrossSilhouette(light, self, at(x - ax, y - ay), threshold);
+        const bool edgeHi = inHi && acrossSilhouette(light, self, at(x + ax, y + ay), threshold);
+        if (edgeHi && !edgeLo && inLo) code |= 1u << (2 * axis);
+        if (edgeLo && !edgeHi && inHi) code |= 2u << (2 * axis);
+    }
+    return code;
+}
+
+glm::vec3 occluderEdgeApply(const ReceiverGrid& r, int x, int y, std::uint32_t code) {
+    const glm::vec4 self = r.at(x, y);
+    glm::vec3 o(self);
+    for (int axis = 0; axis < 2; ++axis) {
+        const std::uint32_t c = (code >> (2 * axis)) & 3u;
+        if (c == 0) continue;
+        const int s = c == 1 ? -1 : 1;
+        const glm::vec4 n = axis == 0 ? r.at(x + s, y) : r.at(x, y + s);
+        o = {o.x + 0.5f * (self.x - n.x), o.y + 0.5f * (self.y - n.y), o.z + 0.5f * (self.z - n.z)};
+    }
     return o;
+}
+
+glm::vec3 occluderEdgePoint(const ReceiverGrid& r, const DiskLight& light, int x, int y,
+                            float threshold) {
+    return occluderEdgeApply(r, x, y, occluderEdgeCode(r, light, x, y, threshold));
 }
 
 } // namespace fl

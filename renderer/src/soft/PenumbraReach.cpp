@@ -1,5 +1,7 @@
 #include <renderer/soft/PenumbraReach.h>
 
+#include <renderer/soft/EyeDecode.h>
+
 #include <renderer/soft/PenumbraCriterion.h> // setDiskLightUniforms
 
 #include <algorithm>
@@ -116,17 +118,20 @@ void unbindPenumbraReach() {
 }
 
 namespace {
-gl::Program boundsProgram(const gl::ShaderLibrary& shaders, bool map, bool region) {
+// source 0: a texture of positions, 1: the shadow map's receiver target, 2: JFA-E's eye cells.
+gl::Program boundsProgram(const gl::ShaderLibrary& shaders, int source, bool region) {
     std::vector<std::string> defines;
-    if (map) defines.emplace_back("MAP_RECEIVERS 1");
+    if (source == 1) defines.emplace_back("MAP_RECEIVERS 1");
+    if (source == 2) defines.emplace_back("EYE_CELLS 1");
     if (region) defines.emplace_back("REACH_REGION 1");
     return gl::Program::build(shaders, {{GL_COMPUTE_SHADER, "reach_bounds.comp.glsl"}}, defines);
 }
 } // namespace
 
 ReceiverBoundsPyramid::ReceiverBoundsPyramid(const gl::ShaderLibrary& shaders)
-    : programs_{{boundsProgram(shaders, false, false), boundsProgram(shaders, false, true)},
-                {boundsProgram(shaders, true, false), boundsProgram(shaders, true, true)}} {}
+    : programs_{{boundsProgram(shaders, 0, false), boundsProgram(shaders, 0, true)},
+                {boundsProgram(shaders, 1, false), boundsProgram(shaders, 1, true)},
+                {boundsProgram(shaders, 2, false), boundsProgram(shaders, 2, true)}} {}
 
 std::int64_t ReceiverBoundsPyramid::bytes() const {
     std::int64_t texels = 0;
@@ -144,6 +149,14 @@ void ReceiverBoundsPyramid::build(const gl::Texture& positions, float validMin,
     glBindTextureUnit(0, positions.id());
     build(program, positions.width(), positions.height(), validMin, light, reach, region,
           regionTile);
+}
+
+void ReceiverBoundsPyramid::build(const EyeCells& eye, const DiskLight& light,
+                                  PenumbraReach& reach) {
+    const gl::Program& program = programs_[2][0];
+    eye.bind(program);
+    build(program, eye.width(), eye.height(), -0.5f, light, reach, nullptr, 8); // w >= 0
+    unbindEyeCells();
 }
 
 void ReceiverBoundsPyramid::build(const MapPositions& map, const DiskLight& light,

@@ -32,6 +32,8 @@
 
 namespace fl {
 
+struct EyeCells; // renderer/soft/EyeDecode.h
+
 struct MethodDescriptor;
 
 /// Everything a method may read in a frame.
@@ -64,8 +66,7 @@ struct FrameInputs {
 struct FloodFrame {
     const gl::Texture* seeds = nullptr;
     const gl::Texture* flooded = nullptr;
-    const gl::Texture* receivers = nullptr; // eye only: EyeImage::points
-    const gl::Texture* occluders = nullptr; // eye only: EyeImage::occluders
+    const EyeCells* eyeCells = nullptr; // eye only: phase 2's packed cells (EyeDecode.h)
     bool eye = false;
     bool standardFlooding = false;
     int passes = 0;          // flood passes run
@@ -78,7 +79,8 @@ struct FloodFrame {
 };
 
 /// Reads `frame`'s grids (its seeds, its flood, or an overlay's re-run of it) back as cells. The
-/// GPU's cells are packed: eye cells unpack with phase 2's occluders (readEyeGrid), light cells
+/// GPU's cells are packed: eye cells unpack with phase 2's occluders as the GPU decodes them
+/// (EyeCells::decoded, readEyeGrid), light cells
 /// with the map's positions as the shaders decode them (readPenumbraGrid); those are read back
 /// once, when the reader is made, for every grid it then reads.
 class FloodGridReader {

@@ -26,7 +26,8 @@ inline constexpr int kTravelBins = 1024;
 /// The coarse grid of a width x height frame: ceil(size / factor) per axis.
 glm::ivec2 coarseSize(int width, int height, int factor);
 /// Phase 2's images point-sampled at coarse pixel (X, Y) = frame pixel
-/// min(factor * (X, Y) + factor / 2, size - 1) (shaders/jfae_coarse.frag.glsl on the GPU).
+/// min(factor * (X, Y) + factor / 2, size - 1) (on the GPU eye_decode.glsl's uEyeFactor reads
+/// the frame's cells so, with no coarse copy).
 EyeImage coarseEyeImage(const EyeImage& image, int factor);
 /// The frame's boundary threshold on the coarse grid: neighbours lie `factor` times farther.
 BoundaryThreshold coarseThreshold(BoundaryThreshold frame, int factor);
@@ -58,21 +59,20 @@ std::vector<std::uint32_t> coarseFloodTravel(const EyeImage& image, const Coarse
 class EyeFloodEstimator {
   public:
     explicit EyeFloodEstimator(const gl::ShaderLibrary& shaders);
-    /// Runs the coarse flood on `points` / `occluders` (EyeImage layout, RGBA32F) and reads the
-    /// histogram back (one sync point); empty when the coarse grid is too small to flood.
-    std::vector<std::uint32_t> travel(const gl::Texture& points, const gl::Texture& occluders,
-                                      const CoarseFloodSettings& s);
-    /// Bytes the last travel() wrote: the coarse images and seeds, every pass of its flood and
-    /// the histogram (what PassTimer counts for the "pass count" phase).
+    /// Runs the coarse flood on the frame's packed cells (read at the coarse pixels' samples)
+    /// and reads the histogram back (one sync point); empty when the coarse grid is too small.
+    std::vector<std::uint32_t> travel(const EyeCells& eye, const CoarseFloodSettings& s);
+    /// Bytes the last travel() wrote: the coarse seeds, every pass of its flood and the
+    /// histogram (what PassTimer counts for the "pass count" phase).
     [[nodiscard]] std::int64_t bytes() const { return bytes_; }
 
   private:
     void resize(glm::ivec2 size);
 
-    gl::Program coarse_, boundary_, travel_;
+    gl::Program boundary_, travel_;
     gl::VertexArray emptyVao_;
-    gl::Texture points_, occluders_, seeds_;
-    gl::Framebuffer imageFbo_, seedsFbo_;
+    gl::Texture seeds_;
+    gl::Framebuffer seedsFbo_;
     gl::Buffer bins_;
     jfa::GlFloodKernel<EyeSoftCriterion> kernel_;
     std::int64_t bytes_ = 0;

@@ -2,10 +2,11 @@
 // JFA-E (thesis §5.4.1): soft shadows flooded in eye space from an image with hard shadows.
 // The phases are the thesis' numbers (§5.4); its phase 1, the shadow map with receiver
 // positions, is frame step 1, and phases 2-5 all run inside frame step 3 (the shadow method).
-//   phase 2  per pixel of the frame's surfaces (step 2, SurfacesPass): its world position and
-//            hard-shadow flag, and its occluder (the surface the light's centre sees at the
-//            pixel's shadow-map texel) with that occluder's object id (from a light-space id
-//            pass over the shadow map);
+//   phase 2  per pixel of the frame's surfaces (step 2, SurfacesPass): its hard-shadow state
+//            and its occluder (the surface the light's centre sees at the pixel's shadow-map
+//            texel), packed in one 32-bit cell (EyeDecode.h) from which the pixel's world
+//            position, the occluder point and its object id (from a light-space id pass over
+//            the shadow map) decode;
 //   phase 3  boundary pixels (in hard shadow, with a lit neighbour nearer than a 3D distance
 //            threshold) become seeds carrying their occluder;
 //   phase 4  jump flooding with EyeSoftCriterion (or standard flooding, the reference);
@@ -17,6 +18,7 @@
 #include <renderer/passes/SurfacesPass.h>
 #include <renderer/scene/GpuScene.h>
 #include <renderer/soft/DiskLight.h>
+#include <renderer/soft/EyeDecode.h>
 #include <renderer/soft/OccluderEdge.h>
 #include <renderer/soft/PenumbraReach.h>
 
@@ -66,22 +68,6 @@ struct EyeSoftSettings {
 /// from its normal, narrow enough to exclude the depth jump to an object in front.
 inline constexpr float kBoundaryFootprints = 6.0f;
 
-/// Phase 2's output on the CPU side, row-major width x height (row 0 = bottom, as GL).
-struct EyeImage {
-    int width = 0;
-    int height = 0;
-    /// xyz world position; w = 1 in hard shadow, 0 lit, 2 lit because outside the shadow map
-    /// (no evidence of a shadow edge for phase 3), -1 no surface (background).
-    std::vector<glm::vec4> points;
-    /// xyz the occluder point (shadow-map receiver at the pixel's texel); w its object id, -1
-    /// when unknown (no surface, outside the map, or the object-ID fix is off).
-    std::vector<glm::vec4> occluders;
-    [[nodiscard]] std::size_t index(int x, int y) const {
-        return static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
-               static_cast<std::size_t>(x);
-    }
-};
-
 /// The boundary threshold as shader terms: a lit neighbour at squared distance d2 counts when
 /// d2 < absolute2 + relative2 * |p - eye|^2.
 struct BoundaryThreshold {
@@ -117,8 +103,8 @@ struct EyeSoftCriterion {
     bool objectIdFix = true;
     bool midpointFix = true;
     const EyeImage* image = nullptr; // CPU kernel
-    GLuint pointsTexture = 0;        // GL kernel: RGBA32F, EyeImage::points
-    GLuint occludersTexture = 0;     // GL kernel: RGBA32F, EyeImage::occluders
+    const EyeCells* cells = nullptr; // GL kernel: phase 2's packed cells (eye_decode.glsl)
+    int cellsFactor = 1;             // GL kernel: the grid is the frame / this (EyeCells::bind)
     PenumbraReach reachBound;        // the eye's: bounds the band (jfa/Band.h)
 
     /// Band-limited flooding: the widest penumbra occluder c, seeded at boundary pixel (px, py),
@@ -131,17 +117,17 @@ struct EyeSoftCriterion {
     [[nodiscard]] bool accepts(int px, int py, const jfa::Cell& c) const;
     [[nodiscard]] bool better(int px, int py, const jfa::Cell& a, const jfa::Cell& b) const;
 };
-/// The GL kernel's hook (argument-dependent lookup): textures on units 2 and 3, uniforms.
+/// The GL kernel's hook (argument-dependent lookup): the eye cells (EyeCells::bind), uniforms.
 void setCriterionUniforms(const gl::Program& program, const EyeSoftCriterion& criterion);
 
-/// CPU reference of phase 5 (shaders/jfae_composite.frag.glsl): one visibility per pixel.
-/// Uses std::acos, so equal to the GL result only to float rounding (~1e-6).
 /// A JFA-E grid as the GL kernels store it (R32F, packed cells: the seed pixel's index + 1, 0
 /// empty; EyeSoftCriterion::packedCells) turned back into cells, each occluder read from
 /// `occluders` (phase 2's, jfa::readGrid of EyeImage::occluders) at its seed pixel: jfaLoad's
 /// CPU twin.
 jfa::Grid readEyeGrid(const gl::Texture& packed, const jfa::Grid& occluders);
 
+/// CPU reference of phase 5 (shaders/jfae_composite.frag.glsl): one visibility per pixel.
+/// Uses std::acos, so equal to the GL result only to float rounding (~1e-6).
 FloatImage eyeSoftVisibility(const EyeImage& image, const jfa::Grid& flooded,
                              const DiskLight& light);
 
@@ -170,8 +156,7 @@ class EyeSoftShadowPass {
         int bandTile = jfa::kDefaultBandTile;
     };
     struct Outputs {
-        const gl::Texture& points;     // phase 2, RGBA32F (EyeImage::points)
-        const gl::Texture& occluders;  // phase 2, RGBA32F (EyeImage::occluders)
+        const EyeCells& eye;           // phase 2, packed cells (R32UI, EyeDecode.h)
         const gl::Texture& seeds;      // phase 3, packed cells (R32F, readEyeGrid)
         const gl::Texture& flooded;    // phase 4, packed cells (R32F, readEyeGrid)
         const gl::Texture& visibility; // phase 5, R32F
@@ -184,7 +169,12 @@ class EyeSoftShadowPass {
     /// "boundaries", "pass count" (measured auto only), "band", "flood" and "composite".
     Outputs execute(const Inputs& in, gl::PassTimer* timer = nullptr);
 
+    /// The last frame's eye cells decoded on the GPU into EyeImage layout (points, occluders;
+    /// RGBA32F): EyeCells::decoded(). Made on the first call after each frame.
+    [[nodiscard]] std::pair<const gl::Texture&, const gl::Texture&> decodedEyeImage() const;
+
   private:
+    void prepare(const Inputs& in); // checks the map size, sizes the targets, sets eye_
     void resize(int width, int height, int shadowSize);
     void drawOccluderIds(const Inputs& in);                           // phase 2a
     void drawEyeHardShadows(const Inputs& in);                        // phase 2
@@ -193,10 +183,15 @@ class EyeSoftShadowPass {
     /// The measured auto count (EyeFloodReach.h) at most maxPasses; -1 for a frame too small.
     int measurePasses(const Inputs& in, BoundaryThreshold threshold, int maxPasses);
 
-    gl::Program lightIds_, eyePass_, boundary_, composite_;
+    gl::Program lightIds_, eyePass_, boundary_, composite_, unpack_;
     gl::VertexArray emptyVao_;
-    gl::Texture ids_, points_, occluders_, seeds_, visibility_;
+    gl::Texture ids_, cells_, seeds_, visibility_;
     gl::Framebuffer eyeFbo_, seedsFbo_, visibilityFbo_;
+    EyeCells eye_; // the last frame's, for the phases and the Outputs
+    // decodedEyeImage()'s: made on demand, outside the frame.
+    mutable gl::Texture decodedPoints_, decodedOccluders_;
+    mutable gl::Framebuffer decodedFbo_;
+    mutable bool decodedStale_ = true;
     jfa::GlFloodKernel<EyeSoftCriterion> kernel_;
     ReceiverBoundsPyramid bounds_; // tightens the band's bound (PenumbraReach)
     const gl::ShaderLibrary& shaders_;

@@ -47,6 +47,8 @@
 
 namespace fl {
 
+struct EyeCells; // renderer/soft/EyeDecode.h
+
 /// The grid a penumbra is bounded on.
 struct PenumbraReach {
     bool enabled = false;        // false: no bound (the plan's reach decides)
@@ -80,6 +82,8 @@ class ReceiverBoundsPyramid {
     /// side `regionTile`, a multiple of 8, row-major), receivers outside its tiles do not count.
     void build(const gl::Texture& positions, float validMin, const DiskLight& light,
                PenumbraReach& reach, const gl::Buffer* region = nullptr, int regionTile = 8);
+    /// The same from JFA-E's packed eye cells (eyePoint; every surface pixel is a receiver).
+    void build(const EyeCells& eye, const DiskLight& light, PenumbraReach& reach);
     /// The same from the shadow map's receiver target (positions decoded in the shader).
     void build(const MapPositions& map, const DiskLight& light, PenumbraReach& reach,
                const gl::Buffer* region = nullptr, int regionTile = 8);
@@ -90,9 +94,10 @@ class ReceiverBoundsPyramid {
     void build(const gl::Program& program, int width, int height, float validMin,
                const DiskLight& light, PenumbraReach& reach, const gl::Buffer* region,
                int regionTile);
-    // [map source][seed region]: MAP_RECEIVERS decodes the shadow map's receiver target,
-    // REACH_REGION limits the receivers to a seed region's tiles.
-    gl::Program programs_[2][2];
+    // [source: positions, map, eye cells][seed region]: MAP_RECEIVERS decodes the shadow map's
+    // receiver target, EYE_CELLS JFA-E's cells, REACH_REGION limits the receivers to a seed
+    // region's tiles.
+    gl::Program programs_[3][2];
     gl::Texture lo_, hi_; // min and max: xyz world position, w distance from the light's plane
     int levels_ = 0;
 };
