@@ -23,7 +23,7 @@ namespace fl::geom {
 
 /// How delaunay() runs.
 struct DelaunayOptions {
-    DiscreteDelaunayOptions discrete; // texture size, flood plan, threads for G1-G6
+    DiscreteDelaunayOptions discrete; // texture size, flood plan, threads for G1-G6 and C3
     /// Runs G1-G6 instead of discreteDelaunay() (e.g. the GL backend); empty = CPU backend.
     std::function<DiscreteDelaunay(const std::vector<glm::dvec2>&, const DiscreteDelaunayOptions&)>
         discreteBackend;
@@ -43,14 +43,16 @@ struct CpuTimings {
 
 /// Counts the CPU steps report (what `floodlight delaunay` prints).
 struct CpuCounts {
-    std::size_t hullTriangles = 0;   // C1: triangles added to close the hull
-    std::size_t goodShifts = 0;      // C2: sites moved without a local repair
-    std::size_t badShifts = 0;       // C2: sites whose move needed a repair (cases of Fig. 6.9)
-    std::size_t missingInserted = 0; // C3
-    std::size_t insertFlips = 0;     // C3: Lawson flips around the inserted sites
-    std::size_t walkSteps = 0;       // C3: triangles its point-location walks visited
-    std::size_t duplicates = 0;      // input points equal to an earlier point (not inserted)
-    std::size_t flips = 0;           // C4
+    std::size_t hullTriangles = 0;     // C1: triangles added to close the hull
+    std::size_t goodShifts = 0;        // C2: sites moved without a local repair
+    std::size_t badShifts = 0;         // C2: sites whose move needed a repair (cases of Fig. 6.9)
+    std::size_t missingInserted = 0;   // C3
+    std::size_t insertFlips = 0;       // C3: Lawson flips around the inserted sites
+    std::size_t walkSteps = 0;         // C3: triangles its point-location walks visited
+    std::size_t sequentialInserts = 0; // C3: sites inserted one by one (the rest by the threads'
+                                       // strips: none with one thread or few sites)
+    std::size_t duplicates = 0;        // input points equal to an earlier point (not inserted)
+    std::size_t flips = 0;             // C4
     std::size_t rebuilds = 0; // 1 when T' + C1 was no triangulation of S' (too few or collinear
                               // pixels, a broken T'), or C2 would have emptied the mesh: the
                               // CPU steps then fell back to incremental Delaunay insertion
