@@ -144,14 +144,6 @@ std::vector<Tri> readTriangles(const std::string& path) {
     return tris;
 }
 
-// The texture side for n points: `floodlight delaunay`'s default for the CPU backend
-// (app/src/DelaunaySteps.h), the smallest power of two with N^2 >= n, in 256..8192.
-int autoTexture(std::size_t n) {
-    int size = 256;
-    while (size < 8192 && double(size) * double(size) < double(n)) size *= 2;
-    return size;
-}
-
 struct ChildOptions {
     std::string side, dist, trianglesOut;
     std::size_t n = 0;
@@ -181,8 +173,9 @@ int runChild(const ChildOptions& o) {
         writeTriangles(o.trianglesOut, canonical(std::move(tris)));
     } else if (o.side == "ours") {
         fl::geom::DelaunayOptions opt;
-        opt.discrete.size = o.texture > 0 ? o.texture : autoTexture(points.size());
         opt.discrete.threads = o.threads;
+        // `floodlight delaunay`'s default for the CPU backend.
+        opt.discrete.size = o.texture > 0 ? o.texture : fl::geom::kCpuDefaultTexture;
         DelaunayResult r;
         for (int run = 0; run < o.runs; ++run) {
             r = {}; // or the peak RSS would hold the previous run's result next to this one
@@ -287,7 +280,7 @@ void writeRows(const std::string& d, int texture, const ChildRun& base, const Ch
                bool noCheck, std::ostream& table, std::ostream& steps) {
     const double points = base.ok ? base.values.at("n").front() : std::nan("");
     const Values& o = ours.values;
-    const double side = texture > 0 ? texture : autoTexture(std::size_t(points));
+    const double side = texture > 0 ? texture : fl::geom::kCpuDefaultTexture;
     auto perPoint = [&](const ChildRun& r) {
         return r.ok ? (r.maxRssBytes - base.maxRssBytes) / points : std::nan("");
     };

@@ -72,6 +72,14 @@ struct DelaunayResult {
     std::vector<std::vector<std::uint32_t>> stages;
 };
 
+/// The CPU backend's default texture side (issue 31; bench/delaunay_bench, docs/BENCHMARKS.md
+/// "Two cores in C1-C4"). On the CPU a texel costs the G-steps about 1 us, and a site that keeps
+/// its pixel costs G6, C1 and C2 more than C3 saves by not inserting it, so at 1M points the
+/// smallest side was the fastest (or level) for uniform and Gaussian points alike, although 93 %
+/// and 97 % of their sites lose their pixel there: on this backend the texture does not need to
+/// follow the distribution. 256 still gives T' enough sites to certify and start from.
+inline constexpr int kCpuDefaultTexture = 256;
+
 /// Runs G1-G6 and C1-C4 on `points`. Throws std::invalid_argument for fewer than 3 distinct
 /// points, all points collinear, a non-finite coordinate (the message names the point), more
 /// than kMaxDiscreteSites points, or bad discrete options; std::runtime_error if `check` finds
