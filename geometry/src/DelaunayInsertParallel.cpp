@@ -36,6 +36,11 @@ namespace fl::geom::detail {
 
 using glm::dvec2;
 
+// A walk in a strip longer than this gives up (the sequential pass has no limit but the scan).
+constexpr std::size_t kStripWalkLimit = 512;
+// Sites a strip tries before it may give up for too many failures.
+constexpr std::size_t kStripTrial = 256;
+
 class RegionInserter {
   public:
     RegionInserter(WorkMesh& mesh, const std::vector<std::uint8_t>& regionOf, std::uint8_t region,
@@ -68,7 +73,7 @@ class RegionInserter {
         std::uint32_t t = m_.vertexEdge[from] / 3;
         const dvec2 q = m_.points[v];
         // A walk (WorkMesh::locate's) that gives up when it leaves the strip's triangles.
-        for (std::size_t step = 1; step <= 4096; ++step) {
+        for (std::size_t step = 1; step <= kStripWalkLimit; ++step) {
             if (!ownsTriangle(t)) return false;
             ++steps_;
             random_ ^= random_ << 13;
@@ -261,7 +266,15 @@ std::vector<std::uint32_t> insertInStrips(WorkMesh& mesh, const std::vector<std:
         for (int r = begin; r < end; ++r) {
             RegionInserter& inserter = inserters[std::size_t(r)];
             std::uint32_t previous = kNoHalfedge;
+            std::size_t tried = 0, failed = 0;
             for (const std::uint32_t k : items[std::size_t(r)]) {
+                // A strip where most sites need other strips' triangles (long triangles across
+                // the borders, e.g. collinear input) gives up: every failed walk is wasted work.
+                if (tried >= kStripTrial && 2 * failed > tried) {
+                    left[std::size_t(r)].push_back(k);
+                    continue;
+                }
+                ++tried;
                 const std::uint32_t i = order[k], t = sites[i], s = near[i];
                 const dvec2 q = mesh.points[t];
                 // As insertSites: from the previous site or the keeper, whichever is nearer.
@@ -271,10 +284,12 @@ std::vector<std::uint32_t> insertInStrips(WorkMesh& mesh, const std::vector<std:
                      distance2(mesh.points[s], q) < distance2(mesh.points[from], q)))
                     from = s;
                 if (inserter.tryInsert(t, from) ||
-                    (from != previous && inserter.tryInsert(t, previous)))
+                    (from != previous && inserter.tryInsert(t, previous))) {
                     previous = t;
-                else
+                } else {
                     left[std::size_t(r)].push_back(k);
+                    ++failed;
+                }
             }
         }
     });
