@@ -190,7 +190,8 @@ int runChild(const ChildOptions& o) {
         }
         res << " texture=" << opt.discrete.size << " missing=" << r.discrete.missing().size()
             << " flips=" << r.counts.flips + r.counts.insertFlips
-            << " badshifts=" << r.counts.badShifts << " triangles=" << r.mesh.triangleCount();
+            << " badshifts=" << r.counts.badShifts << " sequential=" << r.counts.sequentialInserts
+            << " triangles=" << r.mesh.triangleCount();
         if (o.check) res << " checkok=" << (fl::geom::checkTriangulation(r.mesh).ok() ? 1 : 0);
         writeTriangles(o.trianglesOut, canonical(ourTriangles(r.mesh)));
     }
