@@ -145,9 +145,9 @@ std::vector<Tri> readTriangles(const std::string& path) {
     return tris;
 }
 
-// The texture side for n points: `floodlight delaunay`'s default for the CPU backend
-// (app/src/DelaunaySteps.h), the smallest power of two with N^2 >= n, in 256..8192.
-int autoTexture(std::size_t n) {
+// The GL lane's texture side for n points: the smallest power of two with N^2 >= n, in
+// 256..8192.
+int autoGlTexture(std::size_t n) {
     int size = 256;
     while (size < 8192 && double(size) * double(size) < double(n)) size *= 2;
     return size;
@@ -182,8 +182,12 @@ int runChild(const ChildOptions& o) {
         writeTriangles(o.trianglesOut, canonical(std::move(tris)));
     } else if (o.side == "ours") {
         fl::geom::DelaunayOptions opt;
-        opt.discrete.size = o.texture > 0 ? o.texture : autoTexture(points.size());
         opt.discrete.threads = o.threads;
+        // The CPU backend's default is `floodlight delaunay`'s; the GL lane keeps N^2 >= n
+        // (1024 at 1M), the size its numbers in docs/BENCHMARKS.md were measured at.
+        opt.discrete.size = o.texture > 0       ? o.texture
+                            : o.backend == "gl" ? autoGlTexture(points.size())
+                                                : fl::geom::kCpuDefaultTexture;
         // GL: context, shaders and programs are made once, before the first run's clock starts
         // (as `floodlight delaunay --backend gl` does).
         struct Gl {
@@ -218,7 +222,8 @@ int runChild(const ChildOptions& o) {
         }
         res << " texture=" << opt.discrete.size << " missing=" << r.discrete.missing().size()
             << " flips=" << r.counts.flips + r.counts.insertFlips
-            << " badshifts=" << r.counts.badShifts << " triangles=" << r.mesh.triangleCount();
+            << " badshifts=" << r.counts.badShifts << " sequential=" << r.counts.sequentialInserts
+            << " triangles=" << r.mesh.triangleCount();
         if (o.check) res << " checkok=" << (fl::geom::checkTriangulation(r.mesh).ok() ? 1 : 0);
         writeTriangles(o.trianglesOut, canonical(ourTriangles(r.mesh)));
     }
@@ -308,7 +313,10 @@ void writeRows(const std::string& d, int texture, const ChildRun& base, const Ch
                bool noCheck, std::ostream& table, std::ostream& steps) {
     const double points = base.ok ? base.values.at("n").front() : std::nan("");
     const Values& o = ours.values;
-    const double side = texture > 0 ? texture : autoTexture(std::size_t(points));
+    // The side the child ran at (its backend's default without --texture).
+    const double side = ours.ok && o.count("texture") ? o.at("texture").front()
+                        : texture > 0                 ? texture
+                                                      : fl::geom::kCpuDefaultTexture;
     auto perPoint = [&](const ChildRun& r) {
         return r.ok ? (r.maxRssBytes - base.maxRssBytes) / points : std::nan("");
     };

@@ -261,7 +261,8 @@ int runDelaunay(const DelaunayCliOptions& o) {
 } // namespace
 
 int defaultTextureSize(std::size_t points, bool glBackend) {
-    const double texels = (glBackend ? kTexelsPerSiteGl : kTexelsPerSiteCpu) * double(points);
+    if (!glBackend) return geom::kCpuDefaultTexture;
+    const double texels = kTexelsPerSiteGl * double(points);
     int n = kMinAutoTexture;
     while (n < kMaxAutoTexture && double(n) * double(n) < texels) n *= 2;
     return n;
@@ -278,12 +279,12 @@ Runner addDelaunayCommand(CLI::App& app) {
                         std::to_string(kBinaryInputLimitMiB) + " MiB)")
         ->required();
     cmd->add_option("--texture", o->texture,
-                    "Texture side N for G1-G6 (default: the smallest power of two with N^2 >= "
-                    "K x points, in " +
+                    "Texture side N for G1-G6 (default, gl: the smallest power of two with N^2 "
+                    ">= " +
+                        std::to_string(int(kTexelsPerSiteGl)) + " x points, in " +
                         std::to_string(kMinAutoTexture) + ".." + std::to_string(kMaxAutoTexture) +
-                        "; K = " + std::to_string(int(kTexelsPerSiteCpu)) +
-                        " for cpu (measured), " + std::to_string(int(kTexelsPerSiteGl)) +
-                        " for gl (thesis 6.5))")
+                        " (thesis 6.5); cpu: " + std::to_string(geom::kCpuDefaultTexture) +
+                        " (measured))")
         ->check(integer(2, geom::kMaxDiscreteSize));
     cmd->add_option("--backend", o->backend, "G1-G6 on cpu or gl (needs a GL 4.5 context)")
         ->check(CLI::IsMember({"cpu", "gl"}))

@@ -15,26 +15,25 @@ namespace fl::app {
 /// point and edge is an SVG element, and beyond ~20k a browser shows a grey blob, slowly.
 inline constexpr std::size_t kMaxPicturePoints = 20000;
 
-/// The default texture side N is the smallest power of two with N^2 >= (texels per site) * points,
-/// clamped to [kMinAutoTexture, kMaxAutoTexture]; texels per site depend on the backend:
+/// The default texture side N depends on the backend:
 ///
-/// - GL (kTexelsPerSiteGl = 7): the thesis' crossover. A larger texture makes T' closer to the
-///   Delaunay triangulation (fewer missing sites for C3, fewer flips for C4) while the GPU steps
-///   stay nearly constant in time; §6.5 (Figs. 6.13, 6.16) finds the best size growing with the
-///   site count and switches from 2048^2 to 4096^2 at ~600k sites, i.e. at ~7 texels per site
-///   on the smaller texture.
-/// - CPU (kTexelsPerSiteCpu = 1): measured with bench/delaunay_bench. On the CPU the flood of G2
-///   costs ~N^2 log N and outgrows what a larger texture saves in C1-C4 above ~1 texel per site:
-///   the fastest sides were 256 for 10k uniform/Gaussian points, 512 for 100k and 1024 for 1M.
+/// - GL: the smallest power of two with N^2 >= kTexelsPerSiteGl * points, clamped to
+///   [kMinAutoTexture, kMaxAutoTexture]. 7 texels per site is the thesis' crossover: a larger
+///   texture makes T' closer to the Delaunay triangulation (fewer missing sites for C3, fewer
+///   flips for C4) while the GPU steps stay nearly constant in time; §6.5 (Figs. 6.13, 6.16)
+///   finds the best size growing with the site count and switches from 2048^2 to 4096^2 at
+///   ~600k sites, i.e. at ~7 texels per site on the smaller texture.
+/// - CPU: geom::kCpuDefaultTexture (issue 31): the G-steps cost ~N^2 on the CPU and a site
+///   that keeps its pixel saves C3 less than it costs the other steps, so the smallest side
+///   wins for uniform and clustered points alike.
 ///
 /// 256 keeps tiny inputs from snapping onto a handful of pixels; 8192 is the largest texture the
 /// pipeline takes (geom::kMaxDiscreteSize).
 inline constexpr double kTexelsPerSiteGl = 7.0;
-inline constexpr double kTexelsPerSiteCpu = 1.0;
 inline constexpr int kMinAutoTexture = 256;
 inline constexpr int kMaxAutoTexture = 8192;
 
-/// The texture side `floodlight delaunay` uses for `points` points without --texture.
+/// The texture side `floodlight delaunay` uses for `points` without --texture.
 int defaultTextureSize(std::size_t points, bool glBackend);
 
 /// Writes 01_sites.svg ... 09_flipped.svg into `dir` (created if needed) from a result computed

@@ -319,7 +319,8 @@ DelaunayResult delaunay(const std::vector<dvec2>& points, const DelaunayOptions&
         toInsert.insert(toInsert.end(), num.missing.begin(), num.missing.end());
         near.insert(near.end(), num.keeper.begin(), num.keeper.end());
         const std::size_t steps0 = mesh.walkSteps, flips0 = mesh.insertFlips;
-        detail::insertSites(mesh, toInsert, near);
+        r.counts.sequentialInserts =
+            detail::insertSites(mesh, toInsert, near, options.discrete.threads);
         r.counts.walkSteps = mesh.walkSteps - steps0;
         r.counts.insertFlips = mesh.insertFlips - flips0;
         r.counts.missingInserted = num.missing.size();

@@ -11,20 +11,20 @@
 // ever thinner triangles and C4 had to undo them with cascades of flips.
 #include "DelaunaySteps.h"
 
+#include <base/Parallel.h>
+
 #include <stdexcept>
 #include <string>
 
 namespace fl::geom::detail {
 
-void insertSites(WorkMesh& mesh, const std::vector<std::uint32_t>& sites,
-                 const std::vector<std::uint32_t>& near) {
-    std::vector<std::uint32_t> order(sites.size());
-    for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
-    {
-        std::vector<glm::dvec2> at(sites.size());
-        for (std::size_t i = 0; i < sites.size(); ++i) at[i] = mesh.points[sites[i]];
-        insertionOrder(at, order);
-    }
+namespace {
+
+// The sequential insertion of sites[i] for i in `order`, each walk from the previously inserted
+// site or from near[i] (the site that kept its pixel), whichever is nearer.
+void insertInOrder(WorkMesh& mesh, const std::vector<std::uint32_t>& sites,
+                   const std::vector<std::uint32_t>& near,
+                   const std::vector<std::uint32_t>& order) {
     const auto distance2 = [](glm::dvec2 a, glm::dvec2 b) {
         const glm::dvec2 d = a - b;
         return d.x * d.x + d.y * d.y;
@@ -49,6 +49,24 @@ void insertSites(WorkMesh& mesh, const std::vector<std::uint32_t>& sites,
         mesh.insert(t, where, true);
         previous = t;
     }
+}
+
+} // namespace
+
+std::size_t insertSites(WorkMesh& mesh, const std::vector<std::uint32_t>& sites,
+                        const std::vector<std::uint32_t>& near, int threads) {
+    std::vector<std::uint32_t> order(sites.size());
+    for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+    {
+        std::vector<glm::dvec2> at(sites.size());
+        for (std::size_t i = 0; i < sites.size(); ++i) at[i] = mesh.points[sites[i]];
+        insertionOrder(at, order);
+    }
+    // Below a few thousand sites a thread costs more than it saves.
+    if (bandCount(int(sites.size()), threads) > 1 && sites.size() >= kMinParallelInsert)
+        order = insertInStrips(mesh, sites, near, order, threads);
+    insertInOrder(mesh, sites, near, order);
+    return order.size();
 }
 
 void rebuild(WorkMesh& mesh, const std::vector<std::uint32_t>& sites) {

@@ -116,6 +116,10 @@ class WorkMesh {
     std::size_t makeDelaunay();
 
   private:
+    // C3's parallel batches edit the arrays directly, each thread in its own region
+    // (DelaunayInsertParallel.cpp): they need the slot list and the counters.
+    friend class RegionInserter;
+
     std::uint32_t addTriangle(std::uint32_t a, std::uint32_t b, std::uint32_t c);
     void freeTriangle(std::uint32_t t);
     void link(std::uint32_t a, std::uint32_t b);

@@ -36,8 +36,23 @@ ShiftStats shiftSites(WorkMesh& mesh, const std::vector<glm::dvec2>& targets,
 /// C3: inserts each site of `sites` at mesh.points[site] by the incremental Delaunay algorithm
 /// (Lawson flips around each new site), in insertionOrder(); each locate walk starts at the
 /// previously inserted site or at `near[i]` (the site that kept its pixel), whichever is nearer.
-void insertSites(WorkMesh& mesh, const std::vector<std::uint32_t>& sites,
-                 const std::vector<std::uint32_t>& near);
+/// With more than one of `threads` (0 = all) and at least kMinParallelInsert sites, the strips of
+/// insertInStrips() go first and the sites they leave follow one by one. Returns the number of
+/// sites inserted one by one.
+std::size_t insertSites(WorkMesh& mesh, const std::vector<std::uint32_t>& sites,
+                        const std::vector<std::uint32_t>& near, int threads = 1);
+
+/// Fewest sites for which C3 uses threads.
+inline constexpr std::size_t kMinParallelInsert = 4096;
+
+/// C3's parallel part (DelaunayInsertParallel.cpp): one strip of the sites per thread, each
+/// inserted by its thread as insertSites does, as long as it needs only triangles whose vertices
+/// all lie in its strip. Returns the indices (into sites) left for the sequential pass, in the
+/// order of `order` (an insertionOrder() of all indices). The mesh stays a triangulation, locally
+/// Delaunay except maybe along the strips' borders.
+std::vector<std::uint32_t> insertInStrips(WorkMesh& mesh, const std::vector<std::uint32_t>& sites,
+                                          const std::vector<std::uint32_t>& near,
+                                          const std::vector<std::uint32_t>& order, int threads);
 
 /// Reorders `order` (indices into points, distinct positions) into a biased randomized
 /// insertion order whose rounds follow a Hilbert curve: short walks, linear expected work.

@@ -23,7 +23,7 @@ namespace fl::geom {
 
 /// How delaunay() runs.
 struct DelaunayOptions {
-    DiscreteDelaunayOptions discrete; // texture size, flood plan, threads for G1-G6
+    DiscreteDelaunayOptions discrete; // texture size, flood plan, threads for G1-G6 and C3
     /// Runs G1-G6 instead of discreteDelaunay() (e.g. the GL backend); empty = CPU backend.
     std::function<DiscreteDelaunay(const std::vector<glm::dvec2>&, const DiscreteDelaunayOptions&)>
         discreteBackend;
@@ -43,14 +43,16 @@ struct CpuTimings {
 
 /// Counts the CPU steps report (what `floodlight delaunay` prints).
 struct CpuCounts {
-    std::size_t hullTriangles = 0;   // C1: triangles added to close the hull
-    std::size_t goodShifts = 0;      // C2: sites moved without a local repair
-    std::size_t badShifts = 0;       // C2: sites whose move needed a repair (cases of Fig. 6.9)
-    std::size_t missingInserted = 0; // C3
-    std::size_t insertFlips = 0;     // C3: Lawson flips around the inserted sites
-    std::size_t walkSteps = 0;       // C3: triangles its point-location walks visited
-    std::size_t duplicates = 0;      // input points equal to an earlier point (not inserted)
-    std::size_t flips = 0;           // C4
+    std::size_t hullTriangles = 0;     // C1: triangles added to close the hull
+    std::size_t goodShifts = 0;        // C2: sites moved without a local repair
+    std::size_t badShifts = 0;         // C2: sites whose move needed a repair (cases of Fig. 6.9)
+    std::size_t missingInserted = 0;   // C3
+    std::size_t insertFlips = 0;       // C3: Lawson flips around the inserted sites
+    std::size_t walkSteps = 0;         // C3: triangles its point-location walks visited
+    std::size_t sequentialInserts = 0; // C3: sites inserted one by one (the rest by the threads'
+                                       // strips: none with one thread or few sites)
+    std::size_t duplicates = 0;        // input points equal to an earlier point (not inserted)
+    std::size_t flips = 0;             // C4
     std::size_t rebuilds = 0; // 1 when T' + C1 was no triangulation of S' (too few or collinear
                               // pixels, a broken T'), or C2 would have emptied the mesh: the
                               // CPU steps then fell back to incremental Delaunay insertion
@@ -69,6 +71,14 @@ struct DelaunayResult {
     /// With keepStages: the triangle lists after T' (on pixel positions), C1, C2, C3 and C4.
     std::vector<std::vector<std::uint32_t>> stages;
 };
+
+/// The CPU backend's default texture side (issue 31; bench/delaunay_bench, docs/BENCHMARKS.md
+/// "Two cores in C1-C4"). On the CPU a texel costs the G-steps about 1 us, and a site that keeps
+/// its pixel costs G6, C1 and C2 more than C3 saves by not inserting it, so at 1M points the
+/// smallest side was the fastest (or level) for uniform and Gaussian points alike, although 93 %
+/// and 97 % of their sites lose their pixel there: on this backend the texture does not need to
+/// follow the distribution. 256 still gives T' enough sites to certify and start from.
+inline constexpr int kCpuDefaultTexture = 256;
 
 /// Runs G1-G6 and C1-C4 on `points`. Throws std::invalid_argument for fewer than 3 distinct
 /// points, all points collinear, a non-finite coordinate (the message names the point), more
