@@ -1,5 +1,6 @@
 #include "LightLookup.h"
 
+#include <renderer/soft/OccluderEdge.h>
 #include <renderer/soft/PenumbraCriterion.h>
 
 #include <stdexcept>
@@ -21,7 +22,8 @@ void LightLookup::resize(int width, int height) {
     fbo_ = gl::Framebuffer::forColor(visibility_, "light-space lookup");
 }
 
-const gl::Texture& LightLookup::execute(const FrameInputs& in, const gl::Texture* penumbraMap) {
+const gl::Texture& LightLookup::execute(const FrameInputs& in, const gl::Texture* penumbraMap,
+                                        bool bothSides) {
     if (penumbra_ && penumbraMap == nullptr)
         throw std::logic_error("LightLookup: the penumbra lookup needs a penumbra map");
     resize(in.width(), in.height());
@@ -32,6 +34,8 @@ const gl::Texture& LightLookup::execute(const FrameInputs& in, const gl::Texture
     in.surfaces.positions().bind(program_, 2);
     if (penumbra_) {
         setDiskLightUniforms(program_, in.disk);
+        program_.set("uPenumbraBoth", bothSides ? 1 : 0);
+        program_.set("uSilhouetteThreshold", silhouetteThreshold(in.sceneBounds.radius()));
         glBindTextureUnit(3, penumbraMap->id());
         in.shadow.receivers->bind(program_, 4); // the packed cells' occluders
     }

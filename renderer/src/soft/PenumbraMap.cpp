@@ -147,6 +147,7 @@ PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, gl::PassTime
     criterion.light = in.light;
     criterion.map = in.receivers;
     criterion.reachBound = in.reach;
+    criterion.umbraDepth = in.umbraDepth;
     kernel_.setRegion(in.settings.region, tile);
     kernel_.setViewTiles(limited ? &viewTiles_ : nullptr);
     PenumbraSettings settings = in.settings;
