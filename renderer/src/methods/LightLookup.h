@@ -23,6 +23,7 @@ class LightLookup {
   private:
     bool penumbra_;
     gl::Program program_;
+    gl::Program bothProgram_; // with `penumbra`: --penumbra both (SOFT_PENUMBRA_BOTH)
     gl::VertexArray emptyVao_;
     gl::Texture visibility_;
     gl::Framebuffer fbo_;
