@@ -165,8 +165,10 @@ PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, gl::PassTime
         if (settings.passes == 0) {
             PenumbraCriterion litSide = criterion;
             litSide.umbraDepth = 0.0f;
-            settings.passes =
-                jfa::passesForReach(kernel_.maxSeedReach(seeds_, litSide), penumbraMaxPasses(size));
+            // The band itself is measured again with the umbra side's rects (keep = false).
+            settings.passes = jfa::passesForReach(
+                kernel_.maxSeedReach(seeds_, litSide, criterion.umbraDepth == 0.0f),
+                penumbraMaxPasses(size));
         }
         // Auto may choose more passes than the region covers (it covers the widest penumbra,
         // rounded up to tiles, not the passes that rounds up to): then once more over the
