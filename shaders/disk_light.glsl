@@ -27,6 +27,27 @@ float penumbraHit(vec3 p, vec3 o) {
     return d2;
 }
 
+// JFA-L's umbra side (--penumbra both; 0 = outer only): the deepest a receiver can lie from the
+// light's plane (fl::PenumbraReach::farDepth). Set by setCriterionUniforms; 0 for JFA-E.
+uniform float uUmbraDepth;
+
+// The key of occluder o at a map texel whose surface r lies no deeper than o, so that it may hide
+// a receiver in o's umbra: penumbraHit of the stand-in receiver on the ray from the disk's centre
+// through r at depth uUmbraDepth, plus radius^2 (ranked after every key of r itself), or -1.
+// Operation by operation fl::umbraSideKey on the CPU.
+float umbraSideKey(vec3 r, vec3 o) {
+    vec3 n = uDiskNormal;
+    vec3 c = uDiskCenter;
+    precise float dr = abs((r.x - c.x) * n.x + (r.y - c.y) * n.y + (r.z - c.z) * n.z);
+    precise float dO = abs((o.x - c.x) * n.x + (o.y - c.y) * n.y + (o.z - c.z) * n.z);
+    if (!(dr <= dO * 1.001) || !(dr > 0.0) || !(uUmbraDepth > dr)) return -1.0;
+    precise float k = uUmbraDepth / dr;
+    precise vec3 p = vec3((r.x - c.x) * k + c.x, (r.y - c.y) * k + c.y, (r.z - c.z) * k + c.z);
+    precise float d2 = penumbraHit(p, o);
+    if (d2 < 0.0) return -1.0;
+    return d2 + uDiskRadius * uDiskRadius;
+}
+
 // Area fraction of the disk beyond a chord at distance t * radius from its centre.
 float segmentFraction(float t) {
     t = clamp(t, 0.0, 1.0);
@@ -109,10 +130,19 @@ bool coneMayHold(vec3 o, vec3 a, float sinHalf, float cosHalf, vec4 lo, vec4 hi)
 // two finer levels below the cells that pass): PenumbraReach::firstCells.
 uniform int uReachCells;
 
-// Whether cell q of `level` may hold a receiver that takes o (coneMayHold on its bounds).
-bool cellMayHold(vec3 o, vec3 a, float sinHalf, float cosHalf, ivec2 q, int level) {
-    return coneMayHold(o, a, sinHalf, cosHalf, texelFetch(uReachLo, q, level),
-                       texelFetch(uReachHi, q, level));
+// Whether a cell whose shallowest receiver lies at depth `lo` may hold a surface that takes o on
+// the umbra side (umbraSideKey: a surface no deeper than o's depth * 1.001; the pyramid's depth
+// may round otherwise than the key's, hence the wider margin).
+bool umbraSideMayHold(float depth, float lo) {
+    return uUmbraDepth > 0.0 && lo <= depth * 1.002;
+}
+
+// Whether cell q of `level` may hold a receiver that takes o (coneMayHold on its bounds, or the
+// umbra side's test).
+bool cellMayHold(vec3 o, float depth, vec3 a, float sinHalf, float cosHalf, ivec2 q, int level) {
+    vec4 lo = texelFetch(uReachLo, q, level);
+    return coneMayHold(o, a, sinHalf, cosHalf, lo, texelFetch(uReachHi, q, level)) ||
+           (lo.x <= texelFetch(uReachHi, q, level).x && umbraSideMayHold(depth, lo.w));
 }
 
 // The cells one level below cell q (.xy first, .zw last) of a level `size` cells wide, the
@@ -132,10 +162,14 @@ ivec4 keepCell(vec3 o, float depth, vec3 a, float sinHalf, float cosHalf, ivec2 
     vec4 cellLo = texelFetch(uReachLo, q, level);
     vec4 cellHi = texelFetch(uReachHi, q, level);
     float deepest = cellHi.w * 1.001 + 1e-4;
-    if (!(deepest > depth) || (test && !coneMayHold(o, a, sinHalf, cosHalf, cellLo, cellHi)))
+    // A surface on the umbra side takes o for its stand-in at uUmbraDepth: the cone down there.
+    bool umbra = cellLo.x <= cellHi.x && umbraSideMayHold(depth, cellLo.w);
+    if (!umbra &&
+        (!(deepest > depth) || (test && !coneMayHold(o, a, sinHalf, cosHalf, cellLo, cellHi))))
         return u;
     int side = 8 << level;
-    ivec4 seg = penumbraSegmentRect(o, depth, cellLo.w * 0.999 - 1e-4, deepest);
+    ivec4 seg = umbra ? penumbraSegmentRect(o, depth, depth, max(deepest, uUmbraDepth))
+                      : penumbraSegmentRect(o, depth, cellLo.w * 0.999 - 1e-4, deepest);
     ivec2 p0 = max(q * side, seg.xy);
     ivec2 p1 = min(mix((q + 1) * side - 1, uReachSize - 1, equal(q, size - 1)), seg.zw);
     if (p0.x > p1.x || p0.y > p1.y) return u;
@@ -155,6 +189,8 @@ ivec4 penumbraRect(vec3 o) {
     float first = uReachLevels == 0
                       ? uReachFarDepth
                       : texelFetch(uReachHi, ivec2(0), uReachLevels - 1).w * 1.001 + 1e-4;
+    // The umbra side's stand-in receivers lie at uUmbraDepth (umbraSideKey).
+    first = max(first, uUmbraDepth);
     ivec4 r = penumbraSegmentRect(o, depth, depth, first);
     vec3 oc = o - uDiskCenter;
     float sinHalf = uDiskRadius * 1.01 / length(oc);
@@ -181,12 +217,12 @@ ivec4 penumbraRect(vec3 o) {
     for (int y0 = c0.y; y0 <= c1.y; ++y0) {
         for (int x0 = c0.x; x0 <= c1.x; ++x0) {
             ivec2 q0 = ivec2(x0, y0);
-            if (!cellMayHold(o, a, sinHalf, cosHalf, q0, level)) continue;
+            if (!cellMayHold(o, depth, a, sinHalf, cosHalf, q0, level)) continue;
             ivec4 k = childCells(q0, level, size0, size1);
             for (int y1 = k.y; y1 <= k.w; ++y1) {
                 for (int x1 = k.x; x1 <= k.z; ++x1) {
                     ivec2 q1 = ivec2(x1, y1);
-                    if (level > 0 && !cellMayHold(o, a, sinHalf, cosHalf, q1, level1)) continue;
+                    if (level > 0 && !cellMayHold(o, depth, a, sinHalf, cosHalf, q1, level1)) continue;
                     ivec4 m = childCells(q1, level1, size1, size2);
                     for (int y2 = m.y; y2 <= m.w; ++y2)
                         for (int x2 = m.x; x2 <= m.z; ++x2)

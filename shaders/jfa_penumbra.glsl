@@ -27,9 +27,13 @@ ivec2 jfaSeedPixel(vec4 c) { return ivec2(-1); }
 
 // A silhouette texel holding its own occluder keeps it (so that later, shorter passes can still
 // pass it on: JFA needs every seed to survive), ranked after every occluder its ray reaches.
+// --penumbra both (uUmbraDepth > 0): where the texel's own surface takes no occluder, the
+// occluders the receiver it may hide would take (umbraSideKey; the own seed too, at that key).
 float penumbraKey(ivec2 p, vec3 receiver, vec4 c) {
     bool own = c.w == mapSeedTag(p, textureSize(uPenumbraPositions, 0).x);
-    return own ? uintBitsToFloat(0x7f7fffffu) : penumbraHit(receiver, c.xyz);
+    float k = own ? -1.0 : penumbraHit(receiver, c.xyz);
+    if (k < 0.0 && uUmbraDepth > 0.0) k = umbraSideKey(receiver, c.xyz);
+    return own && k < 0.0 ? uintBitsToFloat(0x7f7fffffu) : k;
 }
 
 // Band-limited flooding (jfa/Band.h): the widest penumbra the occluder can cast on the map.

@@ -19,7 +19,12 @@ void main() {
         return;
     }
 #ifdef SOFT_PENUMBRA_MAP
-    oVisibility = penumbraMapVisibility(world.xyz);
+#ifdef SOFT_PENUMBRA_BOTH
+    oVisibility =
+        penumbraMapVisibility(world.xyz, surfacePlane(uPenumbraNormals, ivec2(gl_FragCoord.xy)));
+#else
+    oVisibility = penumbraMapVisibility(world.xyz, vec3(0.0)); // outer: the plane is not read
+#endif
 #else
     oVisibility = hardShadow(world.xyz);
 #endif

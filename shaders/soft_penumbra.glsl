@@ -1,15 +1,22 @@
-// JFA-L phase 4 (thesis §5.3.1, "Generating Final Image"): hard-shadowed points get 0; a point
+// JFA-L phase 4 (thesis §5.3.1, "Generating Final Image"): hard-shadowed points get 0 (with
+// --penumbra both, the inner half: the part of the disk their texel's occluder leaves); a point
 // whose penumbra-map texel holds an occluder gets the intensity recomputed here, at the point
 // itself (not the value at the texel, which would make the penumbra blocky where the shadow map
 // is coarse); everything else is lit. Needs shadow_lookup.glsl. The map's cells are packed
 // (jfa_penumbra.glsl): the occluder comes back from the shadow map's receiver target.
 #include "disk_light.glsl"
 #include "shadow_map_decode.glsl"
+#ifdef SOFT_PENUMBRA_BOTH
+#include "occluder_edge.glsl"
+#endif
 
 layout(binding = 3) uniform sampler2D uPenumbraMap;
 layout(binding = 4) uniform sampler2D uPenumbraReceivers; // MapPositions::bind
-
-float penumbraMapVisibility(vec3 world) {
+// --penumbra both (SOFT_PENUMBRA_BOTH): a hard-shadowed point sees the part of the disk past its
+// texel's occluder (the inner half, from 0 deep in the umbra to 0.5 at the hard edge); without it
+// (outer) 0 there, the thesis' lookup unchanged.
+#ifndef SOFT_PENUMBRA_BOTH
+float penumbraMapVisibility(vec3 world, vec3 plane) {
     vec3 uvz;
     if (!shadowCoord(world, uvz)) return 1.0;
     if (texture(uShadowMap, uvz) < 0.5) return 0.0;
@@ -20,3 +27,32 @@ float penumbraMapVisibility(vec3 world) {
     float intensity = occluderIntensity(world, o.xyz, false);
     return intensity < 0.0 ? 1.0 : intensity;
 }
+#else
+uniform float uSilhouetteThreshold; // the silhouette pass's (occluderEdgePoint)
+layout(binding = 5) uniform sampler2D uPenumbraNormals; // SurfacesPass: normals (surfacePlane)
+
+// `plane`: the point's triangle normal, turned to the eye (surfacePlane). A hard-shadowed point
+// whose surface faces away from the light's centre, or whose ray to the occluder enters its own
+// surface, is shadowed by that surface whatever the occluder's edge leaves (the back of a post,
+// a trunk, a cap's underside under their own silhouettes), so it stays 0: such a plane sees at
+// most the sliver of the disk in front of it, nothing once it turns r / distance past grazing.
+float penumbraMapVisibility(vec3 world, vec3 plane) {
+    vec3 uvz;
+    if (!shadowCoord(world, uvz)) return 1.0;
+    bool inside = texture(uShadowMap, uvz) < 0.5;
+    ivec2 size = textureSize(uPenumbraMap, 0);
+    ivec2 t = clamp(ivec2(uvz.xy * vec2(size)), ivec2(0), size - 1);
+    vec4 o = mapSeedCell(uPenumbraReceivers, texelFetch(uPenumbraMap, t, 0).r);
+    float lit = inside ? 0.0 : 1.0; // no occluder, or its ray misses the disk
+    if (o.w == 0.0) return lit;
+    // The occluder's point at the silhouette's edge, not its texel's centre half a texel inside
+    // (occluder_edge.glsl says why; the flood ranks the centres).
+    o.xyz = occluderEdgePoint(uPenumbraReceivers,
+                              mapSeedTexel(o.w, textureSize(uPenumbraReceivers, 0).x),
+                              uSilhouetteThreshold);
+    if (inside && (dot(plane, uDiskCenter - world) <= 0.0 || dot(plane, o.xyz - world) <= 0.0))
+        return 0.0;
+    float intensity = occluderIntensity(world, o.xyz, inside);
+    return intensity < 0.0 ? lit : intensity;
+}
+#endif

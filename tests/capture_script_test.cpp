@@ -205,6 +205,9 @@ TEST(CaptureScript, EveryMalformedFieldIsNamed) {
         {script("", R"([{"method": "hard", "preset": "16/24"}])"), "methods[0].preset"},
         {script("", R"([{"method": "pcf", "passes": 3}])"), "methods[0].passes"},
         {script("", R"([{"method": "pcf", "colour": 3}])"), "methods[0].colour"},
+        // --penumbra: only the methods with a penumbra map, and only outer or both.
+        {script("", R"([{"method": "pcss", "penumbra": "both"}])"), "only jfa-l, flood-l take"},
+        {script("", R"([{"method": "jfa-l", "penumbra": "inner"}])"), "methods[0].penumbra"},
         {script("", R"(["hard", "hard"])"), "methods[1]"},
         {script("", R"([42])"), "methods[0]"},
         {script(R"(, "animation": {"start": -1})"), "animation.start"},
@@ -223,6 +226,18 @@ TEST(CaptureScript, EveryMalformedFieldIsNamed) {
                 << "expected '" << c.field << "' in: " << msg;
         }
     }
+}
+
+// JFA-L's halves of the penumbra as a method row's key (the method-options table's "penumbra").
+TEST(CaptureScript, PenumbraSidesAreAMethodKey) {
+    const CaptureScript s = parse(script(
+        "",
+        R"([{"method": "jfa-l", "penumbra": "outer"}, {"method": "flood-l", "penumbra": "both"}])"));
+    ASSERT_EQ(s.methods.size(), 2u);
+    EXPECT_EQ(s.methods[0].options.text(penumbraSidesOption()), "outer");
+    EXPECT_EQ(s.methods[0].label, "jfa-l:outer");
+    EXPECT_TRUE(penumbraBothSides(s.methods[1].options));
+    EXPECT_TRUE(penumbraBothSides(parse(script()).methods[1].options)) << "the default";
 }
 
 TEST(CaptureScript, AnimationClip) {

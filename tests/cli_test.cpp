@@ -82,6 +82,33 @@ TEST(Cli, TsmStabilityStepsOutOfRangeAreOneUsageError) {
         << uniform.output;
 }
 
+// --penumbra (jfa-l, flood-l: which halves of the penumbra) on a method without a penumbra map is
+// one usage error naming the option and the methods that take it; a value other than outer or
+// both is one too; jfa-l takes both values.
+TEST(Cli, PenumbraSidesOnlyWithAPenumbraMap) {
+    const std::string small = "render --width 16 --height 16 --shadow-map-size 64 ";
+    for (const char* method : {"pcss", "jfa-e"})
+        for (const char* value : {"both", "outer"}) {
+            const Outcome r = run(small + "--method " + method + " --penumbra " + value +
+                                  " --out " + outputDir("cli").string() + " --name sides");
+            EXPECT_EQ(r.code, 2) << method << " " << value << "\n" << r.output;
+            EXPECT_NE(r.output.find("--penumbra: method " + std::string(method) +
+                                    " does not take it (only jfa-l, flood-l do)"),
+                      std::string::npos)
+                << r.output;
+        }
+    const Outcome bad = run(small + "--method jfa-l --penumbra inner --out " +
+                            outputDir("cli").string() + " --name sides");
+    EXPECT_EQ(bad.code, 2) << bad.output;
+    EXPECT_NE(bad.output.find("--penumbra"), std::string::npos) << bad.output;
+    EXPECT_NE(bad.output.find("must be one of outer,both"), std::string::npos) << bad.output;
+    for (const char* value : {"both", "outer"}) {
+        const Outcome ok = run(small + "--method jfa-l --penumbra " + std::string(value) +
+                               " --out " + outputDir("cli").string() + " --name sides");
+        EXPECT_EQ(ok.code, 0) << value << "\n" << ok.output;
+    }
+}
+
 TEST(Cli, BadCameraIsAnInputError) {
     const Outcome r =
         run("render --camera 7 --width 32 --height 32 --out " + outputDir("cli").string());

@@ -212,6 +212,7 @@ TEST_F(OverlayTest, FloodPassesMatchTruncatedCpuPlan) {
     PenumbraCriterion crit;
     crit.light = s.renderer->disk();
     crit.receivers = &receivers;
+    crit.umbraDepth = s.flood().umbraDepth; // --penumbra both (the default): the umbra side
     const jfa::Grid seeds = readFloodGrid(s.flood(), *s.flood().seeds);
     const jfa::Plan full = penumbraPlan(s.penumbraSettings(), kSize);
     for (int k : {0, 1, 3, -1}) {
@@ -261,6 +262,7 @@ TEST_F(OverlayTest, JfaVsFloodMaskIsTheCpuComparison) {
     PenumbraCriterion crit;
     crit.light = s.renderer->disk();
     crit.receivers = &receivers;
+    crit.umbraDepth = s.flood().umbraDepth; // --penumbra both (the default): the umbra side
     PenumbraSettings ps = s.penumbraSettings();
     ps.standardFlooding = true;
     const jfa::Grid flood =

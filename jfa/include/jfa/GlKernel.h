@@ -129,6 +129,8 @@ class GlFloodKernelBase {
     void measureReach(const gl::Texture& seeds);
     /// The largest seed reach step A found (reads it back); -1 without seeds.
     long long readMaxReach() const;
+    /// Drops step A's result, so that the next band is measured again.
+    void forgetReach() { measuredSeeds_ = 0; }
     /// Whether the criterion can bound a seed's reach (a Reaching criterion).
     bool criterionBounds_ = false;
 
@@ -258,11 +260,14 @@ class GlFloodKernel : public GlFloodKernelBase {
 
     /// Band step A: the largest reach of any seed under `criterion` (what a pass count must
     /// cover), -1 without seeds, kUnboundedReach-ish (2^30 - 1) when unbounded. Reads one value
-    /// back; the next run() on the same seeds reuses the step.
-    long long maxSeedReach(const gl::Texture& seeds, const C& criterion) {
+    /// back; the next run() on the same seeds reuses the step, unless `keep` is false (the count
+    /// was measured under another criterion than the flood's: prepareBand / run measure again).
+    long long maxSeedReach(const gl::Texture& seeds, const C& criterion, bool keep = true) {
         for (const gl::Program* p : criterionPrograms(true)) setCriterionUniforms(*p, criterion);
         measureReach(seeds);
-        return readMaxReach();
+        const long long reach = readMaxReach();
+        if (!keep) forgetReach();
+        return reach;
     }
 
     /// Builds the band for `plan` on `seeds` now (steps A-C, no read-back), so that it can be

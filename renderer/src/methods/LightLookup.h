@@ -15,12 +15,15 @@ class LightLookup {
     /// `penumbra`: look up a penumbra map (SOFT_PENUMBRA_MAP) instead of the hard test.
     LightLookup(const gl::ShaderLibrary& shaders, bool penumbra);
     void resize(int width, int height);
-    /// Visibility per pixel; `penumbraMap` is required when built with `penumbra`.
-    const gl::Texture& execute(const FrameInputs& in, const gl::Texture* penumbraMap = nullptr);
+    /// Visibility per pixel; `penumbraMap` is required when built with `penumbra`; `bothSides`:
+    /// hard-shadowed points take the map's occluder too (--penumbra both).
+    const gl::Texture& execute(const FrameInputs& in, const gl::Texture* penumbraMap = nullptr,
+                               bool bothSides = false);
 
   private:
     bool penumbra_;
     gl::Program program_;
+    gl::Program bothProgram_; // with `penumbra`: --penumbra both (SOFT_PENUMBRA_BOTH)
     gl::VertexArray emptyVao_;
     gl::Texture visibility_;
     gl::Framebuffer fbo_;

@@ -74,6 +74,18 @@ constexpr MethodOption kBandTile{
     {},
     {},
     8};
+constexpr MethodOption kPenumbraSides{
+    "--penumbra",
+    "penumbra",
+    OptionKind::Choice,
+    "both",
+    "Which half of each penumbra the penumbra map holds: both = the lit side and the umbra side "
+    "(a point just inside the hard shadow sees part of the disk, 0.5 at the hard edge); outer = "
+    "the lit side only, as in the thesis (section 5.3: the shadow is dark right from the hard "
+    "edge)",
+    0,
+    0,
+    "outer|both"};
 constexpr MethodOption kNoObjectIdFix{
     "--no-object-id-fix", "noObjectIdFix", OptionKind::Flag, "false",
     "Let occluders flood into the hard shadows of other objects (thesis 5.4.2, first "
@@ -199,7 +211,7 @@ constexpr MethodOption kVsmBleed{"--vsm-bleed",
                                  0.95};
 
 constexpr const MethodOption* kLightFloodOptions[] = {&kPasses, &kFullJfa, &kFloodRegion,
-                                                      &kBandTile};
+                                                      &kBandTile, &kPenumbraSides};
 constexpr const MethodOption* kEyeFloodOptions[] = {
     &kPasses,        &kFullJfa,           &kFloodRegion,    &kBandTile,    &kNoObjectIdFix,
     &kNoMidpointFix, &kBoundaryThreshold, &kOccluderPoints, &kAutoPassRule};
@@ -350,6 +362,14 @@ const MethodOption& floodPassesOption() {
 
 const MethodOption& floodRegionOption() {
     return kFloodRegion;
+}
+
+const MethodOption& penumbraSidesOption() {
+    return kPenumbraSides;
+}
+
+bool penumbraBothSides(const MethodOptions& options) {
+    return options.text(kPenumbraSides) == "both";
 }
 
 int bandTile(const MethodOptions& options) {

@@ -1,5 +1,7 @@
 // jfa-l and flood-l (thesis §5.3): silhouettes of the shadow map flooded into a penumbra map
-// (PenumbraMapPass), then each pixel's intensity from the occluder at its texel (LightLookup).
+// (PenumbraMapPass), then each pixel's intensity from the occluder at its texel (LightLookup);
+// with --penumbra both (the default) on both sides of the hard shadow's edge, the thesis' lit
+// side only with outer.
 
 #include "LightLookup.h"
 
@@ -40,6 +42,10 @@ class PenumbraMethod final : public ShadowMethod {
         const PenumbraView view{in.surfaces.positions(), in.shadow.lightViewProj, in.shadow.warp};
         PenumbraMapPass::Inputs pi{*in.shadow.receivers, in.disk, ps, threshold, reach, &view};
         if (ps.region == jfa::FloodRegion::View) pi.viewSeedReach = viewSeedReach(in, ps, size);
+        // --penumbra both: a texel whose surface may hide a receiver in an occluder's umbra
+        // ranks occluders for one at the deepest a receiver lies (PenumbraCriterion::umbraDepth).
+        const bool both = penumbraBothSides(in.options);
+        pi.umbraDepth = both ? reach.farDepth : 0.0f;
         const PenumbraMapPass::Outputs pm = pass_.execute(pi, in.timer);
         flood_ = {&pm.seeds,
                   &pm.penumbraMap,
@@ -52,9 +58,10 @@ class PenumbraMethod final : public ShadowMethod {
                   ps.region,
                   reach,
                   &pass_.kernel(),
-                  in.shadow.receivers};
+                  in.shadow.receivers,
+                  pi.umbraDepth};
         if (in.timer) in.timer->begin("penumbra lookup");
-        const gl::Texture& v = lookup_.execute(in, &pm.penumbraMap);
+        const gl::Texture& v = lookup_.execute(in, &pm.penumbraMap, both);
         if (in.timer) in.timer->wrote(gl::textureBytes(v));
         if (in.timer) in.timer->end();
         return v;

@@ -81,6 +81,7 @@ const gl::Texture& floodFrame(State& s, const Renderer& r, const Soft& soft,
     }
     PenumbraCriterion c;
     c.reachBound = soft.reach;
+    c.umbraDepth = soft.umbraDepth;
     s.penumbraKernel.setRegion(soft.region, tile);
     c.light = r.disk();
     c.map = *soft.map;

@@ -59,6 +59,22 @@ float occluderHitDistance2(const DiskLight& light, glm::vec3 p, glm::vec3 o) {
     return d2;
 }
 
+float umbraSideKey(const DiskLight& light, glm::vec3 r, glm::vec3 o, float umbraDepth) {
+    // The order of umbraSideKey() in shaders/disk_light.glsl, operation by operation.
+    const glm::vec3 n = light.normal;
+    const glm::vec3 c = light.center;
+    const float dr = std::abs((r.x - c.x) * n.x + (r.y - c.y) * n.y + (r.z - c.z) * n.z);
+    const float dO = std::abs((o.x - c.x) * n.x + (o.y - c.y) * n.y + (o.z - c.z) * n.z);
+    // Only a surface no deeper than o can hide a receiver under o's occluder; and the stand-in
+    // must lie beyond the surface.
+    if (!(dr <= dO * 1.001f) || !(dr > 0.0f) || !(umbraDepth > dr)) return -1.0f;
+    const float k = umbraDepth / dr;
+    const glm::vec3 p((r.x - c.x) * k + c.x, (r.y - c.y) * k + c.y, (r.z - c.z) * k + c.z);
+    const float d2 = occluderHitDistance2(light, p, o);
+    if (d2 < 0.0f) return -1.0f;
+    return d2 + light.radius * light.radius;
+}
+
 std::optional<float> occluderHit(const DiskLight& light, glm::vec3 p, glm::vec3 o) {
     const float d2 = occluderHitDistance2(light, p, o);
     if (d2 < 0.0f) return std::nullopt;

@@ -11,6 +11,7 @@ void setDiskLightUniforms(const gl::Program& program, const DiskLight& light) {
 void setCriterionUniforms(const gl::Program& program, const PenumbraCriterion& criterion) {
     setDiskLightUniforms(program, criterion.light);
     setPenumbraReachUniforms(program, criterion.reachBound);
+    program.set("uUmbraDepth", criterion.umbraDepth);
     criterion.map.bind(program, 2);
 }
 

@@ -147,6 +147,7 @@ PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, gl::PassTime
     criterion.light = in.light;
     criterion.map = in.receivers;
     criterion.reachBound = in.reach;
+    criterion.umbraDepth = in.umbraDepth;
     kernel_.setRegion(in.settings.region, tile);
     kernel_.setViewTiles(limited ? &viewTiles_ : nullptr);
     PenumbraSettings settings = in.settings;
@@ -156,9 +157,19 @@ PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, gl::PassTime
                           region ? &seedRegion_ : nullptr, tile);
             if (timer) timer->wrote(bounds_.bytes());
         }
-        if (settings.passes == 0) // auto: one value read back (the plan is recorded on the CPU)
-            settings.passes = jfa::passesForReach(kernel_.maxSeedReach(seeds_, criterion),
-                                                  penumbraMaxPasses(size));
+        // auto: one value read back (the plan is recorded on the CPU). The count covers the lit
+        // side's reach on the real receivers (umbraDepth 0): the umbra side's half of a penumbra
+        // on a receiver is as wide as the lit side's on one as deep (a straight edge's penumbra
+        // runs symmetric about the hard edge, segmentFraction from 0 to 1), while its stand-ins lie
+        // at the scene's deepest point, whose cones would ask for a pass more everywhere.
+        if (settings.passes == 0) {
+            PenumbraCriterion litSide = criterion;
+            litSide.umbraDepth = 0.0f;
+            // The band itself is measured again with the umbra side's rects (keep = false).
+            settings.passes = jfa::passesForReach(
+                kernel_.maxSeedReach(seeds_, litSide, criterion.umbraDepth == 0.0f),
+                penumbraMaxPasses(size));
+        }
         // Auto may choose more passes than the region covers (it covers the widest penumbra,
         // rounded up to tiles, not the passes that rounds up to): then once more over the
         // flood's cone, seeds and receivers included (timed within "band").

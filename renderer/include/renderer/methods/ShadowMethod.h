@@ -76,6 +76,7 @@ struct FloodFrame {
     PenumbraReach reach;                              // the criterion's band bound
     const jfa::GlFloodKernelBase* kernel = nullptr;   // ran the flood (activeShare())
     const MapPositions* map = nullptr; // light only: the shadow map's receiver target
+    float umbraDepth = 0.0f; // light only: PenumbraCriterion::umbraDepth (--penumbra both)
 };
 
 /// Reads `frame`'s grids (its seeds, its flood, or an overlay's re-run of it) back as cells. The
@@ -173,6 +174,10 @@ const MethodOption& floodRegionOption();
 jfa::FloodRegion floodRegion(const MethodOptions& options);
 /// --band-tile's value (checked by the flooding rows' check()).
 int bandTile(const MethodOptions& options);
+/// jfa-l's and flood-l's --penumbra: which halves of each penumbra they compute.
+const MethodOption& penumbraSidesOption();
+/// Whether --penumbra is both (the umbra side too) rather than outer (the thesis' lit side).
+bool penumbraBothSides(const MethodOptions& options);
 /// requestedPasses() for --jfa-passes auto: the method chooses per frame (passesForReach).
 inline constexpr int kAutoPasses = 0;
 /// The flood pass count a flooding method's options ask for at this map and frame size (what

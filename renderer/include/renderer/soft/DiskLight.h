@@ -39,6 +39,14 @@ std::optional<float> occluderHit(const DiskLight& light, glm::vec3 p, glm::vec3 
 /// shaders/disk_light.glsl.
 float occluderHitDistance2(const DiskLight& light, glm::vec3 p, glm::vec3 o);
 
+/// JFA-L's umbra side (--penumbra both): the key of occluder o at a shadow-map texel whose surface
+/// r lies no deeper from the light's plane than o (r may hide a receiver in o's umbra): |cq|^2 +
+/// radius^2 for the stand-in receiver on the ray from the disk's centre through r at depth
+/// `umbraDepth` (the deepest a receiver can lie), or -1 for a miss (or a surface deeper than o,
+/// or umbraDepth 0: off). The + radius^2 ranks every such key after every key of r itself
+/// (occluderHitDistance2 < radius^2). Bit-identical to umbraSideKey() in disk_light.glsl.
+float umbraSideKey(const DiskLight& light, glm::vec3 r, glm::vec3 o, float umbraDepth);
+
 /// Visible fraction of the light at p with occluder o (nullopt when the ray misses, see
 /// occluderHit): 1 - segmentFraction(|cq| / r) outside the hard shadow, segmentFraction inside.
 std::optional<float> occluderIntensity(const DiskLight& light, glm::vec3 p, glm::vec3 o,

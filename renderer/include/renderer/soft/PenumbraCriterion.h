@@ -42,6 +42,10 @@ struct PenumbraCriterion {
     const ReceiverGrid* receivers = nullptr; // CPU kernel
     MapPositions map; // GL kernels: the shadow map's receiver target (decoded in the shader)
     PenumbraReach reachBound; // the shadow map's: bounds the band (jfa/Band.h)
+    /// --penumbra both: the deepest a receiver lies (reachBound's farDepth), where a texel whose
+    /// own surface takes no occluder places the receiver it may hide (umbraSideKey); 0: the
+    /// thesis' outer penumbra only.
+    float umbraDepth = 0.0f;
 
     /// Band-limited flooding: the widest penumbra occluder c (seeded at its own texel) can cast.
     [[nodiscard]] jfa::ReachRect reach(int, int, const jfa::Cell& c) const {
@@ -49,13 +53,16 @@ struct PenumbraCriterion {
     }
 
     /// The ranking key of occluder c at receiver r of texel (px, py): |cq|^2 if its ray reaches
-    /// the light, the largest float if c is the seed of this very texel (its w is the texel's
-    /// shadowmap::seedTag: a silhouette texel keeps its own occluder, so JFA's later passes can
-    /// still pass it on), -1 (rejected) otherwise.
+    /// the light; with umbraDepth, else umbraSideKey (the receiver r may hide); the largest float
+    /// if c is the seed of this very texel (its w is the texel's shadowmap::seedTag: a silhouette
+    /// texel keeps its own occluder, so JFA's later passes can still pass it on) and no umbra-side
+    /// key is found; -1 (rejected) otherwise.
     [[nodiscard]] float key(int px, int py, glm::vec3 r, const jfa::Cell& c) const {
-        if (c.w == shadowmap::seedTag(px, py, receivers->width))
-            return std::numeric_limits<float>::max();
-        return occluderHitDistance2(light, r, {c.x, c.y, c.z});
+        const bool own = c.w == shadowmap::seedTag(px, py, receivers->width);
+        const glm::vec3 o(c.x, c.y, c.z);
+        float k = own ? -1.0f : occluderHitDistance2(light, r, o);
+        if (k < 0.0f && umbraDepth > 0.0f) k = umbraSideKey(light, r, o, umbraDepth);
+        return own && k < 0.0f ? std::numeric_limits<float>::max() : k;
     }
     [[nodiscard]] bool empty(const jfa::Cell& c) const { return c.w == 0.0f; }
     [[nodiscard]] bool accepts(int px, int py, const jfa::Cell& c) const {

@@ -79,6 +79,8 @@ class PenumbraMapPass {
         /// widestPenumbraTexels); silhouettes and the bounds pyramid skip the tiles beyond.
         /// -1: the whole map.
         long long viewSeedReach = -1;
+        /// --penumbra both: PenumbraCriterion::umbraDepth (the reach's farDepth); 0: outer only.
+        float umbraDepth = 0.0f;
     };
     struct Outputs {
         const gl::Texture& seeds;       // RGBA32F silhouette seeds (w = 1) or empty cells
