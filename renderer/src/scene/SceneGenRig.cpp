@@ -53,37 +53,39 @@ std::vector<float> keyTimes() {
     return t;
 }
 
+/// A LINEAR channel of `width` floats a key on `node`'s `path`, key k's values from
+/// values(phase of k) appended to the sampler.
+template <typename Values>
+void linearChannel(Animation& a, int node, Animation::Path path, int width, Values values) {
+    Animation::Sampler s;
+    s.interpolation = Animation::Interpolation::Linear;
+    s.times = keyTimes();
+    s.width = width;
+    for (int k = 0; k <= kKeys; ++k) values(phaseOf(k), s.values);
+    a.channels.push_back({node, path, static_cast<int>(a.samplers.size())});
+    a.samplers.push_back(std::move(s));
+}
+
 /// A LINEAR rotation channel about `axis` (x or z, unit) by angle(phase): at phase 0 the angle
 /// must be 0, the rest pose.
 template <typename Angle>
 void rotationChannel(Animation& a, int node, const glm::vec3& axis, Angle angle) {
-    Animation::Sampler s;
-    s.interpolation = Animation::Interpolation::Linear;
-    s.times = keyTimes();
-    s.width = 4;
-    for (int k = 0; k <= kKeys; ++k) {
-        const float half = 0.5f * angle(phaseOf(k));
+    linearChannel(a, node, Animation::Path::Rotation, 4, [&](float phase, std::vector<float>& out) {
+        const float half = 0.5f * angle(phase);
         const float sinHalf = std::sin(half);
-        s.values.insert(s.values.end(),
-                        {axis.x * sinHalf, axis.y * sinHalf, axis.z * sinHalf, std::cos(half)});
-    }
-    a.channels.push_back({node, Animation::Path::Rotation, static_cast<int>(a.samplers.size())});
-    a.samplers.push_back(std::move(s));
+        out.insert(out.end(),
+                   {axis.x * sinHalf, axis.y * sinHalf, axis.z * sinHalf, std::cos(half)});
+    });
 }
 
 /// A LINEAR translation channel: rest + offset(phase), offset(0) = 0.
 template <typename Offset>
 void translationChannel(Animation& a, int node, const glm::vec3& rest, Offset offset) {
-    Animation::Sampler s;
-    s.interpolation = Animation::Interpolation::Linear;
-    s.times = keyTimes();
-    s.width = 3;
-    for (int k = 0; k <= kKeys; ++k) {
-        const glm::vec3 p = rest + offset(phaseOf(k));
-        s.values.insert(s.values.end(), {p.x, p.y, p.z});
-    }
-    a.channels.push_back({node, Animation::Path::Translation, static_cast<int>(a.samplers.size())});
-    a.samplers.push_back(std::move(s));
+    linearChannel(a, node, Animation::Path::Translation, 3,
+                  [&](float phase, std::vector<float>& out) {
+                      const glm::vec3 p = rest + offset(phase);
+                      out.insert(out.end(), {p.x, p.y, p.z});
+                  });
 }
 
 /// Walking in place: each leg swings about the hip (left and right in opposition), each arm
