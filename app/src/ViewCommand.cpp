@@ -7,14 +7,12 @@ namespace fl::app {
 
 int runViewer(const SceneOptions& o, int width, int height, int frames,
               const std::string& screenshot, bool autoMethod) {
-    ViewerOptions v;
-    v.scene = o;
-    v.width = width;
-    v.height = height;
-    v.frames = frames;
-    v.screenshot = screenshot;
-    v.autoMethod = autoMethod;
-    Viewer viewer(v);
+    Viewer viewer({.scene = o,
+                   .width = width,
+                   .height = height,
+                   .frames = frames,
+                   .screenshot = screenshot,
+                   .autoMethod = autoMethod});
     return viewer.run();
 }
 
