@@ -210,15 +210,21 @@ gl_stages::ResultData GlDiscreteDelaunay::Impl::runSteps(const jfa::Plan& plan, 
     return data;
 }
 
+void GlDiscreteDelaunay::Impl::startFromIds(const IdTexture& ids,
+                                            const std::vector<glm::ivec2>& sitePixels,
+                                            const char* what) {
+    checkShape(ids, what);
+    extras = {};
+    resize(ids.width, ids.height);
+    uploadPixels(sitePixels);
+    uploadIds(voronoi, ids);
+    ++extras.uploads;
+}
+
 IslandStats GlDiscreteDelaunay::removeIslands(IdTexture& ids,
                                               const std::vector<glm::ivec2>& pixels) {
-    checkShape(ids, "GL removeIslands");
     Impl& g = *impl_;
-    g.extras = {};
-    g.resize(ids.width, ids.height);
-    g.uploadPixels(pixels);
-    uploadIds(g.voronoi, ids);
-    ++g.extras.uploads;
+    g.startFromIds(ids, pixels, "GL removeIslands");
     g.prepareResult(0, 0, 0, 0);
     g.removeIslands(g.voronoi, 2 * std::max(ids.width, ids.height));
     ids = readIds(g.cleaned);
@@ -231,13 +237,8 @@ IslandStats GlDiscreteDelaunay::removeIslands(IdTexture& ids,
 DiscreteTriangles GlDiscreteDelaunay::buildTriangles(const IdTexture& ids,
                                                      const std::vector<glm::ivec2>& pixels,
                                                      CornerTexture* corners, VertexChain* chain) {
-    checkShape(ids, "GL buildTriangles");
     Impl& g = *impl_;
-    g.extras = {};
-    g.resize(ids.width, ids.height);
-    g.uploadPixels(pixels);
-    uploadIds(g.voronoi, ids);
-    ++g.extras.uploads;
+    g.startFromIds(ids, pixels, "GL buildTriangles");
     // Every corner a vertex, two triangles each: room for anything, so one attempt.
     const std::size_t cornerCount = innerCorners(ids.width, ids.height);
     g.prepareResult(0, 0, cornerCount, 2 * cornerCount);

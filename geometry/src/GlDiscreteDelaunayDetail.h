@@ -91,6 +91,10 @@ struct GlDiscreteDelaunay::Impl {
     /// (Re)allocates the textures for a W x H run; keeps them when the size is unchanged.
     void resize(int w, int h);
     /// Uploads the sites' pixels (the G1, G3 and G6 kernels look sites up by id): one upload.
+    /// A step run alone on a caller's texture: the extras reset, the textures sized, the site
+    /// pixels and the ids uploaded (one upload); `what` names the step in a shape error.
+    void startFromIds(const IdTexture& ids, const std::vector<glm::ivec2>& sitePixels,
+                      const char* what);
     void uploadPixels(const std::vector<glm::ivec2>& pixels);
     /// Lays out and (re)allocates the result buffer and zeroes its header (a clear, no upload).
     void prepareResult(std::size_t sites, std::size_t texels, std::size_t vertexCap,
