@@ -141,6 +141,15 @@ TEST_F(JfaETest, PhasesMatchTheCpuReference) {
         const jfa::Grid gpuSeeds = readFloodGrid(out, *out.seeds);
         ASSERT_EQ(gpuSeeds, cpuSeeds) << "boundary seeds differ";
         EXPECT_GT(nonEmpty(cpuSeeds), 20u);
+        // Phase 3 also decodes each seed's occluder once for the flood and the composite
+        // (eyeSeedOccluder): at every seed pixel, phase 2's occluder and object id, exactly.
+        ASSERT_NE(out.eyeCells->seedOccluders, nullptr);
+        const std::vector<glm::vec4> seedOccluders = readVec4(*out.eyeCells->seedOccluders);
+        ASSERT_EQ(seedOccluders.size(), image.occluders.size());
+        for (std::size_t i = 0; i < cpuSeeds.cells.size(); ++i) {
+            if (cpuSeeds.cells[i].w == 0.0f) continue;
+            ASSERT_TRUE(seedOccluders[i] == image.occluders[i]) << "seed pixel " << i;
+        }
 
         // Phase 4: the flood, exactly (same float operations, `precise` in the shaders).
         EyeSoftCriterion criterion;
