@@ -56,6 +56,12 @@ vec4 eyePoint(ivec2 p) {
     return vec4(surfacePosition(uEyeDepth, f).xyz, w);
 }
 
+// Grid pixel p's surface: xyz its world position, w 1, or vec4(0) without one. eyePoint less
+// the state: one fetch fewer, for a test that needs only "a surface, and where" (the flood's
+// midpoint check, per candidate). Phase 2 writes kEyeBackground exactly where the depth is the
+// background's, so w here is 0 exactly where eyePoint's w is -1.
+vec4 eyeSurface(ivec2 p) { return surfacePosition(uEyeDepth, eyeFramePixel(p)); }
+
 // Grid pixel p's occluder: xyz the point the shadow map's texel gives it (at the silhouette edge
 // where phase 2 found one), w its object id; (0, 0, 0, -1) without a surface or outside the map.
 vec4 eyeOccluder(ivec2 p) {

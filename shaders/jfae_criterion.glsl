@@ -63,8 +63,8 @@ float jfaKey(ivec2 p, vec4 r, vec4 c) {
         if (uObjectIdFix != 0 && r.w == 1.0)
             ok = gOwnOccluderId == eyeSeedOccluder(s).w;
         if (ok && uMidpointFix != 0) {
-            vec4 m = eyePoint((p + s) / 2);
-            ok = m.w >= 0.0 && penumbraHit(m.xyz, c.xyz) >= 0.0;
+            vec4 m = eyeSurface((p + s) / 2);
+            ok = m.w != 0.0 && penumbraHit(m.xyz, c.xyz) >= 0.0;
         }
     }
     return ok ? k : -1.0;
