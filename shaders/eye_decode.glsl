@@ -12,7 +12,8 @@
 // target (occluderEdgeApply), its object id from the light-space id pass at that texel.
 //
 // The textures sit on fixed units, the same in every JFA-E program (fl::EyeCells::bind): units
-// 0, 1 are the flood kernel's grids and 4, 5 the reach bounds (disk_light.glsl).
+// 0, 1 are the flood kernel's grids and 4, 5 the reach bounds (disk_light.glsl); unit 8 holds
+// phase 3's seed occluders (eyeSeedOccluder below).
 layout(binding = 2) uniform usampler2D uEyeCells;
 layout(binding = 3) uniform sampler2D uEyeDepth;     // the surfaces' depth (surface_decode)
 layout(binding = 6) uniform sampler2D uEyeReceivers; // the map's receiver target
@@ -42,15 +43,24 @@ ivec2 eyeFramePixel(ivec2 p) {
 // The map texel a cell's occluder lies at (states kEyeShadowed and kEyeLit only).
 ivec2 eyeCellTexel(uint cell) { return ivec2(int((cell >> 6u) & 8191u), int(cell >> 19u)); }
 
+// Grid pixel p's state (kEyeBackground ... kEyeOutsideMap): one fetch, no point decoded.
+uint eyeState(ivec2 p) { return texelFetch(uEyeCells, eyeFramePixel(p), 0).r & 3u; }
+
 // Grid pixel p's receiver: xyz its world position; w = 1 in hard shadow, 0 lit, 2 lit because
 // outside the shadow map, -1 no surface (xyz 0). fl::eyecell::point on the CPU.
 vec4 eyePoint(ivec2 p) {
     ivec2 f = eyeFramePixel(p);
-    uint state = texelFetch(uEyeCells, f, 0).r & 3u;
+    uint state = eyeState(p);
     if (state == kEyeBackground) return vec4(0.0, 0.0, 0.0, -1.0);
     float w = state == kEyeShadowed ? 1.0 : (state == kEyeLit ? 0.0 : 2.0);
     return vec4(surfacePosition(uEyeDepth, f).xyz, w);
 }
+
+// Grid pixel p's surface: xyz its world position, w 1, or vec4(0) without one. eyePoint less
+// the state: one fetch fewer, for a test that needs only "a surface, and where" (the flood's
+// midpoint check, per candidate). Phase 2 writes kEyeBackground exactly where the depth is the
+// background's, so w here is 0 exactly where eyePoint's w is -1.
+vec4 eyeSurface(ivec2 p) { return surfacePosition(uEyeDepth, eyeFramePixel(p)); }
 
 // Grid pixel p's occluder: xyz the point the shadow map's texel gives it (at the silhouette edge
 // where phase 2 found one), w its object id; (0, 0, 0, -1) without a surface or outside the map.
@@ -62,6 +72,16 @@ vec4 eyeOccluder(ivec2 p) {
     float id = uEyeObjectIds != 0 ? texelFetch(uEyeIds, t, 0).r : -1.0;
     return vec4(occluderEdgeApply(uEyeReceivers, t, (cell >> 2u) & 15u), id);
 }
+
+// Phase 3's occluder per seed pixel (RGBA32F, jfae_boundary.frag.glsl writes eyeOccluder(s) at
+// each seed s; fl::EyeCells::seedOccluders, bound on unit 8 once phase 3 has run). Why a
+// copy of what the cells already say: the flood reads a seed's occluder for each of its 9
+// candidates in every pass, and decoding it (a cell, a map texel unprojected, up to two
+// neighbours for the edge) cost the llvmpipe flood 2.8x; phase 3 decodes each seed once.
+layout(binding = 8) uniform sampler2D uSeedOccluders;
+
+// Seed pixel s's occluder, bit for bit eyeOccluder(s) (s must be a seed of phase 3).
+vec4 eyeSeedOccluder(ivec2 s) { return texelFetch(uSeedOccluders, s, 0); }
 
 // eyeOccluder(p).w alone (the object-ID fix), without decoding the point.
 float eyeOccluderId(ivec2 p) {

@@ -21,10 +21,16 @@ uniform float uRelative2;
 uniform int uListSeeds; // append each seed to the band's seed list (jfa_seed_list.glsl)
 
 layout(location = 0) out float oSeed; // packed: the seed's index + 1, 0 none (jfae_criterion)
+layout(location = 1) out vec4 oOccluder; // the seed's eyeOccluder, decoded once (eyeSeedOccluder)
 
 void main() {
     ivec2 t = ivec2(gl_FragCoord.xy);
     ivec2 size = uEyeGrid;
+    oSeed = 0.0;
+    oOccluder = vec4(0.0);
+    // Only a hard-shadowed pixel can be a seed and only its lit neighbours count, so no other
+    // point is decoded (each is an unprojection of the surfaces' depth, eyePoint).
+    if (eyeState(t) != kEyeShadowed) return;
     vec4 self = eyePoint(t);
     precise vec3 toEye = self.xyz - uEye;
     precise float e2 = toEye.x * toEye.x + toEye.y * toEye.y + toEye.z * toEye.z;
@@ -34,14 +40,15 @@ void main() {
         for (int i = -1; i <= 1; ++i) {
             ivec2 q = t + ivec2(i, j);
             bool inside = all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, size));
-            vec4 n = eyePoint(clamp(q, ivec2(0), size - 1));
+            if (!inside || eyeState(q) != kEyeLit) continue;
+            vec4 n = eyePoint(q);
             precise vec3 d = n.xyz - self.xyz;
             precise float d2 = d.x * d.x + d.y * d.y + d.z * d.z;
-            boundary = boundary || (inside && n.w == 0.0 && d2 < limit2);
+            boundary = boundary || d2 < limit2;
         }
     }
-    float index = float(t.y * size.x + t.x + 1);
-    bool seed = self.w == 1.0 && boundary;
-    oSeed = seed ? index : 0.0;
-    if (seed && uListSeeds != 0) jfaListSeed(t);
+    if (!boundary) return;
+    oSeed = float(t.y * size.x + t.x + 1);
+    oOccluder = eyeOccluder(t);
+    if (uListSeeds != 0) jfaListSeed(t);
 }

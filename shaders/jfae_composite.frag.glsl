@@ -3,7 +3,7 @@
 // the flood is in penumbra; its intensity is recomputed at its own world position with the
 // inside flag (inner penumbrae see the part of the light away from the centre). Otherwise the
 // hard shadow decides: 0 inside, 1 lit (and 1 for background). Same as fl::eyeSoftVisibility.
-// Points and occluders decode from phase 2's packed cells (eye_decode.glsl).
+// Points decode from phase 2's packed cells, seeds' occluders are phase 3's (eye_decode.glsl).
 #include "disk_light.glsl"
 #include "shadow_map_decode.glsl"
 #include "occluder_edge.glsl"
@@ -19,7 +19,7 @@ void main() {
     vec4 r = eyePoint(t);
     float w = texelFetch(uFlooded, t, 0).r;
     vec4 c = vec4(0.0, 0.0, -1.0, w);
-    if (w != 0.0) c.xyz = eyeOccluder(eyeSeedPixel(w)).xyz;
+    if (w != 0.0) c.xyz = eyeSeedOccluder(eyeSeedPixel(w)).xyz;
     bool inside = r.w == 1.0;
     float v = inside ? 0.0 : 1.0;
     if (r.w >= 0.0 && c.w != 0.0) {

@@ -13,7 +13,7 @@
 //    no occluder and the wrong penumbrae the fix is for are inner ones;
 //  - midpoint: the pixel midway between the occluder's boundary pixel and p must be a surface
 //    whose ray through the occluder reaches the light too (it would have a penumbra intensity).
-// Points and occluders decode from phase 2's packed cells (eye_decode.glsl).
+// Points decode from phase 2's packed cells, seeds' occluders are phase 3's (eye_decode.glsl).
 #include "disk_light.glsl"
 #include "shadow_map_decode.glsl"
 #include "occluder_edge.glsl"
@@ -39,7 +39,7 @@ bool jfaAccept(ivec2 p, vec4 c) {
     ivec2 s = seedPixelOf(c);
     bool ok = r.w >= 0.0 && penumbraHit(r.xyz, c.xyz) >= 0.0;
     if (ok && uObjectIdFix != 0 && r.w == 1.0)
-        ok = eyeOccluderId(p) == eyeOccluderId(s);
+        ok = eyeOccluderId(p) == eyeSeedOccluder(s).w;
     if (ok && uMidpointFix != 0) {
         vec4 m = eyePoint((p + s) / 2);
         ok = m.w >= 0.0 && penumbraHit(m.xyz, c.xyz) >= 0.0;
@@ -61,10 +61,10 @@ float jfaKey(ivec2 p, vec4 r, vec4 c) {
     if (ok && (uObjectIdFix != 0 || uMidpointFix != 0)) {
         ivec2 s = seedPixelOf(c);
         if (uObjectIdFix != 0 && r.w == 1.0)
-            ok = gOwnOccluderId == eyeOccluderId(s);
+            ok = gOwnOccluderId == eyeSeedOccluder(s).w;
         if (ok && uMidpointFix != 0) {
-            vec4 m = eyePoint((p + s) / 2);
-            ok = m.w >= 0.0 && penumbraHit(m.xyz, c.xyz) >= 0.0;
+            vec4 m = eyeSurface((p + s) / 2);
+            ok = m.w != 0.0 && penumbraHit(m.xyz, c.xyz) >= 0.0;
         }
     }
     return ok ? k : -1.0;
@@ -85,11 +85,11 @@ bool jfaBetter(ivec2 p, vec4 a, vec4 b) {
 }
 
 // Cells are packed (JFA_CELL_FORMAT r32f): a texel stores w alone, the seed pixel's index + 1,
-// 4 bytes instead of 16; the occluder is the one phase 2 found at the seed pixel, decoded from
-// its packed cell (eyeOccluder).
+// 4 bytes instead of 16; the occluder is the one phase 2 found at the seed pixel, as phase 3
+// decoded it once (eyeSeedOccluder).
 vec4 jfaLoad(sampler2D grid, ivec2 q) {
     float w = texelFetch(grid, q, 0).r;
     if (w == 0.0) return vec4(0.0, 0.0, -1.0, 0.0);
-    return vec4(eyeOccluder(eyeSeedPixel(w)).xyz, w);
+    return vec4(eyeSeedOccluder(eyeSeedPixel(w)).xyz, w);
 }
 vec4 jfaStore(vec4 c) { return vec4(c.w); }

@@ -48,6 +48,19 @@ EyeImage readEyeImage(const FloodFrame& f) {
     return {points.width(), points.height(), readVec4(points), readVec4(occluders)};
 }
 
+// Phase 3 also decodes each seed's occluder once for the flood and the composite
+// (eyeSeedOccluder): at every seed pixel it must be phase 2's occluder and object id, exactly.
+void expectSeedOccludersArePhaseTwos(const FloodFrame& f, const jfa::Grid& seeds,
+                                     const EyeImage& image) {
+    ASSERT_NE(f.eyeCells->seedOccluders, nullptr);
+    const std::vector<glm::vec4> seedOccluders = readVec4(*f.eyeCells->seedOccluders);
+    ASSERT_EQ(seedOccluders.size(), image.occluders.size());
+    for (std::size_t i = 0; i < seeds.cells.size(); ++i) {
+        if (seeds.cells[i].w == 0.0f) continue;
+        ASSERT_TRUE(seedOccluders[i] == image.occluders[i]) << "seed pixel " << i;
+    }
+}
+
 std::size_t nonEmpty(const jfa::Grid& g) {
     std::size_t n = 0;
     for (const jfa::Cell& c : g.cells) n += c.w != 0.0f;
@@ -141,6 +154,7 @@ TEST_F(JfaETest, PhasesMatchTheCpuReference) {
         const jfa::Grid gpuSeeds = readFloodGrid(out, *out.seeds);
         ASSERT_EQ(gpuSeeds, cpuSeeds) << "boundary seeds differ";
         EXPECT_GT(nonEmpty(cpuSeeds), 20u);
+        expectSeedOccludersArePhaseTwos(out, cpuSeeds, image);
 
         // Phase 4: the flood, exactly (same float operations, `precise` in the shaders).
         EyeSoftCriterion criterion;

@@ -65,13 +65,14 @@ void EyeCells::bind(const gl::Program& program, int factor) const {
     map.bind(program, 6);
     glBindTextureUnit(7, objectIds ? ids->id() : 0);
     program.set("uEyeObjectIds", objectIds ? 1 : 0);
+    glBindTextureUnit(8, seedOccluders ? seedOccluders->id() : 0);
     program.set("uEyeFactor", factor);
     program.set("uEyeGrid",
                 glm::ivec2((width() + factor - 1) / factor, (height() + factor - 1) / factor));
 }
 
 void unbindEyeCells() {
-    for (GLuint unit : {2u, 3u, 6u, 7u}) glBindTextureUnit(unit, 0);
+    for (GLuint unit : {2u, 3u, 6u, 7u, 8u}) glBindTextureUnit(unit, 0);
 }
 
 std::pair<const gl::Texture&, const gl::Texture&> EyeCells::decoded() const {

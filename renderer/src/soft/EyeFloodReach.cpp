@@ -83,8 +83,10 @@ EyeFloodEstimator::EyeFloodEstimator(const gl::ShaderLibrary& shaders)
 
 void EyeFloodEstimator::resize(glm::ivec2 size) {
     if (seeds_ && seeds_.width() == size.x && seeds_.height() == size.y) return;
-    seeds_ = gl::Texture(GL_R32F, size.x, size.y); // packed cells (EyeSoftCriterion)
-    seedsFbo_ = gl::Framebuffer::forColor(seeds_, "JFA-E coarse seeds");
+    seeds_ = gl::Texture(GL_R32F, size.x, size.y);            // packed cells (EyeSoftCriterion)
+    seedOccluders_ = gl::Texture(GL_RGBA32F, size.x, size.y); // eyeSeedOccluder
+    seedsFbo_ =
+        gl::Framebuffer::withTargets({&seeds_, &seedOccluders_}, nullptr, "JFA-E coarse seeds");
 }
 
 std::vector<std::uint32_t> EyeFloodEstimator::travel(const EyeCells& eye,
@@ -114,7 +116,9 @@ std::vector<std::uint32_t> EyeFloodEstimator::travel(const EyeCells& eye,
     criterion.light = s.light;
     criterion.objectIdFix = s.objectIdFix;
     criterion.midpointFix = s.midpointFix;
-    criterion.cells = &eye;
+    EyeCells coarse = eye; // the coarse grid's seeds, with their own occluders
+    coarse.seedOccluders = &seedOccluders_;
+    criterion.cells = &coarse;
     criterion.cellsFactor = s.factor;
     const jfa::Plan plan = eyeSoftPlan(passes, false, size.x, size.y);
     const gl::Texture& flooded = kernel_.run(plan, seeds_, criterion);
@@ -134,7 +138,8 @@ std::vector<std::uint32_t> EyeFloodEstimator::travel(const EyeCells& eye,
     glBindTextureUnit(0, 0);
     glUseProgram(0);
     std::vector<std::uint32_t> bins(kTravelBins, 0u);
-    bytes_ = gl::textureBytes(seeds_) + std::int64_t(plan.passCount()) * gl::textureBytes(flooded) +
+    bytes_ = gl::textureBytes(seeds_) + gl::textureBytes(seedOccluders_) +
+             std::int64_t(plan.passCount()) * gl::textureBytes(flooded) +
              std::int64_t(bins.size() * sizeof(bins[0]));
     glGetNamedBufferSubData(bins_.id(), 0, static_cast<GLsizeiptr>(bins.size() * sizeof(bins[0])),
                             bins.data());

@@ -167,7 +167,8 @@ void EyeSoftShadowPass::prepare(const Inputs& in) {
             *in.shadow.receivers,
             &ids_,
             in.settings.objectIdFix,
-            this};
+            this,
+            nullptr}; // seed occluders: phase 3 writes them
     decodedStale_ = true;
 }
 
@@ -176,9 +177,11 @@ void EyeSoftShadowPass::resize(int width, int height, int shadowSize) {
     if (cells_ && cells_.width() == width && cells_.height() == height) return;
     cells_ = gl::Texture(GL_R32UI, width, height); // packed eye cells (EyeDecode.h)
     seeds_ = gl::Texture(GL_R32F, width, height);  // packed flood cells (EyeSoftCriterion)
+    seedOccluders_ = gl::Texture(GL_RGBA32F, width, height); // eyeSeedOccluder
     visibility_ = gl::Texture(GL_R32F, width, height);
     eyeFbo_ = gl::Framebuffer::forColor(cells_, "JFA-E eye pass");
-    seedsFbo_ = gl::Framebuffer::forColor(seeds_, "JFA-E boundary seeds");
+    seedsFbo_ =
+        gl::Framebuffer::withTargets({&seeds_, &seedOccluders_}, nullptr, "JFA-E boundary seeds");
     visibilityFbo_ = gl::Framebuffer::forColor(visibility_, "JFA-E visibility");
 }
 
@@ -294,7 +297,8 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::Pass
     if (timer) timer->begin("boundaries");
     const BoundaryThreshold th = boundaryThreshold(in.settings, in.camera.proj, in.height);
     drawBoundaries(in, th);
-    if (timer) timer->wrote(gl::textureBytes(seeds_));
+    eye_.seedOccluders = &seedOccluders_; // the flood's and the composite's from here on
+    if (timer) timer->wrote(gl::textureBytes(seeds_) + gl::textureBytes(seedOccluders_));
     if (timer) timer->end();
 
     // Phase 4: flood the occluders through the penumbrae, in eye space. With auto, first how

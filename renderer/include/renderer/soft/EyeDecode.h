@@ -71,11 +71,14 @@ struct EyeCells {
     const gl::Texture* ids = nullptr;   // R32F object id per map texel, read when objectIds
     bool objectIds = false;
     const EyeSoftShadowPass* pass = nullptr; // made them (decoded())
+    /// Phase 3's occluder per seed pixel (RGBA32F, eyeSeedOccluder; unit 8), once it has run:
+    /// the flood and the composite read a seed's occluder there instead of decoding it.
+    const gl::Texture* seedOccluders = nullptr;
 
     [[nodiscard]] int width() const { return cells->width(); }
     [[nodiscard]] int height() const { return cells->height(); }
-    /// eye_decode.glsl's textures (units 2, 3, 6, 7) and uniforms on `program`, for a grid
-    /// `factor` times coarser than the frame (1: the frame itself).
+    /// eye_decode.glsl's textures (units 2, 3, 6, 7, and 8 when seedOccluders) and uniforms on
+    /// `program`, for a grid `factor` times coarser than the frame (1: the frame itself).
     void bind(const gl::Program& program, int factor = 1) const;
     /// Every pixel decoded on the GPU by eye_decode.glsl (the bits the phases read), as two
     /// RGBA32F textures in EyeImage layout: points and occluders. Made on first use after a
@@ -85,7 +88,7 @@ struct EyeCells {
     [[nodiscard]] EyeImage read() const;
 };
 
-/// Unbinds what EyeCells::bind bound (texture units 2, 3, 6 and 7).
+/// Unbinds what EyeCells::bind bound (texture units 2, 3, 6, 7 and 8).
 void unbindEyeCells();
 
 } // namespace fl

@@ -71,7 +71,7 @@ class EyeFloodEstimator {
 
     gl::Program boundary_, travel_;
     gl::VertexArray emptyVao_;
-    gl::Texture seeds_;
+    gl::Texture seeds_, seedOccluders_; // phase 3's two targets (jfae_boundary.frag.glsl)
     gl::Framebuffer seedsFbo_;
     gl::Buffer bins_;
     jfa::GlFloodKernel<EyeSoftCriterion> kernel_;

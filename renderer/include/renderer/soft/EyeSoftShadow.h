@@ -185,7 +185,7 @@ class EyeSoftShadowPass {
 
     gl::Program lightIds_, eyePass_, boundary_, composite_, unpack_;
     gl::VertexArray emptyVao_;
-    gl::Texture ids_, cells_, seeds_, visibility_;
+    gl::Texture ids_, cells_, seeds_, seedOccluders_, visibility_;
     gl::Framebuffer eyeFbo_, seedsFbo_, visibilityFbo_;
     EyeCells eye_; // the last frame's, for the phases and the Outputs
     // decodedEyeImage()'s: made on demand, outside the frame.
