@@ -26,6 +26,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -209,145 +210,204 @@ std::vector<std::uint32_t> inputTriangles(const WorkMesh& mesh, const Numbering&
     return out;
 }
 
-} // namespace
-
-DelaunayResult delaunay(const std::vector<dvec2>& points, const DelaunayOptions& options) {
-    requireTriangulable(points);
-    DelaunayResult r;
-
-    // G1-G6. A bounding box wider than the largest double cannot be mapped; halving the points
-    // (exact, apart from subnormals, which only affects which pixel they snap to) makes it fit.
-    dvec2 lo = points.front(), hi = lo;
-    for (const dvec2& p : points) {
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
-    }
-    const bool halved = !std::isfinite(hi.x - lo.x) || !std::isfinite(hi.y - lo.y);
+// The points' bounds; `halved` when they are wider than the largest double, in which case
+// the sites are the points halved (exact, apart from subnormals, which only affects which pixel
+// they snap to) so that they can be mapped.
+struct Sites {
+    dvec2 lo, hi;
+    bool halved = false;
     std::vector<dvec2> halvedPoints;
-    if (halved) {
-        halvedPoints = points;
-        for (dvec2& p : halvedPoints) p *= 0.5;
-    }
-    const std::vector<dvec2>& sites = halved ? halvedPoints : points;
-    r.discrete = options.discreteBackend ? options.discreteBackend(sites, options.discrete)
-                                         : discreteDelaunay(sites, options.discrete);
-    const SnappedSites& snapped = r.discrete.snapped;
-    if (snapped.pixels.size() != points.size())
-        throw std::logic_error("delaunay: the discrete backend returned " +
-                               std::to_string(snapped.pixels.size()) + " pixels for " +
-                               std::to_string(points.size()) + " points");
-    r.counts.duplicates = findDuplicates(points, snapped.missing, r.duplicateOf);
-    const auto keep = [&](std::vector<std::uint32_t> stage) {
-        if (options.keepStages) r.stages.push_back(std::move(stage));
-    };
+};
 
-    Stopwatch clock;
-    // C1 on T' (input indices), then the CPU steps' own numbering.
-    const std::vector<std::uint32_t>& tPrime = r.discrete.triangles();
-    for (const std::uint32_t v : tPrime)
-        if (v >= points.size())
-            throw std::logic_error("delaunay: T' names site " + std::to_string(v));
-    std::vector<std::uint32_t> hull; // the triangles C1 adds
-    const std::optional<std::size_t> added = detail::completeHull(r.discrete, hull);
-    r.counts.hullTriangles = added.value_or(0);
-    r.cpu.c1 = clock.lap();
-    if (options.keepStages) {
-        keep(tPrime);
-        std::vector<std::uint32_t> c1 = tPrime;
-        c1.insert(c1.end(), hull.begin(), hull.end());
-        keep(std::move(c1));
+Sites siteBounds(const std::vector<dvec2>& points) {
+    Sites s;
+    s.lo = points.front();
+    s.hi = s.lo;
+    for (const dvec2& p : points) {
+        s.lo = glm::min(s.lo, p);
+        s.hi = glm::max(s.hi, p);
     }
-    clock.lap();
-    Numbering num = number(tPrime, hull, snapped, r.duplicateOf);
-    // Every site at its final position (C2's targets), and where C2 starts from: the sites of
-    // S' at their pixels, in world coordinates.
-    const PixelGrid grid(snapped.mapping, halved ? lo * 0.5 : lo, halved ? hi * 0.5 : hi);
-    std::vector<dvec2> target(num.inputOf.size()), start(num.inputOf.size());
-    std::atomic<bool> finite = true;
-    jfa::parallelRows(int(target.size()), options.discrete.threads, [&](int begin, int end, int) {
-        for (auto l = std::size_t(begin); l < std::size_t(end); ++l) {
-            if (l + 16 < std::size_t(end)) {
-                __builtin_prefetch(&points[num.inputOf[l + 16]]);
-                __builtin_prefetch(&snapped.pixels[num.inputOf[l + 16]]);
-            }
-            const std::uint32_t i = num.inputOf[l];
-            target[l] = points[i];
-            if (l >= num.kept) {
-                start[l] = target[l];
-            } else {
-                start[l] = grid.at(snapped.pixels[i]);
-                if (halved) start[l] *= 2.0;
-                if (!std::isfinite(start[l].x) || !std::isfinite(start[l].y)) finite = false;
-            }
+    s.halved = !std::isfinite(s.hi.x - s.lo.x) || !std::isfinite(s.hi.y - s.lo.y);
+    if (s.halved) {
+        s.halvedPoints = points;
+        for (dvec2& p : s.halvedPoints) p *= 0.5;
+    }
+    return s;
+}
+
+// C1-C4 on the result of G1-G6, one member per step, in the order delaunay() runs them.
+class CpuSteps {
+  public:
+    CpuSteps(const std::vector<dvec2>& points, const DelaunayOptions& options, const Sites& sites,
+             DelaunayResult& r)
+        : points_(points), options_(options), sites_(sites), r_(r) {}
+
+    // C1: the hull T' lacks, the CPU steps' numbering, the mesh at the sites' pixels, certified
+    // as a triangulation (or rebuilt on the final positions).
+    void completeHull() {
+        const std::vector<std::uint32_t>& tPrime = r_.discrete.triangles();
+        for (const std::uint32_t v : tPrime)
+            if (v >= points_.size())
+                throw std::logic_error("delaunay: T' names site " + std::to_string(v));
+        std::vector<std::uint32_t> hull; // the triangles C1 adds
+        const std::optional<std::size_t> added = detail::completeHull(r_.discrete, hull);
+        r_.counts.hullTriangles = added.value_or(0);
+        r_.cpu.c1 = clock_.lap();
+        if (options_.keepStages) {
+            keep(tPrime);
+            std::vector<std::uint32_t> c1 = tPrime;
+            c1.insert(c1.end(), hull.begin(), hull.end());
+            keep(std::move(c1));
         }
-    });
-    WorkMesh mesh(std::move(start), options.discrete.threads);
-    // The degree argument certifies T' + C1 as a triangulation of S' on those positions;
-    // anything else goes to the fallback.
-    const bool certified = added && finite && num.kept >= 3 &&
-                           mesh.setTriangles(std::move(num.triangles)) &&
-                           (r.discrete.mesh.stats.degenerate == 0 || mesh.flipFlatTriangles()) &&
-                           mesh.isTriangulation(num.kept);
-    bool rebuilt = false;
-    const auto fallback = [&] {
-        mesh.points = target;
-        detail::rebuild(mesh, pixelOrder(num, snapped));
-        ++r.counts.rebuilds;
-        rebuilt = true;
-    };
-    if (!certified) fallback();
-    r.cpu.c1 += clock.lap();
+        clock_.lap();
+        num_ = number(tPrime, hull, r_.discrete.snapped, r_.duplicateOf);
+        const bool finite = startPositions();
+        // The degree argument certifies T' + C1 as a triangulation of S' on those positions;
+        // anything else goes to the fallback.
+        const bool certified =
+            added && finite && num_.kept >= 3 && mesh_->setTriangles(std::move(num_.triangles)) &&
+            (r_.discrete.mesh.stats.degenerate == 0 || mesh_->flipFlatTriangles()) &&
+            mesh_->isTriangulation(num_.kept);
+        if (!certified) fallback();
+        r_.cpu.c1 += clock_.lap();
+    }
 
     // C2, in the numbering's (spatial) order.
-    std::vector<std::uint32_t> deferred;
-    if (!rebuilt) {
-        std::vector<std::uint32_t> order(num.kept);
-        for (std::uint32_t l = 0; l < num.kept; ++l) order[l] = l;
-        detail::ShiftStats shifted = detail::shiftSites(mesh, target, order);
-        r.counts.goodShifts = shifted.good;
-        r.counts.badShifts = shifted.bad;
-        deferred = std::move(shifted.deferred);
-        if (shifted.stuck) fallback();
+    void shift() {
+        if (!rebuilt_) {
+            std::vector<std::uint32_t> order(num_.kept);
+            for (std::uint32_t l = 0; l < num_.kept; ++l) order[l] = l;
+            detail::ShiftStats shifted = detail::shiftSites(*mesh_, target_, order);
+            r_.counts.goodShifts = shifted.good;
+            r_.counts.badShifts = shifted.bad;
+            deferred_ = std::move(shifted.deferred);
+            if (shifted.stuck) fallback();
+        }
+        r_.cpu.c2 = clock_.lap();
+        if (options_.keepStages) keep(inputTriangles(*mesh_, num_));
+        clock_.lap();
     }
-    r.cpu.c2 = clock.lap();
-    if (options.keepStages) keep(inputTriangles(mesh, num));
-    clock.lap();
 
     // C3: first the sites C2 had to leave out, then the missing ones, each from its keeper.
-    if (!rebuilt) {
-        std::vector<std::uint32_t> toInsert = deferred, near = deferred;
-        toInsert.insert(toInsert.end(), num.missing.begin(), num.missing.end());
-        near.insert(near.end(), num.keeper.begin(), num.keeper.end());
-        const std::size_t steps0 = mesh.walkSteps, flips0 = mesh.insertFlips;
-        r.counts.sequentialInserts =
-            detail::insertSites(mesh, toInsert, near, options.discrete.threads);
-        r.counts.walkSteps = mesh.walkSteps - steps0;
-        r.counts.insertFlips = mesh.insertFlips - flips0;
-        r.counts.missingInserted = num.missing.size();
+    void insertMissing() {
+        if (!rebuilt_) {
+            std::vector<std::uint32_t> toInsert = deferred_, near = deferred_;
+            toInsert.insert(toInsert.end(), num_.missing.begin(), num_.missing.end());
+            near.insert(near.end(), num_.keeper.begin(), num_.keeper.end());
+            const std::size_t steps0 = mesh_->walkSteps, flips0 = mesh_->insertFlips;
+            r_.counts.sequentialInserts =
+                detail::insertSites(*mesh_, toInsert, near, options_.discrete.threads);
+            r_.counts.walkSteps = mesh_->walkSteps - steps0;
+            r_.counts.insertFlips = mesh_->insertFlips - flips0;
+            r_.counts.missingInserted = num_.missing.size();
+        }
+        r_.cpu.c3 = clock_.lap();
+        if (options_.keepStages) keep(inputTriangles(*mesh_, num_));
+        clock_.lap();
     }
-    r.cpu.c3 = clock.lap();
-    if (options.keepStages) keep(inputTriangles(mesh, num));
-    clock.lap();
 
     // C4 in the local numbering (cache-friendly), then back to input indices.
-    mesh.compact();
-    r.counts.flips = mesh.makeDelaunay();
-    for (std::uint32_t& v : mesh.triangles) v = num.inputOf[v];
-    r.mesh.points = points;
-    r.mesh.triangles = std::move(mesh.triangles);
-    r.mesh.halfedges = std::move(mesh.halfedges);
-    r.cpu.c4 = clock.lap();
-    keep(r.mesh.triangles);
+    void flip() {
+        mesh_->compact();
+        r_.counts.flips = mesh_->makeDelaunay();
+        for (std::uint32_t& v : mesh_->triangles) v = num_.inputOf[v];
+        r_.mesh.points = points_;
+        r_.mesh.triangles = std::move(mesh_->triangles);
+        r_.mesh.halfedges = std::move(mesh_->halfedges);
+        r_.cpu.c4 = clock_.lap();
+        keep(r_.mesh.triangles);
+    }
 
-    if (options.check) {
-        clock.lap();
-        const TriangulationReport report = checkTriangulation(r.mesh);
-        r.cpu.check = clock.lap();
+    // The exact checker over the result (--check); a failure is a bug of the pipeline.
+    void check() {
+        clock_.lap();
+        const TriangulationReport report = checkTriangulation(r_.mesh);
+        r_.cpu.check = clock_.lap();
         if (!report.ok())
             throw std::runtime_error("delaunay: the result is not the Delaunay triangulation "
                                      "(a bug in the pipeline):\n" +
                                      report.summary());
     }
+
+  private:
+    // Every site at its final position (C2's targets), and where C2 starts from: the sites of
+    // S' at their pixels, in world coordinates; false when a start is not finite.
+    bool startPositions() {
+        const SnappedSites& snapped = r_.discrete.snapped;
+        const bool halved = sites_.halved;
+        const PixelGrid grid(snapped.mapping, halved ? sites_.lo * 0.5 : sites_.lo,
+                             halved ? sites_.hi * 0.5 : sites_.hi);
+        target_.assign(num_.inputOf.size(), dvec2(0.0));
+        std::vector<dvec2> start(num_.inputOf.size());
+        std::atomic<bool> finite = true;
+        jfa::parallelRows(int(target_.size()), options_.discrete.threads,
+                          [&](int begin, int end, int) {
+                              for (auto l = std::size_t(begin); l < std::size_t(end); ++l) {
+                                  if (l + 16 < std::size_t(end)) {
+                                      __builtin_prefetch(&points_[num_.inputOf[l + 16]]);
+                                      __builtin_prefetch(&snapped.pixels[num_.inputOf[l + 16]]);
+                                  }
+                                  const std::uint32_t i = num_.inputOf[l];
+                                  target_[l] = points_[i];
+                                  if (l >= num_.kept) {
+                                      start[l] = target_[l];
+                                  } else {
+                                      start[l] = grid.at(snapped.pixels[i]);
+                                      if (halved) start[l] *= 2.0;
+                                      if (!std::isfinite(start[l].x) || !std::isfinite(start[l].y))
+                                          finite = false;
+                                  }
+                              }
+                          });
+        mesh_.emplace(std::move(start), options_.discrete.threads);
+        return finite;
+    }
+
+    void fallback() {
+        mesh_->points = target_;
+        detail::rebuild(*mesh_, pixelOrder(num_, r_.discrete.snapped));
+        ++r_.counts.rebuilds;
+        rebuilt_ = true;
+    }
+
+    void keep(std::vector<std::uint32_t> stage) {
+        if (options_.keepStages) r_.stages.push_back(std::move(stage));
+    }
+
+    const std::vector<dvec2>& points_;
+    const DelaunayOptions& options_;
+    const Sites& sites_;
+    DelaunayResult& r_;
+    Stopwatch clock_;
+    Numbering num_;
+    std::vector<dvec2> target_;
+    std::optional<WorkMesh> mesh_;
+    std::vector<std::uint32_t> deferred_;
+    bool rebuilt_ = false;
+};
+
+} // namespace
+
+DelaunayResult delaunay(const std::vector<dvec2>& points, const DelaunayOptions& options) {
+    requireTriangulable(points);
+    DelaunayResult r;
+    // G1-G6.
+    const Sites sites = siteBounds(points);
+    const std::vector<dvec2>& mapped = sites.halved ? sites.halvedPoints : points;
+    r.discrete = options.discreteBackend ? options.discreteBackend(mapped, options.discrete)
+                                         : discreteDelaunay(mapped, options.discrete);
+    if (r.discrete.snapped.pixels.size() != points.size())
+        throw std::logic_error("delaunay: the discrete backend returned " +
+                               std::to_string(r.discrete.snapped.pixels.size()) + " pixels for " +
+                               std::to_string(points.size()) + " points");
+    r.counts.duplicates = findDuplicates(points, r.discrete.snapped.missing, r.duplicateOf);
+    // C1-C4 (and the check).
+    CpuSteps steps(points, options, sites, r);
+    steps.completeHull();
+    steps.shift();
+    steps.insertMissing();
+    steps.flip();
+    if (options.check) steps.check();
     return r;
 }
 
