@@ -233,7 +233,7 @@ nlohmann::json resultsSummary(const CaptureResults& r) {
     nlohmann::json methods = nlohmann::json::array();
     std::optional<double> hardMs;
     for (const MethodRun& m : r.runs)
-        if (m.spec.method == "hard" && !hardMs) hardMs = m.times.medianFrameMs();
+        if (m.spec.method == cheapestMethod().name && !hardMs) hardMs = m.times.medianFrameMs();
     for (const MethodRun& m : r.runs) methods.push_back(methodSummary(m, phases, hardMs));
     j["methods"] = methods;
     const auto sample = [](const ResourceSample& at) {

@@ -137,6 +137,8 @@ struct MethodDescriptor {
     /// A ground truth (what the others are measured against): the kind capture scripts name it
     /// by ("maps", "raytrace"); "" for the methods being measured.
     std::string_view truth = {};
+    /// The cheapest method, every frame-time ratio's denominator ("x hard" in the tables).
+    bool cheapest = false;
 
     /// The row's option with capture-script key `key`, or nullptr.
     [[nodiscard]] const MethodOption* option(std::string_view key) const;
@@ -151,6 +153,9 @@ const MethodDescriptor& groundTruth(std::string_view kind);
 std::string groundTruthKinds();
 /// The ground truth every figure is measured against unless asked otherwise: the exact one.
 inline constexpr std::string_view kExactTruth = "raytrace";
+
+/// The row marked cheapest (hard shadows): what the frame-time ratios divide by.
+const MethodDescriptor& cheapestMethod();
 
 /// The table: every method, in the order the window cycles through them.
 std::span<const MethodDescriptor> methodTable();
