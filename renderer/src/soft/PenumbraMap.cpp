@@ -119,20 +119,9 @@ PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, gl::PassTime
     // --flood-region view: the tiles the lookup reads, and the region around them where seeds
     // and receivers count (seedRegion_; jfa/Band.h, the view limit).
     const bool limited = in.settings.region == jfa::FloodRegion::View && in.view != nullptr;
-    const int tile = in.settings.bandTile;
     long long regionReach = limited ? in.viewSeedReach : -1;
-    bool region = false;
     viewTileCount_ = 0;
-    if (limited) {
-        if (timer) timer->begin("view");
-        markView(*in.view, size, tile);
-        region = regionReach >= 0 && markSeedRegion(size, tile, regionReach);
-        // The view's tile flags; the seed region's flags and its two lists of row spans.
-        if (timer)
-            timer->wrote(tileFlagBytes(size, tile) +
-                         (region ? tileFlagBytes(size, tile) + 2 * rowSpanBytes(size, tile) : 0));
-        if (timer) timer->end();
-    }
+    bool region = limited && markViewRegion(in, regionReach, timer);
     // Phase 2 (thesis; within frame step 3): silhouettes.
     if (timer) timer->begin("silhouettes");
     findSeeds(in, region);
@@ -148,8 +137,42 @@ PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, gl::PassTime
     criterion.map = in.receivers;
     criterion.reachBound = in.reach;
     criterion.umbraDepth = in.umbraDepth;
-    kernel_.setRegion(in.settings.region, tile);
+    kernel_.setRegion(in.settings.region, in.settings.bandTile);
     kernel_.setViewTiles(limited ? &viewTiles_ : nullptr);
+    const PenumbraSettings settings = planBand(in, criterion, region, regionReach, timer);
+    seedRegionCount_ = region ? viewTileCount_ : 0;
+    const jfa::Plan plan = penumbraPlan(settings, size);
+    kernel_.prepareBand(plan, seeds_, criterion);
+    if (timer) timer->end();
+    if (timer) timer->begin("flood");
+    const gl::Texture& map = kernel_.run(plan, seeds_, criterion);
+    glBindTextureUnit(2, 0);
+    unbindPenumbraReach();
+    if (timer) timer->end();
+    kernel_.setViewTiles(nullptr);
+    return {seeds_, map, kernel_.passesRun(), settings.passes};
+}
+
+bool PenumbraMapPass::markViewRegion(const Inputs& in, long long regionReach,
+                                     gl::PassTimer* timer) {
+    const int size = in.receivers.size();
+    const int tile = in.settings.bandTile;
+    if (timer) timer->begin("view");
+    markView(*in.view, size, tile);
+    const bool region = regionReach >= 0 && markSeedRegion(size, tile, regionReach);
+    // The view's tile flags; the seed region's flags and its two lists of row spans.
+    if (timer)
+        timer->wrote(tileFlagBytes(size, tile) +
+                     (region ? tileFlagBytes(size, tile) + 2 * rowSpanBytes(size, tile) : 0));
+    if (timer) timer->end();
+    return region;
+}
+
+PenumbraSettings PenumbraMapPass::planBand(const Inputs& in, PenumbraCriterion& criterion,
+                                           bool& region, long long& regionReach,
+                                           gl::PassTimer* timer) {
+    const int size = in.receivers.size();
+    const int tile = in.settings.bandTile;
     PenumbraSettings settings = in.settings;
     for (;;) {
         if (criterion.reachBound.enabled) { // receivers are the texels with w = 1
@@ -180,17 +203,7 @@ PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, gl::PassTime
         findSeeds(in, region);
         if (timer) timer->wrote(gl::textureBytes(seeds_)); // as above, an upper bound
     }
-    seedRegionCount_ = region ? viewTileCount_ : 0;
-    const jfa::Plan plan = penumbraPlan(settings, size);
-    kernel_.prepareBand(plan, seeds_, criterion);
-    if (timer) timer->end();
-    if (timer) timer->begin("flood");
-    const gl::Texture& map = kernel_.run(plan, seeds_, criterion);
-    glBindTextureUnit(2, 0);
-    unbindPenumbraReach();
-    if (timer) timer->end();
-    kernel_.setViewTiles(nullptr);
-    return {seeds_, map, kernel_.passesRun(), settings.passes};
+    return settings;
 }
 
 void PenumbraMapPass::findSeeds(const Inputs& in, bool region) {

@@ -96,6 +96,13 @@ class PenumbraMapPass {
     /// Phase 2: the silhouette seeds into seeds_ (listed for a band), only within seedRegion_
     /// with `region`.
     void findSeeds(const Inputs& in, bool region);
+    /// --flood-region view: the view's tiles and the seed region around them (timed "view");
+    /// true when a seed region was marked. `regionReach` is the region's reach in texels.
+    bool markViewRegion(const Inputs& in, long long regionReach, gl::PassTimer* timer);
+    /// Phase 3's band: the reach bounds and, with auto, the pass count (growing the seed
+    /// region while auto asks for more than it covers); returns the settings with the count.
+    PenumbraSettings planBand(const Inputs& in, PenumbraCriterion& criterion, bool& region,
+                              long long& regionReach, gl::PassTimer* timer);
     /// Fills viewTiles_ from `view` (penumbra_view.frag.glsl).
     void markView(const PenumbraView& view, int size, int tile);
     /// Fills seedRegion_: the view's tiles widened by `reach` texels (jfa::GlTileDilation);
