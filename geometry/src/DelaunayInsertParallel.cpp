@@ -26,6 +26,7 @@
 #include "DelaunaySteps.h"
 
 #include "TriangulationFlip.h"
+#include "TriangulationWalk.h"
 
 #include <base/Parallel.h>
 
@@ -70,44 +71,25 @@ class RegionInserter {
     /// kNoHalfedge); false, changing nothing, if that needs a triangle that is not this strip's.
     bool tryInsert(std::uint32_t v, std::uint32_t from) {
         if (from == kNoHalfedge || !ownsVertex(from) || !m_.inMesh(from)) return false;
-        std::uint32_t t = m_.vertexEdge[from] / 3;
+        // WorkMesh::locate's walk, refusing the triangles that are not this strip's.
         const dvec2 q = m_.points[v];
-        // A walk (WorkMesh::locate's) that gives up when it leaves the strip's triangles.
-        for (std::size_t step = 1; step <= kStripWalkLimit; ++step) {
-            if (!ownsTriangle(t)) return false;
-            ++steps_;
-            random_ ^= random_ << 13;
-            random_ ^= random_ >> 17;
-            random_ ^= random_ << 5;
-            const std::uint32_t first = random_ % 3;
-            std::uint32_t onEdge = kNoHalfedge;
-            int zeros = 0;
-            bool moved = false;
-            for (std::uint32_t k = 0; k < 3 && !moved; ++k) {
-                const std::uint32_t e = 3 * t + (first + k) % 3;
-                const int s = orient(e, q);
-                if (s < 0) {
-                    if (m_.halfedges[e] == kNoHalfedge) return false; // outside the hull
-                    t = m_.halfedges[e] / 3;
-                    moved = true;
-                } else if (s == 0) {
-                    ++zeros;
-                    onEdge = e;
-                }
-            }
-            if (moved) continue;
-            if (zeros == 0) {
-                insertInside(t, v);
-            } else if (zeros == 1 && (m_.halfedges[onEdge] == kNoHalfedge ||
-                                      ownsTriangle(m_.halfedges[onEdge] / 3))) {
-                insertOnEdge(onEdge, v);
-            } else {
-                return false; // on a vertex, on the hull, or beside a triangle not ours
-            }
-            restoreDelaunay();
-            return true;
+        const WalkEnd end = visibilityWalk(
+            m_.triangles, m_.halfedges, m_.vertexEdge[from] / 3, q, kStripWalkLimit, random_,
+            [this](std::uint32_t a, std::uint32_t b, dvec2 p) { return m_.orient(a, b, p); },
+            [this](std::uint32_t t) { return ownsTriangle(t); });
+        steps_ += end.steps;
+        if (end.kind == WalkEnd::Kind::Inside) {
+            insertInside(end.triangle, v);
+        } else if (end.kind == WalkEnd::Kind::OnEdge &&
+                   (m_.halfedges[end.edge] == kNoHalfedge ||
+                    ownsTriangle(m_.halfedges[end.edge] / 3))) {
+            insertOnEdge(end.edge, v);
+        } else {
+            // Outside the hull, on a vertex, too long, on a triangle or beside one not ours.
+            return false;
         }
-        return false;
+        restoreDelaunay();
+        return true;
     }
 
   private:
@@ -116,10 +98,6 @@ class RegionInserter {
         const std::uint32_t* tri = &m_.triangles[3 * t];
         return tri[0] != kFreeSlot && ownsVertex(tri[0]) && ownsVertex(tri[1]) &&
                ownsVertex(tri[2]);
-    }
-    [[nodiscard]] int orient(std::uint32_t e, dvec2 q) const {
-        return fastOrientSign(m_.points[m_.triangles[e]], m_.points[m_.triangles[nextHalfedge(e)]],
-                              q);
     }
     void link(std::uint32_t a, std::uint32_t b) {
         m_.halfedges[a] = b;

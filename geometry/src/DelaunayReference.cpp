@@ -140,6 +140,7 @@ Builder::Location Builder::locate(dvec2 x) {
         throw std::logic_error(
             "delaunayReference: a point coincides with a vertex after deduplication");
     case detail::WalkEnd::Kind::TooLong:
+    case detail::WalkEnd::Kind::Refused: // no `enter` given: every triangle is entered
         break;
     }
     throw std::logic_error("delaunayReference: point location did not terminate");

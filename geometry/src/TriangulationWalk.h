@@ -20,6 +20,7 @@ struct WalkEnd {
         OnCorner, // on two edge lines of `triangle`: on one of its vertices (or it is flat)
         Outside,  // outside the hull, strictly beyond the boundary halfedge `edge`
         TooLong,  // no answer within the step limit
+        Refused,  // the walk reached `triangle`, which the caller's `enter` refused
     };
     Kind kind = Kind::Inside;
     std::uint32_t triangle = 0; // the triangle the walk stopped in
@@ -27,17 +28,26 @@ struct WalkEnd {
     std::size_t steps = 0;      // triangles visited
 };
 
+/// visibilityWalk's default `enter`: every triangle.
+struct EnterAny {
+    constexpr bool operator()(std::uint32_t) const { return true; }
+};
+
 /// Walks from triangle t toward q, stepping into the neighbour across any edge that has q
 /// strictly on its far side (orient(a, b, q) < 0 for the edge a -> b; exact signs). In a
 /// Delaunay triangulation this cannot cycle; starting each test at a pseudo-random edge (xorshift32
 /// state `random`) makes that hold for any triangulation with probability 1, and `stepLimit`
 /// lets the caller turn a broken mesh into a fallback or an exception instead of a hang.
-template <class Orient>
+/// `enter(t)` is asked before each triangle is visited (C3's strips refuse the triangles of
+/// other threads); a refused triangle ends the walk, not counted as a step.
+template <class Orient, class Enter = EnterAny>
 WalkEnd visibilityWalk(const std::vector<std::uint32_t>& triangles,
                        const std::vector<std::uint32_t>& halfedges, std::uint32_t t, glm::dvec2 q,
-                       std::size_t stepLimit, std::uint32_t& random, const Orient& orient) {
+                       std::size_t stepLimit, std::uint32_t& random, const Orient& orient,
+                       const Enter& enter = {}) {
     using Kind = WalkEnd::Kind;
     for (std::size_t step = 1; step <= stepLimit; ++step) {
+        if (!enter(t)) return {Kind::Refused, t, kNoHalfedge, step - 1};
         random ^= random << 13;
         random ^= random >> 17;
         random ^= random << 5;
