@@ -99,13 +99,6 @@ class RegionInserter {
         return tri[0] != kFreeSlot && ownsVertex(tri[0]) && ownsVertex(tri[1]) &&
                ownsVertex(tri[2]);
     }
-    void link(std::uint32_t a, std::uint32_t b) {
-        m_.halfedges[a] = b;
-        if (b != kNoHalfedge) m_.halfedges[b] = a;
-    }
-    void touch(std::uint32_t t) {
-        for (std::uint32_t e = 3 * t; e < 3 * t + 3; ++e) m_.vertexEdge[m_.triangles[e]] = e;
-    }
     // WorkMesh::addTriangle from this strip's reserved slots (2 per site: always enough).
     std::uint32_t addTriangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
         const std::uint32_t t = slots_.back();
@@ -114,52 +107,27 @@ class RegionInserter {
         tri[0] = a;
         tri[1] = b;
         tri[2] = c;
-        touch(t);
+        m_.touch(t);
         lastEdge_ = 3 * t;
         return 3 * t;
     }
-    // As WorkMesh::insertInside.
+    // WorkMesh's splits, with new triangles from this strip's slots (an interior edge split
+    // here has both sides this strip's: tryInsert checked).
     void insertInside(std::uint32_t t, std::uint32_t v) {
-        const std::uint32_t e0 = 3 * t;
-        const std::uint32_t a = m_.triangles[e0], b = m_.triangles[e0 + 1],
-                            c = m_.triangles[e0 + 2];
-        const std::uint32_t outerBc = m_.halfedges[e0 + 1], outerCa = m_.halfedges[e0 + 2];
-        m_.triangles[e0 + 2] = v;
-        const std::uint32_t t1 = addTriangle(b, c, v);
-        const std::uint32_t t2 = addTriangle(c, a, v);
-        link(t1, outerBc);
-        link(t2, outerCa);
-        link(e0 + 1, t1 + 2);
-        link(t1 + 1, t2 + 2);
-        link(t2 + 1, e0 + 2);
-        touch(t);
-        pending_.insert(pending_.end(), {e0, t1, t2});
+        m_.splitInside(
+            t, v,
+            [this](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+                return addTriangle(a, b, c);
+            },
+            pending_);
     }
-    // As WorkMesh::splitAtEdge.
-    std::uint32_t splitAtEdge(std::uint32_t e, std::uint32_t v) {
-        const std::uint32_t eNext = nextHalfedge(e), ePrev = prevHalfedge(e);
-        const std::uint32_t q = m_.triangles[eNext], a = m_.triangles[ePrev];
-        const std::uint32_t outerQa = m_.halfedges[eNext];
-        m_.triangles[eNext] = v;
-        const std::uint32_t s = addTriangle(v, q, a);
-        link(s + 1, outerQa);
-        link(eNext, s + 2);
-        touch(e / 3);
-        pending_.insert(pending_.end(), {ePrev, s + 1});
-        return s;
-    }
-    // As WorkMesh::insertOnEdge (an interior edge has both sides this strip's).
     void insertOnEdge(std::uint32_t e, std::uint32_t v) {
-        const std::uint32_t o = m_.halfedges[e];
-        const std::uint32_t s = splitAtEdge(e, v);
-        if (o == kNoHalfedge) {
-            link(e, kNoHalfedge);
-            link(s, kNoHalfedge);
-            return;
-        }
-        const std::uint32_t r = splitAtEdge(o, v);
-        link(e, r);
-        link(o, s);
+        m_.splitOnEdge(
+            e, v,
+            [this](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+                return addTriangle(a, b, c);
+            },
+            pending_);
     }
     // As WorkMesh::restoreDelaunay, skipping edges to triangles that are not this strip's.
     void restoreDelaunay() {
@@ -173,8 +141,8 @@ class RegionInserter {
                 continue;
             flip(m_.triangles, m_.halfedges, e, noBoundaryTracking);
             ++flips_;
-            touch(e / 3);
-            touch(o / 3);
+            m_.touch(e / 3);
+            m_.touch(o / 3);
             pending_.insert(pending_.end(), {e, prevHalfedge(e), o, prevHalfedge(o)});
         }
     }

@@ -166,53 +166,19 @@ void WorkMesh::insert(std::uint32_t v, Location where, bool delaunay) {
         pending_.clear();
 }
 
-// Triangle (a, b, c) with v strictly inside becomes (a, b, v), (b, c, v), (c, a, v).
 void WorkMesh::insertInside(std::uint32_t t, std::uint32_t v) {
-    const std::uint32_t e0 = 3 * t;
-    const std::uint32_t a = triangles[e0], b = triangles[e0 + 1], c = triangles[e0 + 2];
-    const std::uint32_t outerBc = halfedges[e0 + 1], outerCa = halfedges[e0 + 2];
-    triangles[e0 + 2] = v; // slot t becomes (a, b, v)
-    const std::uint32_t t1 = addTriangle(b, c, v);
-    const std::uint32_t t2 = addTriangle(c, a, v);
-    link(t1, outerBc);
-    link(t2, outerCa);
-    link(e0 + 1, t1 + 2);
-    link(t1 + 1, t2 + 2);
-    link(t2 + 1, e0 + 2);
-    touch(t);
-    pending_.insert(pending_.end(), {e0, t1, t2});
+    splitInside(
+        t, v,
+        [this](std::uint32_t a, std::uint32_t b, std::uint32_t c) { return addTriangle(a, b, c); },
+        pending_);
     lastTriangle_ = t;
 }
 
-// One side of an edge split: the triangle of e = p -> q, (p, q, a), keeps its slot as (p, v, a)
-// and (v, q, a) is added; returns the new triangle's halfedge v -> q. e and that halfedge are
-// left for the caller to link (to the other side's halves, or to nothing on the hull).
-std::uint32_t WorkMesh::splitAtEdge(std::uint32_t e, std::uint32_t v) {
-    const std::uint32_t eNext = nextHalfedge(e), ePrev = prevHalfedge(e);
-    const std::uint32_t q = triangles[eNext], a = triangles[ePrev];
-    const std::uint32_t outerQa = halfedges[eNext];
-    triangles[eNext] = v;
-    const std::uint32_t s = addTriangle(v, q, a);
-    link(s + 1, outerQa);
-    link(eNext, s + 2);
-    touch(e / 3);
-    pending_.insert(pending_.end(), {ePrev, s + 1});
-    return s;
-}
-
-// v strictly inside the edge e = p -> q: triangle (p, q, a) becomes (p, v, a), (v, q, a), and
-// the triangle across, (q, p, b), becomes (q, v, b), (v, p, b); on the hull v joins it.
 void WorkMesh::insertOnEdge(std::uint32_t e, std::uint32_t v) {
-    const std::uint32_t o = halfedges[e];
-    const std::uint32_t s = splitAtEdge(e, v);
-    if (o == kNoHalfedge) {
-        link(e, kNoHalfedge);
-        link(s, kNoHalfedge);
-    } else {
-        const std::uint32_t r = splitAtEdge(o, v);
-        link(e, r);
-        link(o, s);
-    }
+    splitOnEdge(
+        e, v,
+        [this](std::uint32_t a, std::uint32_t b, std::uint32_t c) { return addTriangle(a, b, c); },
+        pending_);
     lastTriangle_ = e / 3;
 }
 

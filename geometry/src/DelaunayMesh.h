@@ -126,7 +126,18 @@ class WorkMesh {
     void touch(std::uint32_t t); // vertexEdge of t's three vertices := their halfedges in t
     void insertInside(std::uint32_t t, std::uint32_t v);
     void insertOnEdge(std::uint32_t e, std::uint32_t v);
-    std::uint32_t splitAtEdge(std::uint32_t e, std::uint32_t v);
+    // The splits of an insertion, shared with C3's strips, which take new triangles from their
+    // own reserved slots: `add(a, b, c)` makes a triangle and returns its first halfedge, and the
+    // halfedges to re-check for the Delaunay property go to `pending`.
+    template <class Add>
+    void splitInside(std::uint32_t t, std::uint32_t v, Add&& add,
+                     std::vector<std::uint32_t>& pending);
+    template <class Add>
+    std::uint32_t splitAtEdge(std::uint32_t e, std::uint32_t v, Add&& add,
+                              std::vector<std::uint32_t>& pending);
+    template <class Add>
+    void splitOnEdge(std::uint32_t e, std::uint32_t v, Add&& add,
+                     std::vector<std::uint32_t>& pending);
     void insertOutside(std::uint32_t e, std::uint32_t v);
     void restoreDelaunay();
     bool needsFlip(std::uint32_t e) const; // has an opposite and shouldFlip()
@@ -146,5 +157,59 @@ class WorkMesh {
     std::vector<std::uint32_t> star_, poly_, outer_, prevIdx_, nextIdx_;
     std::vector<std::uint8_t> covered_;
 };
+
+// Triangle (a, b, c) with v strictly inside becomes (a, b, v), (b, c, v), (c, a, v).
+template <class Add>
+void WorkMesh::splitInside(std::uint32_t t, std::uint32_t v, Add&& add,
+                           std::vector<std::uint32_t>& pending) {
+    const std::uint32_t e0 = 3 * t;
+    const std::uint32_t a = triangles[e0], b = triangles[e0 + 1], c = triangles[e0 + 2];
+    const std::uint32_t outerBc = halfedges[e0 + 1], outerCa = halfedges[e0 + 2];
+    triangles[e0 + 2] = v; // slot t becomes (a, b, v)
+    const std::uint32_t t1 = add(b, c, v);
+    const std::uint32_t t2 = add(c, a, v);
+    link(t1, outerBc);
+    link(t2, outerCa);
+    link(e0 + 1, t1 + 2);
+    link(t1 + 1, t2 + 2);
+    link(t2 + 1, e0 + 2);
+    touch(t);
+    pending.insert(pending.end(), {e0, t1, t2});
+}
+
+// One side of an edge split: the triangle of e = p -> q, (p, q, a), keeps its slot as (p, v, a)
+// and (v, q, a) is added; returns the new triangle's halfedge v -> q. e and that halfedge are
+// left for the caller to link (to the other side's halves, or to nothing on the hull).
+template <class Add>
+std::uint32_t WorkMesh::splitAtEdge(std::uint32_t e, std::uint32_t v, Add&& add,
+                                    std::vector<std::uint32_t>& pending) {
+    const std::uint32_t eNext = nextHalfedge(e), ePrev = prevHalfedge(e);
+    const std::uint32_t q = triangles[eNext], a = triangles[ePrev];
+    const std::uint32_t outerQa = halfedges[eNext];
+    triangles[eNext] = v;
+    const std::uint32_t s = add(v, q, a);
+    link(s + 1, outerQa);
+    link(eNext, s + 2);
+    touch(e / 3);
+    pending.insert(pending.end(), {ePrev, s + 1});
+    return s;
+}
+
+// v strictly inside the edge e = p -> q: triangle (p, q, a) becomes (p, v, a), (v, q, a), and
+// the triangle across, (q, p, b), becomes (q, v, b), (v, p, b); on the hull v joins it.
+template <class Add>
+void WorkMesh::splitOnEdge(std::uint32_t e, std::uint32_t v, Add&& add,
+                           std::vector<std::uint32_t>& pending) {
+    const std::uint32_t o = halfedges[e];
+    const std::uint32_t s = splitAtEdge(e, v, add, pending);
+    if (o == kNoHalfedge) {
+        link(e, kNoHalfedge);
+        link(s, kNoHalfedge);
+    } else {
+        const std::uint32_t r = splitAtEdge(o, v, add, pending);
+        link(e, r);
+        link(o, s);
+    }
+}
 
 } // namespace fl::geom::detail
