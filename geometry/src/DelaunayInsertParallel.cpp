@@ -67,6 +67,16 @@ class RegionInserter {
             m_.lastTriangle_ = lastEdge_ / 3;
     }
 
+  private:
+    // WorkMesh's splits take new triangles from this strip's slots (an interior edge split
+    // here has both sides this strip's: tryInsert checked).
+    [[nodiscard]] auto slotMaker() {
+        return [this](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+            return addTriangle(a, b, c);
+        };
+    }
+
+  public:
     /// Inserts site v walking from site `from` (one of this strip's sites in the mesh, or
     /// kNoHalfedge); false, changing nothing, if that needs a triangle that is not this strip's.
     bool tryInsert(std::uint32_t v, std::uint32_t from) {
@@ -79,11 +89,11 @@ class RegionInserter {
             [this](std::uint32_t t) { return ownsTriangle(t); });
         steps_ += end.steps;
         if (end.kind == WalkEnd::Kind::Inside) {
-            insertInside(end.triangle, v);
+            m_.splitInside(end.triangle, v, slotMaker(), pending_);
         } else if (end.kind == WalkEnd::Kind::OnEdge &&
                    (m_.halfedges[end.edge] == kNoHalfedge ||
                     ownsTriangle(m_.halfedges[end.edge] / 3))) {
-            insertOnEdge(end.edge, v);
+            m_.splitOnEdge(end.edge, v, slotMaker(), pending_);
         } else {
             // Outside the hull, on a vertex, too long, on a triangle or beside one not ours.
             return false;
@@ -110,24 +120,6 @@ class RegionInserter {
         m_.touch(t);
         lastEdge_ = 3 * t;
         return 3 * t;
-    }
-    // WorkMesh's splits, with new triangles from this strip's slots (an interior edge split
-    // here has both sides this strip's: tryInsert checked).
-    void insertInside(std::uint32_t t, std::uint32_t v) {
-        m_.splitInside(
-            t, v,
-            [this](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-                return addTriangle(a, b, c);
-            },
-            pending_);
-    }
-    void insertOnEdge(std::uint32_t e, std::uint32_t v) {
-        m_.splitOnEdge(
-            e, v,
-            [this](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-                return addTriangle(a, b, c);
-            },
-            pending_);
     }
     // As WorkMesh::restoreDelaunay, skipping edges to triangles that are not this strip's.
     void restoreDelaunay() {
