@@ -8,11 +8,12 @@
 #include <base/Stats.h>
 #include <renderer/Renderer.h>
 #include <renderer/context/EglContext.h>
-#include <renderer/gltf/GltfLoader.h>
-#include <renderer/io/Capture.h>
+#include <renderer/io/TextureImage.h>
+#include <renderer/run/Capture.h>
 #include <renderer/run/FrameRunner.h>
 #include <renderer/soft/ReferenceShadow.h>
 #include <renderer/soft/ShadowRayInputs.h>
+#include <scene/GltfLoader.h>
 
 #include <base/Text.h>
 

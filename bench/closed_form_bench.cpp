@@ -1,14 +1,15 @@
-// Every method of the table on the closed-form cases (renderer/scene/ClosedForm.h): straight
+// Every method of the table on the closed-form cases (scene/ClosedForm.h): straight
 // occluder edges at several angles and heights and a disk occluder, each under a disk light
 // straight above. Per case and method: RMSE against the exact visibility over the ground pixels
 // in view, RMSE and mean signed error (bias) over the exact penumbra. No estimate stands between
 // a method and the answer here, not even a ground truth.
 
+#include <io/ImageIO.h>
 #include <renderer/Renderer.h>
 #include <renderer/context/EglContext.h>
-#include <renderer/io/Capture.h>
-#include <renderer/io/ImageIO.h>
-#include <renderer/scene/ClosedForm.h>
+#include <renderer/run/Capture.h>
+#include <renderer/run/ClosedFormRender.h>
+#include <scene/ClosedForm.h>
 
 #include <CLI/CLI.hpp>
 

@@ -17,7 +17,7 @@
 
 #include <base/Stats.h>
 #include <geometry/Delaunay.h>
-#include <geometry/GlDiscreteDelaunay.h>
+#include <geometry_gl/GlDiscreteDelaunay.h>
 #include <gpu/ShaderLibrary.h>
 #include <jfa/Sites.h>
 #include <renderer/context/EglContext.h>

@@ -15,10 +15,11 @@
 
 #include <jfa/CpuKernel.h>
 #include <jfa/ExactRepair.h>
-#include <jfa/GlKernel.h>
 #include <jfa/Plan.h>
 #include <jfa/Reference.h>
 #include <jfa/Sites.h>
+#include <jfa_gl/GlExactRepair.h>
+#include <jfa_gl/GlKernel.h>
 
 #include <BenchSupport.h>
 #include <CLI/CLI.hpp>

@@ -7,7 +7,7 @@
 // Prints one row per file pair and a total; exit 1 if any file is missing from B or differs in
 // size.
 
-#include <renderer/io/ImageIO.h>
+#include <io/ImageIO.h>
 
 #include <CLI/CLI.hpp>
 

@@ -5,7 +5,7 @@
 // ordinary file of the same quantised data as well as with the float one the Draco file encodes.
 // The files are built with the encoders of the test support (tests/support/CompressedGltf.h).
 
-#include <renderer/gltf/GltfLoader.h>
+#include <scene/GltfLoader.h>
 
 #include "CompressedGltf.h"
 

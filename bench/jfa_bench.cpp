@@ -7,8 +7,8 @@
 #include <renderer/context/EglContext.h>
 
 #include <jfa/CpuKernel.h>
-#include <jfa/GlKernel.h>
 #include <jfa/Sites.h>
+#include <jfa_gl/GlKernel.h>
 
 #include <BenchSupport.h>
 #include <CLI/CLI.hpp>

@@ -5,9 +5,9 @@
 #include <raytrace/ShadowRays.h>
 #include <renderer/Renderer.h>
 #include <renderer/context/EglContext.h>
-#include <renderer/gltf/GltfLoader.h>
-#include <renderer/scene/SceneGenerator.h>
 #include <renderer/soft/ShadowRayInputs.h>
+#include <scene/GltfLoader.h>
+#include <scene/SceneGenerator.h>
 
 #include <base/Parallel.h>
 #include <base/Stats.h>

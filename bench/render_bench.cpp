@@ -9,10 +9,10 @@
 #include <base/Stats.h>
 #include <renderer/Renderer.h>
 #include <renderer/context/EglContext.h>
-#include <renderer/gltf/GltfLoader.h>
 #include <renderer/run/FrameRunner.h>
-#include <renderer/scene/Pose.h>
-#include <renderer/scene/SceneGenerator.h>
+#include <scene/GltfLoader.h>
+#include <scene/Pose.h>
+#include <scene/SceneGenerator.h>
 
 #include <BenchSupport.h>
 #include <CLI/CLI.hpp>

@@ -1,4 +1,4 @@
-// TSM vs uniform shadow map on a scripted walkthrough (renderer/scene/CameraPath.h) at equal
+// TSM vs uniform shadow map on a scripted walkthrough (scene/CameraPath.h) at equal
 // shadow-map resolution, both measured side by side in one process:
 //  - texel footprint (screen pixels per shadow texel) median and p95, over all receivers and
 //    near the viewer (nearest 25% by view depth), median over the frames;
@@ -13,12 +13,13 @@
 
 #include <renderer/Renderer.h>
 #include <renderer/context/EglContext.h>
-#include <renderer/gltf/GltfLoader.h>
-#include <renderer/io/Capture.h>
+#include <renderer/io/TextureImage.h>
 #include <renderer/metrics/ShadowStats.h>
+#include <renderer/run/Capture.h>
 #include <renderer/run/FrameRunner.h>
-#include <renderer/scene/CameraPath.h>
-#include <renderer/scene/SceneGenerator.h>
+#include <scene/CameraPath.h>
+#include <scene/GltfLoader.h>
+#include <scene/SceneGenerator.h>
 
 #include <base/Stats.h>
 

@@ -1,7 +1,7 @@
 // libFuzzer target: camera paths (capture scripts' camera files, inline keys) on any text. Bad
 // JSON, a non-finite or out-of-range number, a degenerate key must throw std::runtime_error; a
 // path that parses must give finite cameras along its whole length.
-#include <renderer/scene/CameraPath.h>
+#include <scene/CameraPath.h>
 
 #include <cmath>
 #include <cstddef>

@@ -3,11 +3,10 @@
 // must throw CaptureScriptError naming the field; a script that parses must hold values in the
 // ranges the capture relies on: frames, resolutions and sizes within their limits, finite
 // cameras along the path and finite light keys, known methods with unique labels.
-#include "CaptureScript.h"
 #include "FuzzInput.h"
+#include <app/CaptureScript.h>
 
 #include <geometry/Finite.h>
-#include <gpu/ShaderLibrary.h>
 #include <renderer/methods/ShadowMethod.h>
 
 #include <cmath>
@@ -18,32 +17,6 @@
 #include <filesystem>
 #include <set>
 #include <string>
-
-// The method table names each method's factory, and the shader library its embedded sources;
-// linking the real ones would bring in every method's GL implementation. A script is only
-// parsed and checked here, so neither is ever called.
-namespace fl {
-#define FL_FUZZ_UNUSED_FACTORY(name)                                                               \
-    std::unique_ptr<ShadowMethod> name(const gl::ShaderLibrary&) {                                 \
-        std::abort();                                                                              \
-    }
-FL_FUZZ_UNUSED_FACTORY(makeHard)
-FL_FUZZ_UNUSED_FACTORY(makeJfaL)
-FL_FUZZ_UNUSED_FACTORY(makeFloodL)
-FL_FUZZ_UNUSED_FACTORY(makeJfaE)
-FL_FUZZ_UNUSED_FACTORY(makeFloodE)
-FL_FUZZ_UNUSED_FACTORY(makePcf)
-FL_FUZZ_UNUSED_FACTORY(makePcss)
-FL_FUZZ_UNUSED_FACTORY(makeGroundTruth)
-FL_FUZZ_UNUSED_FACTORY(makeVsm)
-FL_FUZZ_UNUSED_FACTORY(makeRayTrace)
-#undef FL_FUZZ_UNUSED_FACTORY
-namespace gl {
-const std::map<std::string, std::string_view>& embeddedShaders() {
-    std::abort();
-}
-} // namespace gl
-} // namespace fl
 
 namespace {
 

@@ -9,7 +9,7 @@
 // skins and channels indexing what exists, samplers' times increasing and values matching them.
 #include "FuzzInput.h"
 
-#include <renderer/gltf/GltfLoader.h>
+#include <scene/GltfLoader.h>
 
 #include <nlohmann/json.hpp>
 

@@ -1,6 +1,6 @@
 // libFuzzer target: view --script parsing on any text. A bad line must throw
 // std::runtime_error naming the line; events that parse must hold finite, bounded values.
-#include "InputScript.h"
+#include <app/InputScript.h>
 
 #include <cmath>
 #include <cstddef>

@@ -1,13 +1,13 @@
 // libFuzzer target: PNG masks and label images (voronoi --mask/--labels) on any bytes. Each
 // input goes to a per-process temporary .png and is read by readPng, as the command reads both
 // files; an image that decodes is then used as the mask and as its own label image (same size,
-// as the command requires), converted as the command does (renderer/io/MaskImage.h), and seeded
+// as the command requires), converted as the command does (io/MaskImage.h), and seeded
 // with jfa::seedMask with and without the labels. A bad file must throw std::runtime_error
 // (readPng, InputFileError); what decodes must be within kMaxPngSide and seed without error.
 #include "FuzzInput.h"
 
-#include <renderer/io/ImageIO.h>
-#include <renderer/io/MaskImage.h>
+#include <io/ImageIO.h>
+#include <io/MaskImage.h>
 
 #include <jfa/Sites.h>
 

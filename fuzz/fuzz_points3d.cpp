@@ -1,7 +1,7 @@
 // libFuzzer target: voronoi3d's point reader (app/src/Voronoi3dInput.cpp) on any bytes, the grid
 // side from the first byte. A bad file must throw std::invalid_argument (file, line, problem);
 // what parses must be distinct sites inside the grid with ids in file order.
-#include "Voronoi3dInput.h"
+#include <app/Voronoi3dInput.h>
 
 #include <cstddef>
 #include <cstdint>

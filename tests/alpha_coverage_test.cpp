@@ -1,11 +1,11 @@
-// The CPU side of alpha cut-outs (renderer/scene/AlphaCoverage.h): GL's level-0 bilinear sample,
+// The CPU side of alpha cut-outs (scene/AlphaCoverage.h): GL's level-0 bilinear sample,
 // the per-mode decision, and the ray-traced truth seeing the same checker as the ray caster.
 
 #include "TestScenes.h"
 
 #include <raytrace/ShadowRays.h>
-#include <renderer/scene/AlphaCoverage.h>
 #include <renderer/soft/ShadowRayInputs.h>
+#include <scene/AlphaCoverage.h>
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Alpha cut-outs (glTF alphaMode MASK and BLEND) in every pass that decides visibility: a card
 // textured with a checker of alpha 1 and 0 must cast a checker shadow with every shadow method,
-// as the CPU ray caster (which asks renderer/scene/AlphaCoverage) says. Without the cut-out the
+// as the CPU ray caster (which asks scene/AlphaCoverage) says. Without the cut-out the
 // card casts a solid square and half the compared points disagree.
 
 #include "GlTest.h"
@@ -9,7 +9,7 @@
 #include "TestScenes.h"
 
 #include <renderer/Renderer.h>
-#include <renderer/io/Capture.h>
+#include <renderer/run/Capture.h>
 
 #include <algorithm>
 #include <cmath>

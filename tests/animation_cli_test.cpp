@@ -5,7 +5,7 @@
 #include "CliRun.h"
 #include "TestPaths.h"
 
-#include <renderer/io/ImageIO.h>
+#include <io/ImageIO.h>
 
 #include <gtest/gtest.h>
 

@@ -8,13 +8,14 @@
 #include "TestScenes.h"
 
 #include <renderer/Renderer.h>
-#include <renderer/gltf/GltfLoader.h>
-#include <renderer/io/Capture.h>
-#include <renderer/io/ImageIO.h>
+#include <renderer/io/TextureImage.h>
 #include <renderer/passes/SurfacesPass.h>
-#include <renderer/scene/ClosedForm.h>
+#include <renderer/run/Capture.h>
+#include <renderer/run/ClosedFormRender.h>
 #include <renderer/soft/FilteredShadow.h>
 #include <renderer/soft/ReferenceShadow.h>
+#include <scene/ClosedForm.h>
+#include <scene/GltfLoader.h>
 
 #include <cmath>
 #include <cstdio>

@@ -7,6 +7,7 @@
 #include "TestScenes.h"
 
 #include <renderer/Renderer.h>
+#include <renderer/io/TextureImage.h>
 #include <renderer/metrics/BiasArtifacts.h>
 #include <renderer/soft/ShadowRayInputs.h>
 

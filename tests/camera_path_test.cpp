@@ -2,8 +2,8 @@
 
 #include "TestPaths.h"
 
-#include <renderer/io/ImageIO.h>
-#include <renderer/scene/CameraPath.h>
+#include <io/ImageIO.h>
+#include <scene/CameraPath.h>
 
 #include <gtest/gtest.h>
 

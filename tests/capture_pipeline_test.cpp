@@ -1,9 +1,9 @@
-// CapturePipeline (app/src/CapturePipeline.h): a frame's ordered tasks run after its parallel
+// CapturePipeline (app/CapturePipeline.h): a frame's ordered tasks run after its parallel
 // ones and after every earlier frame's, in frame order, whatever the workers; a failed task
 // keeps the frames before it and drops the rest, and the failure reaches the caller; the frames
 // in flight stay within the limit; without workers every task runs inside submit().
 
-#include "CapturePipeline.h"
+#include <app/CapturePipeline.h>
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
-// Capture scripts (app/src/CaptureScript.h): the formats they accept, the options methods carry,
+// Capture scripts (app/CaptureScript.h): the formats they accept, the options methods carry,
 // and a message naming the field for every malformed or missing one.
 
-#include "CaptureScript.h"
 #include "TestPaths.h"
+#include <app/CaptureScript.h>
 
 #include <renderer/methods/ShadowMethod.h>
 #include <renderer/soft/FilteredShadow.h>

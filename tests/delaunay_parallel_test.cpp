@@ -9,7 +9,7 @@
 
 #include <jfa/Sites.h>
 
-#include "../geometry/src/DelaunaySteps.h"
+#include <geometry/detail/DelaunaySteps.h>
 
 #include "TriangleSet.h"
 

@@ -9,7 +9,7 @@
 #include <jfa/Sites.h>
 
 // The pipeline's private mesh, to test its local edits (vertex removal, site shifting) directly.
-#include "../geometry/src/DelaunaySteps.h"
+#include <geometry/detail/DelaunaySteps.h>
 
 #include "TriangleSet.h"
 

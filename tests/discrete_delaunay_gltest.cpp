@@ -1,4 +1,4 @@
-// The GL backend of steps G1-G6 (geometry/GlDiscreteDelaunay.h) against the CPU backend
+// The GL backend of steps G1-G6 (geometry_gl/GlDiscreteDelaunay.h) against the CPU backend
 // (geometry/DiscreteDelaunay.h): every stage equal exactly (mapping, pixels, kept and missing
 // sites, both id textures, island statistics, corner cases and counts, row chains, vertices,
 // triangles in the same order, triangle statistics), for random and dense site sets, plans that
@@ -8,7 +8,7 @@
 #include "GlTest.h"
 
 #include <geometry/Delaunay.h>
-#include <geometry/GlDiscreteDelaunay.h>
+#include <geometry_gl/GlDiscreteDelaunay.h>
 
 #include <gpu/ShaderLibrary.h>
 #include <jfa/Sites.h>

@@ -1,6 +1,6 @@
 // The occluder intensity of thesis §5.2 against numerical integration over the disk light.
 
-#include <renderer/soft/DiskLight.h>
+#include <scene/DiskLight.h>
 
 #include <gtest/gtest.h>
 

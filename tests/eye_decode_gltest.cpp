@@ -5,12 +5,12 @@
 #include "TestPaths.h"
 
 #include <renderer/Renderer.h>
-#include <renderer/gltf/GltfLoader.h>
 #include <renderer/soft/EyeDecode.h>
 #include <renderer/soft/EyeSoftShadow.h>
 #include <renderer/soft/OccluderEdge.h>
+#include <scene/GltfLoader.h>
 
-#include <jfa/GlKernel.h>
+#include <jfa_gl/GlKernel.h>
 
 #include <cmath>
 #include <cstdio>

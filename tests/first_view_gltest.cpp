@@ -8,9 +8,9 @@
 #include "TestScenes.h"
 
 #include <renderer/Renderer.h>
-#include <renderer/gltf/GltfLoader.h>
-#include <renderer/io/ImageIO.h>
-#include <renderer/scene/Ground.h>
+#include <renderer/io/TextureImage.h>
+#include <scene/GltfLoader.h>
+#include <scene/Ground.h>
 
 #include <gtest/gtest.h>
 

@@ -2,8 +2,8 @@
 // animations and the meshes' skinning and morph data, the assimp sample files, and one test per
 // rejected or repaired input (file, element and problem in the message).
 
-#include <renderer/gltf/GltfLoader.h>
-#include <renderer/scene/SceneGenerator.h>
+#include <scene/GltfLoader.h>
+#include <scene/SceneGenerator.h>
 
 #include "GltfBuilder.h"
 #include "TestPaths.h"

@@ -2,11 +2,11 @@
 // case; rejections must name the file, the element and the problem, repairs must warn and leave
 // usable data.
 
-#include <renderer/gltf/GltfLoader.h>
+#include <scene/GltfLoader.h>
 
 #include "GltfBuilder.h"
 
-#include <renderer/scene/Pose.h>
+#include <scene/Pose.h>
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 //
 // Fixtures are generated here rather than stored: each test states the one defect it is about.
 
-#include <renderer/gltf/GltfLoader.h>
+#include <scene/GltfLoader.h>
 
 #include "GltfBuilder.h"
 #include "PngBytes.h"

@@ -2,7 +2,7 @@
 // files). Each must either load into a scene that keeps the Scene invariants or be rejected
 // with a SceneError naming the file; a crash, hang or sanitizer report fails the sweep.
 
-#include <renderer/gltf/GltfLoader.h>
+#include <scene/GltfLoader.h>
 
 #include <geometry/Finite.h>
 

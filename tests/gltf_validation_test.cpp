@@ -1,7 +1,7 @@
 // glTF loader validation: one test per rule, each writes a minimal malformed file and expects a
 // SceneError naming the file, the element and the problem.
 
-#include <renderer/gltf/GltfLoader.h>
+#include <scene/GltfLoader.h>
 
 #include "GltfBuilder.h"
 

@@ -7,9 +7,9 @@
 #include "TestPaths.h"
 
 #include <renderer/Renderer.h>
-#include <renderer/gltf/GltfLoader.h>
-#include <renderer/io/Capture.h>
-#include <renderer/scene/SceneGenerator.h>
+#include <renderer/run/Capture.h>
+#include <scene/GltfLoader.h>
+#include <scene/SceneGenerator.h>
 
 #include <fstream>
 

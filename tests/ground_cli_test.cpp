@@ -7,8 +7,8 @@
 #include "TestPaths.h"
 #include "TestScenes.h"
 
-#include <renderer/io/ImageIO.h>
-#include <renderer/scene/SceneGenerator.h>
+#include <io/ImageIO.h>
+#include <scene/SceneGenerator.h>
 
 #include <gtest/gtest.h>
 

@@ -1,12 +1,12 @@
-// renderer/scene/Ground.h: `--ground auto` adds a ground under a model that stands on nothing
+// scene/Ground.h: `--ground auto` adds a ground under a model that stands on nothing
 // and leaves a scene with its own floor or terrain as it is.
 
 #include "TestPaths.h"
 #include "TestScenes.h"
 
-#include <renderer/gltf/GltfLoader.h>
-#include <renderer/scene/Ground.h>
-#include <renderer/scene/SceneGenerator.h>
+#include <scene/GltfLoader.h>
+#include <scene/Ground.h>
+#include <scene/SceneGenerator.h>
 
 #include <gtest/gtest.h>
 

@@ -4,6 +4,7 @@
 #include "GlTest.h"
 #include "ImageCompare.h"
 
+#include <renderer/io/TextureImage.h>
 #include <renderer/passes/HudPass.h>
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// The GL 3D flood (jfa/GlJfa3d.h, shaders/jfa3d_pass.comp.glsl) against its CPU twin
+// The GL 3D flood (jfa_gl/GlJfa3d.h, shaders/jfa3d_pass.comp.glsl) against its CPU twin
 // (jfa/Jfa3d.h), voxel for voxel, for every variant of the table: random sites on grids that are
 // not cubes or powers of two, and sites made of ties (equal distances, shared voxels, equal ids),
 // where only the exact integer rule "distance, then id, then index" gives one answer. Grids stay
@@ -6,8 +6,8 @@
 
 #include "GlTest.h"
 
-#include <jfa/GlJfa3d.h>
 #include <jfa/Jfa3d.h>
+#include <jfa_gl/GlJfa3d.h>
 
 #include <cstdint>
 #include <string>

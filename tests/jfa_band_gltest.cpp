@@ -1,4 +1,4 @@
-// Band-limited flooding on the GPU (jfa/GlKernel.h, jfa/Band.h): the tile list built on the GPU
+// Band-limited flooding on the GPU (jfa_gl/GlKernel.h, jfa/Band.h): the tile list built on the GPU
 // and the passes over it give the full grid's result texel for texel, for both kernel kinds,
 // plans of every shape and grids that are not powers of two; the GPU's band is the CPU's.
 
@@ -6,8 +6,8 @@
 
 #include <jfa/Band.h>
 #include <jfa/CpuKernel.h>
-#include <jfa/GlKernel.h>
 #include <jfa/NearestSite.h>
+#include <jfa_gl/GlKernel.h>
 
 #include <cstdint>
 

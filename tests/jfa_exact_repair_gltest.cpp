@@ -12,9 +12,10 @@
 
 #include <jfa/CpuKernel.h>
 #include <jfa/ExactRepair.h>
-#include <jfa/GlKernel.h>
 #include <jfa/Plan.h>
 #include <jfa/Reference.h>
+#include <jfa_gl/GlExactRepair.h>
+#include <jfa_gl/GlKernel.h>
 
 #include <gtest/gtest.h>
 

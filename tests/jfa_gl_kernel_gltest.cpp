@@ -4,9 +4,9 @@
 #include "GlTest.h"
 
 #include <jfa/CpuKernel.h>
-#include <jfa/GlKernel.h>
 #include <jfa/NearestSite.h>
 #include <jfa/Sites.h>
+#include <jfa_gl/GlKernel.h>
 
 #include <cstdint>
 

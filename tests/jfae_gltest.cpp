@@ -8,13 +8,13 @@
 #include "TestScenes.h"
 
 #include <renderer/Renderer.h>
-#include <renderer/gltf/GltfLoader.h>
-#include <renderer/io/Capture.h>
+#include <renderer/run/Capture.h>
 #include <renderer/soft/EyeFloodReach.h>
 #include <renderer/soft/EyeSoftShadow.h>
+#include <scene/GltfLoader.h>
 
 #include <jfa/CpuKernel.h>
-#include <jfa/GlKernel.h>
+#include <jfa_gl/GlKernel.h>
 
 #include <cmath>
 #include <cstdio>

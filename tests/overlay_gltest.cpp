@@ -7,12 +7,12 @@
 #include "GlTest.h"
 #include "ImageCompare.h"
 
-#include <renderer/gltf/GltfLoader.h>
 #include <renderer/overlays/OverlayCapture.h>
 #include <renderer/overlays/OverlayColours.h>
 #include <renderer/overlays/SiteDiagram.h>
 #include <renderer/soft/EyeSoftShadow.h>
 #include <renderer/soft/PenumbraMap.h>
+#include <scene/GltfLoader.h>
 
 #include <jfa/CpuKernel.h>
 #include <jfa/NearestSite.h>

@@ -7,16 +7,16 @@
 #include "TestScenes.h"
 
 #include <renderer/Renderer.h>
-#include <renderer/gltf/GltfLoader.h>
-#include <renderer/io/Capture.h>
-#include <renderer/io/ImageIO.h>
-#include <renderer/scene/ClosedForm.h>
-#include <renderer/scene/Pose.h>
+#include <renderer/io/TextureImage.h>
+#include <renderer/run/Capture.h>
 #include <renderer/soft/PenumbraMap.h>
 #include <renderer/soft/PenumbraReach.h>
+#include <scene/ClosedForm.h>
+#include <scene/GltfLoader.h>
+#include <scene/Pose.h>
 
 #include <jfa/CpuKernel.h>
-#include <jfa/GlKernel.h>
+#include <jfa_gl/GlKernel.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -486,7 +486,7 @@ TEST_F(PenumbraTest, JfaLIsCloseToStandardFlooding) {
     EXPECT_GE(close / static_cast<double>(penumbra), 0.95);
 }
 
-// --penumbra both on a closed-form case (renderer/scene/ClosedForm.h: a straight edge at height
+// --penumbra both on a closed-form case (scene/ClosedForm.h: a straight edge at height
 // h = 1 under a disk light of radius r = 1 at height H = 5, a 512² map as the goldens use):
 // ground points just inside the hard shadow, where the exact answer is in (0.05, 0.45), are black
 // with --penumbra outer (the thesis' JFA-L) and see the exact share of the disk with both.

@@ -1,14 +1,14 @@
 // Animation on the GPU against the CPU (issue 15, item 2): skinning and morph targets posed in
 // the vertex stages (shaders/pose.glsl) cast the shadow that the same pose, baked on the CPU
-// (renderer/scene/Pose.h posedVertices), casts for the ray caster; the ray-traced truth follows
+// (scene/Pose.h posedVertices), casts for the ray caster; the ray-traced truth follows
 // the pose; the motion target follows an animated object.
 
 #include "GlTest.h"
 #include "TestScenes.h"
 
 #include <renderer/Renderer.h>
-#include <renderer/io/Capture.h>
-#include <renderer/scene/Pose.h>
+#include <renderer/run/Capture.h>
+#include <scene/Pose.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 

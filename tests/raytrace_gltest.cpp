@@ -4,10 +4,11 @@
 #include "GlTest.h"
 #include "ImageCompare.h"
 
+#include <io/ImageIO.h>
 #include <renderer/Renderer.h>
-#include <renderer/io/Capture.h>
-#include <renderer/io/ImageIO.h>
-#include <renderer/scene/ClosedForm.h>
+#include <renderer/run/Capture.h>
+#include <renderer/run/ClosedFormRender.h>
+#include <scene/ClosedForm.h>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>

@@ -3,7 +3,7 @@
 // same result for any thread count.
 
 #include <raytrace/ShadowRays.h>
-#include <renderer/scene/ClosedForm.h>
+#include <scene/ClosedForm.h>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>

@@ -7,7 +7,8 @@
 
 #include <gpu/ReadBack.h>
 #include <renderer/Renderer.h>
-#include <renderer/io/Capture.h>
+#include <renderer/io/TextureImage.h>
+#include <renderer/run/Capture.h>
 #include <renderer/run/FrameRunner.h>
 
 namespace fl::test {

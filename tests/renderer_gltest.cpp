@@ -6,9 +6,9 @@
 
 #include <gpu/LiveObjects.h>
 #include <renderer/Renderer.h>
-#include <renderer/gltf/GltfLoader.h>
-#include <renderer/io/Capture.h>
+#include <renderer/run/Capture.h>
 #include <renderer/run/FrameRunner.h>
+#include <scene/GltfLoader.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -8,7 +8,7 @@
 #include "PngBytes.h"
 #include "TestPaths.h"
 
-#include <renderer/io/ImageIO.h>
+#include <io/ImageIO.h>
 
 #include <gtest/gtest.h>
 

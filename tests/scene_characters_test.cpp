@@ -3,9 +3,9 @@
 // rendered at time 0, show the scene as before), moves, loops, keeps its feet out of the ground,
 // and survives a GLB round trip with the same poses.
 
-#include <renderer/gltf/GltfLoader.h>
-#include <renderer/scene/Pose.h>
-#include <renderer/scene/SceneGenerator.h>
+#include <scene/GltfLoader.h>
+#include <scene/Pose.h>
+#include <scene/SceneGenerator.h>
 
 #include "TestPaths.h"
 

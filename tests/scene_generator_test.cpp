@@ -1,8 +1,8 @@
 // The default-scene generator (exact sizes, determinism, valid geometry, a plausible layout) and
 // the GLB writer (file structure, determinism, I/O errors, round trip through loadGltf).
 
-#include <renderer/gltf/GltfLoader.h>
-#include <renderer/scene/SceneGenerator.h>
+#include <scene/GltfLoader.h>
+#include <scene/SceneGenerator.h>
 
 #include "TestPaths.h"
 

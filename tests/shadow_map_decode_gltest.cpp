@@ -10,7 +10,7 @@
 #include <renderer/passes/ShadowMapDecode.h>
 #include <renderer/soft/PenumbraReach.h>
 
-#include <jfa/GlKernel.h>
+#include <jfa_gl/GlKernel.h>
 
 #include <algorithm>
 #include <array>

@@ -5,7 +5,7 @@
 #include "TestScenes.h"
 
 #include <renderer/Renderer.h>
-#include <renderer/io/Capture.h>
+#include <renderer/run/Capture.h>
 
 #include <cmath>
 #include <iostream>

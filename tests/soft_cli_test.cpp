@@ -4,7 +4,7 @@
 #include "CliRun.h"
 #include "TestPaths.h"
 
-#include <renderer/io/ImageIO.h>
+#include <io/ImageIO.h>
 
 #include <nlohmann/json.hpp>
 

@@ -1,7 +1,7 @@
 // The packed surfaces pass's decoders (renderer/passes/SurfaceDecode.h, the CPU twin of
 // shaders/surface_decode.glsl): normals, base colour and positions come back within the
 // precision their formats hold.
-#include <renderer/io/ImageIO.h>
+#include <io/ImageIO.h>
 #include <renderer/passes/SurfaceDecode.h>
 
 #include <glm/gtc/matrix_transform.hpp>

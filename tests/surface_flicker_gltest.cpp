@@ -6,8 +6,8 @@
 #include "TestScenes.h"
 
 #include <renderer/Renderer.h>
-#include <renderer/io/Capture.h>
 #include <renderer/metrics/Metrics.h>
+#include <renderer/run/Capture.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 

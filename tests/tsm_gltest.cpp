@@ -8,10 +8,11 @@
 #include "TestScenes.h"
 
 #include <renderer/Renderer.h>
-#include <renderer/gltf/GltfLoader.h>
-#include <renderer/io/Capture.h>
+#include <renderer/io/TextureImage.h>
 #include <renderer/metrics/ShadowStats.h>
-#include <renderer/scene/CameraPath.h>
+#include <renderer/run/Capture.h>
+#include <scene/CameraPath.h>
+#include <scene/GltfLoader.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -12,9 +12,9 @@
 #include "TestPaths.h"
 
 #include <renderer/Renderer.h>
-#include <renderer/gltf/GltfLoader.h>
 #include <renderer/overlays/Overlay.h>
-#include <renderer/scene/CameraPath.h>
+#include <scene/CameraPath.h>
+#include <scene/GltfLoader.h>
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // The viewer's key table (one table drives the handling and the help text) and the --script
 // parser and player (app/src/ViewerInput, app/src/InputScript).
 
-#include "InputScript.h"
-#include "ViewerInput.h"
+#include <app/InputScript.h>
+#include <app/ViewerInput.h>
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>

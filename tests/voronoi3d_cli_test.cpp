@@ -6,8 +6,8 @@
 #include "CliRun.h"
 #include "TestPaths.h"
 
+#include <io/ImageIO.h>
 #include <jfa/Jfa3d.h>
-#include <renderer/io/ImageIO.h>
 
 #include <gtest/gtest.h>
 

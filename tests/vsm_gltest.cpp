@@ -7,9 +7,10 @@
 #include "TestScenes.h"
 
 #include <renderer/Renderer.h>
-#include <renderer/gltf/GltfLoader.h>
-#include <renderer/io/Capture.h>
+#include <renderer/io/TextureImage.h>
+#include <renderer/run/Capture.h>
 #include <renderer/soft/FilteredShadow.h>
+#include <scene/GltfLoader.h>
 
 #include <glm/gtc/matrix_inverse.hpp>
 

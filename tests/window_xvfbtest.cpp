@@ -8,7 +8,8 @@
 #include <renderer/Renderer.h>
 #include <renderer/context/EglContext.h>
 #include <renderer/context/GlfwWindow.h>
-#include <renderer/io/Capture.h>
+#include <renderer/io/TextureImage.h>
+#include <renderer/run/Capture.h>
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>

@@ -1,4 +1,4 @@
-#include "CameraController.h"
+#include <app/CameraController.h>
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>

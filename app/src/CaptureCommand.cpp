@@ -8,11 +8,11 @@
 // (CapturePipeline.h), with the same outputs. summary.json's "phaseSplit" says where the time
 // went.
 
-#include "CapturePipeline.h"
-#include "CaptureProgress.h"
-#include "CaptureResults.h"
-#include "CaptureScorer.h"
-#include "Commands.h"
+#include <app/CapturePipeline.h>
+#include <app/CaptureProgress.h>
+#include <app/CaptureResults.h>
+#include <app/CaptureScorer.h>
+#include <app/Commands.h>
 
 #include <base/InputFile.h>
 #include <base/OutputFiles.h>
@@ -21,9 +21,9 @@
 #include <renderer/run/FrameRunner.h>
 
 #include <renderer/context/EglContext.h>
-#include <renderer/io/Capture.h>
 #include <renderer/metrics/ShadowStats.h>
 #include <renderer/metrics/SoftStats.h>
+#include <renderer/run/Capture.h>
 #include <renderer/soft/EyeSoftShadow.h>
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 // The CSV and the JSON summary of a capture run, and what it prints at the end.
 
-#include "CaptureResults.h"
+#include <app/CaptureResults.h>
 
 #include <base/Stats.h>
 

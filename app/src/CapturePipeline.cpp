@@ -1,4 +1,4 @@
-#include "CapturePipeline.h"
+#include <app/CapturePipeline.h>
 
 #include <algorithm>
 #include <chrono>

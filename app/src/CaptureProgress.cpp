@@ -1,6 +1,6 @@
-#include "CaptureProgress.h"
+#include <app/CaptureProgress.h>
 
-#include "Common.h"
+#include <app/Common.h>
 
 #include <base/InputFile.h>
 #include <base/OutputFiles.h>

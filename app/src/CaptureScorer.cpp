@@ -1,4 +1,4 @@
-#include "CaptureScorer.h"
+#include <app/CaptureScorer.h>
 
 #include <renderer/metrics/ShadowStats.h>
 #include <renderer/metrics/SoftStats.h>

@@ -1,12 +1,12 @@
-#include "CaptureScript.h"
+#include <app/CaptureScript.h>
 
-#include <renderer/scene/Ground.h>
+#include <scene/Ground.h>
 
 #include <base/InputFile.h>
 #include <base/Numbers.h>
 #include <base/Text.h>
 
-#include <renderer/io/JsonText.h>
+#include <io/JsonText.h>
 #include <renderer/soft/PenumbraMap.h>
 
 #include <nlohmann/json.hpp>

@@ -1,7 +1,7 @@
 // The command-line options the subcommands share, and the validators every option uses.
-#include "Common.h"
+#include <app/Common.h>
 
-#include <renderer/scene/Ground.h>
+#include <scene/Ground.h>
 
 #include <base/InputFile.h>
 

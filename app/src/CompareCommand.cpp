@@ -2,16 +2,16 @@
 // walkthrough (thesis Fig. 5.4 / 5.8): one CSV row per frame, a JSON summary, and the frame with
 // the largest difference side by side (method | reference | difference) as PNG and EXR.
 
-#include "Commands.h"
+#include <app/Commands.h>
 
 #include <base/InputFile.h>
 #include <renderer/run/FrameRunner.h>
 
 #include <renderer/context/EglContext.h>
-#include <renderer/io/Capture.h>
 #include <renderer/metrics/ShadowStats.h>
 #include <renderer/metrics/SoftStats.h>
-#include <renderer/scene/CameraPath.h>
+#include <renderer/run/Capture.h>
+#include <scene/CameraPath.h>
 
 #include <nlohmann/json.hpp>
 

@@ -3,8 +3,8 @@
 // the time and counts of every step, an optional exact check, Triangle/OBJ/SVG output and one
 // picture per step.
 
-#include "Commands.h"
-#include "DelaunaySteps.h"
+#include <app/Commands.h>
+#include <app/DelaunaySteps.h>
 
 #include <base/InputFile.h>
 #include <base/OutputFiles.h>
@@ -17,8 +17,8 @@
 #include <jfa/Plan.h>
 
 // The GL backend arrives separately from this command; without it --backend gl says so.
-#if __has_include(<geometry/GlDiscreteDelaunay.h>)
-#include <geometry/GlDiscreteDelaunay.h>
+#if __has_include(<geometry_gl/GlDiscreteDelaunay.h>)
+#include <geometry_gl/GlDiscreteDelaunay.h>
 #include <gpu/ShaderLibrary.h>
 #include <renderer/context/EglContext.h>
 #define FLOODLIGHT_HAVE_GL_DELAUNAY 1

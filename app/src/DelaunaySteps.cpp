@@ -1,7 +1,7 @@
 // The step pictures of `floodlight delaunay --steps DIR`: one SVG per stage of the pipeline, so
 // that each step of thesis §6.3.2 can be seen doing its job on a real input.
 
-#include "DelaunaySteps.h"
+#include <app/DelaunaySteps.h>
 
 #include <base/OutputFiles.h>
 

@@ -1,6 +1,6 @@
-#include "InputScript.h"
+#include <app/InputScript.h>
 
-#include "ViewerInput.h"
+#include <app/ViewerInput.h>
 
 #include <base/InputFile.h>
 #include <base/Numbers.h>

@@ -1,6 +1,6 @@
-#include "Commands.h"
+#include <app/Commands.h>
 
-#include <renderer/scene/SceneGenerator.h>
+#include <scene/SceneGenerator.h>
 
 #include <chrono>
 #include <iostream>

@@ -3,13 +3,13 @@
 // each method's PNG/EXR beside it. The ground truth is the ray-traced one (exact visibility); the
 // shadow-map ground truth is scored like the methods, which shows its own error.
 
-#include "Commands.h"
+#include <app/Commands.h>
 
 #include <renderer/context/EglContext.h>
-#include <renderer/io/Capture.h>
 #include <renderer/metrics/Metrics.h>
 #include <renderer/metrics/ShadowStats.h>
 #include <renderer/passes/HudPass.h>
+#include <renderer/run/Capture.h>
 
 #include <base/Stats.h>
 #include <base/Text.h>

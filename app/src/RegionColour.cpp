@@ -1,4 +1,4 @@
-#include "Common.h"
+#include <app/Common.h>
 
 #include <algorithm>
 

@@ -1,11 +1,12 @@
-#include "Commands.h"
+#include <app/Commands.h>
+#include <renderer/io/TextureImage.h>
 
 #include <base/OutputFiles.h>
 
 #include <renderer/context/EglContext.h>
-#include <renderer/io/Capture.h>
 #include <renderer/metrics/ShadowStats.h>
 #include <renderer/overlays/OverlayCapture.h>
+#include <renderer/run/Capture.h>
 
 #include <iomanip>
 #include <iostream>

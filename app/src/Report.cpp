@@ -5,8 +5,8 @@
 // has a size and content, and records the result on <body> (data-charts-ok="N/M") so headless
 // browsers in tests can read it from the DOM.
 
-#include "CaptureResults.h"
-#include "ReportSvg.h"
+#include <app/CaptureResults.h>
+#include <app/ReportSvg.h>
 
 #include <base/Text.h>
 

@@ -1,4 +1,4 @@
-#include "ReportSvg.h"
+#include <app/ReportSvg.h>
 
 #include <base/Text.h>
 

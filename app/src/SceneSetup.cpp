@@ -1,8 +1,8 @@
 // The scene, shaders, render settings and camera that a rendering subcommand's options ask for.
-#include "Common.h"
+#include <app/Common.h>
 
-#include <renderer/scene/Ground.h>
-#include <renderer/scene/SceneGenerator.h>
+#include <scene/Ground.h>
+#include <scene/SceneGenerator.h>
 
 #include <algorithm>
 #include <iomanip>

@@ -1,5 +1,5 @@
-#include "Commands.h"
-#include "Viewer.h"
+#include <app/Commands.h>
+#include <app/Viewer.h>
 
 #include <base/InputFile.h>
 
@@ -31,7 +31,7 @@ Runner addViewCommand(CLI::App& app) {
     cmd->add_option("--screenshot", s->screenshot, "With --frames: save the last frame as PNG")
         ->check(outputFile());
     cmd->add_option("--script", s->script,
-                    "Replay input events from FILE (see app/src/InputScript.h; at most " +
+                    "Replay input events from FILE (see app/include/app/InputScript.h; at most " +
                         std::to_string(kTextInputLimitMiB) + " MiB), then close")
         ->check(CLI::ExistingFile);
     cmd->add_option("--screenshot-dir", *captureDir,

@@ -1,12 +1,12 @@
-#include "Viewer.h"
+#include <app/Viewer.h>
 
-#include "Commands.h"
+#include <app/Commands.h>
 
 #include <base/Process.h>
 #include <base/Text.h>
 #include <gpu/LiveObjects.h>
-#include <renderer/io/Capture.h>
-#include <renderer/io/ImageIO.h>
+#include <renderer/io/TextureImage.h>
+#include <renderer/run/Capture.h>
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>

@@ -1,13 +1,13 @@
 // The viewer's actions (what the key table's entries do), the HUD text, screenshots, the live
 // comparison with standard flooding, and the outputs written on exit.
 
-#include "Viewer.h"
+#include <app/Viewer.h>
 
 #include <base/OutputFiles.h>
 #include <base/Text.h>
-#include <renderer/io/Capture.h>
-#include <renderer/io/ImageIO.h>
-#include <renderer/scene/CameraPath.h>
+#include <renderer/io/TextureImage.h>
+#include <renderer/run/Capture.h>
+#include <scene/CameraPath.h>
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>

@@ -1,4 +1,4 @@
-#include "ViewerInput.h"
+#include <app/ViewerInput.h>
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>

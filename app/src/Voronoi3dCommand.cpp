@@ -1,11 +1,11 @@
 // `floodlight voronoi3d`: 3D Voronoi diagrams by jump flooding (thesis §4.6): 3D JFA and its
-// variants or the slice-by-slice variant, on the CPU (jfa/Jfa3d.h) or the GPU (jfa/GlJfa3d.h,
+// variants or the slice-by-slice variant, on the CPU (jfa/Jfa3d.h) or the GPU (jfa_gl/GlJfa3d.h,
 // its twin voxel for voxel), with the error voxels counted against the exact diagram, times,
 // slice pictures and an EXR volume of distances.
 
-#include "Commands.h"
-#include "Voronoi3dInput.h"
-#include "Voronoi3dOutput.h"
+#include <app/Commands.h>
+#include <app/Voronoi3dInput.h>
+#include <app/Voronoi3dOutput.h>
 
 #include <renderer/context/EglContext.h>
 
@@ -14,8 +14,8 @@
 #include <base/Parallel.h>
 #include <base/Stats.h>
 
-#include <jfa/GlJfa3d.h>
 #include <jfa/Jfa3d.h>
+#include <jfa_gl/GlJfa3d.h>
 
 #include <chrono>
 #include <iomanip>

@@ -1,4 +1,4 @@
-#include "Voronoi3dInput.h"
+#include <app/Voronoi3dInput.h>
 
 #include <base/Numbers.h>
 

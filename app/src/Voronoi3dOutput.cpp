@@ -1,8 +1,8 @@
-#include "Voronoi3dOutput.h"
+#include <app/Voronoi3dOutput.h>
 
-#include "Common.h"
+#include <app/Common.h>
 
-#include <renderer/io/ImageIO.h>
+#include <io/ImageIO.h>
 
 #include <algorithm>
 #include <cmath>

@@ -2,11 +2,11 @@
 // on the GPU or the CPU, with errors counted against the exact diagram; with --exact the flood
 // is then repaired to that exact diagram (jfa/ExactRepair.h).
 
-#include "Commands.h"
+#include <app/Commands.h>
 
+#include <io/ImageIO.h>
+#include <io/MaskImage.h>
 #include <renderer/context/EglContext.h>
-#include <renderer/io/ImageIO.h>
-#include <renderer/io/MaskImage.h>
 
 #include <base/InputFile.h>
 #include <base/OutputFiles.h>
@@ -17,10 +17,11 @@
 #include <jfa/DistanceTransform.h>
 #include <jfa/ErrorAnalysis.h>
 #include <jfa/ExactRepair.h>
-#include <jfa/GlKernel.h>
 #include <jfa/Plan.h>
 #include <jfa/Reference.h>
 #include <jfa/Sites.h>
+#include <jfa_gl/GlExactRepair.h>
+#include <jfa_gl/GlKernel.h>
 
 #include <algorithm>
 #include <chrono>

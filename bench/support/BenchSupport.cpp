@@ -1,6 +1,6 @@
 #include "BenchSupport.h"
 
-#include <renderer/gltf/GltfLoader.h>
+#include <scene/GltfLoader.h>
 
 #include <algorithm>
 #include <iostream>

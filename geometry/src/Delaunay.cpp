@@ -17,7 +17,7 @@
 
 #include <geometry/Predicates.h>
 
-#include "DelaunaySteps.h"
+#include <geometry/detail/DelaunaySteps.h>
 
 #include <jfa/CpuKernel.h>
 

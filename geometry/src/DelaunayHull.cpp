@@ -12,7 +12,7 @@
 //   - collinear turns (orientation 0) add nothing: collinear hull points stay on the hull.
 // All tests are on pixel positions in 64-bit integers. Whether the result really is a
 // triangulation of S' is not assumed: the driver certifies it (WorkMesh::isTriangulation).
-#include "DelaunaySteps.h"
+#include <geometry/detail/DelaunaySteps.h>
 
 #include <algorithm>
 

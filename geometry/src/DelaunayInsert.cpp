@@ -9,7 +9,7 @@
 // order (DelaunayOrder.cpp): inserting without flips and leaving them all to C4 was quadratic
 // when many sites share few pixels (kuzmin, two-lines), as every walk then crossed a fan of
 // ever thinner triangles and C4 had to undo them with cascades of flips.
-#include "DelaunaySteps.h"
+#include <geometry/detail/DelaunaySteps.h>
 
 #include <base/Parallel.h>
 

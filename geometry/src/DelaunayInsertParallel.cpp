@@ -23,7 +23,7 @@
 // is one of WorkMesh's, which keep it, on triangles no one else touches), and C4 flips whatever
 // was left. The result after C4 is the Delaunay triangulation, the same set of triangles as the
 // sequential path wherever it is unique (tests: delaunay_test, ParallelC3*).
-#include "DelaunaySteps.h"
+#include <geometry/detail/DelaunaySteps.h>
 
 #include "TriangulationFlip.h"
 #include "TriangulationWalk.h"

@@ -1,7 +1,7 @@
 // WorkMesh: slots, navigation, point location and insertion (thesis §6.3.3, the operations
 // steps C2 and C3 are made of). Removal is in DelaunayRemove.cpp, building and checking in
 // DelaunayMeshCheck.cpp.
-#include "DelaunayMesh.h"
+#include <geometry/detail/DelaunayMesh.h>
 
 #include "TriangulationFlip.h"
 #include "TriangulationWalk.h"

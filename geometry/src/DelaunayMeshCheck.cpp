@@ -1,6 +1,6 @@
 // WorkMesh: adjacency from a triangle list, and the O(n) check of the degree argument
 // (DelaunayMesh.h) that certifies the mesh C1 hands to C2.
-#include "DelaunayMesh.h"
+#include <geometry/detail/DelaunayMesh.h>
 
 #include "TriangulationFlip.h"
 

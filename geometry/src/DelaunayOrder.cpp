@@ -5,7 +5,7 @@
 // expected work of the incremental algorithm linear whatever the distribution: a plain
 // left-to-right or per-pixel order made C3/C4 quadratic on clustered input (kuzmin: nearly all
 // sites in one pixel) and on collinear input (two-lines: long cascades of flips).
-#include "DelaunaySteps.h"
+#include <geometry/detail/DelaunaySteps.h>
 
 #include <algorithm>
 #include <cstdint>

@@ -2,7 +2,7 @@
 // repair behind every "bad" shift of step C2 (thesis §6.3.3: "delete all the triangles around s'
 // ... this hole is triangulated", or "we get a polygonal line ... and locally fix the convex
 // hull").
-#include "DelaunayMesh.h"
+#include <geometry/detail/DelaunayMesh.h>
 
 #include <stdexcept>
 

@@ -35,7 +35,7 @@
 //     stands on its own position (counted as bad).
 //   - A removal that would leave no triangle (a mesh of one strip) reports `stuck`; the driver
 //     then falls back to rebuild().
-#include "DelaunaySteps.h"
+#include <geometry/detail/DelaunaySteps.h>
 
 namespace fl::geom::detail {
 

@@ -1,8 +1,8 @@
 #include <geometry/Predicates.h>
 
 #include "BigInteger.h"
-#include "DelaunayPredicates.h"
 #include "Expansion.h"
+#include <geometry/detail/DelaunayPredicates.h>
 
 #include <bit>
 #include <climits>

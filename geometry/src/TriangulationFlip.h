@@ -6,7 +6,7 @@
 #include <geometry/Predicates.h>
 #include <geometry/Triangulation.h>
 
-#include "DelaunayPredicates.h"
+#include <geometry/detail/DelaunayPredicates.h>
 
 #include <cstdint>
 #include <vector>

@@ -1,9 +1,9 @@
 #include "GlTest.h"
 
 #include <renderer/Renderer.h>
-#include <renderer/io/Capture.h>
+#include <renderer/run/Capture.h>
 
-#include <jfa/GlKernel.h>
+#include <jfa_gl/GlKernel.h>
 
 #include <cstdlib>
 #include <stdexcept>

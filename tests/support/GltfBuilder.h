@@ -2,7 +2,7 @@
 // Minimal glTF files built in code for the loader tests: each test states the one defect or
 // feature it is about instead of storing a fixture.
 
-#include <renderer/gltf/GltfLoader.h>
+#include <scene/GltfLoader.h>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

@@ -1,7 +1,7 @@
 #include "ImageCompare.h"
 #include "TestPaths.h"
 
-#include <renderer/io/Capture.h>
+#include <renderer/run/Capture.h>
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 #pragma once
 // Golden-image comparison with explicit tolerances; on failure writes actual and diff images.
 
-#include <renderer/io/ImageIO.h>
+#include <io/ImageIO.h>
 
 #include <filesystem>
 #include <string>

@@ -1,6 +1,6 @@
 #include "TestScenes.h"
 
-#include <renderer/scene/AlphaCoverage.h>
+#include <scene/AlphaCoverage.h>
 
 #include <cmath>
 

@@ -2,7 +2,7 @@
 // Small hand-built scenes with known answers, and a CPU ray caster as the reference for shadows.
 
 #include <renderer/Renderer.h>
-#include <renderer/scene/Scene.h>
+#include <scene/Scene.h>
 
 namespace fl::test {
 
@@ -35,7 +35,7 @@ SceneView spotLitBox();
 /// CPU reference for a hard shadow: 1 if the segment from `p` towards the light (direction
 /// -light.direction for directional lights, else to light.position) hits no triangle, 0 if it
 /// does. `epsilon` skips hits right at p (the receiver itself). Alpha cut-outs let the ray through
-/// (renderer/scene/AlphaCoverage.h).
+/// (scene/AlphaCoverage.h).
 float rayCastVisibility(const Scene& scene, const Light& light, glm::vec3 p, float epsilon = 1e-3f);
 
 } // namespace fl::test

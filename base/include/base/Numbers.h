@@ -1,5 +1,5 @@
 #pragma once
-// One check for every number a user gives us: command-line options (app/src/Common.h wraps it
+// One check for every number a user gives us: command-line options (app/Common.h wraps it
 // as CLI11 validators), method options (the method table) and the numbers of scripts. A number
 // must be finite and within its range; an integer must also be whole. The message says which
 // rule failed and quotes what was given.

@@ -8,7 +8,7 @@
 //   C4 flip edges until every edge is locally Delaunay (the flips of Triangulation.h's
 //      legalize, run as one sweep over the edges).
 // Every decision uses the exact predicates (Predicates.h), and every CPU step keeps a valid
-// triangulation (geometry/src/DelaunayMesh.h has the argument); with `check` the result is also
+// triangulation (geometry/detail/DelaunayMesh.h has the argument); with `check` the result is also
 // verified by checkTriangulation(), and the pipeline throws if that fails.
 
 #include <geometry/DiscreteDelaunay.h>

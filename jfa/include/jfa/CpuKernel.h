@@ -1,6 +1,6 @@
 #pragma once
 // The CPU flood kernel: runs a Plan with a Criterion on a Grid, rows split among std::threads.
-// It is the reference the GL kernels (jfa/GlKernel.h) replicate texel for texel, so its
+// It is the reference the GL kernels (jfa_gl/GlKernel.h) replicate texel for texel, so its
 // semantics are spelled out exactly here.
 //
 // Semantics of flood(plan, fullResSeeds, criterion):

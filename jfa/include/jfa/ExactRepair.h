@@ -1,7 +1,7 @@
 #pragma once
 // The exact repair behind `voronoi --exact` (issue 31 item 3): a flood's answer per texel is
 // corrected to a truly nearest site by a greedy walk on a graph of the sites, on the CPU here and
-// by a GL compute twin (GlExactRepair) that does the same texel for texel.
+// by a GL compute twin (GlExactRepair, jfa_gl/GlExactRepair.h) that does the same texel for texel.
 //
 // The walk. Texel p starts at the graph vertex its flooded cell names (cell.w, see SiteGraph),
 // or at vertex 0 if the cell is empty, and moves to the best neighbour under NearestSite::better
@@ -29,9 +29,6 @@
 
 #include <jfa/Grid.h>
 #include <jfa/NearestSite.h>
-
-#include <gpu/Gl.h>
-#include <gpu/Program.h>
 
 #include <cstdint>
 #include <vector>
@@ -64,22 +61,5 @@ enum class RepairMethod {
 /// the graph does not have.
 void repairNearest(Grid& flooded, const SiteGraph& graph, int threads = 0,
                    RepairMethod method = RepairMethod::RowIntervals);
-
-/// The GL twin of repairNearest (shaders/jfa_exact_repair.comp.glsl), texel for texel equal.
-class GlExactRepair {
-  public:
-    explicit GlExactRepair(const gl::ShaderLibrary& shaders);
-    /// Uploads the graph the next runs walk on (three storage buffers).
-    void setGraph(const SiteGraph& graph);
-    /// Writes the repaired `flooded` (RGBA32F, integer sites) into a texture this object owns
-    /// and returns it; `flooded` itself is not changed. setGraph() first.
-    const gl::Texture& run(const gl::Texture& flooded);
-
-  private:
-    gl::Program program_;
-    gl::Buffer vertices_, offsets_, neighbours_;
-    std::uint32_t vertexCount_ = 0;
-    gl::Texture out_;
-};
 
 } // namespace fl::jfa

@@ -21,9 +21,10 @@
 #include <renderer/passes/ShadowMapPass.h>
 #include <renderer/passes/SurfacesPass.h>
 #include <renderer/scene/GpuScene.h>
-#include <renderer/scene/Pose.h>
-#include <renderer/scene/Scene.h>
-#include <renderer/soft/DiskLight.h>
+#include <scene/Camera.h>
+#include <scene/DiskLight.h>
+#include <scene/Pose.h>
+#include <scene/Scene.h>
 
 #include <geometry/Framing.h>
 
@@ -50,34 +51,6 @@ struct RenderSettings {
     /// frame with the share done, in [0, 1], on the rendering thread.
     std::function<void(double)> progress;
 };
-
-/// How to pick the camera: a glTF camera, automatic framing, or an explicit eye/target.
-struct CameraSpec {
-    enum class Kind { Default, Auto, Gltf, LookAt };
-    Kind kind = Kind::Default; // Default: the scene's first camera if it has one, else Auto
-    int gltfIndex = 0;
-    glm::vec3 eye{0.0f}, target{0.0f};
-    std::optional<float> yfovDegrees; // overrides the camera's field of view
-};
-
-/// The automatic view's direction (from the target to the eye) and vertical field of view (when
-/// --fov does not set it).
-inline const glm::vec3 kAutoViewFrom{0.55f, 0.5f, 0.75f};
-inline constexpr float kAutoViewFovDegrees = 50.0f;
-
-/// The camera for `spec` at the given aspect ratio; throws std::invalid_argument for a glTF
-/// camera index the scene does not have. The automatic view (Auto, and Default for a scene
-/// without cameras) frames the scene's bounds, or, on a ground Floodlight added, the model and
-/// its shadow under sceneLight (modelAndShadowPoints, Ground.h), as tightly as they allow.
-CameraView makeCameraView(const Scene& scene, const CameraSpec& spec, float aspect);
-
-/// The scene's light, or the default one (above and to the side of the bounds) if it has none.
-Light sceneLight(const Scene& scene);
-
-/// The light's view volume fitted to the scene bounds.
-geom::ViewVolume lightVolume(const Scene& scene, const Light& light);
-/// The same for scene bounds `bounds`.
-geom::ViewVolume lightVolume(const geom::Aabb& bounds, const Light& light);
 
 /// The timed passes of a frame with method `m`, in frame order, as PassTimer names them:
 /// "shadow map", "surfaces", the method's phases (its table row), "shading".
@@ -146,7 +119,7 @@ class Renderer {
     /// Replaces the light (e.g. moved from the window): recomputes the disk light and the light's
     /// view volume from the scene bounds; the next render() uses it.
     void setLight(const Light& light);
-    /// Plays `animations` (indices into the scene's: chooseAnimations, renderer/scene/Pose.h)
+    /// Plays `animations` (indices into the scene's: chooseAnimations, scene/Pose.h)
     /// from now on, posed at time 0. The light's frustum fits every pose they take
     /// (animatedBounds), so that the map's texel grid stays put while they move. A new renderer
     /// plays all of the scene's.

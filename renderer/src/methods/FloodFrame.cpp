@@ -3,7 +3,7 @@
 #include <renderer/soft/EyeSoftShadow.h>
 #include <renderer/soft/PenumbraMap.h>
 
-#include <jfa/GlKernel.h>
+#include <jfa_gl/GlKernel.h>
 
 #include <stdexcept>
 

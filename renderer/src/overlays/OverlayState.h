@@ -7,8 +7,8 @@
 #include <renderer/soft/PenumbraCriterion.h>
 
 #include <geometry/Delaunay.h>
-#include <jfa/GlKernel.h>
 #include <jfa/NearestSite.h>
+#include <jfa_gl/GlKernel.h>
 
 #include <optional>
 #include <string>

@@ -1,4 +1,4 @@
-#include <renderer/io/ImageIO.h>
+#include <io/ImageIO.h>
 #include <renderer/passes/SurfaceDecode.h>
 
 #include <cmath>

@@ -1,3 +1,4 @@
+#include <renderer/io/TextureImage.h>
 #include <renderer/passes/SurfaceDecode.h>
 #include <renderer/passes/SurfacesPass.h>
 

@@ -1,10 +1,10 @@
 #include <renderer/run/FrameRunner.h>
 
 #include <base/Stats.h>
-#include <renderer/io/ImageIO.h>
+#include <io/ImageIO.h>
 #include <renderer/metrics/BiasArtifacts.h>
-#include <renderer/scene/Pose.h>
 #include <renderer/soft/ShadowRayInputs.h>
+#include <scene/Pose.h>
 
 #include <glm/geometric.hpp>
 

@@ -1,3 +1,4 @@
+#include <renderer/io/TextureImage.h>
 #include <renderer/soft/ReferenceShadow.h>
 
 #include <renderer/metrics/Metrics.h>

@@ -1,7 +1,8 @@
+#include <renderer/io/TextureImage.h>
 #include <renderer/soft/ShadowRayInputs.h>
 
 #include <renderer/passes/SurfaceDecode.h>
-#include <renderer/scene/AlphaCoverage.h>
+#include <scene/AlphaCoverage.h>
 
 #include <base/Text.h>
 

@@ -12,14 +12,14 @@
 #include <gpu/PassTimer.h>
 #include <gpu/ShaderLibrary.h>
 #include <jfa/Band.h>
-#include <jfa/GlKernel.h>
+#include <jfa_gl/GlKernel.h>
 #include <renderer/methods/MethodOptions.h>
 #include <renderer/passes/ShadowMapPass.h>
 #include <renderer/passes/SurfacesPass.h>
 #include <renderer/scene/GpuScene.h>
-#include <renderer/scene/Scene.h>
-#include <renderer/soft/DiskLight.h>
 #include <renderer/soft/PenumbraReach.h>
+#include <scene/DiskLight.h>
+#include <scene/Scene.h>
 
 #include <geometry/Aabb.h>
 #include <geometry/Framing.h>

@@ -16,7 +16,7 @@
 //   (Chebyshev: a 7 x 7 window) of a contact pixel. Peter-panning: the share of them the method
 //   lights by more than 0.1 (method - truth > 0.1).
 
-#include <renderer/io/ImageIO.h>
+#include <renderer/io/TextureImage.h>
 
 #include <glm/vec3.hpp>
 

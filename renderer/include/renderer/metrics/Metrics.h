@@ -21,7 +21,7 @@
 //   of these (robust to depth edges, plateaus and noise). An image with no such pixel (a hard
 //   edge, or no shadow) has width 0.
 
-#include <renderer/io/ImageIO.h>
+#include <io/ImageIO.h>
 
 #include <cstddef>
 #include <cstdint>

@@ -4,7 +4,7 @@
 // receivers whose visibility changed since the previous frame, the aliasing-map EXR and a
 // footprint heat map.
 
-#include <renderer/io/ImageIO.h>
+#include <io/ImageIO.h>
 
 #include <filesystem>
 

@@ -3,7 +3,7 @@
 // Fig. 5.4 and 5.8): penumbra pixels, the share of them in each |dI| bucket, and the share of
 // pixels whose parity (penumbra or not) differs.
 
-#include <renderer/io/ImageIO.h>
+#include <io/ImageIO.h>
 
 #include <array>
 #include <cstddef>

@@ -6,7 +6,7 @@
 #include <gpu/Gl.h>
 #include <gpu/Program.h>
 #include <gpu/ShaderLibrary.h>
-#include <renderer/soft/DiskLight.h>
+#include <scene/DiskLight.h>
 
 #include <glm/glm.hpp>
 

@@ -2,7 +2,7 @@
 // Overlays drawn off screen: the picture `floodlight render --overlay` writes and the tests
 // compare with goldens and CPU references.
 
-#include <renderer/io/ImageIO.h>
+#include <io/ImageIO.h>
 #include <renderer/overlays/Overlay.h>
 
 #include <string>

@@ -3,9 +3,9 @@
 // passes (flood pass by pass), seeds turned into point sites, and a GL flood of those sites
 // judged against the exact diagram (CPU, jfa/Reference.h).
 
-#include <jfa/GlKernel.h>
 #include <jfa/Grid.h>
 #include <jfa/Plan.h>
+#include <jfa_gl/GlKernel.h>
 
 #include <cstdint>
 #include <span>

@@ -7,7 +7,7 @@
 #include <gpu/Gl.h>
 #include <gpu/Program.h>
 #include <gpu/ShaderLibrary.h>
-#include <renderer/io/ImageIO.h>
+#include <io/ImageIO.h>
 
 #include <glm/glm.hpp>
 

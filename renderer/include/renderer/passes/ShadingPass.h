@@ -12,7 +12,7 @@
 #include <gpu/ShaderLibrary.h>
 #include <renderer/passes/SurfacesPass.h>
 #include <renderer/scene/GpuScene.h>
-#include <renderer/scene/Scene.h>
+#include <scene/Scene.h>
 
 namespace fl {
 

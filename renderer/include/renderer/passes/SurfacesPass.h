@@ -8,20 +8,14 @@
 #include <gpu/Gl.h>
 #include <gpu/Program.h>
 #include <gpu/ShaderLibrary.h>
-#include <renderer/io/ImageIO.h>
+#include <renderer/io/TextureImage.h>
 #include <renderer/scene/GpuScene.h>
-#include <renderer/scene/Scene.h>
+#include <scene/Camera.h>
+#include <scene/Scene.h>
 
 #include <functional>
 
 namespace fl {
-
-/// What the camera sees with: matrices and eye position.
-struct CameraView {
-    glm::mat4 view{1.0f};
-    glm::mat4 proj{1.0f};
-    glm::vec3 eye{0.0f};
-};
 
 /// The frame's world positions as the surfaces pass stores them: its reversed-Z depth and the
 /// inverse of the matrix that wrote it.

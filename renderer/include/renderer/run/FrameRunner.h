@@ -7,8 +7,8 @@
 
 #include <gpu/PassTimer.h>
 #include <renderer/Renderer.h>
-#include <renderer/io/Capture.h>
-#include <renderer/scene/CameraPath.h>
+#include <renderer/run/Capture.h>
+#include <scene/CameraPath.h>
 
 #include <glm/vec3.hpp>
 #include <nlohmann/json.hpp>
@@ -121,7 +121,7 @@ struct FramePlan {
     /// are mapped, and passed to onFrame, after frame i + 1 is rendered, so the GL thread never
     /// waits for a copy. The last frame's follow when the loop ends. Same images either way.
     bool readBehind = false;
-    /// The time axis (renderer/scene/Pose.h): when set, every lane plays these animations and
+    /// The time axis (scene/Pose.h): when set, every lane plays these animations and
     /// frame i is posed at start + i * step seconds (step 0: every frame at `start`), with frame
     /// i - 1's time as the motion target's previous one.
     struct Clip {

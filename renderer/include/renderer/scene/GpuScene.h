@@ -4,8 +4,8 @@
 
 #include <gpu/Gl.h>
 #include <gpu/Program.h>
-#include <renderer/scene/Pose.h>
-#include <renderer/scene/Scene.h>
+#include <scene/Pose.h>
+#include <scene/Scene.h>
 
 #include <cstdint>
 #include <optional>

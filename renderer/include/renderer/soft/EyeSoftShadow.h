@@ -13,14 +13,14 @@
 //   phase 5  composite: per pixel the intensity from its occluder, else 0 inside / 1 outside.
 // The CPU functions are the references the GL passes are tested against.
 
-#include <renderer/io/ImageIO.h>
+#include <io/ImageIO.h>
 #include <renderer/passes/ShadowMapPass.h>
 #include <renderer/passes/SurfacesPass.h>
 #include <renderer/scene/GpuScene.h>
-#include <renderer/soft/DiskLight.h>
 #include <renderer/soft/EyeDecode.h>
 #include <renderer/soft/OccluderEdge.h>
 #include <renderer/soft/PenumbraReach.h>
+#include <scene/DiskLight.h>
 
 #include <jfa/Grid.h>
 #include <jfa/Plan.h>
@@ -29,7 +29,7 @@
 #include <gpu/PassTimer.h>
 #include <gpu/Program.h>
 #include <gpu/ShaderLibrary.h>
-#include <jfa/GlKernel.h>
+#include <jfa_gl/GlKernel.h>
 
 #include <memory>
 

@@ -26,7 +26,7 @@
 #include <renderer/passes/ShadowMapPass.h>
 #include <renderer/passes/SurfacesPass.h>
 #include <renderer/scene/GpuScene.h>
-#include <renderer/soft/DiskLight.h>
+#include <scene/DiskLight.h>
 
 #include <geometry/Framing.h>
 

@@ -3,8 +3,8 @@
 // matches operation for operation): the test JFA-L's silhouette pass uses, and the occluder
 // point moved from the texel's centre to the edge. See the GLSL file for why.
 
-#include <renderer/soft/DiskLight.h>
 #include <renderer/soft/PenumbraCriterion.h>
+#include <scene/DiskLight.h>
 
 #include <glm/glm.hpp>
 

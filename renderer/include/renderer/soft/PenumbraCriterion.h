@@ -5,8 +5,8 @@
 
 #include <renderer/passes/ShadowMapDecode.h>
 #include <renderer/passes/ShadowMapPass.h>
-#include <renderer/soft/DiskLight.h>
 #include <renderer/soft/PenumbraReach.h>
+#include <scene/DiskLight.h>
 
 #include <jfa/Grid.h>
 

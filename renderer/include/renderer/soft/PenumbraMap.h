@@ -9,8 +9,8 @@
 
 #include <gpu/PassTimer.h>
 #include <gpu/ShaderLibrary.h>
-#include <jfa/GlKernel.h>
 #include <jfa/Plan.h>
+#include <jfa_gl/GlKernel.h>
 
 namespace fl {
 

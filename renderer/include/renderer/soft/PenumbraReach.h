@@ -30,9 +30,9 @@
 // JFA-L band (6.1%) and a wider JFA-E one (58%).
 
 #include <renderer/passes/ShadowMapPass.h>
-#include <renderer/scene/Pose.h>
-#include <renderer/scene/Scene.h>
-#include <renderer/soft/DiskLight.h>
+#include <scene/DiskLight.h>
+#include <scene/Pose.h>
+#include <scene/Scene.h>
 
 #include <gpu/Program.h>
 #include <gpu/ShaderLibrary.h>

@@ -17,11 +17,11 @@
 #include <gpu/PassTimer.h>
 #include <gpu/Program.h>
 #include <gpu/ShaderLibrary.h>
-#include <renderer/io/ImageIO.h>
+#include <io/ImageIO.h>
 #include <renderer/passes/ShadowMapPass.h>
 #include <renderer/passes/SurfacesPass.h>
 #include <renderer/scene/GpuScene.h>
-#include <renderer/soft/DiskLight.h>
+#include <scene/DiskLight.h>
 
 #include <geometry/Aabb.h>
 #include <geometry/DiskSampling.h>

@@ -6,8 +6,8 @@
 #include <raytrace/ShadowRays.h>
 #include <renderer/metrics/BiasArtifacts.h>
 #include <renderer/passes/SurfacesPass.h>
-#include <renderer/scene/Pose.h>
-#include <renderer/scene/Scene.h>
+#include <scene/Pose.h>
+#include <scene/Scene.h>
 
 #include <vector>
 
@@ -17,10 +17,10 @@ namespace fl {
 /// std::invalid_argument naming the node and mesh when a node's transform takes a vertex beyond
 /// rt::kMaxCoordinate (the loader has already refused non-finite input). With the vertex normals
 /// (for the terminator offset), turned as the vertex stage turns them. The triangles of MASK
-/// and BLEND materials are cut out as the GL passes cut them (renderer/scene/AlphaCoverage.h);
+/// and BLEND materials are cut out as the GL passes cut them (scene/AlphaCoverage.h);
 /// that test reads `scene`, which must outlive the result and any RayScene built from it.
 rt::Triangles worldTriangles(const Scene& scene);
-/// The same triangles' vertices in `pose` (renderer/scene/Pose.h): what RayScene::refit takes
+/// The same triangles' vertices in `pose` (scene/Pose.h): what RayScene::refit takes
 /// for an animated frame; their normals into `normals` when given.
 std::vector<glm::vec3> worldVertices(const Scene& scene, const Pose& pose,
                                      std::vector<glm::vec3>* normals = nullptr);

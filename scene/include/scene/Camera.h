@@ -1,0 +1,52 @@
+#pragma once
+// Cameras and the light's frame, as pure math on the scene (CPU): what the camera sees with, how
+// a user picks it (a glTF camera, the automatic view, an eye and a target), and the light's view
+// volume fitted to the scene.
+
+#include <scene/Scene.h>
+
+#include <geometry/Aabb.h>
+#include <geometry/Framing.h>
+
+#include <glm/glm.hpp>
+
+#include <optional>
+
+namespace fl {
+
+/// What the camera sees with: matrices and eye position.
+struct CameraView {
+    glm::mat4 view{1.0f};
+    glm::mat4 proj{1.0f};
+    glm::vec3 eye{0.0f};
+};
+
+/// How to pick the camera: a glTF camera, automatic framing, or an explicit eye/target.
+struct CameraSpec {
+    enum class Kind { Default, Auto, Gltf, LookAt };
+    Kind kind = Kind::Default; // Default: the scene's first camera if it has one, else Auto
+    int gltfIndex = 0;
+    glm::vec3 eye{0.0f}, target{0.0f};
+    std::optional<float> yfovDegrees; // overrides the camera's field of view
+};
+
+/// The automatic view's direction (from the target to the eye) and vertical field of view (when
+/// --fov does not set it).
+inline const glm::vec3 kAutoViewFrom{0.55f, 0.5f, 0.75f};
+inline constexpr float kAutoViewFovDegrees = 50.0f;
+
+/// The camera for `spec` at the given aspect ratio; throws std::invalid_argument for a glTF
+/// camera index the scene does not have. The automatic view (Auto, and Default for a scene
+/// without cameras) frames the scene's bounds, or, on a ground Floodlight added, the model and
+/// its shadow under sceneLight (modelAndShadowPoints, Ground.h), as tightly as they allow.
+CameraView makeCameraView(const Scene& scene, const CameraSpec& spec, float aspect);
+
+/// The scene's light, or the default one (above and to the side of the bounds) if it has none.
+Light sceneLight(const Scene& scene);
+
+/// The light's view volume fitted to the scene bounds.
+geom::ViewVolume lightVolume(const Scene& scene, const Light& light);
+/// The same for scene bounds `bounds`.
+geom::ViewVolume lightVolume(const geom::Aabb& bounds, const Light& light);
+
+} // namespace fl

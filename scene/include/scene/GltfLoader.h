@@ -1,0 +1,31 @@
+#pragma once
+// glTF 2.0 (.gltf / .glb) loading with validation of everything Floodlight uses.
+
+#include <scene/Scene.h>
+
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+namespace fl {
+
+/// Thrown for a scene that cannot be used; what() names the file, the element and the problem,
+/// e.g. "scene.gltf: accessors[3]: index 812 past vertex count 800".
+class SceneError : public std::runtime_error {
+  public:
+    using std::runtime_error::runtime_error;
+};
+
+struct LoadOptions {
+    /// Overrides the light's disk radius (else extras.radius, else 2% of the scene's radius).
+    std::optional<float> lightRadius;
+    /// Receives warnings about repaired or skipped content ("file: element: what was done").
+    std::function<void(const std::string&)> warn;
+};
+
+/// Loads a .gltf or .glb file into a Scene; throws SceneError on anything unusable.
+Scene loadGltf(const std::filesystem::path& file, const LoadOptions& options = {});
+
+} // namespace fl

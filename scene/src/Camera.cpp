@@ -1,0 +1,90 @@
+#include <scene/Camera.h>
+#include <scene/Ground.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace fl {
+
+CameraView makeCameraView(const Scene& scene, const CameraSpec& spec, float aspect) {
+    CameraSpec::Kind kind = spec.kind;
+    if (kind == CameraSpec::Kind::Default)
+        kind = scene.cameras.empty() ? CameraSpec::Kind::Auto : CameraSpec::Kind::Gltf;
+    CameraView out;
+    const float r = std::max(scene.bounds.radius(), 1e-3f);
+    switch (kind) {
+    case CameraSpec::Kind::Gltf: {
+        if (spec.gltfIndex < 0 || spec.gltfIndex >= static_cast<int>(scene.cameras.size()))
+            throw std::invalid_argument("--camera " + std::to_string(spec.gltfIndex) +
+                                        ": the scene has " + std::to_string(scene.cameras.size()) +
+                                        " camera(s)");
+        const Camera& c = scene.cameras[static_cast<size_t>(spec.gltfIndex)];
+        const float fov = spec.yfovDegrees ? glm::radians(*spec.yfovDegrees) : c.yfov;
+        out.view = c.view;
+        out.proj = glm::perspective(fov, aspect, c.znear, c.zfar);
+        out.eye = glm::vec3(glm::inverse(c.view)[3]);
+        return out;
+    }
+    case CameraSpec::Kind::LookAt: {
+        const float fov = glm::radians(spec.yfovDegrees.value_or(50.0f));
+        const glm::vec3 dir = spec.target - spec.eye;
+        if (glm::length(dir) < 1e-6f)
+            throw std::invalid_argument("--eye and --target are the same point");
+        out.view = glm::lookAt(spec.eye, spec.target, geom::stableUp(dir));
+        // Near/far from the distance to the bounds so depth precision follows the scene.
+        const float d = glm::length(scene.bounds.center() - spec.eye);
+        const float znear = std::max(1e-3f * r, (d - r) * 0.5f);
+        out.proj = glm::perspective(fov, aspect, znear, (d + r) * 1.5f);
+        out.eye = spec.eye;
+        return out;
+    }
+    default: {
+        const float fov = glm::radians(spec.yfovDegrees.value_or(kAutoViewFovDegrees));
+        const glm::vec3 from = kAutoViewFrom;
+        // A model on the ground Floodlight added is framed with its shadow, as tightly as they
+        // allow (a 5% border), not the whole ground it would be a speck on (issue 30 item 6); a
+        // scene of its own is framed whole, as before.
+        const std::vector<glm::vec3> focus = modelAndShadowPoints(scene, sceneLight(scene));
+        const geom::ViewVolume v =
+            focus.empty() ? geom::frameBounds(scene.bounds, from, fov, aspect)
+                          : geom::framePointsTightly(focus, scene.bounds, from, fov, aspect, 0.9f);
+        out.view = v.view;
+        out.proj = v.proj;
+        out.eye = glm::vec3(glm::inverse(v.view)[3]);
+        return out;
+    }
+    }
+}
+
+Light sceneLight(const Scene& scene) {
+    if (scene.light) return *scene.light;
+    Light l;
+    l.name = "default";
+    l.type = Light::Type::Point;
+    const float r = std::max(scene.bounds.radius(), 1e-3f);
+    l.position = scene.bounds.center() + glm::normalize(glm::vec3(-0.5f, 1.0f, 0.35f)) * (2.5f * r);
+    l.direction = glm::normalize(scene.bounds.center() - l.position);
+    l.radius = 0.02f * r;
+    return l;
+}
+
+geom::ViewVolume lightVolume(const Scene& scene, const Light& light) {
+    return lightVolume(scene.bounds, light);
+}
+
+geom::ViewVolume lightVolume(const geom::Aabb& bounds, const Light& light) {
+    if (light.type == Light::Type::Directional)
+        return geom::fitDirectionalLight(bounds, light.direction);
+    // A spot light's own axis is the fallback when aiming at the bounds' centre would leave
+    // scene corners behind the light (geom::fitPerspectiveLight).
+    return geom::fitPerspectiveLight(bounds, light.position,
+                                     light.type == Light::Type::Spot ? light.direction
+                                                                     : glm::vec3(0.0f));
+}
+
+} // namespace fl

@@ -1,0 +1,174 @@
+// Includes run only downward (issue 29 item 1): each library includes its own headers and those
+// of the libraries below it (the picture in DESIGN.md), the CPU libraries include no GL header,
+// inside the renderer each folder includes only the folders below it, and nothing reaches into
+// another library's src/. The table below is the rule; the scan reads every source of the tree.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Each library (its folder and include prefix) and the libraries it may include, itself aside.
+// Mirrors the CMake link lines: a library may include what it links, directly or through others.
+const std::map<std::string, std::set<std::string>>& layers() {
+    static const std::map<std::string, std::set<std::string>> table = {
+        {"base", {}},
+        {"io", {"base"}},
+        {"gpu", {"base"}},
+        {"jfa", {"base"}},
+        {"jfa_gl", {"jfa", "gpu", "base"}},
+        {"geometry", {"jfa", "base"}},
+        {"geometry_gl", {"geometry", "jfa_gl", "jfa", "gpu", "base"}},
+        {"scene", {"geometry", "jfa", "io", "base"}},
+        {"raytrace", {"scene", "geometry", "jfa", "io", "base"}},
+        {"renderer",
+         {"scene", "raytrace", "geometry_gl", "geometry", "jfa_gl", "jfa", "io", "gpu", "base"}},
+        {"app",
+         {"renderer", "scene", "raytrace", "geometry_gl", "geometry", "jfa_gl", "jfa", "io", "gpu",
+          "base"}},
+    };
+    return table;
+}
+
+// The libraries that must build without GL: no GL, EGL, GLFW or epoxy header.
+const std::set<std::string> kCpuLibraries = {"base", "io", "jfa", "geometry", "scene", "raytrace"};
+
+// The renderer's folders, bottom to top: a folder includes only those before it (and the files
+// at the renderer's top, Renderer.h, sit between methods and overlays).
+const std::vector<std::string> kRendererOrder = {
+    "context", "io", "scene", "passes", "metrics", "soft", "methods", "", "overlays", "run"};
+
+struct Include {
+    int line = 0;
+    std::string path;   // as written
+    bool angled = true; // <...> rather than "..."
+};
+
+std::vector<Include> includesOf(const std::string& text) {
+    static const std::regex re(R"(^\s*#\s*include\s*([<"])([^>"]+)[>"])");
+    std::vector<Include> out;
+    std::istringstream in(text);
+    std::string line;
+    for (int n = 1; std::getline(in, line); ++n) {
+        std::smatch m;
+        if (std::regex_search(line, m, re)) out.push_back({n, m[2].str(), m[1].str() == "<"});
+    }
+    return out;
+}
+
+// The renderer folder of a renderer source or header ("" for its top: Renderer.h/.cpp).
+std::string rendererFolder(const std::string& relative) {
+    for (const std::string prefix : {"renderer/src/", "renderer/include/renderer/"}) {
+        if (relative.rfind(prefix, 0) != 0) continue;
+        const std::string rest = relative.substr(prefix.size());
+        const auto slash = rest.find('/');
+        return slash == std::string::npos ? "" : rest.substr(0, slash);
+    }
+    return "";
+}
+
+int rendererRank(const std::string& folder) {
+    const auto it = std::find(kRendererOrder.begin(), kRendererOrder.end(), folder);
+    return it == kRendererOrder.end() ? -1 : int(it - kRendererOrder.begin());
+}
+
+} // namespace
+
+/// The problems of one file (`relative`: its path from the source root; `library`: the folder
+/// it belongs to, or "" for tests, benches, fuzz targets and main), one line each.
+std::vector<std::string> layerProblems(const std::string& relative, const std::string& library,
+                                       const std::string& text) {
+    std::vector<std::string> problems;
+    const auto& table = layers();
+    for (const Include& inc : includesOf(text)) {
+        const std::string where = relative + ":" + std::to_string(inc.line) + ": ";
+        if (inc.path.find("../") != std::string::npos ||
+            inc.path.find("/src/") != std::string::npos)
+            problems.push_back(where + "\"" + inc.path +
+                               "\" reaches into another folder's sources");
+        if (!inc.angled) continue;
+        const auto slash = inc.path.find('/');
+        const std::string prefix = slash == std::string::npos ? "" : inc.path.substr(0, slash);
+        if (kCpuLibraries.count(library) &&
+            (prefix == "epoxy" || prefix == "GL" || prefix == "EGL" || prefix == "GLFW"))
+            problems.push_back(where + "<" + inc.path + "> is GL in the CPU library " + library);
+        if (library.empty() || !table.count(prefix) || prefix == library) {
+            if (library == "renderer" && prefix == "renderer") {
+                const std::string rest = inc.path.substr(slash + 1);
+                const auto s2 = rest.find('/');
+                const std::string to = s2 == std::string::npos ? "" : rest.substr(0, s2);
+                const std::string from = rendererFolder(relative);
+                if (rendererRank(to) > rendererRank(from))
+                    problems.push_back(where + "<" + inc.path + "> runs up the renderer from " +
+                                       (from.empty() ? "its top" : from + "/") + " to " +
+                                       (to.empty() ? "its top" : to + "/"));
+            }
+            continue;
+        }
+        if (!table.at(library).count(prefix))
+            problems.push_back(where + "<" + inc.path + "> runs up from " + library + " to " +
+                               prefix);
+    }
+    return problems;
+}
+
+TEST(IncludeLayers, TheCheckFindsEachKindOfProblem) {
+    EXPECT_EQ(layerProblems("scene/src/A.cpp", "scene", "#include <renderer/Renderer.h>\n").size(),
+              1u);
+    EXPECT_EQ(layerProblems("jfa/src/A.cpp", "jfa", "#include <epoxy/gl.h>\n").size(), 1u);
+    EXPECT_EQ(layerProblems("tests/a_test.cpp", "", "#include \"../geometry/src/X.h\"\n").size(),
+              1u);
+    EXPECT_EQ(layerProblems("renderer/include/renderer/io/A.h", "renderer",
+                            "#include <renderer/Renderer.h>\n")
+                  .size(),
+              1u);
+    EXPECT_EQ(layerProblems("renderer/src/soft/A.cpp", "renderer",
+                            "#include <renderer/methods/ShadowMethod.h>\n")
+                  .size(),
+              1u);
+    // Downward and sideways-within-a-library includes are fine.
+    EXPECT_TRUE(layerProblems("renderer/src/methods/A.cpp", "renderer",
+                              "#include <renderer/soft/PenumbraMap.h>\n#include <scene/Scene.h>\n"
+                              "#include <glm/glm.hpp>\n#include \"LightLookup.h\"\n")
+                    .empty());
+    EXPECT_TRUE(layerProblems("app/src/A.cpp", "app", "#include <renderer/Renderer.h>\n").empty());
+}
+
+TEST(IncludeLayers, EverySourceOfTheTreeIncludesDownward) {
+    const fs::path root = FLOODLIGHT_SOURCE_DIR;
+    std::vector<std::string> problems;
+    std::size_t files = 0;
+    for (const std::string top :
+         {"base", "io", "gpu", "jfa", "jfa_gl", "geometry", "geometry_gl", "scene", "raytrace",
+          "renderer", "app", "tests", "bench", "fuzz"}) {
+        ASSERT_TRUE(fs::is_directory(root / top)) << top;
+        for (const auto& e : fs::recursive_directory_iterator(root / top)) {
+            const std::string ext = e.path().extension().string();
+            if (!e.is_regular_file() || (ext != ".cpp" && ext != ".h")) continue;
+            const std::string relative = fs::relative(e.path(), root).generic_string();
+            // main.cpp, tests, benches and fuzz targets sit above every library.
+            const bool library = layers().count(top) && relative != "app/main.cpp";
+            std::ifstream in(e.path());
+            std::stringstream text;
+            text << in.rdbuf();
+            const auto found = layerProblems(relative, library ? top : "", text.str());
+            problems.insert(problems.end(), found.begin(), found.end());
+            ++files;
+        }
+    }
+    EXPECT_GT(files, 300u); // the scan saw the tree
+    std::string all;
+    for (const auto& p : problems) all += p + "\n";
+    EXPECT_TRUE(problems.empty()) << problems.size() << " include(s) run up a layer:\n" << all;
+}
