@@ -60,7 +60,7 @@ std::size_t insertSites(WorkMesh& mesh, const std::vector<std::uint32_t>& sites,
     {
         std::vector<glm::dvec2> at(sites.size());
         for (std::size_t i = 0; i < sites.size(); ++i) at[i] = mesh.points[sites[i]];
-        insertionOrder(at, order);
+        insertionOrder(at, order, threads);
     }
     // Below a few thousand sites a thread costs more than it saves.
     if (bandCount(int(sites.size()), threads) > 1 && sites.size() >= kMinParallelInsert)

@@ -7,6 +7,8 @@
 // sites in one pixel) and on collinear input (two-lines: long cascades of flips).
 #include "DelaunaySteps.h"
 
+#include <base/Parallel.h>
+
 #include <algorithm>
 #include <cstdint>
 
@@ -49,11 +51,60 @@ struct HilbertSorter {
         sort(m2, m3, x, upX, upY);
         sort(m3, end, y, !upY, !upX);
     }
+
+    // One call of sort() (a range and its orientation), for the threads.
+    struct Part {
+        It begin, end;
+        int x;
+        bool upX, upY;
+    };
+
+    // sort()'s recursion down `depth` levels, the calls it would make there collected in `parts`
+    // instead: sorting each part as sort() would gives the same order as one sort() call.
+    void collect(It begin, It end, int x, bool upX, bool upY, int depth,
+                 std::vector<Part>& parts) const {
+        if (depth == 0 || end - begin <= 8) {
+            parts.push_back({begin, end, x, upX, upY});
+            return;
+        }
+        const int y = 1 - x;
+        const It m2 = split(begin, end, x, upX);
+        const It m1 = split(begin, m2, y, upY);
+        const It m3 = split(m2, end, y, !upY);
+        collect(begin, m1, y, upY, upX, depth - 1, parts);
+        collect(m1, m2, x, upX, upY, depth - 1, parts);
+        collect(m2, m3, x, upX, upY, depth - 1, parts);
+        collect(m3, end, y, !upY, !upX, depth - 1, parts);
+    }
+
+    // sort() with its quadrants (4^depth parts, enough for every thread) on `threads` threads;
+    // the order does not depend on the thread count.
+    void sortParallel(It begin, It end, int threads) const {
+        const int bands = bandCount(int(std::min<std::ptrdiff_t>(end - begin, 1 << 30)), threads);
+        if (bands == 1 || end - begin < kMinParallelSort) {
+            sort(begin, end, 0, true, true);
+            return;
+        }
+        int depth = 1;
+        while ((1 << (2 * depth)) < bands && depth < 4) ++depth;
+        std::vector<Part> parts;
+        collect(begin, end, 0, true, true, depth, parts);
+        parallelRows(int(parts.size()), threads, [&](int first, int last, int) {
+            for (int i = first; i < last; ++i) {
+                const Part& p = parts[std::size_t(i)];
+                sort(p.begin, p.end, p.x, p.upX, p.upY);
+            }
+        });
+    }
+
+    // Below this a round is sorted on the caller's thread (threads cost more than they save).
+    static constexpr std::ptrdiff_t kMinParallelSort = 16384;
 };
 
 } // namespace
 
-void insertionOrder(const std::vector<dvec2>& points, std::vector<std::uint32_t>& order) {
+void insertionOrder(const std::vector<dvec2>& points, std::vector<std::uint32_t>& order,
+                    int threads) {
     // Deterministic shuffle (xorshift64), then rounds: the first quarter recursively, the rest
     // Hilbert-sorted, so round sizes grow geometrically.
     std::uint64_t state = 0x9e3779b97f4a7c15ull;
@@ -68,7 +119,7 @@ void insertionOrder(const std::vector<dvec2>& points, std::vector<std::uint32_t>
     while (true) {
         const auto size = end - order.begin();
         const auto middle = order.begin() + (size < 256 ? 0 : size / 4);
-        sorter.sort(middle, end, 0, true, true);
+        sorter.sortParallel(middle, end, threads);
         if (middle == order.begin()) break;
         end = middle;
     }
