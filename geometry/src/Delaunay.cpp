@@ -39,6 +39,13 @@ using glm::dvec2;
 
 using detail::Stopwatch;
 
+// Gives v's memory back (clear() keeps it): the CPU steps drop each array once no later step
+// reads it, which lowers the pipeline's peak (issue 31: peak bytes per point).
+template <class T>
+void release(std::vector<T>& v) {
+    std::vector<T>().swap(v);
+}
+
 std::string coords(dvec2 p) {
     char buf[80];
     std::snprintf(buf, sizeof buf, "(%.17g, %.17g)", p.x, p.y);
@@ -136,7 +143,6 @@ std::size_t findDuplicates(const std::vector<dvec2>& points,
 // cache miss at a million points.
 struct Numbering {
     std::vector<std::uint32_t> inputOf;   // local -> input index
-    std::vector<std::uint32_t> localOf;   // input -> local index (kNoHalfedge: not a site)
     std::size_t kept = 0;                 // locals [0, kept) are S'
     std::vector<std::uint32_t> missing;   // local index of each missing site (after `kept`)
     std::vector<std::uint32_t> keeper;    // local index of the site that took its pixel
@@ -146,10 +152,10 @@ struct Numbering {
 Numbering number(const std::vector<std::uint32_t>& tPrime, const std::vector<std::uint32_t>& hull,
                  const SnappedSites& snapped, const std::vector<std::uint32_t>& duplicateOf) {
     Numbering num;
-    num.localOf.assign(duplicateOf.size(), kNoHalfedge);
+    std::vector<std::uint32_t> localOf(duplicateOf.size(), kNoHalfedge); // kNoHalfedge: none yet
     num.inputOf.reserve(duplicateOf.size());
     const auto add = [&](std::uint32_t v) {
-        std::uint32_t& local = num.localOf[v];
+        std::uint32_t& local = localOf[v];
         if (local == kNoHalfedge) {
             local = static_cast<std::uint32_t>(num.inputOf.size());
             num.inputOf.push_back(v);
@@ -160,7 +166,7 @@ Numbering number(const std::vector<std::uint32_t>& tPrime, const std::vector<std
     std::uint32_t* out = num.triangles.data();
     for (std::size_t i = 0; i < tPrime.size(); ++i) {
         // The ids are input indices, in random order for random input: fetch ahead.
-        if (i + 16 < tPrime.size()) __builtin_prefetch(&num.localOf[tPrime[i + 16]], 1);
+        if (i + 16 < tPrime.size()) __builtin_prefetch(&localOf[tPrime[i + 16]], 1);
         *out++ = add(tPrime[i]);
     }
     for (const std::uint32_t v : hull) *out++ = add(v);
@@ -168,11 +174,11 @@ Numbering number(const std::vector<std::uint32_t>& tPrime, const std::vector<std
     num.kept = num.inputOf.size();
     // By local keeper, then input site (a keeper holds a pixel, so it is among the kept).
     const std::vector<MissingSite> byKeeper = groupMissing(
-        snapped.missing, num.kept, [&](const MissingSite& m) { return num.localOf[m.keeper]; });
+        snapped.missing, num.kept, [&](const MissingSite& m) { return localOf[m.keeper]; });
     for (const MissingSite& m : byKeeper) {
         if (duplicateOf[m.site] != m.site) continue;
         num.missing.push_back(add(m.site));
-        num.keeper.push_back(num.localOf[m.keeper]);
+        num.keeper.push_back(localOf[m.keeper]);
     }
     return num;
 }
@@ -303,6 +309,7 @@ class CpuSteps {
             deferred_ = std::move(shifted.deferred);
             if (shifted.stuck) fallback();
         }
+        release(target_); // the mesh's points are the targets now
         r_.cpu.c2 = clock_.lap();
         if (options_.keepStages) keep(inputTriangles(*mesh_, num_));
         clock_.lap();
@@ -314,12 +321,18 @@ class CpuSteps {
             std::vector<std::uint32_t> toInsert = deferred_, near = deferred_;
             toInsert.insert(toInsert.end(), num_.missing.begin(), num_.missing.end());
             near.insert(near.end(), num_.keeper.begin(), num_.keeper.end());
+            r_.counts.missingInserted = num_.missing.size();
+            release(num_.missing);
+            release(num_.keeper);
+            release(deferred_);
+            // Room for every triangle C3 makes (two per site), so the arrays are not copied as
+            // they double, nor left up to twice as large as they need to be.
+            mesh_->reserveCapacity(2 * toInsert.size());
             const std::size_t steps0 = mesh_->walkSteps, flips0 = mesh_->insertFlips;
             r_.counts.sequentialInserts =
                 detail::insertSites(*mesh_, toInsert, near, options_.discrete.threads);
             r_.counts.walkSteps = mesh_->walkSteps - steps0;
             r_.counts.insertFlips = mesh_->insertFlips - flips0;
-            r_.counts.missingInserted = num_.missing.size();
         }
         r_.cpu.c3 = clock_.lap();
         if (options_.keepStages) keep(inputTriangles(*mesh_, num_));
@@ -331,9 +344,11 @@ class CpuSteps {
         mesh_->compact();
         r_.counts.flips = mesh_->makeDelaunay();
         for (std::uint32_t& v : mesh_->triangles) v = num_.inputOf[v];
-        r_.mesh.points = points_;
         r_.mesh.triangles = std::move(mesh_->triangles);
         r_.mesh.halfedges = std::move(mesh_->halfedges);
+        mesh_.reset(); // its points and vertex edges, before the result's copy of the points
+        num_ = {};
+        r_.mesh.points = points_;
         r_.cpu.c4 = clock_.lap();
         keep(r_.mesh.triangles);
     }

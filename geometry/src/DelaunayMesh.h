@@ -85,6 +85,13 @@ class WorkMesh {
         return triangles.size() / 3 - freeSlots_.size();
     }
 
+    /// Room for `count` more triangles beyond the current slots, so adding them never moves
+    /// the arrays (a doubling copy holds both, and may leave them twice the size needed).
+    void reserveCapacity(std::size_t count) {
+        triangles.reserve(triangles.size() + 3 * count);
+        halfedges.reserve(halfedges.size() + 3 * count);
+    }
+
     /// v's outgoing halfedges counterclockwise around v; on the hull the first one is v's
     /// outgoing boundary halfedge (v -> next hull vertex). Returns whether v is on the hull.
     bool fan(std::uint32_t v, std::vector<std::uint32_t>& out) const;

@@ -17,16 +17,17 @@ namespace {
 
 using glm::dvec2;
 
+// Sorts the items themselves, not indices into the points: after the shuffle an index is a
+// random access, and the median splits touch every item once per level.
 struct HilbertSorter {
-    const std::vector<dvec2>& points;
-    using It = std::vector<std::uint32_t>::iterator;
+    using It = std::vector<OrderItem>::iterator;
 
     // Puts the median (by axis, ascending or not) in the middle; returns the middle.
     It split(It begin, It end, int axis, bool up) const {
         const It middle = begin + (end - begin) / 2;
         if (begin == end) return middle;
-        std::nth_element(begin, middle, end, [&](std::uint32_t a, std::uint32_t b) {
-            const double pa = points[a][axis], pb = points[b][axis];
+        std::nth_element(begin, middle, end, [&](const OrderItem& a, const OrderItem& b) {
+            const double pa = a.p[axis], pb = b.p[axis];
             return up ? pa < pb : pa > pb;
         });
         return middle;
@@ -37,8 +38,8 @@ struct HilbertSorter {
     void sort(It begin, It end, int x, bool upX, bool upY) const {
         if (end - begin <= 8) {
             // Tiny groups: order along the leading axis (consecutive enough for the walks).
-            std::sort(begin, end, [&](std::uint32_t a, std::uint32_t b) {
-                return upX ? points[a][x] < points[b][x] : points[a][x] > points[b][x];
+            std::sort(begin, end, [&](const OrderItem& a, const OrderItem& b) {
+                return upX ? a.p[x] < b.p[x] : a.p[x] > b.p[x];
             });
             return;
         }
@@ -103,24 +104,23 @@ struct HilbertSorter {
 
 } // namespace
 
-void insertionOrder(const std::vector<dvec2>& points, std::vector<std::uint32_t>& order,
-                    int threads) {
+void insertionOrder(std::vector<OrderItem>& items, int threads) {
     // Deterministic shuffle (xorshift64), then rounds: the first quarter recursively, the rest
     // Hilbert-sorted, so round sizes grow geometrically.
     std::uint64_t state = 0x9e3779b97f4a7c15ull;
-    for (std::size_t i = order.size(); i > 1; --i) {
+    for (std::size_t i = items.size(); i > 1; --i) {
         state ^= state << 13;
         state ^= state >> 7;
         state ^= state << 17;
-        std::swap(order[i - 1], order[state % i]);
+        std::swap(items[i - 1], items[state % i]);
     }
-    const HilbertSorter sorter{points};
-    auto end = order.end();
+    const HilbertSorter sorter;
+    auto end = items.end();
     while (true) {
-        const auto size = end - order.begin();
-        const auto middle = order.begin() + (size < 256 ? 0 : size / 4);
+        const auto size = end - items.begin();
+        const auto middle = items.begin() + (size < 256 ? 0 : size / 4);
         sorter.sortParallel(middle, end, threads);
-        if (middle == order.begin()) break;
+        if (middle == items.begin()) break;
         end = middle;
     }
 }

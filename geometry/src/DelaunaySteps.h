@@ -54,12 +54,17 @@ std::vector<std::uint32_t> insertInStrips(WorkMesh& mesh, const std::vector<std:
                                           const std::vector<std::uint32_t>& near,
                                           const std::vector<std::uint32_t>& order, int threads);
 
-/// Reorders `order` (indices into points, distinct positions) into a biased randomized
-/// insertion order whose rounds follow a Hilbert curve: short walks, linear expected work.
-/// Deterministic: the same order on any number of `threads` (0 = all), which sort the largest
-/// rounds' Hilbert quadrants side by side.
-void insertionOrder(const std::vector<glm::dvec2>& points, std::vector<std::uint32_t>& order,
-                    int threads = 1);
+/// A point to order and the index it stands for.
+struct OrderItem {
+    glm::dvec2 p;
+    std::uint32_t index;
+};
+
+/// Reorders `items` (distinct positions) into a biased randomized insertion order whose rounds
+/// follow a Hilbert curve: short walks, linear expected work. Deterministic: the same order on
+/// any number of `threads` (0 = all), which sort the largest rounds' Hilbert quadrants side by
+/// side.
+void insertionOrder(std::vector<OrderItem>& items, int threads = 1);
 
 /// The fallback when the discrete result cannot be completed (too few or collinear pixels, a
 /// T' that fails the degree argument, a removal with nothing left): the incremental Delaunay
