@@ -342,7 +342,7 @@ class CpuSteps {
     // C4 in the local numbering (cache-friendly), then back to input indices.
     void flip() {
         mesh_->compact();
-        r_.counts.flips = mesh_->makeDelaunay();
+        r_.counts.flips = detail::flipToDelaunay(*mesh_, options_.discrete.threads);
         for (std::uint32_t& v : mesh_->triangles) v = num_.inputOf[v];
         r_.mesh.triangles = std::move(mesh_->triangles);
         r_.mesh.halfedges = std::move(mesh_->halfedges);
