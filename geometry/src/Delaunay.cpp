@@ -343,7 +343,12 @@ class CpuSteps {
     void flip() {
         mesh_->compact();
         r_.counts.flips = detail::flipToDelaunay(*mesh_, options_.discrete.threads);
-        for (std::uint32_t& v : mesh_->triangles) v = num_.inputOf[v];
+        std::vector<std::uint32_t>& tris = mesh_->triangles;
+        jfa::parallelRows(int(tris.size() / 3), options_.discrete.threads,
+                          [&](int begin, int end, int) {
+                              for (auto e = 3 * std::size_t(begin); e < 3 * std::size_t(end); ++e)
+                                  tris[e] = num_.inputOf[tris[e]];
+                          });
         r_.mesh.triangles = std::move(mesh_->triangles);
         r_.mesh.halfedges = std::move(mesh_->halfedges);
         mesh_.reset(); // its points and vertex edges, before the result's copy of the points
