@@ -1,10 +1,10 @@
-// Step C4 on several threads (geometry/src/DelaunayFlipParallel.cpp, issue 31). Each test starts
-// from a valid triangulation far from Delaunay (delaunayReference's, scrambled by random legal
-// flips), so most edges fail and the strips have real work; it then requires that the strips
-// made most of the flips (so a test cannot pass on the sequential path alone) and that the result
-// is the Delaunay triangulation: the same triangle set as one thread where it is unique, the same
-// count and a passing exact check where it is not (co-circular grids). 3 and 4 strips (more than
-// the cores here) put more triangles on the strips' borders.
+// Step C4 on several threads (geometry/src/DelaunayFlipParallel.cpp, issue 31): the threads test
+// every edge (failingEdges), one thread flips from the failing ones. Each mesh test starts from a
+// valid triangulation far from Delaunay (delaunayReference's, scrambled by random legal flips), so
+// a large share of the edges fail and a test cannot pass with the threads' lists lost or cut
+// short; the result must be the Delaunay triangulation: the same triangle set as one thread where
+// it is unique, the same count and a passing exact check where it is not (co-circular grids).
+// 3 and 4 threads (more than the cores here) put more band borders in the slots.
 #include <geometry/Delaunay.h>
 #include <geometry/Predicates.h>
 #include <geometry/Triangulation.h>
@@ -55,22 +55,20 @@ Triangulation asTriangulation(const WorkMesh& mesh) {
     return {mesh.points, mesh.triangles, mesh.halfedges};
 }
 
-// C4 on one thread and with the strips on 2..4; `unique`: the triangle sets must be equal.
-void expectStripsMatchOneThread(const std::vector<dvec2>& points, bool unique) {
+// C4 on one thread and on 2..4; `unique`: the triangle sets must be equal.
+void expectThreadsMatchOneThread(const std::vector<dvec2>& points, bool unique) {
     WorkMesh one = scrambledMesh(points, 2, 5);
     ASSERT_GE(one.triangles.size() / 3, detail::kMinParallelFlip);
-    const std::size_t oneFlips = detail::flipToDelaunay(one, 1);
-    ASSERT_GT(oneFlips, one.triangles.size() / 3 / 4) << "the scrambled mesh is nearly Delaunay";
+    const std::vector<std::uint32_t> oneFailing = detail::failingEdges(one, 1);
+    ASSERT_GT(oneFailing.size(), one.triangles.size() / 3 / 8) << "nearly Delaunay already";
+    detail::flipToDelaunay(one, 1);
     const TriangulationReport oneReport = checkTriangulation(asTriangulation(one));
     ASSERT_TRUE(oneReport.ok()) << oneReport.summary();
     for (const int threads : {2, 3, 4}) {
         WorkMesh many = scrambledMesh(points, 2, 5);
-        std::size_t stripFlips = 0;
-        const std::vector<std::uint32_t> rest = detail::flipInStrips(many, threads, stripFlips);
-        const std::size_t flips = many.flipFrom(rest, stripFlips);
-        // Most flips were the strips' (only those near their borders are left).
-        EXPECT_GT(double(stripFlips), 0.75 * double(flips)) << threads << " threads";
-        EXPECT_LT(double(rest.size()), 0.1 * double(many.triangles.size() / 3));
+        // Every band's failing edges, none twice, in ascending order.
+        EXPECT_EQ(detail::failingEdges(many, threads), oneFailing) << threads << " threads";
+        detail::flipToDelaunay(many, threads);
         const TriangulationReport report = checkTriangulation(asTriangulation(many));
         ASSERT_TRUE(report.ok()) << threads << " threads: " << report.summary();
         EXPECT_EQ(many.triangles.size(), one.triangles.size()) << threads << " threads";
@@ -85,39 +83,35 @@ TEST(ParallelC4, UniformPointsMatchOneThread) {
     jfa::SplitMix64 rng(21);
     std::vector<dvec2> pts(40000);
     for (dvec2& p : pts) p = dvec2(rng.unit(), rng.unit());
-    expectStripsMatchOneThread(pts, true);
+    expectThreadsMatchOneThread(pts, true);
 }
 
-// A grid: every cell's four corners are co-circular, and whole columns of points lie exactly on
-// the strips' cuts (a quantile of the x coordinates is one of them): the batch boundary case.
-TEST(ParallelC4, CoCircularGridAcrossStripsMatchesOneThreadInCount) {
+// A grid: every cell's four corners are co-circular, so many Delaunay triangulations exist and
+// the threads' flips may pick any of them.
+TEST(ParallelC4, CoCircularGridMatchesOneThreadInCount) {
     std::vector<dvec2> pts;
     for (int y = 0; y < 150; ++y)
         for (int x = 0; x < 250; ++x) pts.emplace_back(double(x), double(y));
-    expectStripsMatchOneThread(pts, false);
+    expectThreadsMatchOneThread(pts, false);
 }
 
-// Points clustered around the strips' cut: most triangles have vertices in two strips (frozen),
-// so the sequential flips after the strips carry much of the work and must finish it.
-TEST(ParallelC4, PointsCrowdedAtTheCutMatchOneThread) {
+// Most edges failing at once, many of them next to each other across the bands' borders: a
+// mesh scrambled four times over, in a thin band of points (long, thin triangles).
+TEST(ParallelC4, HeavilyScrambledThinBandMatchesOneThread) {
     jfa::SplitMix64 rng(8);
     std::vector<dvec2> pts(40000);
-    for (std::size_t i = 0; i < pts.size(); ++i) {
-        const double u = rng.unit(), v = rng.unit();
-        // Half in a thin band across the middle of the wider axis (x), where the cut falls;
-        // half spread out.
-        pts[i] = i % 2 == 0 ? dvec2(1.0 + (u - 0.5) * 1e-3, v) : dvec2(2.0 * u, v);
-    }
-    WorkMesh one = scrambledMesh(pts, 2, 9);
+    for (dvec2& p : pts) p = dvec2(rng.unit() * 100.0, rng.unit());
+    WorkMesh one = scrambledMesh(pts, 4, 9);
     detail::flipToDelaunay(one, 1);
-    WorkMesh two = scrambledMesh(pts, 2, 9);
+    WorkMesh two = scrambledMesh(pts, 4, 9);
+    ASSERT_GT(detail::failingEdges(two, 2).size(), two.triangles.size() / 3 / 8);
     detail::flipToDelaunay(two, 2);
     const TriangulationReport report = checkTriangulation(asTriangulation(two));
     ASSERT_TRUE(report.ok()) << report.summary();
     EXPECT_EQ(triangleSet(two.triangles), triangleSet(one.triangles));
 }
 
-// The whole pipeline on enough points for C4's strips (more than kMinParallelFlip triangles):
+// The whole pipeline on enough points for C4's threads (more than kMinParallelFlip triangles):
 // the same triangles on 1 and 2 threads.
 TEST(ParallelC4, PipelineOnTwoThreadsMatchesOneThread) {
     jfa::SplitMix64 rng(4);

@@ -149,6 +149,10 @@ class RegionInserter {
     std::size_t steps_ = 0, flips_ = 0;
 };
 
+namespace {
+
+// The strip of every mesh point: quantiles of the sites' coordinate along the wider axis of
+// their bounding box, so each strip gets the same number of sites.
 std::vector<std::uint8_t> stripOf(const WorkMesh& mesh, const std::vector<std::uint32_t>& sites,
                                   int strips) {
     dvec2 lo = mesh.points[sites.front()], hi = lo;
@@ -172,6 +176,8 @@ std::vector<std::uint8_t> stripOf(const WorkMesh& mesh, const std::vector<std::u
             std::upper_bound(cuts.begin(), cuts.end(), mesh.points[v][axis]) - cuts.begin());
     return strip;
 }
+
+} // namespace
 
 std::vector<std::uint32_t> insertInStrips(WorkMesh& mesh, const std::vector<std::uint32_t>& sites,
                                           const std::vector<std::uint32_t>& near,

@@ -121,11 +121,9 @@ class WorkMesh {
     /// edges is built. Needs compact() first; leaves vertexEdge stale (the last edit).
     std::size_t makeDelaunay();
     /// makeDelaunay() from `edges` only, for a mesh whose other edges are known to be locally
-    /// Delaunay (C4's strips leave that); `flips` already made count toward the n(n-1)/2 limit.
-    /// Returns the flips in all.
+    /// Delaunay (C4's parallel tests find the rest); `flips` already made count toward the
+    /// n(n-1)/2 limit. Returns the flips in all.
     std::size_t flipFrom(const std::vector<std::uint32_t>& edges, std::size_t flips);
-    /// At most this many flips turn a triangulation of the points into the Delaunay one.
-    [[nodiscard]] std::size_t flipLimit() const;
 
   private:
     // C3's parallel batches edit the arrays directly, each thread in its own region
@@ -153,7 +151,9 @@ class WorkMesh {
     void insertOutside(std::uint32_t e, std::uint32_t v);
     void restoreDelaunay();
     std::size_t legalize(std::uint32_t e, std::size_t flips); // C4's flips from edge e
-    bool needsFlip(std::uint32_t e) const;                    // has an opposite and shouldFlip()
+    // At most this many flips turn a triangulation of the points into the Delaunay one.
+    [[nodiscard]] std::size_t flipLimit() const;
+    bool needsFlip(std::uint32_t e) const; // has an opposite and shouldFlip()
     void removeInterior(std::uint32_t v, glm::dvec2 pv);
     bool removeOnHull(std::uint32_t v);
     Location scanLocate(glm::dvec2 q) const;

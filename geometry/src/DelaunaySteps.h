@@ -54,26 +54,19 @@ std::vector<std::uint32_t> insertInStrips(WorkMesh& mesh, const std::vector<std:
                                           const std::vector<std::uint32_t>& near,
                                           const std::vector<std::uint32_t>& order, int threads);
 
-/// The strip of every mesh point, for the threads of C3 and C4: `strips` (<= 255) slabs along
-/// the wider axis of the bounding box of `sites`, cut at quantiles of their coordinate, so each
-/// slab holds about as many of them.
-std::vector<std::uint8_t> stripOf(const WorkMesh& mesh, const std::vector<std::uint32_t>& sites,
-                                  int strips);
-
 /// C4: Lawson flips until every edge of `mesh` (compacted) is locally Delaunay; returns the
 /// number of flips. With more than one of `threads` (0 = all) and at least kMinParallelFlip
-/// triangles, flipInStrips() goes first and the sequential flips start from the edges it left.
+/// triangles, failingEdges() tests every edge on the threads first and the flips start from
+/// the edges that failed; otherwise WorkMesh::makeDelaunay().
 std::size_t flipToDelaunay(WorkMesh& mesh, int threads);
 
 /// Fewest triangles for which C4 uses threads.
 inline constexpr std::size_t kMinParallelFlip = 65536;
 
-/// C4's parallel part (DelaunayFlipParallel.cpp): one strip of the points per thread; each
-/// thread runs Lawson's flips on its triangles (all three vertices in its strip), flipping only
-/// edges between two of them. Returns the edges the sequential flips must start from (failing
-/// edges to triangles across the strips, and the edges between two of those); adds the flips
-/// made to `flips`.
-std::vector<std::uint32_t> flipInStrips(WorkMesh& mesh, int threads, std::size_t& flips);
+/// C4's parallel part (DelaunayFlipParallel.cpp): every interior edge of `mesh` (compacted)
+/// that is not locally Delaunay, once each (its lower halfedge), in ascending order; read-only,
+/// on `threads` threads (0 = all).
+std::vector<std::uint32_t> failingEdges(const WorkMesh& mesh, int threads);
 
 /// A point to order and the index it stands for.
 struct OrderItem {
