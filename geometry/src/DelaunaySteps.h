@@ -1,7 +1,8 @@
 #pragma once
-// Private to the Delaunay pipeline: the CPU steps C1-C3 of the thesis (§6.3.3) and the fallback,
-// each in its own file (DelaunayHull.cpp, DelaunayShift.cpp, DelaunayInsert.cpp); the driver
-// (Delaunay.cpp) runs them in order, times them and keeps the stages.
+// Private to the Delaunay pipeline: the CPU steps C1-C4 of the thesis (§6.3.3) and the fallback,
+// each in its own file (DelaunayHull.cpp, DelaunayShift.cpp, DelaunayInsert.cpp with
+// DelaunayInsertParallel.cpp, DelaunayFlipParallel.cpp); the driver (Delaunay.cpp) runs them in
+// order, times them and keeps the stages.
 
 #include "DelaunayMesh.h"
 
