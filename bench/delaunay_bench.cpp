@@ -8,7 +8,9 @@
 // peak RSS (getrusage's ru_maxrss of the child) is the peak of one triangulator on one input and
 // not the high-water mark of everything before it. The baseline child only generates the points;
 // "bytes/point" is (peak - baseline peak) / n, i.e. what the triangulator itself holds at its peak
-// (our pipeline's includes its N x N textures and every G-step stage it keeps).
+// (our pipeline's includes its N x N textures and every G-step stage it keeps). Both children
+// read their peak once their sorted triangle list is written, before our exact check runs: the
+// checker's arrays are the bench's, not the triangulator's (they were counted until 2026-11-29).
 //
 // Same triangulation: the triangle counts must agree. Where the input has no four co-circular
 // points (uniform, gaussian, kuzmin: random doubles) the Delaunay triangulation is unique and the
@@ -161,71 +163,94 @@ struct ChildOptions {
     bool check = true;
 };
 
+// The process's peak resident set so far, in bytes (ru_maxrss is in KiB on Linux).
+double peakRssBytes() {
+    rusage ru{};
+    getrusage(RUSAGE_SELF, &ru);
+    return double(ru.ru_maxrss) * 1024.0;
+}
+
+// CGAL's side of one measurement: `runs` range insertions; the canonical triangle list to
+// o.trianglesOut.
+void runCgal(const ChildOptions& o, const std::vector<glm::dvec2>& points, std::ostream& res) {
+    std::vector<std::pair<K::Point_2, std::uint32_t>> in;
+    in.reserve(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i)
+        in.emplace_back(K::Point_2(points[i].x, points[i].y), std::uint32_t(i));
+    std::vector<Tri> tris;
+    for (int r = 0; r < o.runs; ++r) {
+        const auto t0 = std::chrono::steady_clock::now();
+        CgalDt dt(in.begin(), in.end());
+        res << " total=" << msSince(t0);
+        if (r + 1 == o.runs) tris = cgalTriangles(dt);
+    }
+    res << " triangles=" << tris.size();
+    writeTriangles(o.trianglesOut, canonical(std::move(tris)));
+}
+
+// The GL backend's state, made once before the first run's clock starts (as `floodlight
+// delaunay --backend gl` does): context, shaders and programs.
+struct GlLane {
+    std::unique_ptr<fl::EglContext> context = fl::EglContext::create();
+    fl::gl::ShaderLibrary shaders;
+    fl::geom::GlDiscreteDelaunay steps{shaders};
+};
+
+// Our side: `runs` runs of delaunay() with per-step times; the canonical triangle list to
+// o.trianglesOut, then (unless --no-check) the exact check.
+void runOurs(const ChildOptions& o, const std::vector<glm::dvec2>& points, std::ostream& res) {
+    fl::geom::DelaunayOptions opt;
+    opt.discrete.threads = o.threads;
+    // The CPU backend's default is `floodlight delaunay`'s; the GL lane keeps N^2 >= n (1024 at
+    // 1M), the size its numbers in docs/BENCHMARKS.md were measured at.
+    opt.discrete.size = o.texture > 0       ? o.texture
+                        : o.backend == "gl" ? autoGlTexture(points.size())
+                                            : fl::geom::kCpuDefaultTexture;
+    std::unique_ptr<GlLane> gl;
+    if (o.backend == "gl") {
+        gl = std::make_unique<GlLane>();
+        opt.discreteBackend = [&gl](const std::vector<glm::dvec2>& s,
+                                    const fl::geom::DiscreteDelaunayOptions& d) {
+            return gl->steps.run(s, d);
+        };
+    }
+    DelaunayResult r;
+    for (int run = 0; run < o.runs; ++run) {
+        r = {}; // or the peak RSS would hold the previous run's result next to this one
+        const auto t0 = std::chrono::steady_clock::now();
+        r = fl::geom::delaunay(points, opt);
+        const double wall = msSince(t0);
+        const auto& g = r.discrete.timings;
+        const auto& c = r.cpu;
+        res << " total=" << wall << " g1=" << g.g1 << " g2=" << g.g2 << " g3=" << g.g3
+            << " g4=" << g.g4 << " g5=" << g.g5 << " g6=" << g.g6 << " c1=" << c.c1
+            << " c2=" << c.c2 << " c3=" << c.c3 << " c4=" << c.c4;
+        if (gl) {
+            const fl::geom::GlDiscreteExtras& x = gl->steps.extras();
+            res << " rb=" << x.readbackMs << " snap=" << x.snapMs << " up=" << x.uploads
+                << " down=" << x.readbacks;
+        }
+    }
+    res << " texture=" << opt.discrete.size << " missing=" << r.discrete.missing().size()
+        << " flips=" << r.counts.flips + r.counts.insertFlips << " badshifts=" << r.counts.badShifts
+        << " sequential=" << r.counts.sequentialInserts << " triangles=" << r.mesh.triangleCount();
+    writeTriangles(o.trianglesOut, canonical(ourTriangles(r.mesh)));
+    // The peak so far, as CGAL's child's at the same point (its triangle list written): the
+    // checker's own arrays are the bench's, not the triangulator's.
+    res << " peak=" << peakRssBytes();
+    if (o.check) res << " checkok=" << (fl::geom::checkTriangulation(r.mesh).ok() ? 1 : 0);
+}
+
 // One measurement in this (fresh) process; prints one "RESULT ..." line for the parent.
 int runChild(const ChildOptions& o) {
     const std::vector<glm::dvec2> points = generate(o.dist, o.n, o.seed);
     std::ostringstream res;
     res << std::setprecision(9) << "RESULT n=" << points.size();
     if (o.side == "cgal") {
-        std::vector<std::pair<K::Point_2, std::uint32_t>> in;
-        in.reserve(points.size());
-        for (std::size_t i = 0; i < points.size(); ++i)
-            in.emplace_back(K::Point_2(points[i].x, points[i].y), std::uint32_t(i));
-        std::vector<Tri> tris;
-        for (int r = 0; r < o.runs; ++r) {
-            const auto t0 = std::chrono::steady_clock::now();
-            CgalDt dt(in.begin(), in.end());
-            res << " total=" << msSince(t0);
-            if (r + 1 == o.runs) tris = cgalTriangles(dt);
-        }
-        res << " triangles=" << tris.size();
-        writeTriangles(o.trianglesOut, canonical(std::move(tris)));
+        runCgal(o, points, res);
+        res << " peak=" << peakRssBytes();
     } else if (o.side == "ours") {
-        fl::geom::DelaunayOptions opt;
-        opt.discrete.threads = o.threads;
-        // The CPU backend's default is `floodlight delaunay`'s; the GL lane keeps N^2 >= n
-        // (1024 at 1M), the size its numbers in docs/BENCHMARKS.md were measured at.
-        opt.discrete.size = o.texture > 0       ? o.texture
-                            : o.backend == "gl" ? autoGlTexture(points.size())
-                                                : fl::geom::kCpuDefaultTexture;
-        // GL: context, shaders and programs are made once, before the first run's clock starts
-        // (as `floodlight delaunay --backend gl` does).
-        struct Gl {
-            std::unique_ptr<fl::EglContext> context = fl::EglContext::create();
-            fl::gl::ShaderLibrary shaders;
-            fl::geom::GlDiscreteDelaunay steps{shaders};
-        };
-        std::unique_ptr<Gl> gl;
-        if (o.backend == "gl") {
-            gl = std::make_unique<Gl>();
-            opt.discreteBackend = [&gl](const std::vector<glm::dvec2>& s,
-                                        const fl::geom::DiscreteDelaunayOptions& d) {
-                return gl->steps.run(s, d);
-            };
-        }
-        DelaunayResult r;
-        for (int run = 0; run < o.runs; ++run) {
-            r = {}; // or the peak RSS would hold the previous run's result next to this one
-            const auto t0 = std::chrono::steady_clock::now();
-            r = fl::geom::delaunay(points, opt);
-            const double wall = msSince(t0);
-            const auto& g = r.discrete.timings;
-            const auto& c = r.cpu;
-            res << " total=" << wall << " g1=" << g.g1 << " g2=" << g.g2 << " g3=" << g.g3
-                << " g4=" << g.g4 << " g5=" << g.g5 << " g6=" << g.g6 << " c1=" << c.c1
-                << " c2=" << c.c2 << " c3=" << c.c3 << " c4=" << c.c4;
-            if (gl) {
-                const fl::geom::GlDiscreteExtras& x = gl->steps.extras();
-                res << " rb=" << x.readbackMs << " snap=" << x.snapMs << " up=" << x.uploads
-                    << " down=" << x.readbacks;
-            }
-        }
-        res << " texture=" << opt.discrete.size << " missing=" << r.discrete.missing().size()
-            << " flips=" << r.counts.flips + r.counts.insertFlips
-            << " badshifts=" << r.counts.badShifts << " sequential=" << r.counts.sequentialInserts
-            << " triangles=" << r.mesh.triangleCount();
-        if (o.check) res << " checkok=" << (fl::geom::checkTriangulation(r.mesh).ok() ? 1 : 0);
-        writeTriangles(o.trianglesOut, canonical(ourTriangles(r.mesh)));
+        runOurs(o, points, res);
     }
     std::cout << res.str() << std::endl;
     return 0;
@@ -317,8 +342,11 @@ void writeRows(const std::string& d, int texture, const ChildRun& base, const Ch
     const double side = ours.ok && o.count("texture") ? o.at("texture").front()
                         : texture > 0                 ? texture
                                                       : fl::geom::kCpuDefaultTexture;
+    // The child's peak before our exact check (older binaries: at exit) over the points' child.
     auto perPoint = [&](const ChildRun& r) {
-        return r.ok ? (r.maxRssBytes - base.maxRssBytes) / points : std::nan("");
+        if (!r.ok) return std::nan("");
+        const double peak = r.values.count("peak") ? r.values.at("peak").front() : r.maxRssBytes;
+        return (peak - base.maxRssBytes) / points;
     };
     std::string same = "-";
     if (cgal.ok && ours.ok) {
@@ -354,10 +382,8 @@ void writeRows(const std::string& d, int texture, const ChildRun& base, const Ch
     steps << " |\n";
 }
 
-} // namespace
-
-int main(int argc, char** argv) {
-    CLI::App app{"delaunay_bench: our G1-G6 + C1-C4 pipeline vs CGAL Delaunay_triangulation_2"};
+// Everything the command line sets (the --child options only in the children).
+struct BenchOptions {
     std::vector<std::string> dists = kDistributions, sizes{"10k", "100k", "1M"};
     std::vector<int> textures{0};
     std::string backend = "cpu";
@@ -365,81 +391,68 @@ int main(int argc, char** argv) {
     std::uint64_t seed = 1;
     bool noCheck = false;
     ChildOptions child;
-    app.add_option("--dist", dists, "Distributions")
+};
+
+void addOptions(CLI::App& app, BenchOptions& o) {
+    app.add_option("--dist", o.dists, "Distributions")
         ->check(CLI::IsMember(kDistributions))
         ->capture_default_str();
-    app.add_option("--sizes", sizes, "Point counts (10k, 100k, 1M, or plain numbers)")
+    app.add_option("--sizes", o.sizes, "Point counts (10k, 100k, 1M, or plain numbers)")
         ->capture_default_str();
-    app.add_option("--texture", textures, "Texture sides to run ours at (0: the CLI's rule)")
+    app.add_option("--texture", o.textures, "Texture sides to run ours at (0: the CLI's rule)")
         ->capture_default_str();
-    app.add_option("--runs", runs, "Runs per measurement (min/median)")
+    app.add_option("--runs", o.runs, "Runs per measurement (min/median)")
         ->check(CLI::Range(1, 1000))
         ->capture_default_str();
-    app.add_option("--backend", backend, "G1-G6 on the CPU or through GL (headless EGL)")
+    app.add_option("--backend", o.backend, "G1-G6 on the CPU or through GL (headless EGL)")
         ->check(CLI::IsMember({"cpu", "gl"}))
         ->capture_default_str();
-    app.add_option("--threads", threads, "Threads for G1-G6 (0: all)")->capture_default_str();
-    app.add_option("--seed", seed)->capture_default_str();
-    app.add_option("--timeout", timeoutS, "Seconds per child before it is killed")
+    app.add_option("--threads", o.threads, "Threads for G1-G6 and C1-C4 (0: all)")
         ->capture_default_str();
-    app.add_flag("--no-check", noCheck, "Skip checkTriangulation on our results");
-    app.add_option("--child", child.side)->group(""); // internal: points | cgal | ours
-    app.add_option("--child-dist", child.dist)->group("");
-    app.add_option("--child-n", child.n)->group("");
-    app.add_option("--child-out", child.trianglesOut)->group("");
-    CLI11_PARSE(app, argc, argv);
+    app.add_option("--seed", o.seed)->capture_default_str();
+    app.add_option("--timeout", o.timeoutS, "Seconds per child before it is killed")
+        ->capture_default_str();
+    app.add_flag("--no-check", o.noCheck, "Skip checkTriangulation on our results");
+    app.add_option("--child", o.child.side)->group(""); // internal: points | cgal | ours
+    app.add_option("--child-dist", o.child.dist)->group("");
+    app.add_option("--child-n", o.child.n)->group("");
+    app.add_option("--child-out", o.child.trianglesOut)->group("");
+}
 
-    if (!child.side.empty()) {
-        alarm(unsigned(timeoutS)); // SIGALRM ends a run that takes too long; the parent says so
-        child.seed = seed;
-        child.runs = runs;
-        child.texture = textures.front();
-        child.threads = threads;
-        child.backend = backend;
-        child.check = !noCheck;
-        return runChild(child);
-    }
+// A child's command line for one side (points | cgal | ours) of distribution d at n points.
+std::vector<std::string> childArgs(const BenchOptions& o, const std::string& side,
+                                   const std::string& d, const std::string& n, int texture,
+                                   const std::string& out) {
+    std::vector<std::string> a{"--child",      side,
+                               "--child-out",  out,
+                               "--texture",    std::to_string(texture),
+                               "--child-dist", d,
+                               "--child-n",    n,
+                               "--seed",       std::to_string(o.seed),
+                               "--runs",       std::to_string(o.runs),
+                               "--threads",    std::to_string(o.threads),
+                               "--backend",    o.backend};
+    if (o.noCheck) a.push_back("--no-check");
+    return a;
+}
 
-    std::cout << "delaunay_bench: CGAL " << CGAL_VERSION_STR
-              << " Delaunay_triangulation_2 (Epick, range insert) vs floodlight delaunay() ("
-              << backend
-              << " backend, G1-G6 threads: " << (threads ? std::to_string(threads) : "all") << ")\n"
-              << "runs " << runs << ", seed " << seed << "; times in ms (min / median); each "
-              << "measurement in a fresh process\n\n";
-    std::ostringstream table, steps;
-    table << "| distribution | n | N | CGAL ms | ours ms | G1-G6 ms | C1-C4 ms | ours/CGAL | "
-             "C1-C4/CGAL | missing | flips | triangles | same | CGAL B/pt | ours B/pt |\n"
-          << "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|---|--:|--:|\n";
-    // GL backend only ("-" on the CPU backend): snap, the host's share of G1; rb, the read-back
-    // outside G1-G6; up / down, its uploads and read-backs per run.
-    steps << "| distribution | n | N | G1 | snap | G2 | G3 | G4 | G5 | G6 | rb | up | down | C1 | "
-             "C2 | C3 | C4 |\n"
-          << "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
+// Every size x distribution x texture: the points' child, CGAL's and ours; a row of each table.
+void measureAll(const BenchOptions& o, std::ostream& table, std::ostream& steps) {
     const std::string tmp = "/tmp/delaunay_bench." + std::to_string(getpid());
-    for (const std::string& size : sizes) {
-        for (const std::string& d : dists) {
+    for (const std::string& size : o.sizes) {
+        for (const std::string& d : o.dists) {
             const std::string n = std::to_string(parseCount(size));
-            auto argsFor = [&](const std::string& side, int texture) {
-                std::vector<std::string> a{"--child",      side,
-                                           "--child-out",  tmp + "." + side,
-                                           "--texture",    std::to_string(texture),
-                                           "--child-dist", d,
-                                           "--child-n",    n,
-                                           "--seed",       std::to_string(seed),
-                                           "--runs",       std::to_string(runs),
-                                           "--threads",    std::to_string(threads),
-                                           "--backend",    backend};
-                if (noCheck) a.push_back("--no-check");
-                return a;
+            const auto child = [&](const std::string& side, int texture) {
+                return spawnChild(childArgs(o, side, d, n, texture, tmp + "." + side), o.timeoutS);
             };
-            const ChildRun base = spawnChild(argsFor("points", 0), timeoutS);
-            const ChildRun cgal = spawnChild(argsFor("cgal", 0), timeoutS);
+            const ChildRun base = child("points", 0);
+            const ChildRun cgal = child("cgal", 0);
             const std::vector<Tri> cgalTris =
                 cgal.ok ? readTriangles(tmp + ".cgal") : std::vector<Tri>{};
-            for (const int texture : textures) {
-                const ChildRun ours = spawnChild(argsFor("ours", texture), timeoutS);
+            for (const int texture : o.textures) {
+                const ChildRun ours = child("ours", texture);
                 std::ostringstream row, stepRow;
-                writeRows(d, texture, base, cgal, ours, cgalTris, tmp + ".ours", noCheck, row,
+                writeRows(d, texture, base, cgal, ours, cgalTris, tmp + ".ours", o.noCheck, row,
                           stepRow);
                 std::cerr << row.str() << std::flush; // progress
                 table << row.str();
@@ -449,6 +462,44 @@ int main(int argc, char** argv) {
     }
     std::remove((tmp + ".cgal").c_str());
     std::remove((tmp + ".ours").c_str());
+}
+
+// The parent: the header, every measurement, both tables.
+int runParent(const BenchOptions& o) {
+    std::cout << "delaunay_bench: CGAL " << CGAL_VERSION_STR
+              << " Delaunay_triangulation_2 (Epick, range insert) vs floodlight delaunay() ("
+              << o.backend
+              << " backend, threads: " << (o.threads ? std::to_string(o.threads) : "all") << ")\n"
+              << "runs " << o.runs << ", seed " << o.seed << "; times in ms (min / median); "
+              << "each measurement in a fresh process\n\n";
+    std::ostringstream table, steps;
+    table << "| distribution | n | N | CGAL ms | ours ms | G1-G6 ms | C1-C4 ms | ours/CGAL | "
+             "C1-C4/CGAL | missing | flips | triangles | same | CGAL B/pt | ours B/pt |\n"
+          << "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|---|--:|--:|\n";
+    // GL backend only ("-" on the CPU backend): snap, the host's share of G1; rb, the read-back
+    // outside G1-G6; up / down, its uploads and read-backs per run.
+    steps << "| distribution | n | N | G1 | snap | G2 | G3 | G4 | G5 | G6 | rb | up | down | C1 | "
+             "C2 | C3 | C4 |\n"
+          << "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
+    measureAll(o, table, steps);
     std::cout << table.str() << "\nper-step medians (ms):\n" << steps.str();
     return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"delaunay_bench: our G1-G6 + C1-C4 pipeline vs CGAL Delaunay_triangulation_2"};
+    BenchOptions o;
+    addOptions(app, o);
+    CLI11_PARSE(app, argc, argv);
+    if (o.child.side.empty()) return runParent(o);
+    alarm(unsigned(o.timeoutS)); // SIGALRM ends a run that takes too long; the parent says so
+    o.child.seed = o.seed;
+    o.child.runs = o.runs;
+    o.child.texture = o.textures.front();
+    o.child.threads = o.threads;
+    o.child.backend = o.backend;
+    o.child.check = !o.noCheck;
+    return runChild(o.child);
 }

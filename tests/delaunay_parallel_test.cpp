@@ -109,5 +109,30 @@ TEST(ParallelC3, CollinearLinesMatchOneThreadInCount) {
     expectParallelMatchesSequential(pts, 64, false, 1.0);
 }
 
+// C3's insertion order with its largest rounds' Hilbert quadrants sorted on the threads is the
+// one-thread order, item for item (the largest rounds here, 75k and 19k items, are above
+// the sort's threshold for threads), also with many equal coordinates (a grid's columns and rows).
+TEST(ParallelC3, InsertionOrderIsTheSameOnAnyThreadCount) {
+    jfa::SplitMix64 rng(12);
+    for (const bool grid : {false, true}) {
+        std::vector<detail::OrderItem> items(100000);
+        for (std::uint32_t i = 0; i < items.size(); ++i) {
+            const dvec2 p =
+                grid ? dvec2(double(i % 316), double(i / 316)) : dvec2(rng.unit(), rng.unit());
+            items[i] = {p, i};
+        }
+        std::vector<detail::OrderItem> one = items;
+        detail::insertionOrder(one, 1);
+        for (const int threads : {2, 3, 4}) {
+            std::vector<detail::OrderItem> many = items;
+            detail::insertionOrder(many, threads);
+            bool same = true;
+            for (std::size_t k = 0; k < one.size(); ++k)
+                same = same && one[k].index == many[k].index;
+            EXPECT_TRUE(same) << threads << " threads" << (grid ? ", grid" : "");
+        }
+    }
+}
+
 } // namespace
 } // namespace fl::geom

@@ -39,6 +39,13 @@ using glm::dvec2;
 
 using detail::Stopwatch;
 
+// Gives v's memory back (clear() keeps it): the CPU steps drop each array once no later step
+// reads it, which lowers the pipeline's peak (issue 31: peak bytes per point).
+template <class T>
+void release(std::vector<T>& v) {
+    std::vector<T>().swap(v);
+}
+
 std::string coords(dvec2 p) {
     char buf[80];
     std::snprintf(buf, sizeof buf, "(%.17g, %.17g)", p.x, p.y);
@@ -74,36 +81,57 @@ void requireTriangulable(const std::vector<dvec2>& points) {
                                 " distinct points are collinear; they have no triangulation");
 }
 
+// The missing sites grouped by key(m) (< buckets), ascending, each group in `missing`'s order
+// (ascending site): a counting sort, linear, where comparison sorts of a million pairs took a
+// fifth of the pipeline's CPU time at 1M points.
+template <class Key>
+std::vector<MissingSite> groupMissing(const std::vector<MissingSite>& missing, std::size_t buckets,
+                                      const Key& key) {
+    std::vector<std::uint32_t> start(buckets + 1, 0);
+    for (const MissingSite& m : missing) {
+        if (key(m) >= buckets) // a backend's broken result, not to be written out of bounds
+            throw std::logic_error("delaunay: missing site " + std::to_string(m.site) +
+                                   " has keeper " + std::to_string(m.keeper) + ", not a kept site");
+        ++start[key(m) + 1];
+    }
+    for (std::size_t b = 1; b <= buckets; ++b) start[b] += start[b - 1];
+    std::vector<MissingSite> out(missing.size());
+    for (const MissingSite& m : missing) out[start[key(m)]++] = m;
+    return out;
+}
+
 // Fills duplicateOf from G1's missing sites (equal points share a pixel, and the pixel's keeper
-// has the lowest index there); returns the number of duplicates.
+// has the lowest index there); returns the number of duplicates. Only sites of one pixel can be
+// equal, so each pixel's sites (its keeper and its missing ones, a few on average) are sorted on
+// their own, by position and then index: the lowest index of equal points is their original.
 std::size_t findDuplicates(const std::vector<dvec2>& points,
                            const std::vector<MissingSite>& missing,
                            std::vector<std::uint32_t>& duplicateOf) {
     duplicateOf.resize(points.size());
     for (std::uint32_t i = 0; i < points.size(); ++i) duplicateOf[i] = i;
+    const std::vector<MissingSite> grouped =
+        groupMissing(missing, points.size(), [](const MissingSite& m) { return m.keeper; });
     struct Member {
-        std::uint32_t keeper, index;
+        dvec2 p;
+        std::uint32_t index;
     };
-    std::vector<Member> members;
-    members.reserve(2 * missing.size());
-    for (const MissingSite& m : missing) members.push_back({m.keeper, m.site});
-    for (const MissingSite& m : missing) members.push_back({m.keeper, m.keeper});
-    std::sort(members.begin(), members.end(), [&](const Member& a, const Member& b) {
-        if (a.keeper != b.keeper) return a.keeper < b.keeper;
-        const dvec2 p = points[a.index], q = points[b.index];
-        if (p.x != q.x) return p.x < q.x;
-        if (p.y != q.y) return p.y < q.y;
-        return a.index < b.index;
-    });
+    std::vector<Member> pixel; // one pixel's sites
     std::size_t count = 0;
-    for (std::size_t i = 1; i < members.size(); ++i) {
-        const Member& first = members[i - 1];
-        const Member& m = members[i];
-        if (m.index == first.index || m.keeper != first.keeper ||
-            points[m.index] != points[first.index])
-            continue;
-        duplicateOf[m.index] = duplicateOf[first.index];
-        ++count;
+    for (std::size_t i = 0; i < grouped.size();) {
+        const std::uint32_t keeper = grouped[i].keeper;
+        pixel.assign(1, {points[keeper], keeper});
+        for (; i < grouped.size() && grouped[i].keeper == keeper; ++i)
+            pixel.push_back({points[grouped[i].site], grouped[i].site});
+        std::sort(pixel.begin(), pixel.end(), [](const Member& a, const Member& b) {
+            if (a.p.x != b.p.x) return a.p.x < b.p.x;
+            if (a.p.y != b.p.y) return a.p.y < b.p.y;
+            return a.index < b.index;
+        });
+        for (std::size_t k = 1; k < pixel.size(); ++k) {
+            if (pixel[k].p != pixel[k - 1].p) continue;
+            duplicateOf[pixel[k].index] = duplicateOf[pixel[k - 1].index];
+            ++count;
+        }
     }
     return count;
 }
@@ -115,7 +143,6 @@ std::size_t findDuplicates(const std::vector<dvec2>& points,
 // cache miss at a million points.
 struct Numbering {
     std::vector<std::uint32_t> inputOf;   // local -> input index
-    std::vector<std::uint32_t> localOf;   // input -> local index (kNoHalfedge: not a site)
     std::size_t kept = 0;                 // locals [0, kept) are S'
     std::vector<std::uint32_t> missing;   // local index of each missing site (after `kept`)
     std::vector<std::uint32_t> keeper;    // local index of the site that took its pixel
@@ -125,10 +152,10 @@ struct Numbering {
 Numbering number(const std::vector<std::uint32_t>& tPrime, const std::vector<std::uint32_t>& hull,
                  const SnappedSites& snapped, const std::vector<std::uint32_t>& duplicateOf) {
     Numbering num;
-    num.localOf.assign(duplicateOf.size(), kNoHalfedge);
+    std::vector<std::uint32_t> localOf(duplicateOf.size(), kNoHalfedge); // kNoHalfedge: none yet
     num.inputOf.reserve(duplicateOf.size());
     const auto add = [&](std::uint32_t v) {
-        std::uint32_t& local = num.localOf[v];
+        std::uint32_t& local = localOf[v];
         if (local == kNoHalfedge) {
             local = static_cast<std::uint32_t>(num.inputOf.size());
             num.inputOf.push_back(v);
@@ -139,20 +166,19 @@ Numbering number(const std::vector<std::uint32_t>& tPrime, const std::vector<std
     std::uint32_t* out = num.triangles.data();
     for (std::size_t i = 0; i < tPrime.size(); ++i) {
         // The ids are input indices, in random order for random input: fetch ahead.
-        if (i + 16 < tPrime.size()) __builtin_prefetch(&num.localOf[tPrime[i + 16]], 1);
+        if (i + 16 < tPrime.size()) __builtin_prefetch(&localOf[tPrime[i + 16]], 1);
         *out++ = add(tPrime[i]);
     }
     for (const std::uint32_t v : hull) *out++ = add(v);
     for (const std::uint32_t v : snapped.kept) add(v); // in no triangle: certification fails
     num.kept = num.inputOf.size();
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> byKeeper; // (local keeper, input site)
-    for (const MissingSite& m : snapped.missing)
-        if (duplicateOf[m.site] == m.site) byKeeper.push_back({num.localOf[m.keeper], m.site});
-    std::sort(byKeeper.begin(), byKeeper.end());
-    for (const auto& [keeper, site] : byKeeper) {
-        add(site);
-        num.missing.push_back(num.localOf[site]);
-        num.keeper.push_back(keeper);
+    // By local keeper, then input site (a keeper holds a pixel, so it is among the kept).
+    const std::vector<MissingSite> byKeeper = groupMissing(
+        snapped.missing, num.kept, [&](const MissingSite& m) { return localOf[m.keeper]; });
+    for (const MissingSite& m : byKeeper) {
+        if (duplicateOf[m.site] != m.site) continue;
+        num.missing.push_back(add(m.site));
+        num.keeper.push_back(localOf[m.keeper]);
     }
     return num;
 }
@@ -283,6 +309,7 @@ class CpuSteps {
             deferred_ = std::move(shifted.deferred);
             if (shifted.stuck) fallback();
         }
+        release(target_); // the mesh's points are the targets now
         r_.cpu.c2 = clock_.lap();
         if (options_.keepStages) keep(inputTriangles(*mesh_, num_));
         clock_.lap();
@@ -294,12 +321,18 @@ class CpuSteps {
             std::vector<std::uint32_t> toInsert = deferred_, near = deferred_;
             toInsert.insert(toInsert.end(), num_.missing.begin(), num_.missing.end());
             near.insert(near.end(), num_.keeper.begin(), num_.keeper.end());
+            r_.counts.missingInserted = num_.missing.size();
+            release(num_.missing);
+            release(num_.keeper);
+            release(deferred_);
+            // Room for every triangle C3 makes (two per site), so the arrays are not copied as
+            // they double, nor left up to twice as large as they need to be.
+            mesh_->reserveCapacity(2 * toInsert.size());
             const std::size_t steps0 = mesh_->walkSteps, flips0 = mesh_->insertFlips;
             r_.counts.sequentialInserts =
                 detail::insertSites(*mesh_, toInsert, near, options_.discrete.threads);
             r_.counts.walkSteps = mesh_->walkSteps - steps0;
             r_.counts.insertFlips = mesh_->insertFlips - flips0;
-            r_.counts.missingInserted = num_.missing.size();
         }
         r_.cpu.c3 = clock_.lap();
         if (options_.keepStages) keep(inputTriangles(*mesh_, num_));
@@ -309,11 +342,18 @@ class CpuSteps {
     // C4 in the local numbering (cache-friendly), then back to input indices.
     void flip() {
         mesh_->compact();
-        r_.counts.flips = mesh_->makeDelaunay();
-        for (std::uint32_t& v : mesh_->triangles) v = num_.inputOf[v];
-        r_.mesh.points = points_;
+        r_.counts.flips = detail::flipToDelaunay(*mesh_, options_.discrete.threads);
+        std::vector<std::uint32_t>& tris = mesh_->triangles;
+        jfa::parallelRows(int(tris.size() / 3), options_.discrete.threads,
+                          [&](int begin, int end, int) {
+                              for (auto e = 3 * std::size_t(begin); e < 3 * std::size_t(end); ++e)
+                                  tris[e] = num_.inputOf[tris[e]];
+                          });
         r_.mesh.triangles = std::move(mesh_->triangles);
         r_.mesh.halfedges = std::move(mesh_->halfedges);
+        mesh_.reset(); // its points and vertex edges, before the result's copy of the points
+        num_ = {};
+        r_.mesh.points = points_;
         r_.cpu.c4 = clock_.lap();
         keep(r_.mesh.triangles);
     }

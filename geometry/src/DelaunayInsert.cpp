@@ -56,11 +56,11 @@ void insertInOrder(WorkMesh& mesh, const std::vector<std::uint32_t>& sites,
 std::size_t insertSites(WorkMesh& mesh, const std::vector<std::uint32_t>& sites,
                         const std::vector<std::uint32_t>& near, int threads) {
     std::vector<std::uint32_t> order(sites.size());
-    for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
     {
-        std::vector<glm::dvec2> at(sites.size());
-        for (std::size_t i = 0; i < sites.size(); ++i) at[i] = mesh.points[sites[i]];
-        insertionOrder(at, order);
+        std::vector<OrderItem> items(sites.size());
+        for (std::uint32_t i = 0; i < items.size(); ++i) items[i] = {mesh.points[sites[i]], i};
+        insertionOrder(items, threads);
+        for (std::size_t k = 0; k < order.size(); ++k) order[k] = items[k].index;
     }
     // Below a few thousand sites a thread costs more than it saves.
     if (bandCount(int(sites.size()), threads) > 1 && sites.size() >= kMinParallelInsert)

@@ -229,34 +229,47 @@ bool WorkMesh::needsFlip(std::uint32_t e) const {
     return halfedges[e] != kNoHalfedge && shouldFlip(points, triangles, halfedges, e);
 }
 
-std::size_t WorkMesh::makeDelaunay() {
+std::size_t WorkMesh::flipLimit() const {
     // Each flip lowers the lifted surface for good, so a triangulation needs at most one flip
     // per pair of points; more means the mesh was broken.
     const std::size_t n = points.size();
-    const std::size_t limit = n < 2 ? 0 : n * (n - 1) / 2;
+    return n < 2 ? 0 : n * (n - 1) / 2;
+}
+
+std::size_t WorkMesh::legalize(std::uint32_t e, std::size_t flips) {
+    const std::size_t limit = flipLimit();
     const auto noBoundaryTracking = [](std::uint32_t) {};
-    std::size_t flips = 0;
-    // Each edge once, from its lower slot (a sequential sweep: a parallel pre-pass marking the
-    // failing edges measured slower on two cores). An edge that passes and is never touched by
-    // a flip stays locally Delaunay; one that a flip touches is re-tested from the stack.
     std::vector<std::uint32_t>& stack = pending_;
-    stack.clear();
+    stack.push_back(e);
+    while (!stack.empty()) {
+        const std::uint32_t h = stack.back();
+        stack.pop_back();
+        if (!needsFlip(h)) continue;
+        const std::uint32_t o = halfedges[h];
+        flip(triangles, halfedges, h, noBoundaryTracking);
+        if (++flips > limit)
+            throw std::runtime_error("delaunay: more than n(n-1)/2 = " + std::to_string(limit) +
+                                     " flips; the mesh is not a triangulation");
+        stack.insert(stack.end(), {h, prevHalfedge(h), o, prevHalfedge(o)});
+    }
+    return flips;
+}
+
+std::size_t WorkMesh::makeDelaunay() {
+    // Each edge once, from its lower slot. An edge that passes and is never touched by a flip
+    // stays locally Delaunay; one that a flip touches is re-tested from the stack.
+    pending_.clear();
+    std::size_t flips = 0;
     for (std::uint32_t e = 0; e < halfedges.size(); ++e) {
         const std::uint32_t twin = halfedges[e];
-        if (twin == kNoHalfedge || twin < e) continue;
-        stack.push_back(e);
-        while (!stack.empty()) {
-            const std::uint32_t h = stack.back();
-            stack.pop_back();
-            if (!needsFlip(h)) continue;
-            const std::uint32_t o = halfedges[h];
-            flip(triangles, halfedges, h, noBoundaryTracking);
-            if (++flips > limit)
-                throw std::runtime_error("delaunay: more than n(n-1)/2 = " + std::to_string(limit) +
-                                         " flips; the mesh is not a triangulation");
-            stack.insert(stack.end(), {h, prevHalfedge(h), o, prevHalfedge(o)});
-        }
+        if (twin != kNoHalfedge && twin > e) flips = legalize(e, flips);
     }
+    return flips;
+}
+
+std::size_t WorkMesh::flipFrom(const std::vector<std::uint32_t>& edges, std::size_t flips) {
+    pending_.clear();
+    for (const std::uint32_t e : edges) flips = legalize(e, flips);
     return flips;
 }
 

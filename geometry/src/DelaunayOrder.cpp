@@ -7,6 +7,8 @@
 // sites in one pixel) and on collinear input (two-lines: long cascades of flips).
 #include <geometry/detail/DelaunaySteps.h>
 
+#include <base/Parallel.h>
+
 #include <algorithm>
 #include <cstdint>
 
@@ -15,16 +17,17 @@ namespace {
 
 using glm::dvec2;
 
+// Sorts the items themselves, not indices into the points: after the shuffle an index is a
+// random access, and the median splits touch every item once per level.
 struct HilbertSorter {
-    const std::vector<dvec2>& points;
-    using It = std::vector<std::uint32_t>::iterator;
+    using It = std::vector<OrderItem>::iterator;
 
     // Puts the median (by axis, ascending or not) in the middle; returns the middle.
     It split(It begin, It end, int axis, bool up) const {
         const It middle = begin + (end - begin) / 2;
         if (begin == end) return middle;
-        std::nth_element(begin, middle, end, [&](std::uint32_t a, std::uint32_t b) {
-            const double pa = points[a][axis], pb = points[b][axis];
+        std::nth_element(begin, middle, end, [&](const OrderItem& a, const OrderItem& b) {
+            const double pa = a.p[axis], pb = b.p[axis];
             return up ? pa < pb : pa > pb;
         });
         return middle;
@@ -35,8 +38,8 @@ struct HilbertSorter {
     void sort(It begin, It end, int x, bool upX, bool upY) const {
         if (end - begin <= 8) {
             // Tiny groups: order along the leading axis (consecutive enough for the walks).
-            std::sort(begin, end, [&](std::uint32_t a, std::uint32_t b) {
-                return upX ? points[a][x] < points[b][x] : points[a][x] > points[b][x];
+            std::sort(begin, end, [&](const OrderItem& a, const OrderItem& b) {
+                return upX ? a.p[x] < b.p[x] : a.p[x] > b.p[x];
             });
             return;
         }
@@ -49,27 +52,75 @@ struct HilbertSorter {
         sort(m2, m3, x, upX, upY);
         sort(m3, end, y, !upY, !upX);
     }
+
+    // One call of sort() (a range and its orientation), for the threads.
+    struct Part {
+        It begin, end;
+        int x;
+        bool upX, upY;
+    };
+
+    // sort()'s recursion down `depth` levels, the calls it would make there collected in `parts`
+    // instead: sorting each part as sort() would gives the same order as one sort() call.
+    void collect(It begin, It end, int x, bool upX, bool upY, int depth,
+                 std::vector<Part>& parts) const {
+        if (depth == 0 || end - begin <= 8) {
+            parts.push_back({begin, end, x, upX, upY});
+            return;
+        }
+        const int y = 1 - x;
+        const It m2 = split(begin, end, x, upX);
+        const It m1 = split(begin, m2, y, upY);
+        const It m3 = split(m2, end, y, !upY);
+        collect(begin, m1, y, upY, upX, depth - 1, parts);
+        collect(m1, m2, x, upX, upY, depth - 1, parts);
+        collect(m2, m3, x, upX, upY, depth - 1, parts);
+        collect(m3, end, y, !upY, !upX, depth - 1, parts);
+    }
+
+    // sort() with its quadrants (4^depth parts, enough for every thread) on `threads` threads;
+    // the order does not depend on the thread count.
+    void sortParallel(It begin, It end, int threads) const {
+        const int bands = bandCount(int(std::min<std::ptrdiff_t>(end - begin, 1 << 30)), threads);
+        if (bands == 1 || end - begin < kMinParallelSort) {
+            sort(begin, end, 0, true, true);
+            return;
+        }
+        int depth = 1;
+        while ((1 << (2 * depth)) < bands && depth < 4) ++depth;
+        std::vector<Part> parts;
+        collect(begin, end, 0, true, true, depth, parts);
+        parallelRows(int(parts.size()), threads, [&](int first, int last, int) {
+            for (int i = first; i < last; ++i) {
+                const Part& p = parts[std::size_t(i)];
+                sort(p.begin, p.end, p.x, p.upX, p.upY);
+            }
+        });
+    }
+
+    // Below this a round is sorted on the caller's thread (threads cost more than they save).
+    static constexpr std::ptrdiff_t kMinParallelSort = 16384;
 };
 
 } // namespace
 
-void insertionOrder(const std::vector<dvec2>& points, std::vector<std::uint32_t>& order) {
+void insertionOrder(std::vector<OrderItem>& items, int threads) {
     // Deterministic shuffle (xorshift64), then rounds: the first quarter recursively, the rest
     // Hilbert-sorted, so round sizes grow geometrically.
     std::uint64_t state = 0x9e3779b97f4a7c15ull;
-    for (std::size_t i = order.size(); i > 1; --i) {
+    for (std::size_t i = items.size(); i > 1; --i) {
         state ^= state << 13;
         state ^= state >> 7;
         state ^= state << 17;
-        std::swap(order[i - 1], order[state % i]);
+        std::swap(items[i - 1], items[state % i]);
     }
-    const HilbertSorter sorter{points};
-    auto end = order.end();
+    const HilbertSorter sorter;
+    auto end = items.end();
     while (true) {
-        const auto size = end - order.begin();
-        const auto middle = order.begin() + (size < 256 ? 0 : size / 4);
-        sorter.sort(middle, end, 0, true, true);
-        if (middle == order.begin()) break;
+        const auto size = end - items.begin();
+        const auto middle = items.begin() + (size < 256 ? 0 : size / 4);
+        sorter.sortParallel(middle, end, threads);
+        if (middle == items.begin()) break;
         end = middle;
     }
 }

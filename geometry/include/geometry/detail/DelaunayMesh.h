@@ -85,6 +85,13 @@ class WorkMesh {
         return triangles.size() / 3 - freeSlots_.size();
     }
 
+    /// Room for `count` more triangles beyond the current slots, so adding them never moves
+    /// the arrays (a doubling copy holds both, and may leave them twice the size needed).
+    void reserveCapacity(std::size_t count) {
+        triangles.reserve(triangles.size() + 3 * count);
+        halfedges.reserve(halfedges.size() + 3 * count);
+    }
+
     /// v's outgoing halfedges counterclockwise around v; on the hull the first one is v's
     /// outgoing boundary halfedge (v -> next hull vertex). Returns whether v is on the hull.
     bool fan(std::uint32_t v, std::vector<std::uint32_t>& out) const;
@@ -111,9 +118,12 @@ class WorkMesh {
     /// Step C4: Lawson flips (TriangulationFlip.h, as legalize()) until every edge is locally
     /// Delaunay; returns the number of flips. One sweep over the halfedges tests each edge, and
     /// a flip's four outer edges are re-tested at once from a small stack, so no list of all
-    /// edges is built. Needs compact() first; leaves
-    /// vertexEdge stale (the last edit).
+    /// edges is built. Needs compact() first; leaves vertexEdge stale (the last edit).
     std::size_t makeDelaunay();
+    /// makeDelaunay() from `edges` only, for a mesh whose other edges are known to be locally
+    /// Delaunay (C4's parallel tests find the rest); `flips` already made count toward the
+    /// n(n-1)/2 limit. Returns the flips in all.
+    std::size_t flipFrom(const std::vector<std::uint32_t>& edges, std::size_t flips);
 
   private:
     // C3's parallel batches edit the arrays directly, each thread in its own region
@@ -140,6 +150,9 @@ class WorkMesh {
                      std::vector<std::uint32_t>& pending);
     void insertOutside(std::uint32_t e, std::uint32_t v);
     void restoreDelaunay();
+    std::size_t legalize(std::uint32_t e, std::size_t flips); // C4's flips from edge e
+    // At most this many flips turn a triangulation of the points into the Delaunay one.
+    [[nodiscard]] std::size_t flipLimit() const;
     bool needsFlip(std::uint32_t e) const; // has an opposite and shouldFlip()
     void removeInterior(std::uint32_t v, glm::dvec2 pv);
     bool removeOnHull(std::uint32_t v);

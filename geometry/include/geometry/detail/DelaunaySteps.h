@@ -1,7 +1,8 @@
 #pragma once
-// Private to the Delaunay pipeline: the CPU steps C1-C3 of the thesis (§6.3.3) and the fallback,
-// each in its own file (DelaunayHull.cpp, DelaunayShift.cpp, DelaunayInsert.cpp); the driver
-// (Delaunay.cpp) runs them in order, times them and keeps the stages.
+// Private to the Delaunay pipeline: the CPU steps C1-C4 of the thesis (§6.3.3) and the fallback,
+// each in its own file (DelaunayHull.cpp, DelaunayShift.cpp, DelaunayInsert.cpp with
+// DelaunayInsertParallel.cpp, DelaunayFlipParallel.cpp); the driver (Delaunay.cpp) runs them in
+// order, times them and keeps the stages.
 
 #include <geometry/detail/DelaunayMesh.h>
 
@@ -54,10 +55,31 @@ std::vector<std::uint32_t> insertInStrips(WorkMesh& mesh, const std::vector<std:
                                           const std::vector<std::uint32_t>& near,
                                           const std::vector<std::uint32_t>& order, int threads);
 
-/// Reorders `order` (indices into points, distinct positions) into a biased randomized
-/// insertion order whose rounds follow a Hilbert curve: short walks, linear expected work.
-/// Deterministic.
-void insertionOrder(const std::vector<glm::dvec2>& points, std::vector<std::uint32_t>& order);
+/// C4: Lawson flips until every edge of `mesh` (compacted) is locally Delaunay; returns the
+/// number of flips. With more than one of `threads` (0 = all) and at least kMinParallelFlip
+/// triangles, failingEdges() tests every edge on the threads first and the flips start from
+/// the edges that failed; otherwise WorkMesh::makeDelaunay().
+std::size_t flipToDelaunay(WorkMesh& mesh, int threads);
+
+/// Fewest triangles for which C4 uses threads.
+inline constexpr std::size_t kMinParallelFlip = 65536;
+
+/// C4's parallel part (DelaunayFlipParallel.cpp): every interior edge of `mesh` (compacted)
+/// that is not locally Delaunay, once each (its lower halfedge), in ascending order; read-only,
+/// on `threads` threads (0 = all).
+std::vector<std::uint32_t> failingEdges(const WorkMesh& mesh, int threads);
+
+/// A point to order and the index it stands for.
+struct OrderItem {
+    glm::dvec2 p;
+    std::uint32_t index;
+};
+
+/// Reorders `items` (distinct positions) into a biased randomized insertion order whose rounds
+/// follow a Hilbert curve: short walks, linear expected work. Deterministic: the same order on
+/// any number of `threads` (0 = all), which sort the largest rounds' Hilbert quadrants side by
+/// side.
+void insertionOrder(std::vector<OrderItem>& items, int threads = 1);
 
 /// The fallback when the discrete result cannot be completed (too few or collinear pixels, a
 /// T' that fails the degree argument, a removal with nothing left): the incremental Delaunay
