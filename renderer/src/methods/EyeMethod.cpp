@@ -1,6 +1,7 @@
 // jfa-e and flood-e (thesis §5.4): hard shadows of the frame's surfaces, boundary seeds, the
 // flood in eye space and the visibility composite (EyeSoftShadowPass).
 
+#include <renderer/methods/OptionStructs.h>
 #include <renderer/methods/ShadowMethod.h>
 #include <renderer/soft/EyeSoftShadow.h>
 
@@ -17,24 +18,23 @@ class EyeMethod final : public ShadowMethod {
     void resize(int, int) override {} // the pass sizes itself to the frame
 
     const gl::Texture& execute(const FrameInputs& in) override {
+        const EyeFloodOptions& o = in.options<EyeFloodOptions>();
         EyeSoftSettings es;
-        es.objectIdFix = !in.flag("noObjectIdFix");
-        es.midpointFix = !in.flag("noMidpointFix");
-        es.boundaryThreshold = in.real("boundaryThreshold");
-        es.occluderPoints = in.text("occluderPoints") == "centre" ? OccluderPoints::TexelCentre
-                                                                  : OccluderPoints::Edge;
+        es.objectIdFix = !o.noObjectIdFix;
+        es.midpointFix = !o.noMidpointFix;
+        es.boundaryThreshold = o.boundaryThreshold;
+        es.occluderPoints = o.occluderPoints;
         es.silhouetteThreshold = silhouetteThreshold(in.sceneBounds.radius());
-        es.autoPasses = in.text("autoPasses") == "geometric" ? EyeAutoPasses::Geometric
-                                                             : EyeAutoPasses::Measured;
-        const int passes = requestedPasses(in.method, in.options, in.shadow.depth.width(),
+        es.autoPasses = o.autoPasses;
+        const int passes = requestedPasses(MethodSpace::Eye, o.flood, in.shadow.depth.width(),
                                            in.width(), in.height());
-        const jfa::FloodRegion region = floodRegion(in.options);
+        const jfa::FloodRegion region = o.flood.region;
         const PenumbraReach reach = penumbraReach(in.disk, in.camera.proj * in.camera.view,
                                                   {in.width(), in.height()}, in.sceneBounds);
         const EyeSoftShadowPass::Outputs out =
             pass_.execute({in.scene, in.camera, in.surfaces.positions(), in.shadow,
                            in.shadowSettings, in.disk, es, passes, standardFlooding_, in.width(),
-                           in.height(), region, reach, bandTile(in.options)},
+                           in.height(), region, reach, o.flood.bandTile},
                           in.timer);
         flood_ = {&out.seeds,     &out.flooded,   &out.eye, true,  standardFlooding_, out.jfaPasses,
                   es.objectIdFix, es.midpointFix, region,   reach, &pass_.kernel()};

@@ -5,6 +5,8 @@
 
 #include "LightLookup.h"
 
+#include <renderer/methods/OptionStructs.h>
+
 #include <renderer/soft/OccluderEdge.h>
 #include <renderer/soft/PenumbraMap.h>
 
@@ -24,12 +26,13 @@ class PenumbraMethod final : public ShadowMethod {
     const gl::Texture& execute(const FrameInputs& in) override {
         if (in.shadow.receivers == nullptr)
             throw std::invalid_argument("jfa-l needs the shadow map's receiver positions");
+        const LightFloodOptions& o = in.options<LightFloodOptions>();
         PenumbraSettings ps;
-        ps.passes = requestedPasses(in.method, in.options, in.shadow.depth.width(), in.width(),
-                                    in.height());
+        ps.passes = requestedPasses(MethodSpace::Light, o.flood, in.shadow.depth.width(),
+                                    in.width(), in.height());
         ps.standardFlooding = standardFlooding_;
-        ps.region = floodRegion(in.options);
-        ps.bandTile = bandTile(in.options);
+        ps.region = o.flood.region;
+        ps.bandTile = o.flood.bandTile;
         const int size = in.shadow.depth.width();
         PenumbraReach reach =
             penumbraReach(in.disk, in.shadow.mapViewProj(), {size, size}, in.sceneBounds);
@@ -44,7 +47,7 @@ class PenumbraMethod final : public ShadowMethod {
         if (ps.region == jfa::FloodRegion::View) pi.viewSeedReach = viewSeedReach(in, ps, size);
         // --penumbra both: a texel whose surface may hide a receiver in an occluder's umbra
         // ranks occluders for one at the deepest a receiver lies (PenumbraCriterion::umbraDepth).
-        const bool both = penumbraBothSides(in.options);
+        const bool both = o.bothSides;
         pi.umbraDepth = both ? reach.farDepth : 0.0f;
         const PenumbraMapPass::Outputs pm = pass_.execute(pi, in.timer);
         flood_ = {&pm.seeds,

@@ -24,6 +24,7 @@
 #include <geometry/Aabb.h>
 #include <geometry/Framing.h>
 
+#include <any>
 #include <functional>
 #include <memory>
 #include <span>
@@ -32,7 +33,8 @@
 
 namespace fl {
 
-struct EyeCells; // renderer/soft/EyeDecode.h
+struct EyeCells;     // renderer/soft/EyeDecode.h
+struct FloodOptions; // renderer/methods/OptionStructs.h
 
 struct MethodDescriptor;
 
@@ -48,15 +50,16 @@ struct FrameInputs {
     const ShadowMapPass::Outputs& shadow;  // step 1
     const SurfacesPass::Outputs& surfaces; // step 2
     const MethodDescriptor& method;        // this method's table row
-    const MethodOptions& options;          // values by flag; a row's defaults fill the rest
+    const std::any& parsedOptions;         // its options struct (the row's options.parse())
     gl::PassTimer* timer = nullptr;        // times the method's phases (the row's names)
     const std::function<void(double)>* progress = nullptr; // RenderSettings::progress, if set
 
-    /// This method's option `key` (its capture-script key), as the row declares it.
-    [[nodiscard]] int integer(std::string_view key) const;
-    [[nodiscard]] float real(std::string_view key) const;
-    [[nodiscard]] bool flag(std::string_view key) const;
-    [[nodiscard]] std::string text(std::string_view key) const;
+    /// This method's options struct (renderer/methods/OptionStructs.h); std::bad_any_cast when
+    /// S is not its row's.
+    template <class S>
+    [[nodiscard]] const S& options() const {
+        return std::any_cast<const S&>(parsedOptions);
+    }
     [[nodiscard]] int width() const { return surfaces.width; }
     [[nodiscard]] int height() const { return surfaces.height; }
 };
@@ -124,11 +127,11 @@ struct MethodDescriptor {
     std::string_view help;      // one line
     std::string_view reference; // its standard-flooding reference ("" none): "flood-l"
     MethodSpace space = MethodSpace::Light;
-    std::span<const MethodOption* const> options; // what it takes, in --help order
-    std::span<const std::string_view> phases;     // its timed phase names, in frame order
-    bool cycles = true;                           // the window's M key steps through it
-    bool shadowMapPositions = false; // needs the shadow map's receiver positions (step 1)
-    bool floods = false;             // a flooding method: passes and FloodFrame
+    MethodOptionSet options;                  // what it takes, in --help order, and its struct
+    std::span<const std::string_view> phases; // its timed phase names, in frame order
+    bool cycles = true;                       // the window's M key steps through it
+    bool shadowMapPositions = false;          // needs the shadow map's receiver positions (step 1)
+    bool floods = false;                      // a flooding method: passes and FloodFrame
     std::unique_ptr<ShadowMethod> (*make)(const gl::ShaderLibrary&) = nullptr;
     /// Checks the options for a frame before any rendering; throws std::invalid_argument with the
     /// option's flag and the valid range. Null: nothing to check beyond each option's range.
@@ -175,10 +178,6 @@ std::vector<const MethodOption*> allMethodOptions();
 const MethodOption& floodPassesOption();
 /// The option that chooses band-limited or full-grid flooding (--flood-region).
 const MethodOption& floodRegionOption();
-/// Its value.
-jfa::FloodRegion floodRegion(const MethodOptions& options);
-/// --band-tile's value (checked by the flooding rows' check()).
-int bandTile(const MethodOptions& options);
 /// jfa-l's and flood-l's --penumbra: which halves of each penumbra they compute.
 const MethodOption& penumbraSidesOption();
 /// Whether --penumbra is both (the umbra side too) rather than outer (the thesis' lit side).
@@ -188,6 +187,9 @@ inline constexpr int kAutoPasses = 0;
 /// The flood pass count a flooding method's options ask for at this map and frame size (what
 /// --jfa-passes, --full-jfa mean for it), kAutoPasses for auto; 0 for the other methods.
 int requestedPasses(const MethodDescriptor& m, const MethodOptions& options, int mapSize, int width,
+                    int height);
+/// The same from a flooding method's parsed options.
+int requestedPasses(MethodSpace space, const FloodOptions& flood, int mapSize, int width,
                     int height);
 
 } // namespace fl
