@@ -136,7 +136,11 @@ constexpr MethodOption kPcfKernel{
     "Taps per side of the kernel (N x N depth comparisons one uniform-map texel apart, in the "
     "light's unwarped plane)",
     1,
-    kMaxPcfKernel};
+    kMaxPcfKernel,
+    {},
+    {},
+    0,
+    "3x3=3|5x5=5"};
 constexpr MethodOption kPcssPreset{"--pcss-preset",
                                    "preset",
                                    OptionKind::Choice,
@@ -144,7 +148,10 @@ constexpr MethodOption kPcssPreset{"--pcss-preset",
                                    "Blocker-search/filter samples",
                                    0,
                                    0,
-                                   "16/16|16/24|32/64"};
+                                   "16/16|16/24|32/64",
+                                   {},
+                                   0,
+                                   "*"};
 constexpr MethodOption kReferenceSamples{"--reference-samples",
                                          "samples",
                                          OptionKind::Int,

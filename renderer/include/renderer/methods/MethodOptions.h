@@ -30,6 +30,9 @@ struct MethodOption {
     std::string_view word = {};    // Int: a word accepted besides the range ("auto"); integer()
                                    // reads it as 0
     int multipleOf = 0;            // Int: the value must be a multiple of this (0: any)
+    /// The values the baselines bench renders its method at, one entry each ('|'-separated;
+    /// "LABEL=VALUE" names an entry other than by its value; "*": every choice); "" none.
+    std::string_view sweep = {};
 };
 
 /// A Choice option's values, in the order `choices` lists them.
