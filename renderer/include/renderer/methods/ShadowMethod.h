@@ -13,6 +13,7 @@
 #include <gpu/ShaderLibrary.h>
 #include <jfa/Band.h>
 #include <jfa/GlKernel.h>
+#include <jfa/Plan.h>
 #include <renderer/methods/MethodOptions.h>
 #include <renderer/passes/ShadowMapPass.h>
 #include <renderer/passes/SurfacesPass.h>
@@ -30,6 +31,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace fl {
 
@@ -64,37 +66,76 @@ struct FrameInputs {
     [[nodiscard]] int height() const { return surfaces.height; }
 };
 
+struct FloodFrame;
+
+/// What differs between the spaces a flood runs in (light: the shadow map's grid, JFA-L and
+/// flood-L; eye: the frame's pixels, JFA-E and flood-E): how its cells unpack and draw, how it
+/// plans and re-runs a flood. A flooding method's FloodFrame points to its space, so that the
+/// overlays draw any flood through it without asking which space it is.
+class FloodSpace {
+  public:
+    virtual ~FloodSpace() = default;
+    /// Where the overlays place the flood's grid in a frame: the whole frame (a grid of its
+    /// pixels) or the centred square (the shadow map's grid).
+    enum class Placement { WholeFrame, CentredSquare };
+    [[nodiscard]] virtual Placement placement() const = 0;
+    /// `frame`'s flood plan at its pass count, with JFA or standard flooding.
+    [[nodiscard]] virtual jfa::Plan plan(const FloodFrame& frame, bool standardFlooding) const = 0;
+    /// Runs `plan` on `frame`'s seeds with its criterion, flood region and penumbra bound (an
+    /// overlay's re-run: pass by pass, or the other flooding); the texture is this space's own
+    /// kernel's, valid until the next call.
+    virtual const gl::Texture& rerun(const FloodFrame& frame, const jfa::Plan& plan,
+                                     const DiskLight& light) const = 0;
+    /// The texture that unpacks `frame`'s packed cells (read back once by FloodGridReader).
+    [[nodiscard]] virtual const gl::Texture& unpackSource(const FloodFrame& frame) const = 0;
+    /// `grid`'s cells unpacked with `source` (unpackSource() read back).
+    [[nodiscard]] virtual jfa::Grid unpack(const gl::Texture& grid,
+                                           const jfa::Grid& source) const = 0;
+    /// The decoded positions an occluder grid's picture is coloured with, and whether they are
+    /// the eye's points (GridDraw::eyeSpace) rather than the map's receivers.
+    [[nodiscard]] virtual const gl::Texture& occluderPositions(const FloodFrame& frame) const = 0;
+    [[nodiscard]] virtual bool positionsAreEyePoints() const = 0;
+    /// Captions: "silhouette seeds (light space, JFA-L phase 2)", "penumbra map (JFA-L)", and
+    /// the seeds' kind ("silhouette").
+    [[nodiscard]] virtual std::string_view seedsCaption() const = 0;
+    [[nodiscard]] virtual std::string_view floodCaption() const = 0;
+    [[nodiscard]] virtual std::string_view seedKind() const = 0;
+    /// Appends to `key` what a re-run depends on besides the seeds, views, light and plan (an
+    /// overlay's cache key): the space and its criterion's switches.
+    virtual void appendKey(const FloodFrame& frame, std::vector<float>& key) const = 0;
+};
+
 /// What a flooding method (JFA-L/E and their standard-flooding references) keeps of its last
-/// frame: the overlays re-run and draw its flood.
+/// frame, the typed view the overlays re-run and draw: its textures, plan, region and kernel,
+/// the criterion's inputs, and its space (what differs between light and eye).
 struct FloodFrame {
     const gl::Texture* seeds = nullptr;
     const gl::Texture* flooded = nullptr;
-    const EyeCells* eyeCells = nullptr; // eye only: phase 2's packed cells (EyeDecode.h)
-    bool eye = false;
+    const FloodSpace* space = nullptr;
     bool standardFlooding = false;
-    int passes = 0;          // flood passes run
-    bool objectIdFix = true; // eye only: the criterion's switches
-    bool midpointFix = true;
+    int passes = 0;                                   // flood passes run
     jfa::FloodRegion region = jfa::FloodRegion::Full; // --flood-region
     PenumbraReach reach;                              // the criterion's band bound
     const jfa::GlFloodKernelBase* kernel = nullptr;   // ran the flood (activeShare())
+    const EyeCells* eyeCells = nullptr; // eye only: phase 2's packed cells (EyeDecode.h)
+    bool objectIdFix = true;            // eye only: the criterion's switches
+    bool midpointFix = true;
     const MapPositions* map = nullptr; // light only: the shadow map's receiver target
     float umbraDepth = 0.0f; // light only: PenumbraCriterion::umbraDepth (--penumbra both)
 };
 
 /// Reads `frame`'s grids (its seeds, its flood, or an overlay's re-run of it) back as cells. The
-/// GPU's cells are packed: eye cells unpack with phase 2's occluders as the GPU decodes them
-/// (EyeCells::decoded, readEyeGrid), light cells
-/// with the map's positions as the shaders decode them (readPenumbraGrid); those are read back
-/// once, when the reader is made, for every grid it then reads.
+/// GPU's cells are packed; they unpack with the texture its space names (FloodSpace::
+/// unpackSource: eye cells with phase 2's occluders, light cells with the map's positions, as
+/// the GPU decodes them), read back once, when the reader is made, for every grid it then reads.
 class FloodGridReader {
   public:
     explicit FloodGridReader(const FloodFrame& frame);
     [[nodiscard]] jfa::Grid read(const gl::Texture& grid) const;
 
   private:
-    bool eye_;
-    jfa::Grid source_; // eye: the occluders; light: the decoded map positions
+    const FloodSpace* space_;
+    jfa::Grid source_;
 };
 
 /// One grid of `frame` as cells: FloodGridReader(frame).read(grid).
