@@ -225,10 +225,10 @@ constexpr MethodOption kVsmBleed{"--vsm-bleed",
 jfa::FloodRegion floodRegionNamed(std::string_view text) {
     return *jfa::parseFloodRegion(text);
 }
-bool isBoth(std::string_view text) {
+bool penumbraIsBoth(std::string_view text) {
     return text == "both";
 }
-bool isOn(std::string_view text) {
+bool terminatorOffsetOn(std::string_view text) {
     return text == "on";
 }
 OccluderPoints occluderPointsNamed(std::string_view text) {
@@ -250,24 +250,26 @@ constexpr std::array<OptionField, 4> floodFields() {
             field<&S::flood, &FloodOptions::bandTile>(kBandTile)};
 }
 template <std::size_t N, std::size_t M>
-constexpr std::array<OptionField, N + M> join(const std::array<OptionField, N>& a,
-                                              const std::array<OptionField, M>& b) {
+constexpr std::array<OptionField, N + M> joinFields(const std::array<OptionField, N>& a,
+                                                    const std::array<OptionField, M>& b) {
     std::array<OptionField, N + M> out{};
     for (std::size_t i = 0; i < N; ++i) out[i] = a[i];
     for (std::size_t i = 0; i < M; ++i) out[N + i] = b[i];
     return out;
 }
 
-using L = LightFloodOptions;
-using E = EyeFloodOptions;
+using LightFlood = LightFloodOptions; // short names for the two field lists below
+using EyeFlood = EyeFloodOptions;
 constexpr auto kLightFloodFields =
-    join(floodFields<L>(), std::array{parsedField<isBoth, &L::bothSides>(kPenumbraSides)});
-constexpr auto kEyeFloodFields = join(
-    floodFields<E>(),
-    std::array{field<&E::noObjectIdFix>(kNoObjectIdFix), field<&E::noMidpointFix>(kNoMidpointFix),
-               field<&E::boundaryThreshold>(kBoundaryThreshold),
-               parsedField<occluderPointsNamed, &E::occluderPoints>(kOccluderPoints),
-               parsedField<autoPassRuleNamed, &E::autoPasses>(kAutoPassRule)});
+    joinFields(floodFields<LightFlood>(),
+               std::array{parsedField<penumbraIsBoth, &LightFlood::bothSides>(kPenumbraSides)});
+constexpr auto kEyeFloodFields = joinFields(
+    floodFields<EyeFlood>(),
+    std::array{field<&EyeFlood::noObjectIdFix>(kNoObjectIdFix),
+               field<&EyeFlood::noMidpointFix>(kNoMidpointFix),
+               field<&EyeFlood::boundaryThreshold>(kBoundaryThreshold),
+               parsedField<occluderPointsNamed, &EyeFlood::occluderPoints>(kOccluderPoints),
+               parsedField<autoPassRuleNamed, &EyeFlood::autoPasses>(kAutoPassRule)});
 constexpr OptionField kPcfFields[] = {field<&PcfOptions::kernel>(kPcfKernel)};
 constexpr OptionField kPcssFields[] = {
     parsedField<pcssPresetNamed, &PcssOptions::preset>(kPcssPreset)};
@@ -279,7 +281,7 @@ constexpr OptionField kVsmFields[] = {field<&VsmOptions::blur>(kVsmBlur),
                                       field<&VsmOptions::bleed>(kVsmBleed)};
 constexpr OptionField kRayTraceFields[] = {
     field<&RayTraceOptions::samples>(kRaySamples), field<&RayTraceOptions::grid>(kRayGrid),
-    parsedField<isOn, &RayTraceOptions::terminatorOffset>(kTerminatorOffset)};
+    parsedField<terminatorOffsetOn, &RayTraceOptions::terminatorOffset>(kTerminatorOffset)};
 
 // --- Timed phases (step 3's parts, as PassTimer names them) ------------------------------------
 
