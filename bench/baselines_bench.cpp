@@ -90,8 +90,9 @@ struct Entries {
     }
 
     // Every method of the table at its defaults, but the standard-flooding references
-    // (flood-l, flood-e: the JFA methods' own yardsticks) and the ground truths; PCF at two
-    // kernels, PCSS at every preset. The ground truths last, timed on fewer frames.
+    // (flood-l, flood-e: the JFA methods' own yardsticks) and the ground truths; a method with a
+    // swept option (MethodOption::sweep: PCF's two kernels, PCSS's presets) once per value. The
+    // ground truths last, timed on fewer frames.
     void addAll() {
         for (const fl::MethodDescriptor& m : fl::methodTable()) {
             bool isReference = !m.truth.empty();
@@ -99,21 +100,21 @@ struct Entries {
                 isReference = isReference || other.reference == m.name;
             if (isReference) continue;
             const std::string name(m.name);
-            if (m.name == "pcf") {
-                for (int k : {3, 5})
-                    add(fl::cat(name, " ", k, "x", k), m, m.options.front()->flag,
-                        std::to_string(k));
-            } else if (const fl::MethodOption* preset = m.option("preset")) {
-                std::string_view choices = preset->choices;
-                while (!choices.empty()) {
-                    const std::size_t bar = choices.find('|');
-                    const std::string p(choices.substr(0, bar));
-                    add(fl::cat(name, " ", p), m, preset->flag, p);
-                    choices = bar == std::string_view::npos ? std::string_view{}
-                                                            : choices.substr(bar + 1);
-                }
-            } else {
+            const fl::MethodOption* swept = nullptr;
+            for (const fl::MethodOption* opt : m.options)
+                if (!opt->sweep.empty()) swept = opt;
+            if (!swept) {
                 add(name, m);
+                continue;
+            }
+            std::string_view items = swept->sweep == "*" ? swept->choices : swept->sweep;
+            while (!items.empty()) {
+                const std::size_t bar = items.find('|');
+                const std::string item(items.substr(0, bar));
+                const std::size_t eq = item.find('=');
+                const std::string value = eq == std::string::npos ? item : item.substr(eq + 1);
+                add(fl::cat(name, " ", item.substr(0, eq)), m, swept->flag, value);
+                items = bar == std::string_view::npos ? std::string_view{} : items.substr(bar + 1);
             }
         }
         methods = all.size();

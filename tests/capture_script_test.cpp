@@ -4,6 +4,7 @@
 #include "TestPaths.h"
 #include <app/CaptureScript.h>
 
+#include <renderer/methods/OptionStructs.h>
 #include <renderer/methods/ShadowMethod.h>
 #include <renderer/soft/FilteredShadow.h>
 
@@ -278,6 +279,52 @@ TEST(CaptureScript, ShippedExamplesParse) {
                                 "walkthrough.json")
                   .frames,
               462);
+}
+
+// A script entry's options reach the method as its typed struct (MethodOptionSet::parse, what
+// the renderer does once per settings): values as the script gave them, defaults elsewhere.
+TEST(TypedOptions, ScriptOptionsParseIntoTheMethodsStruct) {
+    const CaptureScript s = parse(script(
+        "", R"(["pcf:5", "pcss:32/64", {"method": "jfa-e", "passes": 4, "occluderPoints": "centre",
+               "noMidpointFix": true}, {"method": "jfa-l", "penumbra": "outer"}, "raytrace"])"));
+    const auto typed = [&](std::size_t i) {
+        return methodOrThrow(s.methods[i].method).options.parse(s.methods[i].options);
+    };
+    EXPECT_EQ(std::any_cast<PcfOptions>(typed(0)).kernel, 5);
+    EXPECT_EQ(std::any_cast<PcssOptions>(typed(1)).preset.filterSamples, 64);
+    const auto eye = std::any_cast<EyeFloodOptions>(typed(2));
+    EXPECT_EQ(eye.flood.passes, 4);
+    EXPECT_FALSE(eye.flood.fullJfa);
+    EXPECT_EQ(eye.flood.region, jfa::FloodRegion::View); // the default, "view"
+    EXPECT_EQ(eye.flood.bandTile, 8);
+    EXPECT_EQ(eye.occluderPoints, OccluderPoints::TexelCentre);
+    EXPECT_TRUE(eye.noMidpointFix);
+    EXPECT_FALSE(eye.noObjectIdFix);
+    EXPECT_EQ(eye.autoPasses, EyeAutoPasses::Measured);
+    const auto light = std::any_cast<LightFloodOptions>(typed(3));
+    EXPECT_FALSE(light.bothSides);
+    EXPECT_EQ(light.flood.passes, kAutoPasses); // "auto"
+    const auto rays = std::any_cast<RayTraceOptions>(typed(4));
+    EXPECT_EQ(rays.samples, 256);
+    EXPECT_FALSE(rays.grid);
+    EXPECT_TRUE(rays.terminatorOffset);
+    EXPECT_THROW((void)std::any_cast<PcfOptions>(typed(1)), std::bad_any_cast);
+}
+
+// Every row parses its defaults, and a bad value fails with the message the CLI gives.
+TEST(TypedOptions, DefaultsParseAndBadValuesNameTheFlag) {
+    for (const MethodDescriptor& m : methodTable()) {
+        EXPECT_NO_THROW((void)m.options.parse(MethodOptions{})) << m.name;
+        EXPECT_EQ(m.options.parse(MethodOptions{}).has_value(), !m.options.empty()) << m.name;
+    }
+    MethodOptions bad;
+    bad.set("--pcf-kernel", 0);
+    try {
+        (void)methodOrThrow("pcf").options.parse(bad);
+        ADD_FAILURE() << "kernel 0 parsed";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_STREQ(e.what(), "--pcf-kernel: must be an integer in [1, 15], got '0'");
+    }
 }
 
 } // namespace

@@ -11,8 +11,8 @@
 
 #include <jfa/Sites.h>
 
-#include "../geometry/src/DelaunayMesh.h"
-#include "../geometry/src/DelaunaySteps.h"
+#include <geometry/detail/DelaunayMesh.h>
+#include <geometry/detail/DelaunaySteps.h>
 #include "../geometry/src/TriangulationFlip.h"
 
 #include "TriangleSet.h"

@@ -85,7 +85,8 @@ TEST_F(PenumbraTest, SilhouettesAndFloodMatchTheCpuReference) {
                     ASSERT_NE(flood, nullptr);
                     ASSERT_NE(flood->flooded, nullptr);
                     ASSERT_NE(flood->seeds, nullptr);
-                    EXPECT_FALSE(flood->eye);
+                    ASSERT_NE(flood->space, nullptr);
+                    EXPECT_FALSE(flood->space->positionsAreEyePoints()); // light space
                     EXPECT_EQ(flood->passes, 4);
                     EXPECT_EQ(flood->standardFlooding, isStandardFlooding(*d)) << method;
                     const ReceiverGrid receivers = readReceivers(r.decodedShadowReceivers());

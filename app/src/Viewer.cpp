@@ -81,10 +81,10 @@ void Viewer::chooseOpeningMethod(const CameraView& view) {
     if (ms <= kInteractiveMs) {
         openingNote_ = "opened on jfa-e: " + fixed(ms, 0) + " ms/frame here (M: other methods)";
     } else {
-        s.method = "hard";
+        s.method = std::string(cheapestMethod().name); // the fastest there is
         renderer_->setSettings(s);
-        openingNote_ = "opened on hard: jfa-e takes " + fixed(ms, 0) + " ms/frame here (> " +
-                       fixed(kInteractiveMs, 0) + " ms; M switches)";
+        openingNote_ = "opened on " + s.method + ": jfa-e takes " + fixed(ms, 0) +
+                       " ms/frame here (> " + fixed(kInteractiveMs, 0) + " ms; M switches)";
     }
     std::cout << openingNote_ << "\n";
 }

@@ -11,7 +11,7 @@
 // Tried first and dropped: flipping in strips as C3 inserts (a thread flips only between two
 // triangles with all vertices in its strip). With nearly nothing to flip it only added work:
 // 35 ms to find each triangle's strip and 25 % more per test (the ownership look-ups).
-#include "DelaunaySteps.h"
+#include <geometry/detail/DelaunaySteps.h>
 
 #include "TriangulationFlip.h"
 

@@ -41,6 +41,7 @@ ShadowMethod& Renderer::currentMethod() {
 void Renderer::setSettings(const RenderSettings& settings) {
     method_ = &methodOrThrow(settings.method);
     settings_ = settings;
+    parsedOptions_.reset();
     (void)currentMethod();
 }
 
@@ -118,12 +119,17 @@ void Renderer::renderFrame(const CameraView& camera, const CameraView* previous)
     // 3. The shadow method: visibility per pixel (it times its own phases). A reader of the
     //    whole flood (an overlay that shows the map) gets the band where --flood-region is
     //    unset: the default, view, is exact only where the eye's pixels read the map.
-    MethodOptions wholeFlood;
-    const bool band = settings_.wholeFlood && !settings_.options.has(floodRegionOption().flag);
-    if (band) {
-        wholeFlood = settings_.options;
-        wholeFlood.set(floodRegionOption().flag,
-                       std::string(jfa::floodRegionName(jfa::FloodRegion::Band)));
+    //    The options are parsed into the method's struct once per settings (an invalid value
+    //    throws here, at the first frame, and again at the next).
+    if (!parsedOptions_) {
+        MethodOptions wholeFlood;
+        const bool band = settings_.wholeFlood && !settings_.options.has(floodRegionOption().flag);
+        if (band) {
+            wholeFlood = settings_.options;
+            wholeFlood.set(floodRegionOption().flag,
+                           std::string(jfa::floodRegionName(jfa::FloodRegion::Band)));
+        }
+        parsedOptions_ = method.options.parse(band ? wholeFlood : settings_.options);
     }
     const FrameInputs in{scene_,
                          camera,
@@ -135,7 +141,7 @@ void Renderer::renderFrame(const CameraView& camera, const CameraView* previous)
                          shadow,
                          surfaces,
                          method,
-                         band ? wholeFlood : settings_.options,
+                         *parsedOptions_,
                          &timer_,
                          settings_.progress ? &settings_.progress : nullptr};
     const gl::Texture& methodVisibility = impl.execute(in);

@@ -147,6 +147,7 @@ class Renderer {
     gl::ShaderLibrary shaders_;
     RenderSettings settings_;
     const MethodDescriptor* method_ = nullptr;
+    std::optional<std::any> parsedOptions_; // settings_.options as method_'s struct, once parsed
     GpuScene scene_;
     Light light_;
     geom::Aabb sceneBounds_; // the scene's, or every pose its animations take

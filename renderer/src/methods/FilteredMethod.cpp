@@ -1,5 +1,6 @@
 // pcf and pcss: the shadow map filtered per pixel of the frame's surfaces (FilteredShadowPass).
 
+#include <renderer/methods/OptionStructs.h>
 #include <renderer/methods/ShadowMethod.h>
 #include <renderer/soft/FilteredShadow.h>
 
@@ -15,9 +16,9 @@ class FilteredMethod final : public ShadowMethod {
     const gl::Texture& execute(const FrameInputs& in) override {
         FilteredShadowSettings fs;
         if (pcss_)
-            fs.pcss = parsePcssPreset(in.text("preset")).value_or(PcssPreset{});
+            fs.pcss = in.options<PcssOptions>().preset;
         else
-            fs.pcfKernel = in.integer("kernel");
+            fs.pcfKernel = in.options<PcfOptions>().kernel;
         return pass_.execute({in.surfaces, in.shadow, in.lightVolume, in.disk, fs, pcss_}, in.timer)
             .visibility;
     }

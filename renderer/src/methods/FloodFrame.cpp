@@ -1,7 +1,4 @@
 #include <renderer/methods/ShadowMethod.h>
-#include <renderer/soft/EyeDecode.h>
-#include <renderer/soft/EyeSoftShadow.h>
-#include <renderer/soft/PenumbraMap.h>
 
 #include <jfa_gl/GlKernel.h>
 
@@ -10,19 +7,17 @@
 namespace fl {
 
 namespace {
-const gl::Texture& unpackSource(const FloodFrame& frame) {
-    if (frame.eye) return frame.eyeCells->decoded().second;
-    if (frame.map == nullptr)
-        throw std::logic_error("FloodGridReader: a light-space flood without its shadow map");
-    return frame.map->decoded();
+const FloodSpace& spaceOf(const FloodFrame& frame) {
+    if (frame.space == nullptr) throw std::logic_error("FloodGridReader: a flood without a space");
+    return *frame.space;
 }
 } // namespace
 
 FloodGridReader::FloodGridReader(const FloodFrame& frame)
-    : eye_(frame.eye), source_(jfa::readGrid(unpackSource(frame))) {}
+    : space_(&spaceOf(frame)), source_(jfa::readGrid(space_->unpackSource(frame))) {}
 
 jfa::Grid FloodGridReader::read(const gl::Texture& grid) const {
-    return eye_ ? readEyeGrid(grid, source_) : readPenumbraGrid(grid, source_);
+    return space_->unpack(grid, source_);
 }
 
 jfa::Grid readFloodGrid(const FloodFrame& frame, const gl::Texture& grid) {

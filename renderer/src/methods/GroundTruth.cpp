@@ -1,6 +1,7 @@
 // reference: the ground truth, N point-light shadow maps over the disk averaged per pixel of the
 // frame's surfaces (ReferenceShadowPass).
 
+#include <renderer/methods/OptionStructs.h>
 #include <renderer/methods/ShadowMethod.h>
 #include <renderer/soft/ReferenceShadow.h>
 
@@ -14,10 +15,11 @@ class GroundTruth final : public ShadowMethod {
     void resize(int, int) override {} // the pass sizes itself to the frame
 
     const gl::Texture& execute(const FrameInputs& in) override {
+        const GroundTruthOptions& o = in.options<GroundTruthOptions>();
         ReferenceSettings rs;
-        rs.samples = in.integer("samples");
-        rs.mapSize = in.integer("mapSize");
-        rs.pattern = geom::diskPatternNamed(in.text("pattern"));
+        rs.samples = o.samples;
+        rs.mapSize = o.mapSize;
+        rs.pattern = o.pattern;
         return pass_
             .execute(
                 {in.scene, in.surfaces.positions(), in.sceneBounds, in.disk, in.shadowSettings, rs},

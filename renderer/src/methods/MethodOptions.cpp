@@ -93,28 +93,6 @@ bool MethodOptions::flag(const MethodOption& o) const {
     return text(o) == "true";
 }
 
-namespace {
-const MethodOption& optionOf(const MethodDescriptor& m, std::string_view key) {
-    const MethodOption* o = m.option(key);
-    // A method reading an option its own row does not declare is a programming error.
-    if (!o) throw std::logic_error(cat("method ", m.name, " has no option '", key, "'"));
-    return *o;
-}
-} // namespace
-
-int FrameInputs::integer(std::string_view key) const {
-    return options.integer(optionOf(method, key));
-}
-float FrameInputs::real(std::string_view key) const {
-    return options.real(optionOf(method, key));
-}
-bool FrameInputs::flag(std::string_view key) const {
-    return options.flag(optionOf(method, key));
-}
-std::string FrameInputs::text(std::string_view key) const {
-    return options.text(optionOf(method, key));
-}
-
 const MethodOption* MethodDescriptor::option(std::string_view key) const {
     for (const MethodOption* o : options)
         if (o->key == key) return o;

@@ -1,6 +1,7 @@
 // The method table: one row per shadow method. Everything that lists, parses, pairs, cycles or
 // times methods reads these rows (renderer/methods/ShadowMethod.h).
 
+#include <renderer/methods/OptionStructs.h>
 #include <renderer/methods/ShadowMethod.h>
 #include <renderer/soft/EyeSoftShadow.h>
 #include <renderer/soft/FilteredShadow.h>
@@ -10,6 +11,7 @@
 
 #include <base/Text.h>
 
+#include <array>
 #include <stdexcept>
 
 namespace fl {
@@ -134,7 +136,11 @@ constexpr MethodOption kPcfKernel{
     "Taps per side of the kernel (N x N depth comparisons one uniform-map texel apart, in the "
     "light's unwarped plane)",
     1,
-    kMaxPcfKernel};
+    kMaxPcfKernel,
+    {},
+    {},
+    0,
+    "3x3=3|5x5=5"};
 constexpr MethodOption kPcssPreset{"--pcss-preset",
                                    "preset",
                                    OptionKind::Choice,
@@ -142,7 +148,10 @@ constexpr MethodOption kPcssPreset{"--pcss-preset",
                                    "Blocker-search/filter samples",
                                    0,
                                    0,
-                                   "16/16|16/24|32/64"};
+                                   "16/16|16/24|32/64",
+                                   {},
+                                   0,
+                                   "*"};
 constexpr MethodOption kReferenceSamples{"--reference-samples",
                                          "samples",
                                          OptionKind::Int,
@@ -210,17 +219,69 @@ constexpr MethodOption kVsmBleed{"--vsm-bleed",
                                  0.0,
                                  0.95};
 
-constexpr const MethodOption* kLightFloodOptions[] = {&kPasses, &kFullJfa, &kFloodRegion,
-                                                      &kBandTile, &kPenumbraSides};
-constexpr const MethodOption* kEyeFloodOptions[] = {
-    &kPasses,        &kFullJfa,           &kFloodRegion,    &kBandTile,    &kNoObjectIdFix,
-    &kNoMidpointFix, &kBoundaryThreshold, &kOccluderPoints, &kAutoPassRule};
-constexpr const MethodOption* kPcfOptions[] = {&kPcfKernel};
-constexpr const MethodOption* kPcssOptions[] = {&kPcssPreset};
-constexpr const MethodOption* kGroundTruthOptions[] = {&kReferenceSamples, &kReferenceMapSize,
-                                                       &kReferencePattern};
-constexpr const MethodOption* kVsmOptions[] = {&kVsmBlur, &kVsmBleed};
-constexpr const MethodOption* kRayTraceOptions[] = {&kRaySamples, &kRayGrid, &kTerminatorOffset};
+// --- Each method's options struct, field by field (OptionStructs.h) ----------------------------
+
+// Choices as their types; the text is validated before it gets here.
+jfa::FloodRegion floodRegionNamed(std::string_view text) {
+    return *jfa::parseFloodRegion(text);
+}
+bool penumbraIsBoth(std::string_view text) {
+    return text == "both";
+}
+bool terminatorOffsetOn(std::string_view text) {
+    return text == "on";
+}
+OccluderPoints occluderPointsNamed(std::string_view text) {
+    return text == "centre" ? OccluderPoints::TexelCentre : OccluderPoints::Edge;
+}
+EyeAutoPasses autoPassRuleNamed(std::string_view text) {
+    return text == "geometric" ? EyeAutoPasses::Geometric : EyeAutoPasses::Measured;
+}
+PcssPreset pcssPresetNamed(std::string_view text) {
+    return parsePcssPreset(text).value_or(PcssPreset{});
+}
+
+// The flooding methods' shared fields, at `S::flood`.
+template <class S>
+constexpr std::array<OptionField, 4> floodFields() {
+    return {field<&S::flood, &FloodOptions::passes>(kPasses),
+            field<&S::flood, &FloodOptions::fullJfa>(kFullJfa),
+            parsedField<floodRegionNamed, &S::flood, &FloodOptions::region>(kFloodRegion),
+            field<&S::flood, &FloodOptions::bandTile>(kBandTile)};
+}
+template <std::size_t N, std::size_t M>
+constexpr std::array<OptionField, N + M> joinFields(const std::array<OptionField, N>& a,
+                                                    const std::array<OptionField, M>& b) {
+    std::array<OptionField, N + M> out{};
+    for (std::size_t i = 0; i < N; ++i) out[i] = a[i];
+    for (std::size_t i = 0; i < M; ++i) out[N + i] = b[i];
+    return out;
+}
+
+using LightFlood = LightFloodOptions; // short names for the two field lists below
+using EyeFlood = EyeFloodOptions;
+constexpr auto kLightFloodFields =
+    joinFields(floodFields<LightFlood>(),
+               std::array{parsedField<penumbraIsBoth, &LightFlood::bothSides>(kPenumbraSides)});
+constexpr auto kEyeFloodFields = joinFields(
+    floodFields<EyeFlood>(),
+    std::array{field<&EyeFlood::noObjectIdFix>(kNoObjectIdFix),
+               field<&EyeFlood::noMidpointFix>(kNoMidpointFix),
+               field<&EyeFlood::boundaryThreshold>(kBoundaryThreshold),
+               parsedField<occluderPointsNamed, &EyeFlood::occluderPoints>(kOccluderPoints),
+               parsedField<autoPassRuleNamed, &EyeFlood::autoPasses>(kAutoPassRule)});
+constexpr OptionField kPcfFields[] = {field<&PcfOptions::kernel>(kPcfKernel)};
+constexpr OptionField kPcssFields[] = {
+    parsedField<pcssPresetNamed, &PcssOptions::preset>(kPcssPreset)};
+constexpr OptionField kGroundTruthFields[] = {
+    field<&GroundTruthOptions::samples>(kReferenceSamples),
+    field<&GroundTruthOptions::mapSize>(kReferenceMapSize),
+    parsedField<geom::diskPatternNamed, &GroundTruthOptions::pattern>(kReferencePattern)};
+constexpr OptionField kVsmFields[] = {field<&VsmOptions::blur>(kVsmBlur),
+                                      field<&VsmOptions::bleed>(kVsmBleed)};
+constexpr OptionField kRayTraceFields[] = {
+    field<&RayTraceOptions::samples>(kRaySamples), field<&RayTraceOptions::grid>(kRayGrid),
+    parsedField<terminatorOffsetOn, &RayTraceOptions::terminatorOffset>(kTerminatorOffset)};
 
 // --- Timed phases (step 3's parts, as PassTimer names them) ------------------------------------
 
@@ -269,7 +330,7 @@ const MethodDescriptor kTable[] = {
     {.name = "jfa-l",
      .help = "JFA penumbra map in light space (thesis 5.3)",
      .reference = "flood-l",
-     .options = kLightFloodOptions,
+     .options = optionSet<LightFloodOptions>(kLightFloodFields),
      .phases = kLightFloodPhases,
      .shadowMapPositions = true,
      .floods = true,
@@ -277,7 +338,7 @@ const MethodDescriptor kTable[] = {
      .check = checkLightFlood},
     {.name = "flood-l",
      .help = "jfa-l's standard-flooding reference",
-     .options = kLightFloodOptions,
+     .options = optionSet<LightFloodOptions>(kLightFloodFields),
      .phases = kLightFloodPhases,
      .shadowMapPositions = true,
      .floods = true,
@@ -287,7 +348,7 @@ const MethodDescriptor kTable[] = {
      .help = "JFA soft shadows in eye space (thesis 5.4)",
      .reference = "flood-e",
      .space = MethodSpace::Eye,
-     .options = kEyeFloodOptions,
+     .options = optionSet<EyeFloodOptions>(kEyeFloodFields),
      .phases = kEyeFloodPhases,
      .shadowMapPositions = true,
      .floods = true,
@@ -296,7 +357,7 @@ const MethodDescriptor kTable[] = {
     {.name = "flood-e",
      .help = "jfa-e's standard-flooding reference",
      .space = MethodSpace::Eye,
-     .options = kEyeFloodOptions,
+     .options = optionSet<EyeFloodOptions>(kEyeFloodFields),
      .phases = kEyeFloodPhases,
      .shadowMapPositions = true,
      .floods = true,
@@ -304,29 +365,29 @@ const MethodDescriptor kTable[] = {
      .check = checkEyeFlood},
     {.name = "pcf",
      .help = "baseline: percentage-closer filtering, a k x k kernel",
-     .options = kPcfOptions,
+     .options = optionSet<PcfOptions>(kPcfFields),
      .phases = kPcfPhases,
      .make = makePcf},
     {.name = "pcss",
      .help = "baseline: percentage-closer soft shadows (Fernando 2005)",
-     .options = kPcssOptions,
+     .options = optionSet<PcssOptions>(kPcssFields),
      .phases = kPcssPhases,
      .make = makePcss},
     {.name = "vsm",
      .help = "baseline: variance shadow maps, blur sized from the light radius",
-     .options = kVsmOptions,
+     .options = optionSet<VsmOptions>(kVsmFields),
      .phases = kVsmPhases,
      .make = makeVsm},
     {.name = "reference",
      .help = "ground truth: N point-light shadow maps over the disk, averaged",
-     .options = kGroundTruthOptions,
+     .options = optionSet<GroundTruthOptions>(kGroundTruthFields),
      .phases = kGroundTruthPhases,
      .make = makeGroundTruth,
      .truth = "maps"},
     {.name = "raytrace",
      .help = "exact ground truth: N shadow rays per pixel to the disk light (Embree, CPU)",
      .space = MethodSpace::Eye,
-     .options = kRayTraceOptions,
+     .options = optionSet<RayTraceOptions>(kRayTraceFields),
      .phases = kRayTracePhases,
      .cycles = false,
      .make = makeRayTrace,
@@ -417,24 +478,24 @@ bool penumbraBothSides(const MethodOptions& options) {
     return options.text(kPenumbraSides) == "both";
 }
 
-int bandTile(const MethodOptions& options) {
-    return options.integer(kBandTile);
-}
-
-jfa::FloodRegion floodRegion(const MethodOptions& options) {
-    return *jfa::parseFloodRegion(options.text(kFloodRegion)); // text() validated the choice
-}
-
 int requestedPasses(const MethodDescriptor& m, const MethodOptions& options, int mapSize, int width,
                     int height) {
     if (!m.floods) return 0;
-    if (options.flag(kFullJfa)) {
-        if (m.space == MethodSpace::Eye) return eyeSoftMaxPasses(width, height);
+    FloodOptions flood{};
+    flood.fullJfa = options.flag(kFullJfa);
+    if (!flood.fullJfa) flood.passes = options.integer(kPasses); // read only when it counts
+    return requestedPasses(m.space, flood, mapSize, width, height);
+}
+
+int requestedPasses(MethodSpace space, const FloodOptions& flood, int mapSize, int width,
+                    int height) {
+    if (flood.fullJfa) {
+        if (space == MethodSpace::Eye) return eyeSoftMaxPasses(width, height);
         int full = 0;
         while ((2 << full) <= mapSize) ++full; // steps down from half the grid
         return full;
     }
-    return options.integer(kPasses);
+    return flood.passes;
 }
 
 } // namespace fl

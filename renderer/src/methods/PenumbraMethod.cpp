@@ -5,8 +5,13 @@
 
 #include "LightLookup.h"
 
+#include <renderer/methods/OptionStructs.h>
+
 #include <renderer/soft/OccluderEdge.h>
 #include <renderer/soft/PenumbraMap.h>
+#include <renderer/soft/PenumbraReach.h>
+
+#include <jfa_gl/GlKernel.h>
 
 #include <algorithm>
 #include <optional>
@@ -15,21 +20,75 @@ namespace fl {
 
 namespace {
 
+// Light space: the shadow map's grid, cells packed against the map's receiver positions.
+class LightFloodSpace final : public FloodSpace {
+  public:
+    explicit LightFloodSpace(const gl::ShaderLibrary& shaders) : shaders_(shaders) {}
+    [[nodiscard]] Placement placement() const override { return Placement::CentredSquare; }
+    [[nodiscard]] jfa::Plan plan(const FloodFrame& f, bool standardFlooding) const override {
+        PenumbraSettings ps;
+        ps.passes = f.passes;
+        ps.standardFlooding = standardFlooding;
+        return penumbraPlan(ps, f.seeds->width());
+    }
+    const gl::Texture& rerun(const FloodFrame& f, const jfa::Plan& plan,
+                             const DiskLight& light) const override {
+        if (!kernel_) kernel_.emplace(shaders_, jfa::GlKernelKind::Fragment); // on first use
+        PenumbraCriterion c;
+        c.reachBound = f.reach;
+        c.umbraDepth = f.umbraDepth;
+        kernel_->setRegion(f.region, f.kernel ? f.kernel->bandTile() : jfa::kDefaultBandTile);
+        c.light = light;
+        c.map = *f.map;
+        const gl::Texture& out = kernel_->run(plan, *f.seeds, c);
+        glBindTextureUnit(2, 0);
+        unbindPenumbraReach();
+        return out;
+    }
+    [[nodiscard]] const gl::Texture& unpackSource(const FloodFrame& f) const override {
+        if (f.map == nullptr)
+            throw std::logic_error("FloodGridReader: a light-space flood without its shadow map");
+        return f.map->decoded();
+    }
+    [[nodiscard]] jfa::Grid unpack(const gl::Texture& grid,
+                                   const jfa::Grid& source) const override {
+        return readPenumbraGrid(grid, source);
+    }
+    [[nodiscard]] const gl::Texture& occluderPositions(const FloodFrame& f) const override {
+        return unpackSource(f); // the map's positions decoded (the bits the criterion read)
+    }
+    [[nodiscard]] bool positionsAreEyePoints() const override { return false; }
+    [[nodiscard]] std::string_view seedsCaption() const override {
+        return "silhouette seeds (light space, JFA-L phase 2)";
+    }
+    [[nodiscard]] std::string_view floodCaption() const override { return "penumbra map (JFA-L)"; }
+    [[nodiscard]] std::string_view seedKind() const override { return "silhouette"; }
+    void appendKey(const FloodFrame&, std::vector<float>& key) const override {
+        key.insert(key.end(), {0.0f, 1.0f, 1.0f}); // light space; no eye-space switches
+    }
+
+  private:
+    gl::ShaderLibrary shaders_;
+    mutable std::optional<jfa::GlFloodKernel<PenumbraCriterion>> kernel_; // the overlays' re-runs
+};
+
 class PenumbraMethod final : public ShadowMethod {
   public:
     PenumbraMethod(const gl::ShaderLibrary& shaders, bool standardFlooding)
-        : standardFlooding_(standardFlooding), pass_(shaders), lookup_(shaders, true) {}
+        : standardFlooding_(standardFlooding), pass_(shaders), lookup_(shaders, true),
+          space_(shaders) {}
     void resize(int width, int height) override { lookup_.resize(width, height); }
 
     const gl::Texture& execute(const FrameInputs& in) override {
         if (in.shadow.receivers == nullptr)
             throw std::invalid_argument("jfa-l needs the shadow map's receiver positions");
+        const LightFloodOptions& o = in.options<LightFloodOptions>();
         PenumbraSettings ps;
-        ps.passes = requestedPasses(in.method, in.options, in.shadow.depth.width(), in.width(),
-                                    in.height());
+        ps.passes = requestedPasses(MethodSpace::Light, o.flood, in.shadow.depth.width(),
+                                    in.width(), in.height());
         ps.standardFlooding = standardFlooding_;
-        ps.region = floodRegion(in.options);
-        ps.bandTile = bandTile(in.options);
+        ps.region = o.flood.region;
+        ps.bandTile = o.flood.bandTile;
         const int size = in.shadow.depth.width();
         PenumbraReach reach =
             penumbraReach(in.disk, in.shadow.mapViewProj(), {size, size}, in.sceneBounds);
@@ -44,22 +103,19 @@ class PenumbraMethod final : public ShadowMethod {
         if (ps.region == jfa::FloodRegion::View) pi.viewSeedReach = viewSeedReach(in, ps, size);
         // --penumbra both: a texel whose surface may hide a receiver in an occluder's umbra
         // ranks occluders for one at the deepest a receiver lies (PenumbraCriterion::umbraDepth).
-        const bool both = penumbraBothSides(in.options);
+        const bool both = o.bothSides;
         pi.umbraDepth = both ? reach.farDepth : 0.0f;
         const PenumbraMapPass::Outputs pm = pass_.execute(pi, in.timer);
-        flood_ = {&pm.seeds,
-                  &pm.penumbraMap,
-                  nullptr,
-                  false,
-                  standardFlooding_,
-                  pm.jfaPasses,
-                  true,
-                  true,
-                  ps.region,
-                  reach,
-                  &pass_.kernel(),
-                  in.shadow.receivers,
-                  pi.umbraDepth};
+        flood_ = {.seeds = &pm.seeds,
+                  .flooded = &pm.penumbraMap,
+                  .space = &space_,
+                  .standardFlooding = standardFlooding_,
+                  .passes = pm.jfaPasses,
+                  .region = ps.region,
+                  .reach = reach,
+                  .kernel = &pass_.kernel(),
+                  .map = in.shadow.receivers,
+                  .umbraDepth = pi.umbraDepth};
         if (in.timer) in.timer->begin("penumbra lookup");
         const gl::Texture& v = lookup_.execute(in, &pm.penumbraMap, both);
         if (in.timer) in.timer->wrote(gl::textureBytes(v));
@@ -104,6 +160,7 @@ class PenumbraMethod final : public ShadowMethod {
     bool standardFlooding_;
     PenumbraMapPass pass_;
     LightLookup lookup_;
+    LightFloodSpace space_;
     FloodFrame flood_;
 };
 

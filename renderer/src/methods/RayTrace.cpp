@@ -5,6 +5,7 @@
 // --terminator-offset on (the default) rays leave the smooth surface the vertex normals describe
 // (raytrace/Terminator.h), as production ray tracers do.
 
+#include <renderer/methods/OptionStructs.h>
 #include <renderer/methods/ShadowMethod.h>
 
 #include <renderer/soft/ShadowRayInputs.h>
@@ -42,9 +43,10 @@ class RayTrace final : public ShadowMethod {
         // Receivers and visibility both in GL's row order.
         const std::vector<rt::Receiver> receivers = surfaceReceivers(in.surfaces);
         rt::VisibilitySettings s;
-        s.samples = in.integer("samples");
-        s.jitter = !in.flag("grid");
-        s.terminatorOffset = in.text("terminatorOffset") == "on";
+        const RayTraceOptions& o = in.options<RayTraceOptions>();
+        s.samples = o.samples;
+        s.jitter = !o.grid;
+        s.terminatorOffset = o.terminatorOffset;
         s.eye = in.camera.eye;
         if (in.progress) s.progress = *in.progress;
         const rt::Disk disk{in.disk.center, in.disk.normal, in.disk.radius};

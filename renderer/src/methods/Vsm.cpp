@@ -15,6 +15,7 @@
 // The CPU reference of all three phases (moments, blur, lookup: parts of frame step 3) is in
 // tests/vsm_gltest.cpp.
 
+#include <renderer/methods/OptionStructs.h>
 #include <renderer/methods/ShadowMethod.h>
 
 #include <glm/gtc/matrix_inverse.hpp>
@@ -85,7 +86,7 @@ class Vsm final : public ShadowMethod {
         glViewport(0, 0, in.width(), in.height());
         bindShadowMap(lookup_, in.shadow);
         lookup_.set("uLightView", in.lightVolume.view);
-        lookup_.set("uBleed", in.real("bleed"));
+        lookup_.set("uBleed", in.options<VsmOptions>().bleed);
         lookup_.set("uMinVariance", kMinVariance);
         in.surfaces.positions().bind(lookup_, 0);
         glBindTextureUnit(2, maps_[0].id());
@@ -113,7 +114,7 @@ class Vsm final : public ShadowMethod {
 
     // The blur radius in map texels (see the top of the file); 0 = no blur.
     static int blurRadius(const FrameInputs& in) {
-        const float scale = in.real("blur");
+        const float scale = in.options<VsmOptions>().blur;
         const glm::mat4& proj = in.lightVolume.proj;
         const float centreDepth =
             std::max(-(in.lightVolume.view * glm::vec4(in.sceneBounds.center(), 1.0f)).z, 1e-6f);

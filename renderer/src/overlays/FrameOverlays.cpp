@@ -28,7 +28,7 @@ using Soft = FloodFrame;
 
 std::optional<Soft> softOf(const Renderer& r) {
     const FloodFrame* f = r.flood();
-    if (!f || !f->seeds || !r.shadow()) return std::nullopt;
+    if (!f || !f->seeds || !f->space || !r.shadow()) return std::nullopt;
     return *f;
 }
 
@@ -44,51 +44,11 @@ const std::string kNeedsSoft =
     "needs a soft method's last frame (" +
     methodNamesWhere([](const MethodDescriptor& m) { return m.floods; }) + ")";
 
+// Where the flood's grid goes in the frame, as its space places it.
 glm::ivec4 viewportOf(const Soft& soft, const Frame& f) {
-    return soft.eye ? glm::ivec4(0, 0, f.width, f.height) : squareViewport(f.width, f.height);
-}
-
-// The frame's flood plan, with JFA or standard flooding.
-jfa::Plan framePlan(const Soft& soft, bool standardFlooding) {
-    if (soft.eye) {
-        const int w = soft.seeds->width(), h = soft.seeds->height();
-        return eyeSoftPlan(soft.passes, standardFlooding, w, h);
-    }
-    PenumbraSettings ps;
-    ps.passes = soft.passes;
-    ps.standardFlooding = standardFlooding;
-    return penumbraPlan(ps, soft.seeds->width());
-}
-
-// Runs `plan` on the frame's seeds with the frame's criterion, over the frame's flood region
-// and penumbra bound (the same band the method used; identical to the full grid either way);
-// the texture is the kernel's.
-const gl::Texture& floodFrame(State& s, const Renderer& r, const Soft& soft,
-                              const jfa::Plan& plan) {
-    const int tile = soft.kernel ? soft.kernel->bandTile() : jfa::kDefaultBandTile;
-    if (soft.eye) {
-        EyeSoftCriterion c;
-        c.reachBound = soft.reach;
-        s.eyeKernel.setRegion(soft.region, tile);
-        c.light = r.disk();
-        c.objectIdFix = soft.objectIdFix;
-        c.midpointFix = soft.midpointFix;
-        c.cells = soft.eyeCells;
-        const gl::Texture& out = s.eyeKernel.run(plan, *soft.seeds, c);
-        unbindEyeCells();
-        unbindPenumbraReach();
-        return out;
-    }
-    PenumbraCriterion c;
-    c.reachBound = soft.reach;
-    c.umbraDepth = soft.umbraDepth;
-    s.penumbraKernel.setRegion(soft.region, tile);
-    c.light = r.disk();
-    c.map = *soft.map;
-    const gl::Texture& out = s.penumbraKernel.run(plan, *soft.seeds, c);
-    glBindTextureUnit(2, 0);
-    unbindPenumbraReach();
-    return out;
+    return soft.space->placement() == FloodSpace::Placement::WholeFrame
+               ? glm::ivec4(0, 0, f.width, f.height)
+               : squareViewport(f.width, f.height);
 }
 
 // A grid of the frame's flood read back as cells, and a texture of them the canvas can draw:
@@ -137,8 +97,7 @@ Lines drawSeeds(State& s, const Frame& f) {
     s.result.grid = std::move(seeds.grid);
     s.result.viewport = vp;
     s.result.drawn = true;
-    return {std::string(soft->eye ? "boundary seeds (eye space, JFA-E phase 3): "
-                                  : "silhouette seeds (light space, JFA-L phase 2): ") +
+    return {std::string(soft->space->seedsCaption()) + ": " +
             std::to_string(nonEmpty(s.result.grid)) + " seeds"};
 }
 
@@ -147,10 +106,8 @@ Lines drawSeeds(State& s, const Frame& f) {
 static void drawOccluders(State& s, const Frame& f, const Soft& soft, const gl::Texture& grid) {
     const glm::ivec4 vp = viewportOf(soft, f);
     Cells cells = readCells(FloodGridReader(soft), grid);
-    // Light space: the map's positions decoded (the bits the flood's criterion read).
-    GridDraw g{GridMode::Occluder, &cells.texture(),
-               soft.eye ? &soft.eyeCells->decoded().first : &f.renderer.decodedShadowReceivers()};
-    g.eyeSpace = soft.eye;
+    GridDraw g{GridMode::Occluder, &cells.texture(), &soft.space->occluderPositions(soft)};
+    g.eyeSpace = soft.space->positionsAreEyePoints();
     g.light = &f.renderer.disk();
     f.bindTarget();
     s.canvas.drawGrid(g, vp);
@@ -163,22 +120,22 @@ Lines drawPenumbraMap(State& s, const Frame& f) {
     const std::optional<Soft> soft = softOf(f.renderer);
     if (!soft) return {kNeedsSoft};
     drawOccluders(s, f, *soft, *soft->flooded);
-    return {std::string(soft->eye ? "eye-space flood (JFA-E phase 4)" : "penumbra map (JFA-L)") +
-                ": " + std::to_string(nonEmpty(s.result.grid)) + " texels hold an occluder",
+    return {std::string(soft->space->floodCaption()) + ": " +
+                std::to_string(nonEmpty(s.result.grid)) + " texels hold an occluder",
             "colour: light fraction from the occluder (dark 0 .. pale 1); grey: none"};
 }
 
 Lines drawFloodPasses(State& s, const Frame& f) {
     const std::optional<Soft> soft = softOf(f.renderer);
     if (!soft) return {kNeedsSoft};
-    const jfa::Plan full = framePlan(*soft, soft->standardFlooding);
+    const jfa::Plan full = soft->space->plan(*soft, soft->standardFlooding);
     const int total = full.passCount();
     int& k = f.controls.floodPass;
     if (k > total) k = total;
     if (k < -1) k = -1;
     const int shown = k < 0 ? total : k;
     const jfa::Plan plan = truncatePlan(full, shown);
-    const gl::Texture& out = floodFrame(s, f.renderer, *soft, plan);
+    const gl::Texture& out = soft->space->rerun(*soft, plan, f.renderer.disk());
     drawOccluders(s, f, *soft, out);
     const std::vector<int> steps = full.steps();
     std::string step =
@@ -207,7 +164,7 @@ Lines drawSiteDiagram(State& s, const Frame& f, bool distance) {
     s.result.viewport = vp;
     s.result.drawn = true;
     return {std::string(distance ? "distance transform" : "Voronoi diagram") + " of the " +
-                std::to_string(d.sites) + (soft->eye ? " boundary" : " silhouette") + " seeds, " +
+                std::to_string(d.sites) + " " + std::string(soft->space->seedKind()) + " seeds, " +
                 plan.describe(),
             "errors vs exact (red): " + std::to_string(d.errorCount) + " (" +
                 percent(d.errorCount, std::int64_t(sites.cells.size())) + ")",
@@ -219,7 +176,7 @@ Lines drawJfaVsFlood(State& s, const Frame& f) {
     if (!soft) return {kNeedsSoft};
     // The other method's flood of the same seeds: JFA for a flood-L/E frame, else standard
     // flooding (2^passes - 1 step-1 passes: the cost of this overlay, see the benchmarks).
-    const jfa::Plan plan = framePlan(*soft, !soft->standardFlooding);
+    const jfa::Plan plan = soft->space->plan(*soft, !soft->standardFlooding);
     // Everything the reference flood depends on besides the seeds: the camera (eye-space
     // points), the shadow map's matrices (receivers), the light, the plan and the criterion.
     std::vector<float> key;
@@ -232,16 +189,14 @@ Lines drawJfaVsFlood(State& s, const Frame& f) {
     add(&disk.normal.x, 3);
     key.push_back(disk.radius);
     key.push_back(float(plan.passCount()));
-    key.push_back(soft->eye ? 1.0f : 0.0f);
-    key.push_back(soft->objectIdFix ? 1.0f : 0.0f);
-    key.push_back(soft->midpointFix ? 1.0f : 0.0f);
+    soft->space->appendKey(*soft, key);
     const FloodGridReader reader(*soft); // the unpacking source read once for all three grids
     jfa::Grid seeds = reader.read(*soft->seeds);
     ReferenceCache& cache = s.reference;
     const bool reused = cache.key == key && cache.seeds == seeds;
     if (!reused) {
         const auto t0 = std::chrono::steady_clock::now();
-        cache.reference = reader.read(floodFrame(s, f.renderer, *soft, plan));
+        cache.reference = reader.read(soft->space->rerun(*soft, plan, f.renderer.disk()));
         cache.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
                        .count();
         cache.texture = jfa::uploadGrid(cache.reference);

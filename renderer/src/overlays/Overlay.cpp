@@ -63,9 +63,7 @@ struct OverlayRenderer::Impl {
 
 namespace overlay {
 State::State(const gl::ShaderLibrary& shaders)
-    : canvas(shaders), siteKernel(shaders, jfa::GlKernelKind::Fragment),
-      penumbraKernel(shaders, jfa::GlKernelKind::Fragment),
-      eyeKernel(shaders, jfa::GlKernelKind::Fragment) {}
+    : canvas(shaders), siteKernel(shaders, jfa::GlKernelKind::Fragment) {}
 } // namespace overlay
 
 OverlayRenderer::OverlayRenderer(const gl::ShaderLibrary& shaders)

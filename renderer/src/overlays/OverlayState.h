@@ -50,9 +50,7 @@ struct ReferenceCache {
 struct State {
     explicit State(const gl::ShaderLibrary& shaders);
     OverlayCanvas canvas;
-    jfa::GlFloodKernel<jfa::NearestSite> siteKernel;      // Voronoi, distance transform, playground
-    jfa::GlFloodKernel<PenumbraCriterion> penumbraKernel; // JFA-L pass by pass, reference flood
-    jfa::GlFloodKernel<EyeSoftCriterion> eyeKernel;       // JFA-E pass by pass, reference flood
+    jfa::GlFloodKernel<jfa::NearestSite> siteKernel; // Voronoi, distance transform, playground
     OverlayResult result;
     DelaunayCache delaunay;
     ReferenceCache reference;

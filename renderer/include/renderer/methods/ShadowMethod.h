@@ -12,6 +12,7 @@
 #include <gpu/PassTimer.h>
 #include <gpu/ShaderLibrary.h>
 #include <jfa/Band.h>
+#include <jfa/Plan.h>
 #include <jfa_gl/GlKernel.h>
 #include <renderer/methods/MethodOptions.h>
 #include <renderer/passes/ShadowMapPass.h>
@@ -24,15 +25,18 @@
 #include <geometry/Aabb.h>
 #include <geometry/Framing.h>
 
+#include <any>
 #include <functional>
 #include <memory>
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace fl {
 
-struct EyeCells; // renderer/soft/EyeDecode.h
+struct EyeCells;     // renderer/soft/EyeDecode.h
+struct FloodOptions; // renderer/methods/OptionStructs.h
 
 struct MethodDescriptor;
 
@@ -48,50 +52,90 @@ struct FrameInputs {
     const ShadowMapPass::Outputs& shadow;  // step 1
     const SurfacesPass::Outputs& surfaces; // step 2
     const MethodDescriptor& method;        // this method's table row
-    const MethodOptions& options;          // values by flag; a row's defaults fill the rest
+    const std::any& parsedOptions;         // its options struct (the row's options.parse())
     gl::PassTimer* timer = nullptr;        // times the method's phases (the row's names)
     const std::function<void(double)>* progress = nullptr; // RenderSettings::progress, if set
 
-    /// This method's option `key` (its capture-script key), as the row declares it.
-    [[nodiscard]] int integer(std::string_view key) const;
-    [[nodiscard]] float real(std::string_view key) const;
-    [[nodiscard]] bool flag(std::string_view key) const;
-    [[nodiscard]] std::string text(std::string_view key) const;
+    /// This method's options struct (renderer/methods/OptionStructs.h); std::bad_any_cast when
+    /// S is not its row's.
+    template <class S>
+    [[nodiscard]] const S& options() const {
+        return std::any_cast<const S&>(parsedOptions);
+    }
     [[nodiscard]] int width() const { return surfaces.width; }
     [[nodiscard]] int height() const { return surfaces.height; }
 };
 
+struct FloodFrame;
+
+/// What differs between the spaces a flood runs in (light: the shadow map's grid, JFA-L and
+/// flood-L; eye: the frame's pixels, JFA-E and flood-E): how its cells unpack and draw, how it
+/// plans and re-runs a flood. A flooding method's FloodFrame points to its space, so that the
+/// overlays draw any flood through it without asking which space it is.
+class FloodSpace {
+  public:
+    virtual ~FloodSpace() = default;
+    /// Where the overlays place the flood's grid in a frame: the whole frame (a grid of its
+    /// pixels) or the centred square (the shadow map's grid).
+    enum class Placement { WholeFrame, CentredSquare };
+    [[nodiscard]] virtual Placement placement() const = 0;
+    /// `frame`'s flood plan at its pass count, with JFA or standard flooding.
+    [[nodiscard]] virtual jfa::Plan plan(const FloodFrame& frame, bool standardFlooding) const = 0;
+    /// Runs `plan` on `frame`'s seeds with its criterion, flood region and penumbra bound (an
+    /// overlay's re-run: pass by pass, or the other flooding); the texture is this space's own
+    /// kernel's, valid until the next call.
+    virtual const gl::Texture& rerun(const FloodFrame& frame, const jfa::Plan& plan,
+                                     const DiskLight& light) const = 0;
+    /// The texture that unpacks `frame`'s packed cells (read back once by FloodGridReader).
+    [[nodiscard]] virtual const gl::Texture& unpackSource(const FloodFrame& frame) const = 0;
+    /// `grid`'s cells unpacked with `source` (unpackSource() read back).
+    [[nodiscard]] virtual jfa::Grid unpack(const gl::Texture& grid,
+                                           const jfa::Grid& source) const = 0;
+    /// The decoded positions an occluder grid's picture is coloured with, and whether they are
+    /// the eye's points (GridDraw::eyeSpace) rather than the map's receivers.
+    [[nodiscard]] virtual const gl::Texture& occluderPositions(const FloodFrame& frame) const = 0;
+    [[nodiscard]] virtual bool positionsAreEyePoints() const = 0;
+    /// Captions: "silhouette seeds (light space, JFA-L phase 2)", "penumbra map (JFA-L)", and
+    /// the seeds' kind ("silhouette").
+    [[nodiscard]] virtual std::string_view seedsCaption() const = 0;
+    [[nodiscard]] virtual std::string_view floodCaption() const = 0;
+    [[nodiscard]] virtual std::string_view seedKind() const = 0;
+    /// Appends to `key` what a re-run depends on besides the seeds, views, light and plan (an
+    /// overlay's cache key): the space and its criterion's switches.
+    virtual void appendKey(const FloodFrame& frame, std::vector<float>& key) const = 0;
+};
+
 /// What a flooding method (JFA-L/E and their standard-flooding references) keeps of its last
-/// frame: the overlays re-run and draw its flood.
+/// frame, the typed view the overlays re-run and draw: its textures, plan, region and kernel,
+/// the criterion's inputs, and its space (what differs between light and eye).
 struct FloodFrame {
     const gl::Texture* seeds = nullptr;
     const gl::Texture* flooded = nullptr;
-    const EyeCells* eyeCells = nullptr; // eye only: phase 2's packed cells (EyeDecode.h)
-    bool eye = false;
+    const FloodSpace* space = nullptr;
     bool standardFlooding = false;
-    int passes = 0;          // flood passes run
-    bool objectIdFix = true; // eye only: the criterion's switches
-    bool midpointFix = true;
+    int passes = 0;                                   // flood passes run
     jfa::FloodRegion region = jfa::FloodRegion::Full; // --flood-region
     PenumbraReach reach;                              // the criterion's band bound
     const jfa::GlFloodKernelBase* kernel = nullptr;   // ran the flood (activeShare())
+    const EyeCells* eyeCells = nullptr; // eye only: phase 2's packed cells (EyeDecode.h)
+    bool objectIdFix = true;            // eye only: the criterion's switches
+    bool midpointFix = true;
     const MapPositions* map = nullptr; // light only: the shadow map's receiver target
     float umbraDepth = 0.0f; // light only: PenumbraCriterion::umbraDepth (--penumbra both)
 };
 
 /// Reads `frame`'s grids (its seeds, its flood, or an overlay's re-run of it) back as cells. The
-/// GPU's cells are packed: eye cells unpack with phase 2's occluders as the GPU decodes them
-/// (EyeCells::decoded, readEyeGrid), light cells
-/// with the map's positions as the shaders decode them (readPenumbraGrid); those are read back
-/// once, when the reader is made, for every grid it then reads.
+/// GPU's cells are packed; they unpack with the texture its space names (FloodSpace::
+/// unpackSource: eye cells with phase 2's occluders, light cells with the map's positions, as
+/// the GPU decodes them), read back once, when the reader is made, for every grid it then reads.
 class FloodGridReader {
   public:
     explicit FloodGridReader(const FloodFrame& frame);
     [[nodiscard]] jfa::Grid read(const gl::Texture& grid) const;
 
   private:
-    bool eye_;
-    jfa::Grid source_; // eye: the occluders; light: the decoded map positions
+    const FloodSpace* space_;
+    jfa::Grid source_;
 };
 
 /// One grid of `frame` as cells: FloodGridReader(frame).read(grid).
@@ -124,11 +168,11 @@ struct MethodDescriptor {
     std::string_view help;      // one line
     std::string_view reference; // its standard-flooding reference ("" none): "flood-l"
     MethodSpace space = MethodSpace::Light;
-    std::span<const MethodOption* const> options; // what it takes, in --help order
-    std::span<const std::string_view> phases;     // its timed phase names, in frame order
-    bool cycles = true;                           // the window's M key steps through it
-    bool shadowMapPositions = false; // needs the shadow map's receiver positions (step 1)
-    bool floods = false;             // a flooding method: passes and FloodFrame
+    MethodOptionSet options;                  // what it takes, in --help order, and its struct
+    std::span<const std::string_view> phases; // its timed phase names, in frame order
+    bool cycles = true;                       // the window's M key steps through it
+    bool shadowMapPositions = false;          // needs the shadow map's receiver positions (step 1)
+    bool floods = false;                      // a flooding method: passes and FloodFrame
     std::unique_ptr<ShadowMethod> (*make)(const gl::ShaderLibrary&) = nullptr;
     /// Checks the options for a frame before any rendering; throws std::invalid_argument with the
     /// option's flag and the valid range. Null: nothing to check beyond each option's range.
@@ -175,10 +219,6 @@ std::vector<const MethodOption*> allMethodOptions();
 const MethodOption& floodPassesOption();
 /// The option that chooses band-limited or full-grid flooding (--flood-region).
 const MethodOption& floodRegionOption();
-/// Its value.
-jfa::FloodRegion floodRegion(const MethodOptions& options);
-/// --band-tile's value (checked by the flooding rows' check()).
-int bandTile(const MethodOptions& options);
 /// jfa-l's and flood-l's --penumbra: which halves of each penumbra they compute.
 const MethodOption& penumbraSidesOption();
 /// Whether --penumbra is both (the umbra side too) rather than outer (the thesis' lit side).
@@ -188,6 +228,9 @@ inline constexpr int kAutoPasses = 0;
 /// The flood pass count a flooding method's options ask for at this map and frame size (what
 /// --jfa-passes, --full-jfa mean for it), kAutoPasses for auto; 0 for the other methods.
 int requestedPasses(const MethodDescriptor& m, const MethodOptions& options, int mapSize, int width,
+                    int height);
+/// The same from a flooding method's parsed options.
+int requestedPasses(MethodSpace space, const FloodOptions& flood, int mapSize, int width,
                     int height);
 
 } // namespace fl
