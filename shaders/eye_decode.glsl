@@ -14,10 +14,11 @@
 // The textures sit on fixed units, the same in every JFA-E program (fl::EyeCells::bind): units
 // 0, 1 are the flood kernel's grids and 4, 5 the reach bounds (disk_light.glsl); unit 8 holds
 // phase 3's seed occluders (eyeSeedOccluder below).
-layout(binding = 2) uniform usampler2D uEyeCells;
-layout(binding = 3) uniform sampler2D uEyeDepth;     // the surfaces' depth (surface_decode)
-layout(binding = 6) uniform sampler2D uEyeReceivers; // the map's receiver target
-layout(binding = 7) uniform sampler2D uEyeIds;       // R32F object id per map texel
+#include "bindings.glsl"
+layout(binding = FL_TEX_EYE_CELLS) uniform usampler2D uEyeCells;
+layout(binding = FL_TEX_EYE_DEPTH) uniform sampler2D uEyeDepth;     // the surfaces' depth (surface_decode)
+layout(binding = FL_TEX_EYE_RECEIVERS) uniform sampler2D uEyeReceivers; // the map's receiver target
+layout(binding = FL_TEX_EYE_IDS) uniform sampler2D uEyeIds;       // R32F object id per map texel
 uniform int uEyeObjectIds; // 0: ids unknown (the object-ID fix is off), every id reads -1
 // The grid the shader works on: the frame (uEyeFactor 1), or JFA-E's coarse estimate, whose
 // pixel P is frame pixel min(uEyeFactor * P + uEyeFactor / 2, frame - 1) (fl::coarseEyeImage).
@@ -78,7 +79,7 @@ vec4 eyeOccluder(ivec2 p) {
 // copy of what the cells already say: the flood reads a seed's occluder for each of its 9
 // candidates in every pass, and decoding it (a cell, a map texel unprojected, up to two
 // neighbours for the edge) cost the llvmpipe flood 2.8x; phase 3 decodes each seed once.
-layout(binding = 8) uniform sampler2D uSeedOccluders;
+layout(binding = FL_TEX_SEED_OCCLUDERS) uniform sampler2D uSeedOccluders;
 
 // Seed pixel s's occluder, bit for bit eyeOccluder(s) (s must be a seed of phase 3).
 vec4 eyeSeedOccluder(ivec2 s) { return texelFetch(uSeedOccluders, s, 0); }

@@ -238,7 +238,7 @@ void GlDiscreteDelaunay::Impl::removeIslands(const gl::Texture& in, int bound) {
     glBindTextureUnit(1, islands[0].id());
     glBindTextureUnit(2, islands[1].id());
     bindImage(0, cleaned, GL_WRITE_ONLY);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, control.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, control.id());
     bindPart(1, result, 0, gl_stages::kHeaderWords * sizeof(GLuint));
     resolveProgram.set("uSize", glm::ivec2(width, height));
     dispatchTexels(width, height);
@@ -249,7 +249,7 @@ void GlDiscreteDelaunay::Impl::classifyCorners(const gl::Texture& ids) {
     glUseProgram(cornersProgram.id());
     glBindTextureUnit(0, ids.id());
     bindImage(0, corners, GL_WRITE_ONLY);
-    bindPart(0, result, 0, gl_stages::kHeaderWords * sizeof(GLuint));
+    bindPart(1, result, 0, gl_stages::kHeaderWords * sizeof(GLuint));
     cornersProgram.set("uSize", glm::ivec2(width, height));
     dispatchTexels(width, height);
     unbindAll();
