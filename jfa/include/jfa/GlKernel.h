@@ -14,6 +14,7 @@
 #include <jfa/NearestSite.h>
 #include <jfa/Plan.h>
 
+#include <gpu/BindScope.h>
 #include <gpu/Gl.h>
 #include <gpu/PassTimer.h>
 #include <gpu/Program.h>
@@ -100,11 +101,12 @@ class GlFloodKernelBase {
     /// reaches every texel and the criterion bounds nothing (nothing to save; callers say so).
     [[nodiscard]] bool lastRunBanded() const { return lastRunBanded_; }
     /// For a pass that writes the seeds texture over the whole grid (width x height): binds the
-    /// band's seed list, emptied, at binding 6 (shaders/jfa_seed_list.glsl), for the pass to
-    /// append every seed it writes with jfaListSeed. Then seedsListed() says which texture the
-    /// list describes, and step A0 does not sweep that grid again. Optional.
-    void beginSeedList(int width, int height);
-    /// The list begun by beginSeedList() holds exactly the seeds of `seeds` (unbinds it).
+    /// band's seed list, emptied, at gl::bind::SeedList (shaders/jfa_seed_list.glsl) in the
+    /// pass' `scope`, for the pass to append every seed it writes with jfaListSeed. Then
+    /// seedsListed() says which texture the list describes, and step A0 does not sweep that
+    /// grid again. Optional.
+    void beginSeedList(gl::BindScope& scope, int width, int height);
+    /// The list begun by beginSeedList() holds exactly the seeds of `seeds`.
     void seedsListed(const gl::Texture& seeds);
 
     /// Share of the full-resolution grid the last run's passes computed: 1 after a full run.

@@ -234,10 +234,13 @@ void EyeSoftShadowPass::drawBoundaries(const Inputs& in, BoundaryThreshold th) {
     // A banded flood lists its seeds here rather than sweeping the frame for them again.
     const bool listSeeds = jfa::banded(in.region);
     boundary_.set("uListSeeds", listSeeds ? 1 : 0);
-    if (listSeeds) kernel_.beginSeedList(in.width, in.height);
-    eye_.bind(boundary_);
-    gl::drawFullscreenTriangle(boundary_, emptyVao_);
-    if (listSeeds) kernel_.seedsListed(seeds_);
+    {
+        gl::BindScope seedList;
+        if (listSeeds) kernel_.beginSeedList(seedList, in.width, in.height);
+        eye_.bind(boundary_);
+        gl::drawFullscreenTriangle(boundary_, emptyVao_);
+        if (listSeeds) kernel_.seedsListed(seeds_);
+    }
     unbindEyeCells();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }

@@ -219,7 +219,8 @@ void PenumbraMapPass::findSeeds(const Inputs& in, bool region) {
     // the map for them again (GlFloodKernelBase::beginSeedList).
     const bool listSeeds = jfa::banded(in.settings.region);
     program.set("uListSeeds", listSeeds ? 1 : 0);
-    if (listSeeds) kernel_.beginSeedList(size, size);
+    gl::BindScope seedList;
+    if (listSeeds) kernel_.beginSeedList(seedList, size, size);
     in.receivers.bind(program, 0);
     if (region) {
         // The spans drawn are this region's and the last one's (markSeedRegion), so every texel
