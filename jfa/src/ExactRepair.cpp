@@ -158,8 +158,8 @@ const gl::Texture& GlExactRepair::run(const gl::Texture& flooded) {
     if (out_.width() != flooded.width() || out_.height() != flooded.height())
         out_ = gl::Texture(GL_RGBA32F, flooded.width(), flooded.height());
     glUseProgram(program_.id());
-    setCriterionUniforms(program_, NearestSite{true});
     gl::BindScope scope;
+    setCriterionUniforms(scope, program_, NearestSite{true});
     program_.set("uSize", glm::ivec2(flooded.width(), flooded.height()));
     program_.set("uVertexCount", int(vertexCount_));
     scope.texture(gl::bind::Flooded, flooded.id())

@@ -16,7 +16,9 @@ const char* kernelName(GlKernelKind kind) {
     return kind == GlKernelKind::Fragment ? "fragment" : "compute";
 }
 
-void setCriterionUniforms(const gl::Program& program, const NearestSite& criterion) {
+// NearestSite binds no textures: the scope stays empty.
+void setCriterionUniforms(gl::BindScope& /*scope*/, const gl::Program& program,
+                          const NearestSite& criterion) {
     program.set("uJfaIntegerSites", criterion.integerSites ? 1 : 0);
 }
 

@@ -32,8 +32,10 @@ enum class GlKernelKind { Fragment, Compute };
 /// "fragment" or "compute".
 const char* kernelName(GlKernelKind kind);
 
-/// Sets a criterion's uniforms on a kernel program; one overload per criterion.
-void setCriterionUniforms(const gl::Program& program, const NearestSite& criterion);
+/// Sets a criterion's uniforms on a kernel program and binds its textures in `scope`, which
+/// the kernel holds for the run; one overload per criterion.
+void setCriterionUniforms(gl::BindScope& scope, const gl::Program& program,
+                          const NearestSite& criterion);
 
 /// Uploads a grid as an RGBA32F texture (row y of the grid = texel row y).
 gl::Texture uploadGrid(const Grid& grid);
@@ -265,7 +267,9 @@ class GlFloodKernel : public GlFloodKernelBase {
     /// back; the next run() on the same seeds reuses the step, unless `keep` is false (the count
     /// was measured under another criterion than the flood's: prepareBand / run measure again).
     long long maxSeedReach(const gl::Texture& seeds, const C& criterion, bool keep = true) {
-        for (const gl::Program* p : criterionPrograms(true)) setCriterionUniforms(*p, criterion);
+        gl::BindScope scope;
+        for (const gl::Program* p : criterionPrograms(true))
+            setCriterionUniforms(scope, *p, criterion);
         measureReach(seeds);
         const long long reach = readMaxReach();
         if (!keep) forgetReach();
@@ -275,8 +279,9 @@ class GlFloodKernel : public GlFloodKernelBase {
     /// Builds the band for `plan` on `seeds` now (steps A-C, no read-back), so that it can be
     /// timed apart from the passes; the next run() with the same seeds uses it. Optional.
     void prepareBand(const Plan& plan, const gl::Texture& seeds, const C& criterion) {
+        gl::BindScope scope;
         for (const gl::Program* p : criterionPrograms(banded(region())))
-            setCriterionUniforms(*p, criterion);
+            setCriterionUniforms(scope, *p, criterion);
         prepare(plan, seeds);
     }
 
@@ -285,8 +290,9 @@ class GlFloodKernel : public GlFloodKernelBase {
     /// is given, each pass is timed as "jfa step K", K the jump length (and "downsample").
     const gl::Texture& run(const Plan& plan, const gl::Texture& seeds, const C& criterion,
                            gl::PassTimer* timer = nullptr, const PassCallback& callback = {}) {
+        gl::BindScope scope;
         for (const gl::Program* p : criterionPrograms(banded(region())))
-            setCriterionUniforms(*p, criterion);
+            setCriterionUniforms(scope, *p, criterion);
         return runPlan(plan, seeds, timer, callback);
     }
 

@@ -74,10 +74,7 @@ const gl::Texture& floodFrame(State& s, const Renderer& r, const Soft& soft,
         c.objectIdFix = soft.objectIdFix;
         c.midpointFix = soft.midpointFix;
         c.cells = soft.eyeCells;
-        const gl::Texture& out = s.eyeKernel.run(plan, *soft.seeds, c);
-        unbindEyeCells();
-        unbindPenumbraReach();
-        return out;
+        return s.eyeKernel.run(plan, *soft.seeds, c);
     }
     PenumbraCriterion c;
     c.reachBound = soft.reach;
@@ -85,10 +82,7 @@ const gl::Texture& floodFrame(State& s, const Renderer& r, const Soft& soft,
     s.penumbraKernel.setRegion(soft.region, tile);
     c.light = r.disk();
     c.map = *soft.map;
-    const gl::Texture& out = s.penumbraKernel.run(plan, *soft.seeds, c);
-    glBindTextureUnit(2, 0);
-    unbindPenumbraReach();
-    return out;
+    return s.penumbraKernel.run(plan, *soft.seeds, c);
 }
 
 // A grid of the frame's flood read back as cells, and a texture of them the canvas can draw:
