@@ -2,8 +2,9 @@
 // declares, read by the shaders (#include "bindings.glsl") and by C++ (gpu/Bindings.h, which
 // gives each a typed constant). Only `#define FL_<KIND>_<ROLE> <n>` lines and comments here.
 // Kinds: TEX texture units, IMG image units, SSBO shader storage blocks, ATOMIC atomic counters.
-// Roles may share a number only when no program declares both (tests/binding_layout_test.cpp
-// checks every declaration names an entry; the byte-identical renders check the pairing).
+// Roles may share a number only when no program declares both: tests/binding_layout_test.cpp
+// checks that every declaration names an entry of its kind and that no shader file, with its
+// includes, declares two entries of one kind and number.
 #ifndef FL_BINDINGS_GLSL
 #define FL_BINDINGS_GLSL
 
@@ -29,8 +30,9 @@
 // The light-space penumbra lookup (light_visibility, soft_penumbra.glsl, penumbra_view).
 #define FL_TEX_PENUMBRA_SURFACES_DEPTH 2
 #define FL_TEX_PENUMBRA_MAP 3
-#define FL_TEX_PENUMBRA_RECEIVERS 4 // MapPositions
-#define FL_TEX_PENUMBRA_NORMALS 5   // SurfacesPass' normals
+// Not 4 and 5: soft_penumbra.glsl includes disk_light.glsl, whose reach bounds hold those.
+#define FL_TEX_PENUMBRA_RECEIVERS 6 // MapPositions
+#define FL_TEX_PENUMBRA_NORMALS 7   // SurfacesPass' normals
 #define FL_TEX_PENUMBRA_POSITIONS 2 // jfa_penumbra.glsl
 // Reach bounds (disk_light.glsl) and the pyramid that builds them (reach_bounds).
 #define FL_TEX_REACH_LO 4

@@ -11,9 +11,10 @@
 // comes back from the surfaces' depth (surfacePosition), the occluder's from the map's receiver
 // target (occluderEdgeApply), its object id from the light-space id pass at that texel.
 //
-// The textures sit on fixed units, the same in every JFA-E program (fl::EyeCells::bind): units
-// 0, 1 are the flood kernel's grids and 4, 5 the reach bounds (disk_light.glsl); unit 8 holds
-// phase 3's seed occluders (eyeSeedOccluder below).
+// The textures sit on the layout's fixed units (bindings.glsl), the same in every JFA-E program
+// (fl::EyeCells::bind), clear of the flood kernel's grids (FL_TEX_FLOOD_*) and the reach bounds
+// (FL_TEX_REACH_*, disk_light.glsl); FL_TEX_SEED_OCCLUDERS holds phase 3's seed occluders
+// (eyeSeedOccluder below).
 #include "bindings.glsl"
 layout(binding = FL_TEX_EYE_CELLS) uniform usampler2D uEyeCells;
 layout(binding = FL_TEX_EYE_DEPTH) uniform sampler2D uEyeDepth;     // the surfaces' depth (surface_decode)
@@ -75,7 +76,7 @@ vec4 eyeOccluder(ivec2 p) {
 }
 
 // Phase 3's occluder per seed pixel (RGBA32F, jfae_boundary.frag.glsl writes eyeOccluder(s) at
-// each seed s; fl::EyeCells::seedOccluders, bound on unit 8 once phase 3 has run). Why a
+// each seed s; fl::EyeCells::seedOccluders, bound once phase 3 has run). Why a
 // copy of what the cells already say: the flood reads a seed's occluder for each of its 9
 // candidates in every pass, and decoding it (a cell, a map texel unprojected, up to two
 // neighbours for the edge) cost the llvmpipe flood 2.8x; phase 3 decodes each seed once.

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <map>
 #include <regex>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -27,14 +28,18 @@ std::string readText(const fs::path& path) {
     return out.str();
 }
 
-// FL_<KIND>_<ROLE> -> KIND (TEX, IMG, SSBO, ATOMIC), from bindings.glsl's #define lines.
-using Layout = std::map<std::string, std::string>;
+// FL_<KIND>_<ROLE> -> its kind (TEX, IMG, SSBO, ATOMIC) and number, from bindings.glsl.
+struct Entry {
+    std::string kind;
+    int number = 0;
+};
+using Layout = std::map<std::string, Entry>;
 
 // Parses the layout file; anything but comments, the guard and `#define FL_<KIND>_<ROLE> <n>`
 // lines is reported in `errors`.
 Layout parseLayout(const std::string& text, std::vector<std::string>& errors) {
     static const std::regex define(
-        R"(#define (FL_(TEX|IMG|SSBO|ATOMIC)_[A-Z0-9_]+) \d+\s*(//.*)?)");
+        R"(#define (FL_(TEX|IMG|SSBO|ATOMIC)_[A-Z0-9_]+) (\d+)\s*(//.*)?)");
     static const std::regex other(
         R"(\s*(//.*)?|#ifndef FL_BINDINGS_GLSL|#define FL_BINDINGS_GLSL|#endif)");
     Layout layout;
@@ -45,7 +50,7 @@ Layout parseLayout(const std::string& text, std::vector<std::string>& errors) {
         ++lineNo;
         std::smatch m;
         if (std::regex_match(line, m, define)) {
-            if (!layout.emplace(m[1], m[2]).second)
+            if (!layout.emplace(m[1], Entry{m[2], std::stoi(m[3])}).second)
                 errors.push_back("bindings.glsl:" + std::to_string(lineNo) + ": " + m[1].str() +
                                  " defined twice");
         } else if (!std::regex_match(line, other)) {
@@ -89,12 +94,50 @@ void checkShader(const fs::path& path, const Layout& layout, std::vector<std::st
             errors.push_back(where + "binding = " + value + " is a number, not a layout name");
         else if (it == layout.end())
             errors.push_back(where + value + " is not in bindings.glsl");
-        else if (it->second != kindOf(code))
-            errors.push_back(where + value + " is a " + it->second + " binding on a " +
+        else if (it->second.kind != kindOf(code))
+            errors.push_back(where + value + " is a " + it->second.kind + " binding on a " +
                              kindOf(code) + " declaration");
     }
     if (uses && text.find("#include \"bindings.glsl\"") == std::string::npos)
         errors.push_back(name + ": uses the layout without #include \"bindings.glsl\"");
+}
+
+// The layout names `file` and the files it includes declare, every #ifdef branch at once (a
+// superset of what any one build of it declares).
+void declaredNames(const fs::path& dir, const std::string& file, std::set<std::string>& visited,
+                   std::set<std::string>& names) {
+    if (!visited.insert(file).second) return;
+    static const std::regex include(R"re(^\s*#include\s+"([^"]+)")re");
+    static const std::regex binding(R"(binding\s*=\s*(FL_[A-Z0-9_]+))");
+    std::istringstream in(readText(dir / file));
+    std::string line;
+    while (std::getline(in, line)) {
+        const std::string code = line.substr(0, line.find("//"));
+        std::smatch m;
+        if (std::regex_search(code, m, include))
+            declaredNames(dir, m[1], visited, names);
+        else if (std::regex_search(code, m, binding))
+            names.insert(m[1]);
+    }
+}
+
+// Roles share a number only where no shader declares both: per compilation unit (a file with a
+// #version line) and its includes, no two names of one kind carry the same number. (Units that
+// are linked into one program, e.g. a vertex and a fragment shader, are checked apart.)
+void checkSharing(const fs::path& dir, const std::string& file, const Layout& layout,
+                  std::vector<std::string>& errors) {
+    if (readText(dir / file).rfind("#version", 0) != 0) return;
+    std::set<std::string> visited, names;
+    declaredNames(dir, file, visited, names);
+    std::map<std::pair<std::string, int>, std::string> owner;
+    for (const std::string& name : names) {
+        const auto it = layout.find(name);
+        if (it == layout.end()) continue; // reported by checkShader
+        const auto [at, fresh] = owner.emplace(std::pair{it->second.kind, it->second.number}, name);
+        if (!fresh)
+            errors.push_back(file + ": " + at->second + " and " + name + " share " +
+                             it->second.kind + " " + std::to_string(it->second.number));
+    }
 }
 
 std::vector<std::string> shaderErrors(const fs::path& shaderDir) {
@@ -103,8 +146,9 @@ std::vector<std::string> shaderErrors(const fs::path& shaderDir) {
     if (layout.empty()) errors.push_back("bindings.glsl: no entries");
     for (const auto& entry : fs::directory_iterator(shaderDir)) {
         const fs::path& p = entry.path();
-        if (p.extension() == ".glsl" && p.filename() != "bindings.glsl")
-            checkShader(p, layout, errors);
+        if (p.extension() != ".glsl" || p.filename() == "bindings.glsl") continue;
+        checkShader(p, layout, errors);
+        checkSharing(shaderDir, p.filename().string(), layout, errors);
     }
     return errors;
 }
@@ -199,8 +243,9 @@ TEST(BindingLayout, CppConstantsNameExactlyTheLayoutEntries) {
         const auto entry = layout.find(name);
         if (entry == layout.end())
             errors.push_back("Bindings.h: " + name + " is not in bindings.glsl");
-        else if (types.at(entry->second) != (*it)[1])
-            errors.push_back("Bindings.h: " + name + " should be a " + types.at(entry->second));
+        else if (types.at(entry->second.kind) != (*it)[1])
+            errors.push_back("Bindings.h: " + name + " should be a " +
+                             types.at(entry->second.kind));
     }
     for (const auto& [name, kind] : layout)
         if (seen[name] != 1)
@@ -224,7 +269,8 @@ TEST(BindingLayout, ChecksRejectLiteralsAndUnknownNames) {
     const auto write = [&](const std::string& name, const std::string& text) {
         std::ofstream(dir / name, std::ios::binary) << text;
     };
-    write("bindings.glsl", "// layout\n#define FL_TEX_A 0\n#define FL_SSBO_B 1\n");
+    write("bindings.glsl",
+          "// layout\n#define FL_TEX_A 0\n#define FL_SSBO_B 1\n#define FL_TEX_D 0\n");
     write("ok.glsl",
           "#include \"bindings.glsl\"\nlayout(binding = FL_TEX_A) uniform sampler2D u;\n");
     write("literal.glsl", "#include \"bindings.glsl\"\nlayout(binding = 3) uniform sampler2D u;\n");
@@ -232,8 +278,13 @@ TEST(BindingLayout, ChecksRejectLiteralsAndUnknownNames) {
                           "buffer X { uint x[]; };\n");
     write("kind.glsl", "#include \"bindings.glsl\"\nlayout(binding = FL_SSBO_B) uniform "
                        "sampler2D u;\n");
+    write("lib.glsl",
+          "#include \"bindings.glsl\"\nlayout(binding = FL_TEX_D) uniform sampler2D d;\n");
+    write("shared.glsl", "#version 450 core\n#include \"lib.glsl\"\n#include \"bindings.glsl\"\n"
+                         "layout(binding = FL_TEX_A) uniform sampler2D a;\n");
     const std::string shaders = joined(shaderErrors(dir));
-    EXPECT_EQ(std::count(shaders.begin(), shaders.end(), '\n'), 3) << shaders;
+    EXPECT_EQ(std::count(shaders.begin(), shaders.end(), '\n'), 4) << shaders;
+    EXPECT_NE(shaders.find("shared.glsl: FL_TEX_A and FL_TEX_D share TEX 0"), std::string::npos);
     EXPECT_NE(shaders.find("literal.glsl:2: binding = 3 is a number"), std::string::npos);
     EXPECT_NE(shaders.find("unknown.glsl:2: FL_SSBO_C is not in"), std::string::npos);
     EXPECT_NE(shaders.find("kind.glsl:2: FL_SSBO_B is a SSBO binding on a TEX"), std::string::npos);

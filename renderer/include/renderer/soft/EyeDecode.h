@@ -72,8 +72,9 @@ struct EyeCells {
     const gl::Texture* ids = nullptr;   // R32F object id per map texel, read when objectIds
     bool objectIds = false;
     const EyeSoftShadowPass* pass = nullptr; // made them (decoded())
-    /// Phase 3's occluder per seed pixel (RGBA32F, eyeSeedOccluder; unit 8), once it has run:
-    /// the flood and the composite read a seed's occluder there instead of decoding it.
+    /// Phase 3's occluder per seed pixel (RGBA32F, eyeSeedOccluder; gl::bind::SeedOccluders),
+    /// once it has run: the flood and the composite read a seed's occluder there instead of
+    /// decoding it.
     const gl::Texture* seedOccluders = nullptr;
 
     [[nodiscard]] int width() const { return cells->width(); }
