@@ -10,7 +10,8 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = FL_TEX_DELAUNAY_ISLANDS_IN) uniform usampler2D uIn;   // G2's texture, the first pass' input
+// G2's texture, the first pass' input
+layout(binding = FL_TEX_DELAUNAY_ISLANDS_IN) uniform usampler2D uIn;
 layout(binding = FL_TEX_DELAUNAY_PING) uniform usampler2D uPing; // islands[0]
 layout(binding = FL_TEX_DELAUNAY_PONG) uniform usampler2D uPong; // islands[1]
 layout(binding = FL_IMG_DELAUNAY_OUT, r32ui) uniform writeonly uimage2D uCleaned;

@@ -21,11 +21,17 @@ layout(std430, binding = FL_SSBO_DELAUNAY_HEADER) buffer Header { uint header[];
 // Per corner row: vertices, triangles (mode 0 writes); first vertex, first triangle (the scan's).
 layout(std430, binding = FL_SSBO_DELAUNAY_ROWS) buffer Rows { uvec4 rows[]; };
 // Per vertex: x | y << 16, case, colours of pixels 1-4.
-layout(std430, binding = FL_SSBO_DELAUNAY_VERTICES) writeonly buffer Vertices { uint vertexData[]; };
+layout(std430, binding = FL_SSBO_DELAUNAY_VERTICES) writeonly buffer Vertices {
+    uint vertexData[];
+};
 // Per triangle: three site ids (counterclockwise).
-layout(std430, binding = FL_SSBO_DELAUNAY_TRIANGLES) writeonly buffer Triangles { uint triangleData[]; };
+layout(std430, binding = FL_SSBO_DELAUNAY_TRIANGLES) writeonly buffer Triangles {
+    uint triangleData[];
+};
 // Per triangle: the index of its vertex.
-layout(std430, binding = FL_SSBO_DELAUNAY_TRIANGLE_VERTEX) writeonly buffer TriangleVertex { uint triangleVertex[]; };
+layout(std430, binding = FL_SSBO_DELAUNAY_TRIANGLE_VERTEX) writeonly buffer TriangleVertex {
+    uint triangleVertex[];
+};
 uniform ivec2 uSize;
 uniform int uMode; // 0: count, 1: write
 uniform int uVertexCapacity;

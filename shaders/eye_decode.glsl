@@ -17,7 +17,8 @@
 // (eyeSeedOccluder below).
 #include "bindings.glsl"
 layout(binding = FL_TEX_EYE_CELLS) uniform usampler2D uEyeCells;
-layout(binding = FL_TEX_EYE_DEPTH) uniform sampler2D uEyeDepth;     // the surfaces' depth (surface_decode)
+// the surfaces' depth (surface_decode)
+layout(binding = FL_TEX_EYE_DEPTH) uniform sampler2D uEyeDepth;
 layout(binding = FL_TEX_EYE_RECEIVERS) uniform sampler2D uEyeReceivers; // the map's receiver target
 layout(binding = FL_TEX_EYE_IDS) uniform sampler2D uEyeIds;       // R32F object id per map texel
 uniform int uEyeObjectIds; // 0: ids unknown (the object-ID fix is off), every id reads -1

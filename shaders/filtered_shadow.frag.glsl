@@ -6,8 +6,10 @@
 // depth along the light's ray through the tap.
 #include "surface_decode.glsl"
 
-layout(binding = FL_TEX_SURFACES_DEPTH) uniform sampler2D uSurfaceDepth; // SurfacesPass: positions (surfacePosition)
-layout(binding = FL_TEX_SURFACES_NORMALS) uniform sampler2D uNormals; // SurfacesPass: normals (surfacePlane)
+// SurfacesPass: positions (surfacePosition)
+layout(binding = FL_TEX_SURFACES_DEPTH) uniform sampler2D uSurfaceDepth;
+// SurfacesPass: normals (surfacePlane)
+layout(binding = FL_TEX_SURFACES_NORMALS) uniform sampler2D uNormals;
 
 layout(location = 0) out float oVisibility;
 

@@ -12,7 +12,8 @@ layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
 layout(binding = FL_IMG_FLOOD3D_IN, r32i) uniform readonly iimage3D uSrc;
 layout(binding = FL_IMG_FLOOD3D_OUT, r32i) uniform writeonly iimage3D uDst;
-layout(std430, binding = FL_SSBO_FLOOD3D_SITES) readonly buffer Sites { ivec4 sites[]; }; // x, y, z, id
+// x, y, z, id
+layout(std430, binding = FL_SSBO_FLOOD3D_SITES) readonly buffer Sites { ivec4 sites[]; };
 
 uniform ivec3 uSize;
 uniform int uStep;

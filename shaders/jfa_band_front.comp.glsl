@@ -9,7 +9,8 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(std430, binding = FL_SSBO_BAND_FLAGS) readonly buffer Flags { uint flags[]; };  // the band (step B)
+// the band (step B)
+layout(std430, binding = FL_SSBO_BAND_FLAGS) readonly buffer Flags { uint flags[]; };
 #include "jfa_band_list.glsl" // [3] sums the texels over the run's passes
 layout(std430, binding = FL_SSBO_FLOOD_FRONT) readonly buffer Front { uint front[]; };
 uniform ivec2 uTiles;

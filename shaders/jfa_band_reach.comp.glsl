@@ -18,7 +18,11 @@ layout(std430, binding = FL_SSBO_BAND_TILE_RECTS) buffer TileRects { uint tileRe
 layout(std430, binding = FL_SSBO_BAND_MAX_REACH) buffer MaxReach { uint maxReach; };
 // The flood's front (jfa_band_front.comp.glsl): every seed's tile starts it.
 layout(std430, binding = FL_SSBO_FLOOD_FRONT) buffer Front { uint front[]; };
-layout(std430, binding = FL_SSBO_SEED_LIST) readonly buffer SeedList { uint seedCount; uint dispatch[3]; uint seeds[]; };
+layout(std430, binding = FL_SSBO_SEED_LIST) readonly buffer SeedList {
+    uint seedCount;
+    uint dispatch[3];
+    uint seeds[];
+};
 uniform ivec2 uSize;
 uniform int uTile;
 uniform int uTilesX;

@@ -14,7 +14,9 @@ layout(binding = FL_TEX_FLOODED) uniform sampler2D uFlooded;
 layout(binding = FL_IMG_REPAIR_OUT, rgba32f) uniform writeonly image2D uDst;
 layout(std430, binding = FL_SSBO_REPAIR_VERTICES) readonly buffer Vertices { vec4 vertices[]; };
 layout(std430, binding = FL_SSBO_REPAIR_OFFSETS) readonly buffer Offsets { uint offsets[]; };
-layout(std430, binding = FL_SSBO_REPAIR_NEIGHBOURS) readonly buffer Neighbours { uint neighbours[]; };
+layout(std430, binding = FL_SSBO_REPAIR_NEIGHBOURS) readonly buffer Neighbours {
+    uint neighbours[];
+};
 uniform ivec2 uSize;
 uniform int uVertexCount;
 

@@ -10,7 +10,8 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(binding = FL_TEX_FLOOD_IN) uniform sampler2D uSrc;
-layout(binding = FL_TEX_FLOOD_SEEDS) uniform sampler2D uSeeds; // full-resolution seeds (for the expansion)
+// full-resolution seeds (for the expansion)
+layout(binding = FL_TEX_FLOOD_SEEDS) uniform sampler2D uSeeds;
 layout(binding = FL_IMG_FLOOD_OUT, JFA_CELL_FORMAT) uniform writeonly image2D uDst;
 uniform ivec2 uSize;
 uniform ivec2 uSrcSize;

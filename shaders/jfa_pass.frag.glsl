@@ -6,7 +6,8 @@
 #include "jfa_select.glsl"
 
 layout(binding = FL_TEX_FLOOD_IN) uniform sampler2D uSrc;
-layout(binding = FL_TEX_FLOOD_SEEDS) uniform sampler2D uSeeds; // full-resolution seeds (for the expansion)
+// full-resolution seeds (for the expansion)
+layout(binding = FL_TEX_FLOOD_SEEDS) uniform sampler2D uSeeds;
 uniform ivec2 uSize;    // grid size of the stage written
 uniform ivec2 uSrcSize; // grid size of uSrc
 uniform int uStep;

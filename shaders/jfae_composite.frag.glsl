@@ -11,7 +11,8 @@
 #include "surface_decode.glsl"
 #include "eye_decode.glsl"
 
-layout(binding = FL_TEX_EYE_FLOODED) uniform sampler2D uFlooded; // packed cells: the seed pixel's index + 1
+// packed cells: the seed pixel's index + 1
+layout(binding = FL_TEX_EYE_FLOODED) uniform sampler2D uFlooded;
 
 layout(location = 0) out float oVisibility;
 

@@ -9,7 +9,8 @@
 #endif
 #include "surface_decode.glsl"
 
-layout(binding = FL_TEX_PENUMBRA_SURFACES_DEPTH) uniform sampler2D uDepth; // SurfacesPass: positions (surfacePosition)
+// SurfacesPass: positions (surfacePosition)
+layout(binding = FL_TEX_PENUMBRA_SURFACES_DEPTH) uniform sampler2D uDepth;
 
 layout(location = 0) out float oVisibility;
 

@@ -8,7 +8,8 @@
 // than the same work as a compute pass.
 #include "surface_decode.glsl"
 
-layout(binding = FL_TEX_PENUMBRA_SURFACES_DEPTH) uniform sampler2D uDepth; // SurfacesPass: positions (surfacePosition)
+// SurfacesPass: positions (surfacePosition)
+layout(binding = FL_TEX_PENUMBRA_SURFACES_DEPTH) uniform sampler2D uDepth;
 layout(std430, binding = FL_SSBO_VIEW_TILES) writeonly buffer ViewTiles { uint viewTiles[]; };
 uniform mat4 uLightViewProj;
 uniform mat4 uShadowWarp;

@@ -20,7 +20,8 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = FL_TEX_REACH_POSITIONS) uniform sampler2D uPositions; // xyz world position, w the receiver flag
+// xyz world position, w the receiver flag
+layout(binding = FL_TEX_REACH_POSITIONS) uniform sampler2D uPositions;
 layout(binding = FL_IMG_REACH_LO_OUT, rgba32f) uniform writeonly image2D uDstLo;
 layout(binding = FL_IMG_REACH_HI_OUT, rgba32f) uniform writeonly image2D uDstHi;
 layout(binding = FL_IMG_REACH_LO_IN, rgba32f) uniform readonly image2D uSrcLo;

@@ -6,7 +6,8 @@
 #include "shadow_lookup.glsl"
 #include "surface_decode.glsl"
 
-layout(binding = FL_TEX_SURFACES_DEPTH) uniform sampler2D uDepth; // SurfacesPass: positions (surfacePosition)
+// SurfacesPass: positions (surfacePosition)
+layout(binding = FL_TEX_SURFACES_DEPTH) uniform sampler2D uDepth;
 
 layout(location = 0) out float oLit;
 

@@ -5,7 +5,8 @@
 #include "surface_decode.glsl"
 
 layout(binding = FL_TEX_REFERENCE_SUM) uniform sampler2D uSum;
-layout(binding = FL_TEX_REFERENCE_SURFACES_DEPTH) uniform sampler2D uDepth; // SurfacesPass: positions (surfacePosition)
+// SurfacesPass: positions (surfacePosition)
+layout(binding = FL_TEX_REFERENCE_SURFACES_DEPTH) uniform sampler2D uDepth;
 uniform float uSamples;
 
 layout(location = 0) out float oVisibility;

@@ -6,8 +6,10 @@
 #include "light.glsl"
 #include "surface_decode.glsl"
 
-layout(binding = FL_TEX_DIAGNOSTICS_SURFACES_DEPTH) uniform sampler2D uSurfaceDepth; // SurfacesPass: positions (surfacePosition)
-layout(binding = FL_TEX_DIAGNOSTICS_SURFACES_NORMALS) uniform sampler2D uNormals; // SurfacesPass: normals (surfaceNormal, surfacePlane)
+// SurfacesPass: positions (surfacePosition)
+layout(binding = FL_TEX_DIAGNOSTICS_SURFACES_DEPTH) uniform sampler2D uSurfaceDepth;
+// SurfacesPass: normals (surfaceNormal, surfacePlane)
+layout(binding = FL_TEX_DIAGNOSTICS_SURFACES_NORMALS) uniform sampler2D uNormals;
 uniform mat4 uInvViewProj;
 uniform vec2 uViewportSize;
 

@@ -10,7 +10,8 @@
 #include "occluder_edge.glsl"
 #include "jfa_seed_list.glsl"
 
-layout(binding = FL_TEX_SILHOUETTE_RECEIVERS) uniform sampler2D uReceivers; // the map's receiver target (MapPositions)
+// the map's receiver target (MapPositions)
+layout(binding = FL_TEX_SILHOUETTE_RECEIVERS) uniform sampler2D uReceivers;
 uniform float uSilhouetteThreshold;
 uniform int uListSeeds; // append each seed to the band's seed list (jfa_seed_list.glsl)
 // With SILHOUETTE_REGION (--flood-region view): only the tiles of the seed region (one uint per

@@ -12,7 +12,8 @@
 #endif
 
 layout(binding = FL_TEX_PENUMBRA_MAP) uniform sampler2D uPenumbraMap;
-layout(binding = FL_TEX_PENUMBRA_RECEIVERS) uniform sampler2D uPenumbraReceivers; // MapPositions::bind
+// MapPositions::bind
+layout(binding = FL_TEX_PENUMBRA_RECEIVERS) uniform sampler2D uPenumbraReceivers;
 // --penumbra both (SOFT_PENUMBRA_BOTH): a hard-shadowed point sees the part of the disk past its
 // texel's occluder (the inner half, from 0 deep in the umbra to 0.5 at the hard edge); without it
 // (outer) 0 there, the thesis' lookup unchanged.
@@ -30,7 +31,8 @@ float penumbraMapVisibility(vec3 world, vec3 plane) {
 }
 #else
 uniform float uSilhouetteThreshold; // the silhouette pass's (occluderEdgePoint)
-layout(binding = FL_TEX_PENUMBRA_NORMALS) uniform sampler2D uPenumbraNormals; // SurfacesPass: normals (surfacePlane)
+// SurfacesPass: normals (surfacePlane)
+layout(binding = FL_TEX_PENUMBRA_NORMALS) uniform sampler2D uPenumbraNormals;
 
 // `plane`: the point's triangle normal, turned to the eye (surfacePlane). A hard-shadowed point
 // whose surface faces away from the light's centre, or whose ray to the occluder enters its own

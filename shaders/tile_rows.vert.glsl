@@ -5,7 +5,8 @@
 // i is tile row i; 6 vertices per instance (two triangles); a row without tiles is a degenerate
 // quad.
 
-layout(std430, binding = FL_SSBO_ROW_SPANS) readonly buffer RowSpans { int rowSpans[]; }; // first, last per row
+// first, last per row
+layout(std430, binding = FL_SSBO_ROW_SPANS) readonly buffer RowSpans { int rowSpans[]; };
 uniform ivec2 uSize; // the target's texels
 uniform int uTile;
 

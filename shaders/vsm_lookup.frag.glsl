@@ -6,7 +6,8 @@
 #include "shadow_lookup.glsl"
 #include "surface_decode.glsl"
 
-layout(binding = FL_TEX_SURFACES_DEPTH) uniform sampler2D uDepth; // SurfacesPass: positions (surfacePosition)
+// SurfacesPass: positions (surfacePosition)
+layout(binding = FL_TEX_SURFACES_DEPTH) uniform sampler2D uDepth;
 layout(binding = FL_TEX_VSM_MOMENTS) uniform sampler2D uMoments;  // blurred (d, d^2), bilinear
 uniform mat4 uLightView;
 uniform float uBleed;
