@@ -7,8 +7,9 @@
 // the small mips shrinks cut-outs with distance (foliage thins out far away), and the light's
 // passes see the surface at another scale than the eye, so mip-picked coverage would give the
 // shadow a different shape from the surface that casts it, and from the CPU truth.
+#include "bindings.glsl"
 
-layout(binding = 0) uniform sampler2D uBaseColorTexture;
+layout(binding = FL_TEX_MATERIAL_BASE_COLOR) uniform sampler2D uBaseColorTexture;
 uniform vec4 uBaseColor;
 uniform int uHasTexture;
 uniform float uAlphaCutoff; // < 0: the material is opaque and alpha is ignored

@@ -1,4 +1,5 @@
 #version 450 core
+#include "bindings.glsl"
 // One pass of step G5 (thesis §6.3.2, Fig. 6.7), chainRowsJfa in geometry/DiscreteTriangles.h:
 // a one-sided 1D jump flood per row. A texel reads itself and the texel `step` to its right (if
 // inside the row) and keeps the nearer (smaller x) Voronoi vertex, so after the halving steps
@@ -8,9 +9,9 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform isampler2D uSrc;     // the previous pass' chain
-layout(binding = 1) uniform usampler2D uCorners; // G4's cases (first pass)
-layout(binding = 0, r32i) uniform writeonly iimage2D uDst;
+layout(binding = FL_TEX_DELAUNAY_CHAIN_IN) uniform isampler2D uSrc;     // the previous pass' chain
+layout(binding = FL_TEX_DELAUNAY_CORNERS) uniform usampler2D uCorners; // G4's cases (first pass)
+layout(binding = FL_IMG_DELAUNAY_OUT, r32i) uniform writeonly iimage2D uDst;
 uniform ivec2 uSize;
 uniform int uStep;
 uniform int uFromCorners;

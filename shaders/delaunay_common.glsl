@@ -15,29 +15,7 @@ const uint kCaseExcludedA = 6u;
 const uint kCaseExcludedB = 7u;
 const uint kCaseAlternating = 8u;
 
-// The result buffer's header (uint words; GlDiscreteDelaunayDetail.h's ResultHeader mirrors it):
-// what G3, G4 and G6 counted, read back with the triangles in run()'s one read-back.
-const uint kHeadVertices = 0u;      // G6: Voronoi vertices (all rows)
-const uint kHeadTriangles = 1u;     // G6: triangles
-const uint kHeadStats = 2u;         // G6: TriangleStats, 4 words
-const uint kHeadPasses = 6u;        // G3: IslandStats::passes
-const uint kHeadReassignedLo = 7u;  // G3: IslandStats::reassigned, low and high word
-const uint kHeadReassignedHi = 8u;
-const uint kHeadConverged = 9u;     // G3: IslandStats::converged
-const uint kHeadUnfinished = 10u;   // G3: 1 if the queued passes ended before the loop did
-const uint kHeadCorners = 11u;      // G4: corners per CornerCase, 9 words
-
-// G3's loop state between passes (delaunay_islands_control.comp.glsl), uint words.
-const uint kCtlGroupsX = 0u; // the next pass' indirect dispatch (x = 0 once the loop ended)
-const uint kCtlGroupsY = 1u;
-const uint kCtlGroupsZ = 2u;
-const uint kCtlActive = 3u;       // 1 while passes run
-const uint kCtlPasses = 4u;       // passes run
-const uint kCtlChanging = 5u;     // passes that recoloured something
-const uint kCtlReassignedLo = 6u; // recoloured pixels, low and high word
-const uint kCtlReassignedHi = 7u;
-const uint kCtlConverged = 8u; // 0 if the cap stopped the loop
-const uint kCtlChanged = 9u;   // the running pass' atomic counter
+#include "delaunay_result.glsl"
 
 bool isVoronoiVertex(uint c) { return c >= kCaseThreeA && c <= kCaseFour; }
 

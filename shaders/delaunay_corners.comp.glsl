@@ -1,4 +1,5 @@
 #version 450 core
+#include "bindings.glsl"
 // Step G4 (thesis §6.3.2), classifyCorner in geometry/DiscreteTriangles.h: the corner
 // (x + 0.5, y + 0.5) by the colours of its pixels 1 = (x, y), 2 = (x+1, y), 3 = (x+1, y+1),
 // 4 = (x, y+1), stored at pixel 1; the last row and column (border corners) are case 1. Each
@@ -8,9 +9,9 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform usampler2D uIds;
-layout(binding = 0, r8ui) uniform writeonly uimage2D uCorners;
-layout(std430, binding = 0) buffer Header { uint header[]; };
+layout(binding = FL_TEX_DELAUNAY_IDS) uniform usampler2D uIds;
+layout(binding = FL_IMG_DELAUNAY_OUT, r8ui) uniform writeonly uimage2D uCorners;
+layout(std430, binding = FL_SSBO_DELAUNAY_HEADER) buffer Header { uint header[]; };
 uniform ivec2 uSize;
 
 uint classifyCorner(uint c1, uint c2, uint c3, uint c4) {

@@ -1,12 +1,13 @@
 #version 450 core
+#include "bindings.glsl"
 // End of step G2: the flood's cells (z = site id, -1 empty) as a site-id texture, as
 // floodVoronoi converts its grid.
 #include "delaunay_common.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform sampler2D uCells;
-layout(binding = 0, r32ui) uniform writeonly uimage2D uIds;
+layout(binding = FL_TEX_DELAUNAY_CELLS) uniform sampler2D uCells;
+layout(binding = FL_IMG_DELAUNAY_OUT, r32ui) uniform writeonly uimage2D uIds;
 uniform ivec2 uSize;
 
 void main() {

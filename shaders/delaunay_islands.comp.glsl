@@ -1,4 +1,5 @@
 #version 450 core
+#include "bindings.glsl"
 // One pass of step G3 (thesis §6.3.2), removeIslands in geometry/DiscreteVoronoi.h: a pixel
 // whose neighbours towards its own site (three in the site's quadrant, one on an axis) all have
 // another colour is in an island and takes the nearest of those neighbours' sites (squared
@@ -8,10 +9,10 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform usampler2D uSrc;
-layout(binding = 0, r32ui) uniform writeonly uimage2D uDst;
-layout(std430, binding = 0) readonly buffer Pixels { ivec2 pixels[]; };
-layout(binding = 0, offset = 0) uniform atomic_uint uChanged;
+layout(binding = FL_TEX_DELAUNAY_ISLANDS_IN) uniform usampler2D uSrc;
+layout(binding = FL_IMG_DELAUNAY_OUT, r32ui) uniform writeonly uimage2D uDst;
+layout(std430, binding = FL_SSBO_DELAUNAY_PIXELS) readonly buffer Pixels { ivec2 pixels[]; };
+layout(binding = FL_ATOMIC_CHANGED, offset = 0) uniform atomic_uint uChanged;
 uniform ivec2 uSize;
 
 // Pixel coordinates stay below 2^13 (kMaxDiscreteSize), so squares fit in 32 bits.

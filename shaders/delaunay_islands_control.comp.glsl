@@ -1,4 +1,5 @@
 #version 450 core
+#include "bindings.glsl"
 // Between two G3 passes (thesis §6.3.2, removeIslands in geometry/DiscreteVoronoi.h): the
 // thesis' occlusion-query loop without a read-back. One invocation reads the pass' counter of
 // recoloured pixels, keeps the IslandStats and sets the next pass' indirect dispatch to zero
@@ -9,7 +10,7 @@
 layout(local_size_x = 1) in;
 
 // Binding 2: the island pass keeps its site pixels at 0.
-layout(std430, binding = 2) buffer Control { uint control[]; };
+layout(std430, binding = FL_SSBO_DELAUNAY_CONTROL) buffer Control { uint control[]; };
 uniform ivec2 uGroups; // the island pass' work groups
 uniform int uCap;      // passes at most (2 N, as on the CPU)
 uniform int uReset;    // 1: start a new loop

@@ -1,4 +1,5 @@
 #version 450 core
+#include "bindings.glsl"
 // End of step G3 (thesis §6.3.2): the host queued its passes without knowing how many would run,
 // so it cannot know which ping-pong texture holds the result. Pass j read the texture pass j - 1
 // wrote and wrote islands[j % 2]; the passes that recoloured something are a prefix 0..m-1 of the
@@ -9,12 +10,13 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform usampler2D uIn;   // G2's texture, the first pass' input
-layout(binding = 1) uniform usampler2D uPing; // islands[0]
-layout(binding = 2) uniform usampler2D uPong; // islands[1]
-layout(binding = 0, r32ui) uniform writeonly uimage2D uCleaned;
-layout(std430, binding = 0) readonly buffer Control { uint control[]; };
-layout(std430, binding = 1) buffer Header { uint header[]; };
+// G2's texture, the first pass' input
+layout(binding = FL_TEX_DELAUNAY_ISLANDS_IN) uniform usampler2D uIn;
+layout(binding = FL_TEX_DELAUNAY_PING) uniform usampler2D uPing; // islands[0]
+layout(binding = FL_TEX_DELAUNAY_PONG) uniform usampler2D uPong; // islands[1]
+layout(binding = FL_IMG_DELAUNAY_OUT, r32ui) uniform writeonly uimage2D uCleaned;
+layout(std430, binding = FL_SSBO_DELAUNAY_CONTROL) readonly buffer Control { uint control[]; };
+layout(std430, binding = FL_SSBO_DELAUNAY_HEADER) buffer Header { uint header[]; };
 uniform ivec2 uSize;
 
 void main() {

@@ -1,4 +1,5 @@
 #version 450 core
+#include "bindings.glsl"
 // Between G6's two walks (thesis §6.3.2): an exclusive prefix sum over the corner rows of their
 // vertex and triangle counts, so the second walk writes every row's records where the CPU's
 // row-major order puts them and the host copies nothing into place. One work group: at most
@@ -7,9 +8,9 @@
 
 layout(local_size_x = 1024) in;
 
-layout(std430, binding = 1) buffer Header { uint header[]; };
+layout(std430, binding = FL_SSBO_DELAUNAY_HEADER) buffer Header { uint header[]; };
 // Per corner row: vertices, triangles (first walk); first vertex, first triangle (written here).
-layout(std430, binding = 2) buffer Rows { uvec4 rows[]; };
+layout(std430, binding = FL_SSBO_DELAUNAY_ROWS) buffer Rows { uvec4 rows[]; };
 uniform int uRows;
 
 shared uvec2 sums[1024];

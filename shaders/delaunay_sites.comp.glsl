@@ -1,4 +1,5 @@
 #version 450 core
+#include "bindings.glsl"
 // Step G1 (thesis §6.3.2): sites into the texture. The host snaps every site to its pixel (the
 // double-precision mapping of geometry/DiscreteVoronoi.h); here the sites claim their pixels.
 // Mode 0: every site does imageAtomicMin on its pixel's owner, so the lowest index keeps it
@@ -9,10 +10,10 @@
 
 layout(local_size_x = 64) in;
 
-layout(binding = 0, r32ui) uniform uimage2D uOwner;
-layout(binding = 1, rgba32f) uniform writeonly image2D uSeeds;
-layout(std430, binding = 0) readonly buffer Pixels { ivec2 pixels[]; };
-layout(std430, binding = 1) writeonly buffer Keepers { uint keepers[]; };
+layout(binding = FL_IMG_DELAUNAY_OWNER, r32ui) uniform uimage2D uOwner;
+layout(binding = FL_IMG_DELAUNAY_SEEDS, rgba32f) uniform writeonly image2D uSeeds;
+layout(std430, binding = FL_SSBO_DELAUNAY_PIXELS) readonly buffer Pixels { ivec2 pixels[]; };
+layout(std430, binding = FL_SSBO_DELAUNAY_KEEPERS) writeonly buffer Keepers { uint keepers[]; };
 uniform int uCount;
 uniform int uMode;
 

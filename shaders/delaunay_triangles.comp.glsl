@@ -1,4 +1,5 @@
 #version 450 core
+#include "bindings.glsl"
 // Step G6 (thesis §6.3.2), buildTriangles in geometry/DiscreteTriangles.h: one invocation per
 // corner row (the thesis' one CUDA thread per row) walks the row's G5 chain from vertex to
 // vertex and makes one triangle per three-colour vertex, two per four-colour vertex. Two walks:
@@ -11,20 +12,26 @@
 
 layout(local_size_x = 64) in;
 
-layout(binding = 0) uniform usampler2D uIds;     // G3's texture
-layout(binding = 1) uniform usampler2D uCorners; // G4's cases
-layout(binding = 2) uniform isampler2D uChain;   // G5's chain
-layout(std430, binding = 0) readonly buffer Pixels { ivec2 pixels[]; };
+layout(binding = FL_TEX_DELAUNAY_IDS) uniform usampler2D uIds;     // G3's texture
+layout(binding = FL_TEX_DELAUNAY_CORNERS) uniform usampler2D uCorners; // G4's cases
+layout(binding = FL_TEX_DELAUNAY_CHAIN) uniform isampler2D uChain;   // G5's chain
+layout(std430, binding = FL_SSBO_DELAUNAY_PIXELS) readonly buffer Pixels { ivec2 pixels[]; };
 // The result header: TriangleStats (three-colour, four-colour, degenerate, clockwise).
-layout(std430, binding = 1) buffer Header { uint header[]; };
+layout(std430, binding = FL_SSBO_DELAUNAY_HEADER) buffer Header { uint header[]; };
 // Per corner row: vertices, triangles (mode 0 writes); first vertex, first triangle (the scan's).
-layout(std430, binding = 2) buffer Rows { uvec4 rows[]; };
+layout(std430, binding = FL_SSBO_DELAUNAY_ROWS) buffer Rows { uvec4 rows[]; };
 // Per vertex: x | y << 16, case, colours of pixels 1-4.
-layout(std430, binding = 3) writeonly buffer Vertices { uint vertexData[]; };
+layout(std430, binding = FL_SSBO_DELAUNAY_VERTICES) writeonly buffer Vertices {
+    uint vertexData[];
+};
 // Per triangle: three site ids (counterclockwise).
-layout(std430, binding = 4) writeonly buffer Triangles { uint triangleData[]; };
+layout(std430, binding = FL_SSBO_DELAUNAY_TRIANGLES) writeonly buffer Triangles {
+    uint triangleData[];
+};
 // Per triangle: the index of its vertex.
-layout(std430, binding = 5) writeonly buffer TriangleVertex { uint triangleVertex[]; };
+layout(std430, binding = FL_SSBO_DELAUNAY_TRIANGLE_VERTEX) writeonly buffer TriangleVertex {
+    uint triangleVertex[];
+};
 uniform ivec2 uSize;
 uniform int uMode; // 0: count, 1: write
 uniform int uVertexCapacity;

@@ -1,5 +1,6 @@
 // The disk light of the soft-shadow methods (renderer/soft/DiskLight.h, thesis §5.2): centre,
 // unit normal (the direction it faces) and radius.
+#include "bindings.glsl"
 uniform vec3 uDiskCenter;
 uniform vec3 uDiskNormal;
 uniform float uDiskRadius;
@@ -72,8 +73,8 @@ uniform float uReachFarDepth;
 // The receivers' bounds pyramid (reach_bounds.comp.glsl): per cell the min (uReachLo) and max
 // (uReachHi) of its receivers' world xyz and light depth (w), 8x8-texel cells at level 0; 0
 // levels = none (the scene's deepest point bounds every cone).
-layout(binding = 4) uniform sampler2D uReachLo;
-layout(binding = 5) uniform sampler2D uReachHi;
+layout(binding = FL_TEX_REACH_LO) uniform sampler2D uReachLo;
+layout(binding = FL_TEX_REACH_HI) uniform sampler2D uReachHi;
 uniform int uReachLevels;
 const int kJfaUnboundedReach = 0x3fffffff;
 const ivec4 kJfaUnboundedRect = ivec4(-kJfaUnboundedReach, -kJfaUnboundedReach,

@@ -11,13 +11,16 @@
 // comes back from the surfaces' depth (surfacePosition), the occluder's from the map's receiver
 // target (occluderEdgeApply), its object id from the light-space id pass at that texel.
 //
-// The textures sit on fixed units, the same in every JFA-E program (fl::EyeCells::bind): units
-// 0, 1 are the flood kernel's grids and 4, 5 the reach bounds (disk_light.glsl); unit 8 holds
-// phase 3's seed occluders (eyeSeedOccluder below).
-layout(binding = 2) uniform usampler2D uEyeCells;
-layout(binding = 3) uniform sampler2D uEyeDepth;     // the surfaces' depth (surface_decode)
-layout(binding = 6) uniform sampler2D uEyeReceivers; // the map's receiver target
-layout(binding = 7) uniform sampler2D uEyeIds;       // R32F object id per map texel
+// The textures sit on the layout's fixed units (bindings.glsl), the same in every JFA-E program
+// (fl::EyeCells::bind), clear of the flood kernel's grids (FL_TEX_FLOOD_*) and the reach bounds
+// (FL_TEX_REACH_*, disk_light.glsl); FL_TEX_SEED_OCCLUDERS holds phase 3's seed occluders
+// (eyeSeedOccluder below).
+#include "bindings.glsl"
+layout(binding = FL_TEX_EYE_CELLS) uniform usampler2D uEyeCells;
+// the surfaces' depth (surface_decode)
+layout(binding = FL_TEX_EYE_DEPTH) uniform sampler2D uEyeDepth;
+layout(binding = FL_TEX_EYE_RECEIVERS) uniform sampler2D uEyeReceivers; // the map's receiver target
+layout(binding = FL_TEX_EYE_IDS) uniform sampler2D uEyeIds;       // R32F object id per map texel
 uniform int uEyeObjectIds; // 0: ids unknown (the object-ID fix is off), every id reads -1
 // The grid the shader works on: the frame (uEyeFactor 1), or JFA-E's coarse estimate, whose
 // pixel P is frame pixel min(uEyeFactor * P + uEyeFactor / 2, frame - 1) (fl::coarseEyeImage).
@@ -74,11 +77,11 @@ vec4 eyeOccluder(ivec2 p) {
 }
 
 // Phase 3's occluder per seed pixel (RGBA32F, jfae_boundary.frag.glsl writes eyeOccluder(s) at
-// each seed s; fl::EyeCells::seedOccluders, bound on unit 8 once phase 3 has run). Why a
+// each seed s; fl::EyeCells::seedOccluders, bound once phase 3 has run). Why a
 // copy of what the cells already say: the flood reads a seed's occluder for each of its 9
 // candidates in every pass, and decoding it (a cell, a map texel unprojected, up to two
 // neighbours for the edge) cost the llvmpipe flood 2.8x; phase 3 decodes each seed once.
-layout(binding = 8) uniform sampler2D uSeedOccluders;
+layout(binding = FL_TEX_SEED_OCCLUDERS) uniform sampler2D uSeedOccluders;
 
 // Seed pixel s's occluder, bit for bit eyeOccluder(s) (s must be a seed of phase 3).
 vec4 eyeSeedOccluder(ivec2 s) { return texelFetch(uSeedOccluders, s, 0); }

@@ -1,17 +1,20 @@
 #version 450 core
+#include "bindings.glsl"
 // PCF / PCSS visibility per eye pixel (renderer/soft/FilteredShadow.h has the method; the CPU
 // reference fl::filteredVisibility does the same operations). Taps are points of the light's
 // unwarped NDC plane, looked up through the provider's warp, compared with the receiver-plane
 // depth along the light's ray through the tap.
 #include "surface_decode.glsl"
 
-layout(binding = 0) uniform sampler2D uSurfaceDepth; // SurfacesPass: positions (surfacePosition)
-layout(binding = 1) uniform sampler2D uNormals; // SurfacesPass: normals (surfacePlane)
+// SurfacesPass: positions (surfacePosition)
+layout(binding = FL_TEX_SURFACES_DEPTH) uniform sampler2D uSurfaceDepth;
+// SurfacesPass: normals (surfacePlane)
+layout(binding = FL_TEX_SURFACES_NORMALS) uniform sampler2D uNormals;
 
 layout(location = 0) out float oVisibility;
 
 // The depth texture through a sampler without comparison (stored depths are read).
-layout(binding = 4) uniform sampler2D uDepth;
+layout(binding = FL_TEX_SHADOW_DEPTH) uniform sampler2D uDepth;
 uniform mat4 uLightView;
 uniform mat4 uLightProj;
 uniform mat4 uInvLightProj;

@@ -1,4 +1,5 @@
 #version 450 core
+#include "bindings.glsl"
 // One pass of 3D jump flooding (jfa/GlJfa3d.h), the GL twin of jfa/Jfa3d.cpp's CPU passes: voxel
 // p reads the 27 cells p + (i, j, l) * uStep, i, j, l in {-1, 0, 1}, that lie inside the grid
 // (uSlices = 0, 3D JFA), or only the 9 of its own slice, l = 0 (uSlices = 1: the slice-by-slice
@@ -9,9 +10,10 @@
 
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
-layout(binding = 0, r32i) uniform readonly iimage3D uSrc;
-layout(binding = 1, r32i) uniform writeonly iimage3D uDst;
-layout(std430, binding = 0) readonly buffer Sites { ivec4 sites[]; }; // x, y, z, id
+layout(binding = FL_IMG_FLOOD3D_IN, r32i) uniform readonly iimage3D uSrc;
+layout(binding = FL_IMG_FLOOD3D_OUT, r32i) uniform writeonly iimage3D uDst;
+// x, y, z, id
+layout(std430, binding = FL_SSBO_FLOOD3D_SITES) readonly buffer Sites { ivec4 sites[]; };
 
 uniform ivec3 uSize;
 uniform int uStep;

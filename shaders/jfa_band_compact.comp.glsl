@@ -1,4 +1,5 @@
 #version 450 core
+#include "bindings.glsl"
 // Band-limited flooding, step C: one invocation per tile of a stage grid (at scale uScale: its
 // texel t stands for full-resolution grid point t * uScale). A stage tile is in the band when a
 // full-resolution tile holding any of its grid points is; it is appended to the tile list and
@@ -6,7 +7,7 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(std430, binding = 3) readonly buffer Flags { uint flags[]; };
+layout(std430, binding = FL_SSBO_BAND_FLAGS) readonly buffer Flags { uint flags[]; };
 #include "jfa_band_list.glsl"
 uniform ivec2 uStageTiles; // tiles per axis of the stage grid
 uniform ivec2 uStageSize;  // the stage grid

@@ -1,4 +1,5 @@
 #version 450 core
+#include "bindings.glsl"
 // Band-limited flooding, the flood's front (jfa/Band.h): before each pass of a one-stage plan,
 // the band tiles that may change, as a tile list and indirect commands like step C's. A texel
 // can take a cell only from the 9 texels at (i, j) * step around it; when every tile those
@@ -8,9 +9,10 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(std430, binding = 3) readonly buffer Flags { uint flags[]; };  // the band (step B)
+// the band (step B)
+layout(std430, binding = FL_SSBO_BAND_FLAGS) readonly buffer Flags { uint flags[]; };
 #include "jfa_band_list.glsl" // [3] sums the texels over the run's passes
-layout(std430, binding = 8) readonly buffer Front { uint front[]; };
+layout(std430, binding = FL_SSBO_FLOOD_FRONT) readonly buffer Front { uint front[]; };
 uniform ivec2 uTiles;
 uniform ivec2 uSize;
 uniform int uTile;

@@ -1,12 +1,13 @@
 #version 450 core
+#include "bindings.glsl"
 // Band-limited flooding, step B: one invocation per full-resolution tile. A tile holding seeds
 // marks every tile its rect (the union of its seeds' rects, step A) touches, within the square
 // the plan can reach from the tile. Same as fl::jfa::markTiles on the CPU.
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(std430, binding = 1) readonly buffer TileRects { uint tileRects[]; };
-layout(std430, binding = 3) writeonly buffer Flags { uint flags[]; };
+layout(std430, binding = FL_SSBO_BAND_TILE_RECTS) readonly buffer TileRects { uint tileRects[]; };
+layout(std430, binding = FL_SSBO_BAND_FLAGS) writeonly buffer Flags { uint flags[]; };
 uniform ivec2 uTiles; // tiles per axis
 uniform int uTile;
 uniform int uPlanReach;

@@ -1,4 +1,5 @@
 #version 450 core
+#include "bindings.glsl"
 // Band-limited flooding, step A (jfa/Band.h): one invocation per seed of step A0's list. The
 // criterion bounds where the seed's cell can be accepted (jfaSeedRect); clipped to the grid, the
 // rect joins its tile's union (4 words per tile: min x, min y, max x, max y; an empty tile keeps
@@ -12,12 +13,16 @@ vec4 jfaLoad(sampler2D grid, ivec2 q);
 // Texels x0..x1 (.x, .z), y0..y1 (.y, .w) where seed cell c seeded at p may be accepted.
 ivec4 jfaSeedRect(ivec2 p, vec4 c);
 
-layout(binding = 1) uniform sampler2D uSeeds;
-layout(std430, binding = 1) buffer TileRects { uint tileRects[]; };
-layout(std430, binding = 2) buffer MaxReach { uint maxReach; };
+layout(binding = FL_TEX_FLOOD_SEEDS) uniform sampler2D uSeeds;
+layout(std430, binding = FL_SSBO_BAND_TILE_RECTS) buffer TileRects { uint tileRects[]; };
+layout(std430, binding = FL_SSBO_BAND_MAX_REACH) buffer MaxReach { uint maxReach; };
 // The flood's front (jfa_band_front.comp.glsl): every seed's tile starts it.
-layout(std430, binding = 8) buffer Front { uint front[]; };
-layout(std430, binding = 6) readonly buffer SeedList { uint seedCount; uint dispatch[3]; uint seeds[]; };
+layout(std430, binding = FL_SSBO_FLOOD_FRONT) buffer Front { uint front[]; };
+layout(std430, binding = FL_SSBO_SEED_LIST) readonly buffer SeedList {
+    uint seedCount;
+    uint dispatch[3];
+    uint seeds[];
+};
 uniform ivec2 uSize;
 uniform int uTile;
 uniform int uTilesX;

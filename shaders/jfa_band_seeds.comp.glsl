@@ -1,4 +1,5 @@
 #version 450 core
+#include "bindings.glsl"
 // Band-limited flooding, step A0: the seed texels in a list (packed x | y << 16), so that step A
 // (jfa_band_reach.comp.glsl) bounds only seeds. On a SIMD rasteriser every 8-lane row holding
 // one seed would otherwise pay for the criterion's bound in all its lanes: 21 of the 28 ms of
@@ -12,7 +13,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 bool jfaEmpty(vec4 c);
 vec4 jfaLoad(sampler2D grid, ivec2 q);
 
-layout(binding = 1) uniform sampler2D uSeeds;
+layout(binding = FL_TEX_FLOOD_SEEDS) uniform sampler2D uSeeds;
 uniform ivec2 uSize;
 uniform int uMode;
 

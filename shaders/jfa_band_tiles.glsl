@@ -1,8 +1,9 @@
 // A stage's band as a tile list (jfa_band_compact.comp.glsl: packed tile coordinates
 // x | y << 16) run by an indirect dispatch: group x = the list entry, group y = the 8x8 block
 // within the tile. Shared by the band passes (jfa_pass.comp.glsl) and the band clear.
+#include "bindings.glsl"
 
-layout(std430, binding = 4) readonly buffer TileList { uint tiles[]; };
+layout(std430, binding = FL_SSBO_BAND_TILES) readonly buffer TileList { uint tiles[]; };
 uniform int uTile;
 
 /// The tile this invocation's group works on (tile coordinates).

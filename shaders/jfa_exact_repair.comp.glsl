@@ -1,4 +1,5 @@
 #version 450 core
+#include "bindings.glsl"
 // The exact repair of `voronoi --exact` (jfa/ExactRepair.h, whose comment proves it): each texel
 // walks from the graph vertex its flooded cell names (w; vertex 0 when empty) to the best
 // neighbour under the criterion while one is strictly better. The GL twin of
@@ -9,11 +10,13 @@ bool jfaBetter(ivec2 p, vec4 a, vec4 b);
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform sampler2D uFlooded;
-layout(binding = 0, rgba32f) uniform writeonly image2D uDst;
-layout(std430, binding = 0) readonly buffer Vertices { vec4 vertices[]; };
-layout(std430, binding = 1) readonly buffer Offsets { uint offsets[]; };
-layout(std430, binding = 2) readonly buffer Neighbours { uint neighbours[]; };
+layout(binding = FL_TEX_FLOODED) uniform sampler2D uFlooded;
+layout(binding = FL_IMG_REPAIR_OUT, rgba32f) uniform writeonly image2D uDst;
+layout(std430, binding = FL_SSBO_REPAIR_VERTICES) readonly buffer Vertices { vec4 vertices[]; };
+layout(std430, binding = FL_SSBO_REPAIR_OFFSETS) readonly buffer Offsets { uint offsets[]; };
+layout(std430, binding = FL_SSBO_REPAIR_NEIGHBOURS) readonly buffer Neighbours {
+    uint neighbours[];
+};
 uniform ivec2 uSize;
 uniform int uVertexCount;
 

@@ -1,4 +1,5 @@
 #version 450 core
+#include "bindings.glsl"
 // Penumbra criterion (renderer/soft/PenumbraCriterion.h on the CPU, which this matches bit for
 // bit), thesis §5.2-5.3: a texel's receiver point is its world position (mapReceiver of the
 // shadow map's receiver target uPenumbraPositions, bound by MapPositions::bind); a
@@ -11,7 +12,7 @@
 #include "disk_light.glsl"
 #include "shadow_map_decode.glsl"
 
-layout(binding = 2) uniform sampler2D uPenumbraPositions;
+layout(binding = FL_TEX_PENUMBRA_POSITIONS) uniform sampler2D uPenumbraPositions;
 
 bool jfaEmpty(vec4 c) { return c.w == 0.0; }
 

@@ -3,7 +3,12 @@
 // dispatch. A pass that writes the seeds texture over the whole grid appends its seeds here
 // itself (jfaListSeed; GlFloodKernelBase::beginSeedList), so that step A0 need not sweep the grid
 // again; otherwise jfa_band_seeds.comp.glsl fills it.
+#include "bindings.glsl"
 
-layout(std430, binding = 6) buffer SeedList { uint seedCount; uint dispatch[3]; uint seeds[]; };
+layout(std430, binding = FL_SSBO_SEED_LIST) buffer SeedList {
+    uint seedCount;
+    uint dispatch[3];
+    uint seeds[];
+};
 
 void jfaListSeed(ivec2 p) { seeds[atomicAdd(seedCount, 1u)] = uint(p.x) | (uint(p.y) << 16); }

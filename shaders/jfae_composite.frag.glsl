@@ -1,4 +1,5 @@
 #version 450 core
+#include "bindings.glsl"
 // JFA-E phase 5 (thesis §5.4.1, "Generating Final Image"): a pixel that holds an occluder after
 // the flood is in penumbra; its intensity is recomputed at its own world position with the
 // inside flag (inner penumbrae see the part of the light away from the centre). Otherwise the
@@ -10,7 +11,8 @@
 #include "surface_decode.glsl"
 #include "eye_decode.glsl"
 
-layout(binding = 1) uniform sampler2D uFlooded; // packed cells: the seed pixel's index + 1
+// packed cells: the seed pixel's index + 1
+layout(binding = FL_TEX_EYE_FLOODED) uniform sampler2D uFlooded;
 
 layout(location = 0) out float oVisibility;
 

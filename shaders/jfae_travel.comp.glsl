@@ -1,12 +1,13 @@
 #version 450 core
+#include "bindings.glsl"
 // JFA-E's measured pass count (fl::EyeFloodEstimator): how far each cell of the coarse flood
 // travelled from its seed (cell w = seed pixel index + 1), Chebyshev distance in pixels, counted
 // in a histogram whose last bin also holds every farther cell. Same as fl::floodTravel.
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform sampler2D uFlooded;
-layout(std430, binding = 0) buffer Travel { uint bins[]; };
+layout(binding = FL_TEX_FLOODED) uniform sampler2D uFlooded;
+layout(std430, binding = FL_SSBO_TRAVEL_BINS) buffer Travel { uint bins[]; };
 
 void main() {
     ivec2 size = textureSize(uFlooded, 0);

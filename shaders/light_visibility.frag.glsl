@@ -1,4 +1,5 @@
 #version 450 core
+#include "bindings.glsl"
 // Visibility looked up in light space per eye pixel: the hard shadow-map test (hard), or with
 // SOFT_PENUMBRA_MAP the intensity from the flooded penumbra map (JFA-L, flood-L; thesis §5.3.1
 // phase 4). Reads the surfaces pass's world positions; background stays 1.
@@ -8,7 +9,8 @@
 #endif
 #include "surface_decode.glsl"
 
-layout(binding = 2) uniform sampler2D uDepth; // SurfacesPass: positions (surfacePosition)
+// SurfacesPass: positions (surfacePosition)
+layout(binding = FL_TEX_PENUMBRA_SURFACES_DEPTH) uniform sampler2D uDepth;
 
 layout(location = 0) out float oVisibility;
 

@@ -1,4 +1,5 @@
 #version 450 core
+#include "bindings.glsl"
 // Shows a grid (a flood's cells, a depth map, a mask) texel by texel in the viewport: the
 // fragment at viewport pixel p reads texel floor(p * size / viewport), so a viewport of the
 // grid's size shows it 1:1. Modes (OverlayCanvas::GridMode):
@@ -14,9 +15,9 @@
 #include "disk_light.glsl"
 
 layout(location = 0) out vec4 oColor;
-layout(binding = 0) uniform sampler2D uA;
-layout(binding = 1) uniform sampler2D uB;
-layout(binding = 2) uniform sampler2D uC;
+layout(binding = FL_TEX_OVERLAY_A) uniform sampler2D uA;
+layout(binding = FL_TEX_OVERLAY_B) uniform sampler2D uB;
+layout(binding = FL_TEX_OVERLAY_C) uniform sampler2D uC;
 uniform int uMode;
 uniform ivec4 uViewport; // x, y, width, height of the viewport in framebuffer pixels
 uniform float uScale;

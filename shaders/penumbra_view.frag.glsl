@@ -1,4 +1,5 @@
 #version 450 core
+#include "bindings.glsl"
 // JFA-L's view limit (--flood-region view; jfa/Band.h): the penumbra-map tiles the lookup
 // (soft_penumbra.glsl) may read, one fragment per eye pixel (a framebuffer without attachments):
 // the tile of the texel its surface point projects to. The map's extent is tested with a margin of
@@ -7,8 +8,9 @@
 // than the same work as a compute pass.
 #include "surface_decode.glsl"
 
-layout(binding = 2) uniform sampler2D uDepth; // SurfacesPass: positions (surfacePosition)
-layout(std430, binding = 7) writeonly buffer ViewTiles { uint viewTiles[]; };
+// SurfacesPass: positions (surfacePosition)
+layout(binding = FL_TEX_PENUMBRA_SURFACES_DEPTH) uniform sampler2D uDepth;
+layout(std430, binding = FL_SSBO_VIEW_TILES) writeonly buffer ViewTiles { uint viewTiles[]; };
 uniform mat4 uLightViewProj;
 uniform mat4 uShadowWarp;
 uniform int uMapSize;

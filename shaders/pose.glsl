@@ -3,13 +3,14 @@
 // transform, for this frame and for the frame before (the surfaces pass's motion target).
 // GpuScene::setPose uploads what these read; renderer/scene/Pose.cpp (posedVertices) is the CPU
 // twin. Static scenes take the uniform branches that skip all of it.
+#include "bindings.glsl"
 layout(location = 4) in uvec4 aJoints; // JOINTS_0 (skinned meshes only)
 layout(location = 5) in vec4 aWeights; // WEIGHTS_0
 
 // Every skin's joint matrices, this frame's then the previous frame's.
-layout(std430, binding = 6) readonly buffer PoseJoints { mat4 poseJoints[]; };
+layout(std430, binding = FL_SSBO_POSE_JOINTS) readonly buffer PoseJoints { mat4 poseJoints[]; };
 // Every mesh's morph deltas: per target, its vertices' position deltas then their normal deltas.
-layout(std430, binding = 7) readonly buffer PoseMorphs { vec4 poseMorphs[]; };
+layout(std430, binding = FL_SSBO_POSE_MORPHS) readonly buffer PoseMorphs { vec4 poseMorphs[]; };
 
 const int kMaxMorphTargets = 32; // renderer/scene/Scene.h kMaxMorphTargets
 

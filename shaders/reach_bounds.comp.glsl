@@ -1,4 +1,5 @@
 #version 450 core
+#include "bindings.glsl"
 // The receivers' bounds pyramid of the penumbra bound (renderer/soft/PenumbraReach.h): level 0
 // holds, per 8x8 block of the flooded grid, the box of its receivers' world positions (xyz) and
 // their range of distances from the light's plane (w): the smallest in uDstLo, the largest in
@@ -19,11 +20,12 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform sampler2D uPositions; // xyz world position, w the receiver flag
-layout(binding = 0, rgba32f) uniform writeonly image2D uDstLo;
-layout(binding = 1, rgba32f) uniform writeonly image2D uDstHi;
-layout(binding = 2, rgba32f) uniform readonly image2D uSrcLo;
-layout(binding = 3, rgba32f) uniform readonly image2D uSrcHi;
+// xyz world position, w the receiver flag
+layout(binding = FL_TEX_REACH_POSITIONS) uniform sampler2D uPositions;
+layout(binding = FL_IMG_REACH_LO_OUT, rgba32f) uniform writeonly image2D uDstLo;
+layout(binding = FL_IMG_REACH_HI_OUT, rgba32f) uniform writeonly image2D uDstHi;
+layout(binding = FL_IMG_REACH_LO_IN, rgba32f) uniform readonly image2D uSrcLo;
+layout(binding = FL_IMG_REACH_HI_IN, rgba32f) uniform readonly image2D uSrcHi;
 uniform int uMode;
 uniform float uValidMin; // a receiver has w >= uValidMin
 uniform ivec2 uDstSize;
@@ -33,7 +35,7 @@ uniform ivec2 uSrcSize;
 #ifdef REACH_REGION
 uniform int uRegionTile;
 uniform int uRegionTilesX;
-layout(std430, binding = 7) readonly buffer SeedRegion { uint seedRegion[]; };
+layout(std430, binding = FL_SSBO_SEED_REGION) readonly buffer SeedRegion { uint seedRegion[]; };
 #endif
 
 void main() {

@@ -1,11 +1,13 @@
 #version 450 core
+#include "bindings.glsl"
 // Ground truth, one disk sample: the hard visibility of each eye pixel's surface from this
 // sample's depth map (the same test as every method's hardShadow()), added to the sum by
 // additive blending.
 #include "shadow_lookup.glsl"
 #include "surface_decode.glsl"
 
-layout(binding = 0) uniform sampler2D uDepth; // SurfacesPass: positions (surfacePosition)
+// SurfacesPass: positions (surfacePosition)
+layout(binding = FL_TEX_SURFACES_DEPTH) uniform sampler2D uDepth;
 
 layout(location = 0) out float oLit;
 

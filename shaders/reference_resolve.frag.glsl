@@ -1,10 +1,12 @@
 #version 450 core
+#include "bindings.glsl"
 // Ground truth, resolve: lit samples / N (1 for background). Sums of 0 and 1 are exact in
 // float, so a pixel lit from every sample gets exactly 1.
 #include "surface_decode.glsl"
 
-layout(binding = 0) uniform sampler2D uSum;
-layout(binding = 1) uniform sampler2D uDepth; // SurfacesPass: positions (surfacePosition)
+layout(binding = FL_TEX_REFERENCE_SUM) uniform sampler2D uSum;
+// SurfacesPass: positions (surfacePosition)
+layout(binding = FL_TEX_REFERENCE_SURFACES_DEPTH) uniform sampler2D uDepth;
 uniform float uSamples;
 
 layout(location = 0) out float oVisibility;

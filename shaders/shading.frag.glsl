@@ -1,13 +1,17 @@
 #version 450 core
+#include "bindings.glsl"
 // Step 4 of a frame: shading, shared by every shadow method. The surfaces of step 2 shaded with
 // the method's visibility (shade.glsl).
 #include "shade.glsl"
 #include "surface_decode.glsl"
 
-layout(binding = 0) uniform sampler2D uDepth;     // SurfacesPass: positions (surfacePosition)
-layout(binding = 1) uniform sampler2D uNormals;   // SurfacesPass: octahedral normals
-layout(binding = 2) uniform sampler2D uBaseColor; // SurfacesPass: sRGB base colour
-layout(binding = 3) uniform sampler2D uVisibility; // the method's, R32F
+// SurfacesPass: positions (surfacePosition)
+layout(binding = FL_TEX_SURFACES_DEPTH) uniform sampler2D uDepth;
+// SurfacesPass: octahedral normals
+layout(binding = FL_TEX_SURFACES_NORMALS) uniform sampler2D uNormals;
+// SurfacesPass: sRGB base colour
+layout(binding = FL_TEX_SURFACES_BASE_COLOR) uniform sampler2D uBaseColor;
+layout(binding = FL_TEX_VISIBILITY) uniform sampler2D uVisibility; // the method's, R32F
 
 layout(location = 0) out vec4 oColor; // linear; alpha 0 where nothing was drawn
 

@@ -1,18 +1,21 @@
 #version 450 core
+#include "bindings.glsl"
 // Shadow-map diagnostics per visible pixel (see renderer/passes/ShadowDiagnosticsPass.h):
 // texel footprint, view depth, hard visibility with this and the previous frame's map.
 #include "shadow_lookup.glsl"
 #include "light.glsl"
 #include "surface_decode.glsl"
 
-layout(binding = 3) uniform sampler2D uSurfaceDepth; // SurfacesPass: positions (surfacePosition)
-layout(binding = 4) uniform sampler2D uNormals; // SurfacesPass: normals (surfaceNormal, surfacePlane)
+// SurfacesPass: positions (surfacePosition)
+layout(binding = FL_TEX_DIAGNOSTICS_SURFACES_DEPTH) uniform sampler2D uSurfaceDepth;
+// SurfacesPass: normals (surfaceNormal, surfacePlane)
+layout(binding = FL_TEX_DIAGNOSTICS_SURFACES_NORMALS) uniform sampler2D uNormals;
 uniform mat4 uInvViewProj;
 uniform vec2 uViewportSize;
 
 layout(location = 0) out vec4 oDiagnostics;
 
-layout(binding = 2) uniform sampler2DShadow uPreviousShadowMap;
+layout(binding = FL_TEX_PREVIOUS_SHADOW_MAP) uniform sampler2DShadow uPreviousShadowMap;
 uniform mat4 uPreviousLightViewProj;
 uniform mat4 uPreviousShadowWarp;
 uniform int uHasPrevious;

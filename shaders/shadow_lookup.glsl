@@ -3,7 +3,8 @@
 // the identity for a uniform map and N_T for TSM); its reference depth comes from the light's
 // own post-perspective space (uLightViewProj), where the shadow pass stored depths and applied
 // the bias.
-layout(binding = 1) uniform sampler2DShadow uShadowMap;
+#include "bindings.glsl"
+layout(binding = FL_TEX_SHADOW_MAP) uniform sampler2DShadow uShadowMap;
 uniform mat4 uLightViewProj;
 uniform mat4 uShadowWarp;
 

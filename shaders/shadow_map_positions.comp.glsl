@@ -1,4 +1,5 @@
 #version 450 core
+#include "bindings.glsl"
 // The shadow map's receiver positions decoded into an RGBA32F image (ShadowMapPass::
 // decodedReceivers): the overlays draw them and the tests hand them to the CPU kernels, which
 // then see exactly the bits every other shader's mapReceiver() computes.
@@ -6,8 +7,8 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform sampler2D uReceiverDepth;
-layout(binding = 0, rgba32f) uniform writeonly image2D uDst;
+layout(binding = FL_TEX_MAP_RECEIVER_DEPTH) uniform sampler2D uReceiverDepth;
+layout(binding = FL_IMG_MAP_POSITIONS, rgba32f) uniform writeonly image2D uDst;
 
 void main() {
     ivec2 t = ivec2(gl_GlobalInvocationID.xy);

@@ -1,4 +1,5 @@
 #version 450 core
+#include "bindings.glsl"
 // JFA-L phase 2 (thesis §5.3.1, "Locating Occluders"): a shadow-map texel is a silhouette
 // pixel, and so a seed (stored as its texel's tag, mapSeedTag; its occluder is the surface the
 // texel sees), if one of its 8 neighbours sees nothing, or
@@ -9,7 +10,8 @@
 #include "occluder_edge.glsl"
 #include "jfa_seed_list.glsl"
 
-layout(binding = 0) uniform sampler2D uReceivers; // the map's receiver target (MapPositions)
+// the map's receiver target (MapPositions)
+layout(binding = FL_TEX_SILHOUETTE_RECEIVERS) uniform sampler2D uReceivers;
 uniform float uSilhouetteThreshold;
 uniform int uListSeeds; // append each seed to the band's seed list (jfa_seed_list.glsl)
 // With SILHOUETTE_REGION (--flood-region view): only the tiles of the seed region (one uint per
@@ -20,7 +22,7 @@ uniform int uListSeeds; // append each seed to the band's seed list (jfa_seed_li
 #ifdef SILHOUETTE_REGION
 uniform int uRegionTile;
 uniform int uRegionTilesX;
-layout(std430, binding = 7) readonly buffer SeedRegion { uint seedRegion[]; };
+layout(std430, binding = FL_SSBO_SEED_REGION) readonly buffer SeedRegion { uint seedRegion[]; };
 #endif
 
 layout(location = 0) out float oSeed; // packed: the seed's tag, 0 none (jfa_penumbra.glsl)

@@ -4,14 +4,16 @@
 // itself (not the value at the texel, which would make the penumbra blocky where the shadow map
 // is coarse); everything else is lit. Needs shadow_lookup.glsl. The map's cells are packed
 // (jfa_penumbra.glsl): the occluder comes back from the shadow map's receiver target.
+#include "bindings.glsl"
 #include "disk_light.glsl"
 #include "shadow_map_decode.glsl"
 #ifdef SOFT_PENUMBRA_BOTH
 #include "occluder_edge.glsl"
 #endif
 
-layout(binding = 3) uniform sampler2D uPenumbraMap;
-layout(binding = 4) uniform sampler2D uPenumbraReceivers; // MapPositions::bind
+layout(binding = FL_TEX_PENUMBRA_MAP) uniform sampler2D uPenumbraMap;
+// MapPositions::bind
+layout(binding = FL_TEX_PENUMBRA_RECEIVERS) uniform sampler2D uPenumbraReceivers;
 // --penumbra both (SOFT_PENUMBRA_BOTH): a hard-shadowed point sees the part of the disk past its
 // texel's occluder (the inner half, from 0 deep in the umbra to 0.5 at the hard edge); without it
 // (outer) 0 there, the thesis' lookup unchanged.
@@ -29,7 +31,8 @@ float penumbraMapVisibility(vec3 world, vec3 plane) {
 }
 #else
 uniform float uSilhouetteThreshold; // the silhouette pass's (occluderEdgePoint)
-layout(binding = 5) uniform sampler2D uPenumbraNormals; // SurfacesPass: normals (surfacePlane)
+// SurfacesPass: normals (surfacePlane)
+layout(binding = FL_TEX_PENUMBRA_NORMALS) uniform sampler2D uPenumbraNormals;
 
 // `plane`: the point's triangle normal, turned to the eye (surfacePlane). A hard-shadowed point
 // whose surface faces away from the light's centre, or whose ray to the occluder enters its own

@@ -1,4 +1,5 @@
 #version 450 core
+#include "bindings.glsl"
 // One half of widening a set of tiles by uReach tiles per axis (a square), along axis uAxis
 // (0: x, 1: y): a tile is set when a source tile within uReach along the axis is. Run along x,
 // then along y (fl::jfa::GlTileDilation; fl::jfa::viewRegion on the CPU): the view limit's
@@ -6,12 +7,12 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(std430, binding = 7) readonly buffer Source { uint source[]; };
-layout(std430, binding = 8) writeonly buffer Widened { uint widened[]; };
+layout(std430, binding = FL_SSBO_DILATE_IN) readonly buffer Source { uint source[]; };
+layout(std430, binding = FL_SSBO_DILATE_OUT) writeonly buffer Widened { uint widened[]; };
 // uSpans (0 to 2) span lists, two ints per row, each starting from (tiles, -1) or from spans of
 // before, widened to each row's first and last set tile (JFA-L draws them: tile_rows.vert.glsl).
-layout(std430, binding = 9) buffer RowSpans { int rowSpans[]; };
-layout(std430, binding = 10) buffer OwnSpans { int ownSpans[]; };
+layout(std430, binding = FL_SSBO_ROW_SPANS) buffer RowSpans { int rowSpans[]; };
+layout(std430, binding = FL_SSBO_OWN_SPANS) buffer OwnSpans { int ownSpans[]; };
 uniform int uSpans;
 uniform ivec2 uTiles;
 uniform int uReach;

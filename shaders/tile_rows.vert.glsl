@@ -1,10 +1,12 @@
 #version 450 core
+#include "bindings.glsl"
 // One quad per row of tiles, over the span from the row's first to its last tile in a set
 // (tile_dilate.comp.glsl writes the spans): draws a pass over (about) only that set. Instance
 // i is tile row i; 6 vertices per instance (two triangles); a row without tiles is a degenerate
 // quad.
 
-layout(std430, binding = 9) readonly buffer RowSpans { int rowSpans[]; }; // first, last per row
+// first, last per row
+layout(std430, binding = FL_SSBO_ROW_SPANS) readonly buffer RowSpans { int rowSpans[]; };
 uniform ivec2 uSize; // the target's texels
 uniform int uTile;
 

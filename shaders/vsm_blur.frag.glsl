@@ -1,8 +1,9 @@
 #version 450 core
+#include "bindings.glsl"
 // VSM step 2: one direction of the separable box blur of the moments (2r + 1 taps; edge texels
 // repeat). Averaging moments is what makes VSM's shadows soft: a blurred map holds the mean and
 // variance of the occluder depths around each texel.
-layout(binding = 0) uniform sampler2D uMoments;
+layout(binding = FL_TEX_VSM_BLUR_IN) uniform sampler2D uMoments;
 uniform ivec2 uDirection; // (1, 0) or (0, 1)
 uniform int uRadius;
 

@@ -1,12 +1,14 @@
 #version 450 core
+#include "bindings.glsl"
 // VSM step 3 (Donnelly & Lauritzen 2006): per pixel of the frame's surfaces, Chebyshev's upper
 // bound on the lit fraction from the blurred moments at its texel, with light-bleeding reduction
 // (Lauritzen 2007: the bound's tail below uBleed is cut and the rest rescaled).
 #include "shadow_lookup.glsl"
 #include "surface_decode.glsl"
 
-layout(binding = 0) uniform sampler2D uDepth; // SurfacesPass: positions (surfacePosition)
-layout(binding = 2) uniform sampler2D uMoments;  // blurred (d, d^2), bilinear
+// SurfacesPass: positions (surfacePosition)
+layout(binding = FL_TEX_SURFACES_DEPTH) uniform sampler2D uDepth;
+layout(binding = FL_TEX_VSM_MOMENTS) uniform sampler2D uMoments;  // blurred (d, d^2), bilinear
 uniform mat4 uLightView;
 uniform float uBleed;
 uniform float uMinVariance; // relative: variance floor (uMinVariance * d)^2

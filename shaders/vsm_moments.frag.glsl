@@ -1,7 +1,9 @@
 #version 450 core
+#include "bindings.glsl"
 // VSM step 1: the shadow map's depths as moments (d, d^2) of the light-view depth d (distance
 // along the light's axis, linear, so the blur averages depths and not their projective warp).
-layout(binding = 0) uniform sampler2D uDepth; // the shadow map through a non-comparing sampler
+// the shadow map through a non-comparing sampler
+layout(binding = FL_TEX_VSM_DEPTH) uniform sampler2D uDepth;
 uniform mat4 uInvLightProj;
 
 layout(location = 0) out vec2 oMoments;

@@ -22,19 +22,11 @@ namespace gl_stages {
 /// Corners per CornerCase value (CornerTexture::counts).
 using CornerCounts = std::array<std::int64_t, kCornerCaseCount>;
 
-/// Word indices of the result header (shaders/delaunay_common.glsl's kHead*, which must match).
-enum ResultHeader : std::size_t {
-    kHeadVertices = 0,
-    kHeadTriangles = 1,
-    kHeadStats = 2, // 4 words: TriangleStats in declaration order
-    kHeadPasses = 6,
-    kHeadReassignedLo = 7,
-    kHeadReassignedHi = 8,
-    kHeadConverged = 9,
-    kHeadUnfinished = 10,
-    kHeadCorners = 11, // kCornerCaseCount words
-    kHeaderWords = 32,
-};
+// The result header's and G3's loop state's word indices (kHead*, kHeaderWords, kCtl*): one
+// definition, shared with the kernels.
+using uint = std::uint32_t;
+#include "delaunay_result.glsl" // on the include path through floodlight_gpu (shaders/)
+
 static_assert(kHeadCorners + kCornerCaseCount <= kHeaderWords, "the header holds the counts");
 
 /// Where each part of the one result buffer lies (byte offsets, each aligned for binding as a

@@ -4,6 +4,8 @@
 // host needs lands in one result buffer (GlDiscreteDelaunayResult.cpp reads it).
 #include "GlDiscreteDelaunayDetail.h"
 
+#include <gpu/BindScope.h>
+
 #include <jfa/CpuKernel.h>
 #include <jfa/NearestSite.h>
 
@@ -19,7 +21,7 @@ constexpr GLuint kNoSiteValue = kNoSite;
 constexpr int kItemGroup = 64; // local size of the 1D kernels (sites, rows)
 constexpr int kTileSide = 8;   // local size of the 2D kernels (8 x 8 texels)
 constexpr GLsizeiptr kControlWords = 16;
-constexpr GLintptr kChangedOffset = 9 * sizeof(GLuint); // kCtlChanged
+constexpr GLintptr kChangedOffset = gl_stages::kCtlChanged * sizeof(GLuint);
 
 // Every later reader of a step's output: samplers, images, atomic counters, SSBOs, indirect
 // dispatches, pixel-pack copies and the host's map. One generous barrier per dispatch costs
@@ -68,27 +70,29 @@ void dispatchOne() {
     glMemoryBarrier(kAfterWrites);
 }
 
-// Leaves no program, texture, image or buffer binding behind a step (DESIGN: no global GL state
-// outside a pass).
-void unbindAll() {
+// Leaves no program or buffer target behind a step (DESIGN: no global GL state outside a pass);
+// the step's BindScope unbinds its textures, images and buffer binding points.
+void endStep() {
     glUseProgram(0);
-    for (GLuint unit = 0; unit < 3; ++unit) glBindTextureUnit(unit, 0);
-    for (GLuint unit = 0; unit < 2; ++unit)
-        glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
-    for (GLuint index = 0; index < 6; ++index) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, index, 0);
-    glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, 0, 0);
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
     glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
 }
 
-void bindImage(GLuint unit, const gl::Texture& texture, GLenum access) {
-    glBindImageTexture(unit, texture.id(), 0, GL_FALSE, 0, access, texture.format());
+void bindImage(gl::BindScope& scope, gl::ImageUnit unit, const gl::Texture& texture,
+               GLenum access) {
+    scope.image(unit, texture.id(), access, texture.format());
 }
 
 // Binds `bytes` at `offset` of `buffer` (a result part; never an empty range, a GL error).
-void bindPart(GLuint index, const gl::Buffer& buffer, std::size_t offset, std::size_t bytes) {
-    glBindBufferRange(GL_SHADER_STORAGE_BUFFER, index, buffer.id(), static_cast<GLintptr>(offset),
-                      static_cast<GLsizeiptr>(std::max<std::size_t>(bytes, sizeof(GLuint))));
+void bindPart(gl::BindScope& scope, gl::StorageBinding binding, const gl::Buffer& buffer,
+              std::size_t offset, std::size_t bytes) {
+    scope.storage(binding, buffer.id(), static_cast<GLintptr>(offset),
+                  static_cast<GLsizeiptr>(std::max<std::size_t>(bytes, sizeof(GLuint))));
+}
+
+// The result header, bound whole.
+void bindHeader(gl::BindScope& scope, const gl::Buffer& result) {
+    bindPart(scope, gl::bind::DelaunayHeader, result, 0, gl_stages::kHeaderWords * sizeof(GLuint));
 }
 
 std::size_t alignUp(std::size_t bytes, std::size_t alignment) {
@@ -178,17 +182,18 @@ void GlDiscreteDelaunay::Impl::claimPixels(std::size_t count) {
     glClearTexImage(seeds.id(), 0, GL_RGBA, GL_FLOAT, &empty);
     if (count == 0) return;
     glUseProgram(sitesProgram.id());
-    bindImage(0, owner, GL_READ_WRITE);
-    bindImage(1, seeds, GL_WRITE_ONLY);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, pixels.id());
-    bindPart(1, result, layout.keepers, count * sizeof(GLuint));
+    gl::BindScope scope;
+    bindImage(scope, gl::bind::DelaunayOwner, owner, GL_READ_WRITE);
+    bindImage(scope, gl::bind::DelaunaySeeds, seeds, GL_WRITE_ONLY);
+    scope.storage(gl::bind::DelaunayPixels, pixels.id());
+    bindPart(scope, gl::bind::DelaunayKeepers, result, layout.keepers, count * sizeof(GLuint));
     sitesProgram.set("uCount", static_cast<int>(count));
     // Two dispatches: every claim must land before any site reads its pixel's owner.
     for (int mode : {0, 1}) {
         sitesProgram.set("uMode", mode);
         dispatchItems(count);
     }
-    unbindAll();
+    endStep();
 }
 
 void GlDiscreteDelaunay::Impl::flood(const jfa::Plan& plan) {
@@ -196,11 +201,12 @@ void GlDiscreteDelaunay::Impl::flood(const jfa::Plan& plan) {
     // kernel's texel for texel.
     const gl::Texture& cells = floodKernel.run(plan, seeds, jfa::NearestSite{true});
     glUseProgram(idsProgram.id());
-    glBindTextureUnit(0, cells.id());
-    bindImage(0, voronoi, GL_WRITE_ONLY);
+    gl::BindScope scope;
+    scope.texture(gl::bind::DelaunayCells, cells.id());
+    bindImage(scope, gl::bind::DelaunayOut, voronoi, GL_WRITE_ONLY);
     idsProgram.set("uSize", glm::ivec2(width, height));
     dispatchTexels(width, height);
-    unbindAll();
+    endStep();
 }
 
 void GlDiscreteDelaunay::Impl::removeIslands(const gl::Texture& in, int bound) {
@@ -208,7 +214,8 @@ void GlDiscreteDelaunay::Impl::removeIslands(const gl::Texture& in, int bound) {
     const int cap = 2 * std::max(width, height);
     const int passes = std::clamp(bound, 1, cap);
     glUseProgram(controlProgram.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, control.id());
+    gl::BindScope scope;
+    scope.storage(gl::bind::DelaunayControl, control.id());
     controlProgram.set("uGroups", texelGroups(width, height));
     controlProgram.set("uCap", cap);
     controlProgram.set("uReset", 1);
@@ -216,43 +223,45 @@ void GlDiscreteDelaunay::Impl::removeIslands(const gl::Texture& in, int bound) {
     controlProgram.set("uReset", 0);
     islandsProgram.set("uSize", glm::ivec2(width, height));
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, control.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, pixels.id());
-    glBindBufferRange(GL_ATOMIC_COUNTER_BUFFER, 0, control.id(), kChangedOffset, sizeof(GLuint));
+    scope.storage(gl::bind::DelaunayPixels, pixels.id())
+        .counter(gl::bind::ChangedCounter, control.id(), kChangedOffset, sizeof(GLuint));
     const gl::Texture* src = &in;
     for (int pass = 0; pass < passes; ++pass) {
         // Ping-pong: a pass reads only the previous pass' texture, as on the CPU. Once the loop
         // has ended the control pass has set the dispatch to zero groups: queued, never run.
         const gl::Texture& dst = islands[pass % 2];
         glUseProgram(islandsProgram.id());
-        glBindTextureUnit(0, src->id());
-        bindImage(0, dst, GL_WRITE_ONLY);
+        scope.texture(gl::bind::DelaunayIslandsIn, src->id());
+        bindImage(scope, gl::bind::DelaunayOut, dst, GL_WRITE_ONLY);
         glDispatchComputeIndirect(0);
         glMemoryBarrier(kAfterWrites);
         glUseProgram(controlProgram.id());
         dispatchOne();
         src = &dst;
     }
-    unbindAll();
+    scope.release();
+    endStep();
     glUseProgram(resolveProgram.id());
-    glBindTextureUnit(0, in.id());
-    glBindTextureUnit(1, islands[0].id());
-    glBindTextureUnit(2, islands[1].id());
-    bindImage(0, cleaned, GL_WRITE_ONLY);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, control.id());
-    bindPart(1, result, 0, gl_stages::kHeaderWords * sizeof(GLuint));
+    scope.texture(gl::bind::DelaunayIslandsIn, in.id())
+        .texture(gl::bind::DelaunayPing, islands[0].id())
+        .texture(gl::bind::DelaunayPong, islands[1].id());
+    bindImage(scope, gl::bind::DelaunayOut, cleaned, GL_WRITE_ONLY);
+    scope.storage(gl::bind::DelaunayControl, control.id());
+    bindHeader(scope, result);
     resolveProgram.set("uSize", glm::ivec2(width, height));
     dispatchTexels(width, height);
-    unbindAll();
+    endStep();
 }
 
 void GlDiscreteDelaunay::Impl::classifyCorners(const gl::Texture& ids) {
     glUseProgram(cornersProgram.id());
-    glBindTextureUnit(0, ids.id());
-    bindImage(0, corners, GL_WRITE_ONLY);
-    bindPart(0, result, 0, gl_stages::kHeaderWords * sizeof(GLuint));
+    gl::BindScope scope;
+    scope.texture(gl::bind::DelaunayIds, ids.id());
+    bindImage(scope, gl::bind::DelaunayOut, corners, GL_WRITE_ONLY);
+    bindHeader(scope, result);
     cornersProgram.set("uSize", glm::ivec2(width, height));
     dispatchTexels(width, height);
-    unbindAll();
+    endStep();
 }
 
 const gl::Texture& GlDiscreteDelaunay::Impl::chainRows() {
@@ -265,20 +274,21 @@ const gl::Texture& GlDiscreteDelaunay::Impl::chainRows() {
     if (steps.empty()) steps.push_back(width);
     glUseProgram(chainProgram.id());
     chainProgram.set("uSize", glm::ivec2(width, height));
-    glBindTextureUnit(1, corners.id());
+    gl::BindScope scope;
+    scope.texture(gl::bind::DelaunayCorners, corners.id());
     int current = 1; // the first pass reads the corners; chain[1] is only bound, never read
     bool first = true;
     for (int step : steps) {
         const int dst = current ^ 1;
         chainProgram.set("uStep", step);
         chainProgram.set("uFromCorners", first ? 1 : 0);
-        glBindTextureUnit(0, chain[current].id());
-        bindImage(0, chain[dst], GL_WRITE_ONLY);
+        scope.texture(gl::bind::DelaunayChainIn, chain[current].id());
+        bindImage(scope, gl::bind::DelaunayOut, chain[dst], GL_WRITE_ONLY);
         dispatchTexels(width, height);
         current = dst;
         first = false;
     }
-    unbindAll();
+    endStep();
     return chain[current];
 }
 
@@ -288,15 +298,19 @@ void GlDiscreteDelaunay::Impl::buildTriangles(const gl::Texture& ids,
     if (rowCount <= 0 || width < 2) return;
     ensureBuffer(rows, std::size_t(rowCount) * 4 * sizeof(GLuint));
     glUseProgram(trianglesProgram.id());
-    glBindTextureUnit(0, ids.id());
-    glBindTextureUnit(1, corners.id());
-    glBindTextureUnit(2, chainTexture.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, pixels.id());
-    bindPart(1, result, 0, gl_stages::kHeaderWords * sizeof(GLuint));
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, rows.id());
-    bindPart(3, result, layout.vertices, 6 * layout.vertexCap * sizeof(GLuint));
-    bindPart(4, result, layout.triangles, 3 * layout.triangleCap * sizeof(GLuint));
-    bindPart(5, result, layout.triangleVertex, layout.triangleCap * sizeof(GLuint));
+    gl::BindScope scope;
+    scope.texture(gl::bind::DelaunayIds, ids.id())
+        .texture(gl::bind::DelaunayCorners, corners.id())
+        .texture(gl::bind::DelaunayChain, chainTexture.id())
+        .storage(gl::bind::DelaunayPixels, pixels.id());
+    bindHeader(scope, result);
+    scope.storage(gl::bind::DelaunayRows, rows.id());
+    bindPart(scope, gl::bind::DelaunayVertices, result, layout.vertices,
+             6 * layout.vertexCap * sizeof(GLuint));
+    bindPart(scope, gl::bind::DelaunayTriangles, result, layout.triangles,
+             3 * layout.triangleCap * sizeof(GLuint));
+    bindPart(scope, gl::bind::DelaunayTriangleVertex, result, layout.triangleVertex,
+             layout.triangleCap * sizeof(GLuint));
     trianglesProgram.set("uSize", glm::ivec2(width, height));
     trianglesProgram.set("uVertexCapacity", static_cast<int>(layout.vertexCap));
     trianglesProgram.set("uTriangleCapacity", static_cast<int>(layout.triangleCap));
@@ -309,7 +323,7 @@ void GlDiscreteDelaunay::Impl::buildTriangles(const gl::Texture& ids,
     glUseProgram(trianglesProgram.id());
     trianglesProgram.set("uMode", 1);
     dispatchItems(std::size_t(rowCount));
-    unbindAll();
+    endStep();
 }
 
 void GlDiscreteDelaunay::Impl::packCleaned() {
@@ -324,7 +338,7 @@ void GlDiscreteDelaunay::Impl::packCleaned() {
                       reinterpret_cast<void*>(static_cast<std::uintptr_t>(layout.cleaned)));
     glPixelStorei(GL_PACK_ALIGNMENT, alignment);
     glMemoryBarrier(kAfterWrites);
-    unbindAll();
+    endStep();
 }
 
 } // namespace fl::geom

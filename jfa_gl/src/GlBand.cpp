@@ -100,10 +100,10 @@ void GlFloodKernelBase::measureReach(const gl::Texture& seeds) {
     // A producer that listed the seeds as it wrote them (beginSeedList) saves the sweep.
     const bool listed = listedSeeds_ == seeds.id();
     listedSeeds_ = 0;
-    if (!listed) beginSeedList(seeds.width(), seeds.height());
+    gl::BindScope scope;
+    if (!listed) beginSeedList(scope, seeds.width(), seeds.height());
     seedsProgram_.set("uSize", glm::ivec2(seeds.width(), seeds.height()));
-    glBindTextureUnit(1, seeds.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, seedList_.id());
+    scope.texture(gl::bind::FloodSeeds, seeds.id()).storage(gl::bind::SeedList, seedList_.id());
     glUseProgram(seedsProgram_.id());
     if (!listed) {
         seedsProgram_.set("uMode", 0);
@@ -117,33 +117,28 @@ void GlFloodKernelBase::measureReach(const gl::Texture& seeds) {
     reachProgram_.set("uSize", glm::ivec2(seeds.width(), seeds.height()));
     reachProgram_.set("uTile", tile_);
     reachProgram_.set("uTilesX", tilesX);
-    glBindTextureUnit(1, seeds.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, tileReach_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, maxReach_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, front_.id());
+    scope.storage(gl::bind::BandTileRects, tileReach_.id())
+        .storage(gl::bind::BandMaxReach, maxReach_.id())
+        .storage(gl::bind::FloodFront, front_.id());
     glUseProgram(reachProgram_.id());
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, seedList_.id());
     glDispatchComputeIndirect(sizeof(GLuint)); // SeedList::dispatch
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, 0);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, 0);
     glUseProgram(0);
-    glBindTextureUnit(1, 0);
     measuredSeeds_ = seeds.id();
 }
 
-void GlFloodKernelBase::beginSeedList(int width, int height) {
+void GlFloodKernelBase::beginSeedList(gl::BindScope& scope, int width, int height) {
     ensureBuffer(seedList_, 4 + std::size_t(width) * std::size_t(height));
     const GLuint zero = 0;
     glClearNamedBufferSubData(seedList_.id(), GL_R32UI, 0, sizeof(GLuint), GL_RED_INTEGER,
                               GL_UNSIGNED_INT, &zero);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, seedList_.id());
+    scope.storage(gl::bind::SeedList, seedList_.id());
     listedSeeds_ = 0;
 }
 
 void GlFloodKernelBase::seedsListed(const gl::Texture& seeds) {
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, 0);
     listedSeeds_ = seeds.id();
 }
 
@@ -167,8 +162,9 @@ bool GlFloodKernelBase::buildBand(const Plan& plan, const gl::Texture& seeds) {
     markProgram_.set("uTiles", tiles);
     markProgram_.set("uTile", tile_);
     markProgram_.set("uPlanReach", int(std::min(planReach, kMaxShaderReach)));
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, tileReach_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, flags_.id());
+    gl::BindScope scope;
+    scope.storage(gl::bind::BandTileRects, tileReach_.id())
+        .storage(gl::bind::BandFlags, flags_.id());
     glUseProgram(markProgram_.id());
     glDispatchCompute(groups(tiles.x), groups(tiles.y), 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
@@ -181,12 +177,12 @@ bool GlFloodKernelBase::buildBand(const Plan& plan, const gl::Texture& seeds) {
         ensureBuffer(viewNear_, std::size_t(tiles.x) * std::size_t(tiles.y));
         dilation_->run(*viewTiles_, viewNear_, tiles, reach);
         viewProgram_.set("uTiles", tiles);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, flags_.id());
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, viewNear_.id());
+        // In the step's scope: the dilation above unbound only its own points.
+        scope.storage(gl::bind::BandFlags, flags_.id())
+            .storage(gl::bind::BandNearView, viewNear_.id());
         glUseProgram(viewProgram_.id());
         glDispatchCompute(groups(tiles.x), groups(tiles.y), 1);
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, 0);
     }
     // Step C: per stage, the tiles holding a band texel's grid point, and the commands.
     const std::vector<Stage>& stages = plan.stages();
@@ -213,14 +209,13 @@ bool GlFloodKernelBase::buildBand(const Plan& plan, const gl::Texture& seeds) {
         compactProgram_.set("uStageTiles", stageTiles);
         compactProgram_.set("uStageSize", size);
         compactProgram_.set("uScale", stageScale(plan, s));
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, band.tiles.id());
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, band.commands.id());
+        scope.storage(gl::bind::BandTiles, band.tiles.id())
+            .storage(gl::bind::BandCommands, band.commands.id());
         glUseProgram(compactProgram_.id());
         glDispatchCompute(groups(stageTiles.x), groups(stageTiles.y), 1);
     }
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
     glUseProgram(0);
-    for (GLuint i = 1; i <= 5; ++i) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, i, 0);
     bandStages_ = static_cast<int>(stages.size());
     bandArea_ = double(w) * double(h);
     return true;
@@ -245,15 +240,15 @@ void GlFloodKernelBase::startFront(glm::ivec2 size) {
 void GlFloodKernelBase::listFront(int step) {
     restartList(frontList_, frontTiles_, false);
     frontProgram_.set("uStep", step);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, flags_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, frontList_.tiles.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, frontList_.commands.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, front_.id());
+    gl::BindScope scope;
+    scope.storage(gl::bind::BandFlags, flags_.id())
+        .storage(gl::bind::BandTiles, frontList_.tiles.id())
+        .storage(gl::bind::BandCommands, frontList_.commands.id())
+        .storage(gl::bind::FloodFront, front_.id());
     glUseProgram(frontProgram_.id());
     glDispatchCompute(groups(frontTiles_.x), groups(frontTiles_.y), 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
     glUseProgram(0);
-    for (GLuint i : {3u, 5u}) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, i, 0);
 }
 
 void GlFloodKernelBase::emptyTexture(Pair& pair, int i, int stage) {
@@ -261,15 +256,15 @@ void GlFloodKernelBase::emptyTexture(Pair& pair, int i, int stage) {
     if (pair.dirt[i] == stage && stageBands_[stage].commands) {
         clearProgram_.set("uSize", glm::ivec2(t.width(), t.height()));
         clearProgram_.set("uTile", tile_);
-        glBindImageTexture(0, t.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, cellFormat_);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, stageBands_[stage].tiles.id());
+        gl::BindScope scope;
+        scope.image(gl::bind::FloodOut, t.id(), GL_WRITE_ONLY, cellFormat_)
+            .storage(gl::bind::BandTiles, stageBands_[stage].tiles.id());
         glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, stageBands_[stage].commands.id());
         glUseProgram(clearProgram_.id());
         glDispatchComputeIndirect(0);
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
                         GL_SHADER_STORAGE_BARRIER_BIT);
         glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
-        glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, cellFormat_);
         glUseProgram(0);
     } else if (pair.dirt[i] != kDirtClean) {
         const std::array<float, 4> empty{0.0f, 0.0f, -1.0f, 0.0f}; // kEmptyCell
@@ -289,20 +284,20 @@ void GlTileDilation::run(const gl::Buffer& in, const gl::Buffer& out, glm::ivec2
     glUseProgram(program_.id());
     program_.set("uTiles", tiles);
     program_.set("uReach", reach);
-    GLuint binding = 9;
-    for (const gl::Buffer* spans : spanLists)
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding++, spans->id());
+    gl::BindScope scope;
+    const gl::StorageBinding spanBindings[] = {gl::bind::RowSpans, gl::bind::OwnSpans};
+    const gl::StorageBinding* binding = spanBindings;
+    for (const gl::Buffer* spans : spanLists) scope.storage(*binding++, spans->id());
     const std::pair<const gl::Buffer*, const gl::Buffer*> halves[] = {{&in, &rows_},
                                                                       {&rows_, &out}};
     for (int axis = 0; axis < 2; ++axis) {
         program_.set("uAxis", axis);
         program_.set("uSpans", axis == 1 ? int(spanLists.size()) : 0);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, halves[axis].first->id());
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, halves[axis].second->id());
+        scope.storage(gl::bind::DilateIn, halves[axis].first->id())
+            .storage(gl::bind::DilateOut, halves[axis].second->id());
         glDispatchCompute(groups(tiles.x), groups(tiles.y), 1);
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     }
-    for (GLuint b = 7; b <= 10; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, 0);
     glUseProgram(0);
 }
 

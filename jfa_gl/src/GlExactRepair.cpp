@@ -2,6 +2,8 @@
 
 #include <jfa_gl/GlKernel.h>
 
+#include <gpu/BindScope.h>
+
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -39,20 +41,19 @@ const gl::Texture& GlExactRepair::run(const gl::Texture& flooded) {
     if (out_.width() != flooded.width() || out_.height() != flooded.height())
         out_ = gl::Texture(GL_RGBA32F, flooded.width(), flooded.height());
     glUseProgram(program_.id());
-    setCriterionUniforms(program_, NearestSite{true});
+    gl::BindScope scope;
+    setCriterionUniforms(scope, program_, NearestSite{true});
     program_.set("uSize", glm::ivec2(flooded.width(), flooded.height()));
     program_.set("uVertexCount", int(vertexCount_));
-    glBindTextureUnit(0, flooded.id());
-    glBindImageTexture(0, out_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, vertices_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, offsets_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, neighbours_.id());
+    scope.texture(gl::bind::Flooded, flooded.id())
+        .image(gl::bind::RepairOut, out_.id(), GL_WRITE_ONLY, GL_RGBA32F)
+        .storage(gl::bind::RepairVertices, vertices_.id())
+        .storage(gl::bind::RepairOffsets, offsets_.id())
+        .storage(gl::bind::RepairNeighbours, neighbours_.id());
     glDispatchCompute(GLuint((flooded.width() + 7) / 8), GLuint((flooded.height() + 7) / 8), 1);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
                     GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    for (GLuint b = 0; b < 3; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, 0);
-    glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    glBindTextureUnit(0, 0);
+    scope.release(); // before the error check, so that it covers the unbinding too
     glUseProgram(0);
     gl::throwIfErrors("jfa exact repair");
     return out_;

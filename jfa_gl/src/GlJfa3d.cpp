@@ -1,5 +1,7 @@
 #include <jfa_gl/GlJfa3d.h>
 
+#include <gpu/BindScope.h>
+
 #include <base/Text.h>
 
 #include <stdexcept>
@@ -85,15 +87,16 @@ void GlJfa3d::run(const Plan& plan, Flood3dShape shape) {
     program_.set("uSlices", shape == Flood3dShape::Slices ? 1 : 0);
     glProgramUniform3i(program_.id(), program_.location("uSize"), extent_.width, extent_.height,
                        extent_.depth);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, sites_.id());
+    gl::BindScope scope;
+    scope.storage(gl::bind::Flood3dSites, sites_.id());
     const gl::Texture3D* src = &seeds_;
     int next = 0;
     for (int step : plan.stages().front().steps) {
         const gl::Texture3D* dst = &ping_[next];
         next ^= 1;
         program_.set("uStep", step);
-        glBindImageTexture(0, src->id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32I);
-        glBindImageTexture(1, dst->id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32I);
+        scope.image(gl::bind::Flood3dIn, src->id(), GL_READ_ONLY, GL_R32I, 0, GL_TRUE)
+            .image(gl::bind::Flood3dOut, dst->id(), GL_WRITE_ONLY, GL_R32I, 0, GL_TRUE);
         glDispatchCompute(groups3d(extent_.width), groups3d(extent_.height),
                           groups3d(extent_.depth));
         // The next pass reads what this one stored.
@@ -101,9 +104,7 @@ void GlJfa3d::run(const Plan& plan, Flood3dShape shape) {
         src = dst;
     }
     glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT); // for read()
-    glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32I);
-    glBindImageTexture(1, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32I);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
+    scope.release();
     glUseProgram(0);
     result_ = src;
     gl::throwIfErrors("3D flood passes");

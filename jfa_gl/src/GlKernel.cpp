@@ -16,7 +16,9 @@ const char* kernelName(GlKernelKind kind) {
     return kind == GlKernelKind::Fragment ? "fragment" : "compute";
 }
 
-void setCriterionUniforms(const gl::Program& program, const NearestSite& criterion) {
+// NearestSite binds no textures: the scope stays empty.
+void setCriterionUniforms(gl::BindScope& /*scope*/, const gl::Program& program,
+                          const NearestSite& criterion) {
     program.set("uJfaIntegerSites", criterion.integerSites ? 1 : 0);
 }
 
@@ -118,20 +120,21 @@ void GlFloodKernelBase::dispatch(const gl::Texture& src, const gl::Texture& seed
     p.set("uScale", scale);
     p.set("uMode", static_cast<int>(what));
     p.set("uCountChanges", countChanges ? 1 : 0);
-    glBindTextureUnit(0, src.id());
-    glBindTextureUnit(1, seeds.id());
-    glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, 0, changedCounter_.id());
+    gl::BindScope scope;
+    scope.texture(gl::bind::FloodIn, src.id())
+        .texture(gl::bind::FloodSeeds, seeds.id())
+        .counter(gl::bind::ChangedCounter, changedCounter_.id());
     if (banded) {
-        // The flood's front: of the band, the tiles this pass may change (listFront binds the
-        // list at 4 and the flags at 8, which the pass extends).
+        // The flood's front: of the band, the tiles this pass may change (listFront lists
+        // them; the pass binds that list and the front's flags, which it extends).
         const bool front = frontRun_ && what == GlDispatch::Pass;
         if (front) listFront(step);
         p.set("uTile", tile_);
         p.set("uFront", front ? 1 : 0);
         p.set("uTilesX", (dst.width() + tile_ - 1) / tile_);
         const StageBandList& band = front ? frontList_ : stageBands_[bandStage];
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, band.tiles.id());
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, front ? front_.id() : 0);
+        scope.storage(gl::bind::BandTiles, band.tiles.id())
+            .storage(gl::bind::FloodFront, front ? front_.id() : 0);
         glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, band.commands.id());
     }
     glUseProgram(p.id());
@@ -139,7 +142,7 @@ void GlFloodKernelBase::dispatch(const gl::Texture& src, const gl::Texture& seed
     // kernel's kind: on llvmpipe the fragment kernel's instanced tile quads cost twice as much
     // per pass on a small band (docs/BENCHMARKS.md, jfa_bench "flood:15 ... band").
     if (kind_ == GlKernelKind::Compute || banded) {
-        glBindImageTexture(0, dst.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, cellFormat_);
+        scope.image(gl::bind::FloodOut, dst.id(), GL_WRITE_ONLY, cellFormat_);
         if (banded)
             glDispatchComputeIndirect(0);
         else
@@ -147,7 +150,6 @@ void GlFloodKernelBase::dispatch(const gl::Texture& src, const gl::Texture& seed
                               static_cast<GLuint>((dst.height() + 7) / 8), 1);
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_ATOMIC_COUNTER_BARRIER_BIT |
                         GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
-        glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, cellFormat_);
     } else {
         const Pair& pair = pairs_.at({dst.width(), dst.height()});
         const gl::Framebuffer& fbo = &dst == &pair.tex[0] ? pair.fbo[0] : pair.fbo[1];
@@ -163,13 +165,7 @@ void GlFloodKernelBase::dispatch(const gl::Texture& src, const gl::Texture& seed
     }
     noteWritten(dst, banded ? bandStage : -1);
     glUseProgram(0);
-    glBindTextureUnit(0, 0);
-    glBindTextureUnit(1, 0);
-    if (banded) {
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, 0);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, 0);
-        glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
-    }
+    if (banded) glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
 }
 
 const gl::Texture& GlFloodKernelBase::runPlan(const Plan& plan, const gl::Texture& seeds,

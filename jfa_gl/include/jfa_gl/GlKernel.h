@@ -14,6 +14,7 @@
 #include <jfa/NearestSite.h>
 #include <jfa/Plan.h>
 
+#include <gpu/BindScope.h>
 #include <gpu/Gl.h>
 #include <gpu/PassTimer.h>
 #include <gpu/Program.h>
@@ -31,8 +32,10 @@ enum class GlKernelKind { Fragment, Compute };
 /// "fragment" or "compute".
 const char* kernelName(GlKernelKind kind);
 
-/// Sets a criterion's uniforms on a kernel program; one overload per criterion.
-void setCriterionUniforms(const gl::Program& program, const NearestSite& criterion);
+/// Sets a criterion's uniforms on a kernel program and binds its textures in `scope`, which
+/// the kernel holds for the run; one overload per criterion.
+void setCriterionUniforms(gl::BindScope& scope, const gl::Program& program,
+                          const NearestSite& criterion);
 
 /// Uploads a grid as an RGBA32F texture (row y of the grid = texel row y).
 gl::Texture uploadGrid(const Grid& grid);
@@ -100,11 +103,12 @@ class GlFloodKernelBase {
     /// reaches every texel and the criterion bounds nothing (nothing to save; callers say so).
     [[nodiscard]] bool lastRunBanded() const { return lastRunBanded_; }
     /// For a pass that writes the seeds texture over the whole grid (width x height): binds the
-    /// band's seed list, emptied, at binding 6 (shaders/jfa_seed_list.glsl), for the pass to
-    /// append every seed it writes with jfaListSeed. Then seedsListed() says which texture the
-    /// list describes, and step A0 does not sweep that grid again. Optional.
-    void beginSeedList(int width, int height);
-    /// The list begun by beginSeedList() holds exactly the seeds of `seeds` (unbinds it).
+    /// band's seed list, emptied, at gl::bind::SeedList (shaders/jfa_seed_list.glsl) in the
+    /// pass' `scope`, for the pass to append every seed it writes with jfaListSeed. Then
+    /// seedsListed() says which texture the list describes, and step A0 does not sweep that
+    /// grid again. Optional.
+    void beginSeedList(gl::BindScope& scope, int width, int height);
+    /// The list begun by beginSeedList() holds exactly the seeds of `seeds`.
     void seedsListed(const gl::Texture& seeds);
 
     /// Share of the full-resolution grid the last run's passes computed: 1 after a full run.
@@ -263,7 +267,9 @@ class GlFloodKernel : public GlFloodKernelBase {
     /// back; the next run() on the same seeds reuses the step, unless `keep` is false (the count
     /// was measured under another criterion than the flood's: prepareBand / run measure again).
     long long maxSeedReach(const gl::Texture& seeds, const C& criterion, bool keep = true) {
-        for (const gl::Program* p : criterionPrograms(true)) setCriterionUniforms(*p, criterion);
+        gl::BindScope scope;
+        for (const gl::Program* p : criterionPrograms(true))
+            setCriterionUniforms(scope, *p, criterion);
         measureReach(seeds);
         const long long reach = readMaxReach();
         if (!keep) forgetReach();
@@ -273,8 +279,9 @@ class GlFloodKernel : public GlFloodKernelBase {
     /// Builds the band for `plan` on `seeds` now (steps A-C, no read-back), so that it can be
     /// timed apart from the passes; the next run() with the same seeds uses it. Optional.
     void prepareBand(const Plan& plan, const gl::Texture& seeds, const C& criterion) {
+        gl::BindScope scope;
         for (const gl::Program* p : criterionPrograms(banded(region())))
-            setCriterionUniforms(*p, criterion);
+            setCriterionUniforms(scope, *p, criterion);
         prepare(plan, seeds);
     }
 
@@ -283,8 +290,9 @@ class GlFloodKernel : public GlFloodKernelBase {
     /// is given, each pass is timed as "jfa step K", K the jump length (and "downsample").
     const gl::Texture& run(const Plan& plan, const gl::Texture& seeds, const C& criterion,
                            gl::PassTimer* timer = nullptr, const PassCallback& callback = {}) {
+        gl::BindScope scope;
         for (const gl::Program* p : criterionPrograms(banded(region())))
-            setCriterionUniforms(*p, criterion);
+            setCriterionUniforms(scope, *p, criterion);
         return runPlan(plan, seeds, timer, callback);
     }
 

@@ -31,10 +31,7 @@ class EyeFloodSpace final : public FloodSpace {
         c.objectIdFix = f.objectIdFix;
         c.midpointFix = f.midpointFix;
         c.cells = f.eyeCells;
-        const gl::Texture& out = kernel_->run(plan, *f.seeds, c);
-        unbindEyeCells();
-        unbindPenumbraReach();
-        return out;
+        return kernel_->run(plan, *f.seeds, c);
     }
     [[nodiscard]] const gl::Texture& unpackSource(const FloodFrame& f) const override {
         return f.eyeCells->decoded().second; // phase 2's occluders

@@ -39,19 +39,22 @@ const gl::Texture& LightLookup::execute(const FrameInputs& in, const gl::Texture
     glViewport(0, 0, in.width(), in.height());
     glDisable(GL_DEPTH_TEST);
     const gl::Program& program = penumbra_ && bothSides ? bothProgram_ : program_;
-    bindShadowMap(program, in.shadow);
-    in.surfaces.positions().bind(program, 2);
+    gl::BindScope scope;
+    bindShadowMap(scope, program, in.shadow);
+    in.surfaces.positions().bind(scope, program, gl::bind::PenumbraSurfacesDepth);
     if (penumbra_) {
         setDiskLightUniforms(program, in.disk);
-        glBindTextureUnit(3, penumbraMap->id());
-        in.shadow.receivers->bind(program, 4); // the packed cells' occluders
+        scope.texture(gl::bind::PenumbraMap, penumbraMap->id());
+        // the packed cells' occluders
+        in.shadow.receivers->bind(scope, program, gl::bind::PenumbraReceivers);
     }
     if (penumbra_ && bothSides) {
         program.set("uSilhouetteThreshold", silhouetteThreshold(in.sceneBounds.radius()));
-        glBindTextureUnit(5, in.surfaces.normals.id()); // surfacePlane (hard-shadowed points)
+        // surfacePlane (hard-shadowed points)
+        scope.texture(gl::bind::PenumbraNormals, in.surfaces.normals.id());
     }
     gl::drawFullscreenTriangle(program, emptyVao_);
-    for (GLuint unit : {0u, 1u, 2u, 3u, 4u, 5u}) glBindTextureUnit(unit, 0);
+    scope.release();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return visibility_;
 }

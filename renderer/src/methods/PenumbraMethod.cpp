@@ -40,10 +40,7 @@ class LightFloodSpace final : public FloodSpace {
         kernel_->setRegion(f.region, f.kernel ? f.kernel->bandTile() : jfa::kDefaultBandTile);
         c.light = light;
         c.map = *f.map;
-        const gl::Texture& out = kernel_->run(plan, *f.seeds, c);
-        glBindTextureUnit(2, 0);
-        unbindPenumbraReach();
-        return out;
+        return kernel_->run(plan, *f.seeds, c);
     }
     [[nodiscard]] const gl::Texture& unpackSource(const FloodFrame& f) const override {
         if (f.map == nullptr)

@@ -56,10 +56,12 @@ class Vsm final : public ShadowMethod {
         glBindFramebuffer(GL_FRAMEBUFFER, fbo_[0].id());
         glViewport(0, 0, size, size);
         moments_.set("uInvLightProj", glm::inverse(in.lightVolume.proj));
-        glBindTextureUnit(0, in.shadow.depth.id());
-        glBindSampler(0, rawDepth_.id());
-        gl::drawFullscreenTriangle(moments_, emptyVao_);
-        glBindSampler(0, 0);
+        {
+            gl::BindScope scope;
+            scope.texture(gl::bind::VsmDepth, in.shadow.depth.id())
+                .sampler(gl::bind::VsmDepth, rawDepth_.id());
+            gl::drawFullscreenTriangle(moments_, emptyVao_);
+        }
         if (in.timer) in.timer->wrote(gl::textureBytes(maps_[0]));
         if (in.timer) in.timer->end();
 
@@ -68,14 +70,14 @@ class Vsm final : public ShadowMethod {
         const int radius = blurRadius(in);
         if (radius > 0) {
             blur_.set("uRadius", radius);
+            gl::BindScope scope;
             for (int pass = 0; pass < 2; ++pass) {
                 glBindFramebuffer(GL_FRAMEBUFFER, fbo_[1 - pass].id());
                 blur_.set("uDirection", pass == 0 ? glm::ivec2(1, 0) : glm::ivec2(0, 1));
-                glBindTextureUnit(0, maps_[pass].id());
+                scope.texture(gl::bind::VsmBlurIn, maps_[pass].id());
                 gl::drawFullscreenTriangle(blur_, emptyVao_);
             }
         }
-        glBindTextureUnit(0, 0);
         if (in.timer && radius > 0)
             in.timer->wrote(gl::textureBytes(maps_[0]) + gl::textureBytes(maps_[1]));
         if (in.timer) in.timer->end();
@@ -84,14 +86,15 @@ class Vsm final : public ShadowMethod {
         if (in.timer) in.timer->begin("vsm lookup");
         glBindFramebuffer(GL_FRAMEBUFFER, visibilityFbo_.id());
         glViewport(0, 0, in.width(), in.height());
-        bindShadowMap(lookup_, in.shadow);
+        gl::BindScope scope;
+        bindShadowMap(scope, lookup_, in.shadow);
         lookup_.set("uLightView", in.lightVolume.view);
         lookup_.set("uBleed", in.options<VsmOptions>().bleed);
         lookup_.set("uMinVariance", kMinVariance);
-        in.surfaces.positions().bind(lookup_, 0);
-        glBindTextureUnit(2, maps_[0].id());
+        in.surfaces.positions().bind(scope, lookup_, gl::bind::SurfacesDepth);
+        scope.texture(gl::bind::VsmMoments, maps_[0].id());
         gl::drawFullscreenTriangle(lookup_, emptyVao_);
-        for (GLuint unit : {0u, 1u, 2u}) glBindTextureUnit(unit, 0);
+        scope.release();
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         if (in.timer) in.timer->wrote(gl::textureBytes(visibility_));
         if (in.timer) in.timer->end();

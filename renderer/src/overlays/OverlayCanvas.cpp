@@ -89,17 +89,16 @@ void OverlayCanvas::drawGrid(const GridDraw& g, glm::ivec4 viewport) const {
     if (g.light != nullptr) setDiskLightUniforms(grid_, *g.light);
     const std::array<const gl::Texture*, 3> units{g.a, g.b != nullptr ? g.b : g.a,
                                                   g.c != nullptr ? g.c : nullptr};
-    for (GLuint u = 0; u < 3; ++u) {
-        glBindTextureUnit(u, units[u] != nullptr ? units[u]->id() : 0);
-        glBindSampler(u, nearest_.id());
+    const std::array<gl::TextureUnit, 3> channels{gl::bind::OverlayA, gl::bind::OverlayB,
+                                                  gl::bind::OverlayC};
+    gl::BindScope scope;
+    for (std::size_t u = 0; u < 3; ++u) {
+        scope.texture(channels[u], units[u] != nullptr ? units[u]->id() : 0)
+            .sampler(channels[u], nearest_.id());
     }
     glUseProgram(grid_.id());
     glBindVertexArray(emptyVao_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    for (GLuint u = 0; u < 3; ++u) {
-        glBindTextureUnit(u, 0);
-        glBindSampler(u, 0);
-    }
 }
 
 void OverlayCanvas::drawVertices(std::span<const Vertex> vertices, GLenum primitive,

@@ -43,7 +43,6 @@ void ShadingPass::drawBlended(const Inputs& in) {
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
     glDisable(GL_DEPTH_TEST);
-    glBindTextureUnit(0, 0);
 }
 
 ShadingPass::Outputs ShadingPass::execute(const Inputs& in) {
@@ -54,12 +53,14 @@ ShadingPass::Outputs ShadingPass::execute(const Inputs& in) {
     program_.set("uLightDirection", in.light.direction);
     program_.set("uLightDirectional", in.light.type == Light::Type::Directional ? 1 : 0);
     program_.set("uLightColor", in.light.color);
-    in.surfaces.positions().bind(program_, 0);
-    glBindTextureUnit(1, in.surfaces.normals.id());
-    glBindTextureUnit(2, in.surfaces.baseColor.id());
-    glBindTextureUnit(3, in.visibility.id());
-    gl::drawFullscreenTriangle(program_, emptyVao_);
-    for (GLuint unit : {0u, 1u, 2u, 3u}) glBindTextureUnit(unit, 0);
+    {
+        gl::BindScope scope;
+        in.surfaces.positions().bind(scope, program_, gl::bind::SurfacesDepth);
+        scope.texture(gl::bind::SurfacesNormals, in.surfaces.normals.id())
+            .texture(gl::bind::SurfacesBaseColor, in.surfaces.baseColor.id())
+            .texture(gl::bind::Visibility, in.visibility.id());
+        gl::drawFullscreenTriangle(program_, emptyVao_);
+    }
     if (in.scene.hasBlended()) drawBlended(in);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return {color_};
@@ -74,9 +75,9 @@ void PresentPass::execute(const gl::Texture& color, int framebufferWidth, int fr
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, framebufferWidth, framebufferHeight);
     glDisable(GL_DEPTH_TEST);
-    glBindTextureUnit(0, color.id());
+    gl::BindScope scope;
+    scope.texture(gl::bind::PresentColor, color.id());
     gl::drawFullscreenTriangle(program_, emptyVao_);
-    glBindTextureUnit(0, 0);
 }
 
 } // namespace fl

@@ -42,14 +42,15 @@ ShadowDiagnosticsPass::Outputs ShadowDiagnosticsPass::execute(const Inputs& in) 
     program_.set("uLightPosition", in.light.position);
     program_.set("uLightDirection", in.light.direction);
     program_.set("uLightDirectional", in.light.type == Light::Type::Directional ? 1 : 0);
-    bindShadowMap(program_, in.shadow);
-    glBindTextureUnit(2, previousMap_.id());
-    in.surfaces.positions().bind(program_, 3);
-    glBindTextureUnit(4, in.surfaces.normals.id());
+    gl::BindScope scope;
+    bindShadowMap(scope, program_, in.shadow);
+    scope.texture(gl::bind::PreviousShadowMap, previousMap_.id());
+    in.surfaces.positions().bind(scope, program_, gl::bind::DiagnosticsSurfacesDepth);
+    scope.texture(gl::bind::DiagnosticsSurfacesNormals, in.surfaces.normals.id());
     program_.set("uInvViewProj", glm::inverse(in.camera.proj * in.camera.view));
     program_.set("uViewportSize", glm::vec2(output_.width(), output_.height()));
     gl::drawFullscreenTriangle(program_, emptyVao_);
-    for (GLuint unit : {1u, 2u, 3u, 4u}) glBindTextureUnit(unit, 0);
+    scope.release();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 
     glCopyImageSubData(in.shadow.depth.id(), GL_TEXTURE_2D, 0, 0, 0, 0, previousMap_.id(),

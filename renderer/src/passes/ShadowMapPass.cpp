@@ -47,8 +47,9 @@ std::optional<ShadowMapProvider> parseProvider(std::string_view name) {
     return std::nullopt;
 }
 
-void MapPositions::bind(const gl::Program& program, GLuint unit) const {
-    glBindTextureUnit(unit, depth->id());
+void MapPositions::bind(gl::BindScope& scope, const gl::Program& program,
+                        gl::TextureUnit unit) const {
+    scope.texture(unit, depth->id());
     program.set("uMapUnwarp", unwarp);
     program.set("uMapInverseLightViewProj", inverseLightViewProj);
 }
@@ -162,19 +163,20 @@ const gl::Texture& ShadowMapPass::decodedReceivers() const {
     const int n = positions_.size();
     if (!decoded_ || decoded_.width() != n) decoded_ = gl::Texture(GL_RGBA32F, n, n);
     glUseProgram(decodeProgram_.id());
-    positions_.bind(decodeProgram_, 0);
-    glBindImageTexture(0, decoded_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    gl::BindScope scope;
+    positions_.bind(scope, decodeProgram_, gl::bind::MapReceiverDepth);
+    scope.image(gl::bind::MapPositions, decoded_.id(), GL_WRITE_ONLY, GL_RGBA32F);
     glDispatchCompute(GLuint((n + 7) / 8), GLuint((n + 7) / 8), 1);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
                     GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    glBindTextureUnit(0, 0);
+    scope.release();
     glUseProgram(0);
     return decoded_;
 }
 
-void bindShadowMap(const gl::Program& program, const ShadowMapPass::Outputs& shadow) {
-    glBindTextureUnit(1, shadow.depth.id());
+void bindShadowMap(gl::BindScope& scope, const gl::Program& program,
+                   const ShadowMapPass::Outputs& shadow) {
+    scope.texture(gl::bind::ShadowMap, shadow.depth.id());
     program.set("uLightViewProj", shadow.lightViewProj);
     program.set("uShadowWarp", shadow.warp);
 }

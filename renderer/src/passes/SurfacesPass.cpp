@@ -16,8 +16,9 @@ gl::Program buildProgram(const gl::ShaderLibrary& shaders, bool motion) {
 }
 } // namespace
 
-void SurfacePositions::bind(const gl::Program& program, GLuint unit) const {
-    glBindTextureUnit(unit, depth.id());
+void SurfacePositions::bind(gl::BindScope& scope, const gl::Program& program,
+                            gl::TextureUnit unit) const {
+    scope.texture(unit, depth.id());
     program.set("uSurfaceInverseViewProj", inverseViewProj);
 }
 
@@ -121,7 +122,6 @@ SurfacesPass::Outputs SurfacesPass::execute(const Inputs& in) {
     withReversedDepth(
         [&] { in.scene.draw(program, GpuScene::Uniforms::Material, GpuScene::Surfaces::Solid); });
     glDepthFunc(GL_LESS);
-    glBindTextureUnit(0, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return outputs();
 }

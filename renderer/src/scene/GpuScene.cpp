@@ -232,8 +232,10 @@ void GpuScene::draw(const gl::Program& program, Uniforms what, Surfaces which) c
     const GLint baseColor = program.location("uBaseColor");
     const GLint hasTexture = program.location("uHasTexture");
     const PoseLocations poseAt(program);
-    if (joints_) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, joints_.id());
-    if (morphs_) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, morphs_.id());
+    // The textures bound below are this draw's, not the caller's: unbound when it ends.
+    gl::BindScope scope;
+    if (joints_) scope.storage(gl::bind::PoseJoints, joints_.id());
+    if (morphs_) scope.storage(gl::bind::PoseMorphs, morphs_.id());
     for (const Draw& d : draws_) {
         if (d.indexCount == 0) continue;
         if ((which == Surfaces::Solid && d.blended) || (which == Surfaces::Blended && !d.blended))
@@ -249,16 +251,14 @@ void GpuScene::draw(const gl::Program& program, Uniforms what, Surfaces which) c
         const bool textured = d.texture >= 0 && d.texture < static_cast<int>(textures_.size());
         glProgramUniform1i(id, hasTexture, textured ? 1 : 0);
         if (textured && (material || d.cutoff >= 0.0f))
-            glBindTextureUnit(0, textures_[static_cast<size_t>(d.texture)].id());
+            scope.texture(gl::bind::MaterialBaseColor,
+                          textures_[static_cast<size_t>(d.texture)].id());
         glDrawElementsBaseVertex(
             GL_TRIANGLES, d.indexCount, GL_UNSIGNED_INT,
             reinterpret_cast<const void*>(d.firstIndex * sizeof(std::uint32_t)), d.baseVertex);
     }
     glBindVertexArray(0);
     glUseProgram(0);
-    glBindTextureUnit(0, 0); // the textures bound above are this draw's, not the caller's
-    if (joints_) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, 0);
-    if (morphs_) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, 0);
 }
 
 } // namespace fl

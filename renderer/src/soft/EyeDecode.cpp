@@ -58,21 +58,16 @@ std::vector<T> readChannel(const gl::Texture& t, GLenum format, GLenum type) {
 }
 } // namespace
 
-void EyeCells::bind(const gl::Program& program, int factor) const {
-    glBindTextureUnit(2, cells->id());
-    glBindTextureUnit(3, depth->id());
+void EyeCells::bind(gl::BindScope& scope, const gl::Program& program, int factor) const {
+    scope.texture(gl::bind::EyeCells, cells->id()).texture(gl::bind::EyeDepth, depth->id());
     program.set("uSurfaceInverseViewProj", inverseViewProj);
-    map.bind(program, 6);
-    glBindTextureUnit(7, objectIds ? ids->id() : 0);
+    map.bind(scope, program, gl::bind::EyeReceivers);
+    scope.texture(gl::bind::EyeIds, objectIds ? ids->id() : 0);
     program.set("uEyeObjectIds", objectIds ? 1 : 0);
-    glBindTextureUnit(8, seedOccluders ? seedOccluders->id() : 0);
+    scope.texture(gl::bind::SeedOccluders, seedOccluders ? seedOccluders->id() : 0);
     program.set("uEyeFactor", factor);
     program.set("uEyeGrid",
                 glm::ivec2((width() + factor - 1) / factor, (height() + factor - 1) / factor));
-}
-
-void unbindEyeCells() {
-    for (GLuint unit : {2u, 3u, 6u, 7u, 8u}) glBindTextureUnit(unit, 0);
 }
 
 std::pair<const gl::Texture&, const gl::Texture&> EyeCells::decoded() const {

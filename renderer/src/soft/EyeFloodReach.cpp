@@ -106,9 +106,11 @@ std::vector<std::uint32_t> EyeFloodEstimator::travel(const EyeCells& eye,
     boundary_.set("uAbsolute2", th.absolute2);
     boundary_.set("uRelative2", th.relative2);
     boundary_.set("uListSeeds", 0);
-    eye.bind(boundary_, s.factor);
-    gl::drawFullscreenTriangle(boundary_, emptyVao_);
-    unbindEyeCells();
+    {
+        gl::BindScope scope;
+        eye.bind(scope, boundary_, s.factor);
+        gl::drawFullscreenTriangle(boundary_, emptyVao_);
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 
     // The coarse phase 4: full JFA on the whole coarse grid (no band: it is small).
@@ -122,20 +124,17 @@ std::vector<std::uint32_t> EyeFloodEstimator::travel(const EyeCells& eye,
     criterion.cellsFactor = s.factor;
     const jfa::Plan plan = eyeSoftPlan(passes, false, size.x, size.y);
     const gl::Texture& flooded = kernel_.run(plan, seeds_, criterion);
-    unbindEyeCells();
-    unbindPenumbraReach();
 
     // How far each cell travelled, one histogram for the frame.
     const std::uint32_t zero = 0;
     glClearNamedBufferData(bins_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     glUseProgram(travel_.id());
-    glBindTextureUnit(0, flooded.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, bins_.id());
+    gl::BindScope scope;
+    scope.texture(gl::bind::Flooded, flooded.id()).storage(gl::bind::TravelBins, bins_.id());
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
     glDispatchCompute(GLuint((size.x + 7) / 8), GLuint((size.y + 7) / 8), 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
-    glBindTextureUnit(0, 0);
+    scope.release();
     glUseProgram(0);
     std::vector<std::uint32_t> bins(kTravelBins, 0u);
     bytes_ = gl::textureBytes(seeds_) + gl::textureBytes(seedOccluders_) +

@@ -108,12 +108,13 @@ bool EyeSoftCriterion::better(int px, int py, const jfa::Cell& a, const jfa::Cel
     return da < db || (da == db && tieWins);
 }
 
-void setCriterionUniforms(const gl::Program& program, const EyeSoftCriterion& criterion) {
+void setCriterionUniforms(gl::BindScope& scope, const gl::Program& program,
+                          const EyeSoftCriterion& criterion) {
     setDiskLightUniforms(program, criterion.light);
-    setPenumbraReachUniforms(program, criterion.reachBound);
+    setPenumbraReachUniforms(scope, program, criterion.reachBound);
     program.set("uObjectIdFix", criterion.objectIdFix ? 1 : 0);
     program.set("uMidpointFix", criterion.midpointFix ? 1 : 0);
-    if (criterion.cells != nullptr) criterion.cells->bind(program, criterion.cellsFactor);
+    if (criterion.cells != nullptr) criterion.cells->bind(scope, program, criterion.cellsFactor);
 }
 
 jfa::Grid readEyeGrid(const gl::Texture& packed, const jfa::Grid& occluders) {
@@ -204,7 +205,6 @@ void EyeSoftShadowPass::drawOccluderIds(const Inputs& in) {
     in.scene.draw(lightIds_, GpuScene::Uniforms::Material);
     glDepthMask(GL_TRUE);
     glDepthFunc(GL_LESS);
-    glBindTextureUnit(0, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
@@ -215,12 +215,12 @@ void EyeSoftShadowPass::drawEyeHardShadows(const Inputs& in) {
     eyePass_.set("uOccluderEdges", in.settings.occluderPoints == OccluderPoints::Edge ? 1 : 0);
     eyePass_.set("uSilhouetteThreshold", in.settings.silhouetteThreshold);
     setDiskLightUniforms(eyePass_, in.light);
-    bindShadowMap(eyePass_, in.shadow);
-    in.positions.bind(eyePass_, 3);         // eye_decode.glsl's uEyeDepth
-    in.shadow.receivers->bind(eyePass_, 6); // and uEyeReceivers
+    gl::BindScope scope;
+    bindShadowMap(scope, eyePass_, in.shadow);
+    in.positions.bind(scope, eyePass_, gl::bind::EyeDepth);
+    in.shadow.receivers->bind(scope, eyePass_, gl::bind::EyeReceivers);
     gl::drawFullscreenTriangle(eyePass_, emptyVao_);
-    glBindTextureUnit(1, 0);
-    unbindEyeCells();
+    scope.release();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
@@ -234,11 +234,12 @@ void EyeSoftShadowPass::drawBoundaries(const Inputs& in, BoundaryThreshold th) {
     // A banded flood lists its seeds here rather than sweeping the frame for them again.
     const bool listSeeds = jfa::banded(in.region);
     boundary_.set("uListSeeds", listSeeds ? 1 : 0);
-    if (listSeeds) kernel_.beginSeedList(in.width, in.height);
-    eye_.bind(boundary_);
+    gl::BindScope scope;
+    if (listSeeds) kernel_.beginSeedList(scope, in.width, in.height);
+    eye_.bind(scope, boundary_);
     gl::drawFullscreenTriangle(boundary_, emptyVao_);
     if (listSeeds) kernel_.seedsListed(seeds_);
-    unbindEyeCells();
+    scope.release();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
@@ -247,11 +248,11 @@ void EyeSoftShadowPass::drawComposite(const Inputs& in, const gl::Texture& flood
     glViewport(0, 0, in.width, in.height);
     glDisable(GL_DEPTH_TEST);
     setDiskLightUniforms(composite_, in.light);
-    eye_.bind(composite_);
-    glBindTextureUnit(1, flooded.id());
+    gl::BindScope scope;
+    eye_.bind(scope, composite_);
+    scope.texture(gl::bind::EyeFlooded, flooded.id());
     gl::drawFullscreenTriangle(composite_, emptyVao_);
-    glBindTextureUnit(1, 0);
-    unbindEyeCells();
+    scope.release();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
@@ -335,8 +336,6 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::Pass
     if (timer) timer->end();
     if (timer) timer->begin("flood");
     const gl::Texture& flooded = kernel_.run(plan, seeds_, criterion);
-    unbindEyeCells();
-    unbindPenumbraReach();
     if (timer) timer->end();
 
     // Phase 5: visibility per pixel.
@@ -361,9 +360,10 @@ std::pair<const gl::Texture&, const gl::Texture&> EyeSoftShadowPass::decodedEyeI
         glBindFramebuffer(GL_FRAMEBUFFER, decodedFbo_.id());
         glViewport(0, 0, w, h);
         glDisable(GL_DEPTH_TEST);
-        eye_.bind(unpack_);
+        gl::BindScope scope;
+        eye_.bind(scope, unpack_);
         gl::drawFullscreenTriangle(unpack_, emptyVao_);
-        unbindEyeCells();
+        scope.release();
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         decodedStale_ = false;
     }

@@ -223,13 +223,13 @@ FilteredShadowPass::Outputs FilteredShadowPass::execute(const Inputs& in, gl::Pa
         glProgramUniform2fv(id, glGetUniformLocation(id, "uBlockerTaps"),
                             static_cast<GLsizei>(f.blockerTaps.size()),
                             glm::value_ptr(f.blockerTaps[0]));
-    glBindTextureUnit(4, in.shadow.depth.id());
-    glBindSampler(4, rawDepth_.id());
-    in.surfaces.positions().bind(program_, 0);
-    glBindTextureUnit(1, in.surfaces.normals.id());
+    gl::BindScope scope;
+    scope.texture(gl::bind::ShadowDepth, in.shadow.depth.id())
+        .sampler(gl::bind::ShadowDepth, rawDepth_.id());
+    in.surfaces.positions().bind(scope, program_, gl::bind::SurfacesDepth);
+    scope.texture(gl::bind::SurfacesNormals, in.surfaces.normals.id());
     gl::drawFullscreenTriangle(program_, emptyVao_);
-    glBindSampler(4, 0);
-    for (GLuint unit : {0u, 1u, 4u}) glBindTextureUnit(unit, 0);
+    scope.release();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (timer) timer->wrote(gl::textureBytes(visibility_));
     if (timer) timer->end();

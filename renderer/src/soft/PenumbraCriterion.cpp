@@ -8,11 +8,12 @@ void setDiskLightUniforms(const gl::Program& program, const DiskLight& light) {
     program.set("uDiskRadius", light.radius);
 }
 
-void setCriterionUniforms(const gl::Program& program, const PenumbraCriterion& criterion) {
+void setCriterionUniforms(gl::BindScope& scope, const gl::Program& program,
+                          const PenumbraCriterion& criterion) {
     setDiskLightUniforms(program, criterion.light);
-    setPenumbraReachUniforms(program, criterion.reachBound);
+    setPenumbraReachUniforms(scope, program, criterion.reachBound);
     program.set("uUmbraDepth", criterion.umbraDepth);
-    criterion.map.bind(program, 2);
+    criterion.map.bind(scope, program, gl::bind::PenumbraPositions);
 }
 
 } // namespace fl

@@ -146,8 +146,6 @@ PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, gl::PassTime
     if (timer) timer->end();
     if (timer) timer->begin("flood");
     const gl::Texture& map = kernel_.run(plan, seeds_, criterion);
-    glBindTextureUnit(2, 0);
-    unbindPenumbraReach();
     if (timer) timer->end();
     kernel_.setViewTiles(nullptr);
     return {seeds_, map, kernel_.passesRun(), settings.passes};
@@ -219,8 +217,9 @@ void PenumbraMapPass::findSeeds(const Inputs& in, bool region) {
     // the map for them again (GlFloodKernelBase::beginSeedList).
     const bool listSeeds = jfa::banded(in.settings.region);
     program.set("uListSeeds", listSeeds ? 1 : 0);
-    if (listSeeds) kernel_.beginSeedList(size, size);
-    in.receivers.bind(program, 0);
+    gl::BindScope scope;
+    if (listSeeds) kernel_.beginSeedList(scope, size, size);
+    in.receivers.bind(scope, program, gl::bind::SilhouetteReceivers);
     if (region) {
         // The spans drawn are this region's and the last one's (markSeedRegion), so every texel
         // off them was off the last spans too, and empty since: cleared only when the texture
@@ -234,23 +233,21 @@ void PenumbraMapPass::findSeeds(const Inputs& in, bool region) {
         program.set("uRegionTilesX", tiles);
         program.set("uTile", tile);
         program.set("uSize", glm::ivec2(size));
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, seedRegion_.id());
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 9, rowSpans_.id());
+        scope.storage(gl::bind::SeedRegion, seedRegion_.id())
+            .storage(gl::bind::RowSpans, rowSpans_.id());
         glUseProgram(program.id());
         glBindVertexArray(emptyVao_.id());
         glDrawArraysInstanced(GL_TRIANGLES, 0, 6, tiles);
         glBindVertexArray(0);
         glUseProgram(0);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, 0);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 9, 0);
         seedsOffSpansEmpty_ = true;
         spansTile_ = tile;
     } else {
         gl::drawFullscreenTriangle(program, emptyVao_);
         seedsOffSpansEmpty_ = false;
     }
-    glBindTextureUnit(0, 0);
     if (listSeeds) kernel_.seedsListed(seeds_);
+    scope.release();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
@@ -298,12 +295,12 @@ void PenumbraMapPass::markView(const PenumbraView& view, int size, int tile) {
     glBindFramebuffer(GL_FRAMEBUFFER, viewFbo_.id());
     glViewport(0, 0, w, h);
     glDisable(GL_DEPTH_TEST);
-    view.positions.bind(viewProgram_, 2);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, viewTiles_.id());
+    gl::BindScope scope;
+    view.positions.bind(scope, viewProgram_, gl::bind::PenumbraSurfacesDepth);
+    scope.storage(gl::bind::ViewTiles, viewTiles_.id());
     gl::drawFullscreenTriangle(viewProgram_, emptyVao_);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, 0);
-    glBindTextureUnit(2, 0);
+    scope.release();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 

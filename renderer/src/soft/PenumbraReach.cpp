@@ -101,20 +101,15 @@ std::optional<long long> widestPenumbraTexels(const DiskLight& light,
     return static_cast<long long>(std::ceil(ndc * 0.5 * size)) + 6;
 }
 
-void setPenumbraReachUniforms(const gl::Program& program, const PenumbraReach& reach) {
+void setPenumbraReachUniforms(gl::BindScope& scope, const gl::Program& program,
+                              const PenumbraReach& reach) {
     program.set("uReachEnabled", reach.enabled ? 1 : 0);
     program.set("uReachMatrix", reach.worldToClip);
     program.set("uReachSize", reach.size);
     program.set("uReachFarDepth", reach.farDepth);
     program.set("uReachLevels", reach.boundsLo != 0 ? reach.boundsLevels : 0);
     program.set("uReachCells", reach.firstCells);
-    glBindTextureUnit(4, reach.boundsLo);
-    glBindTextureUnit(5, reach.boundsHi);
-}
-
-void unbindPenumbraReach() {
-    glBindTextureUnit(4, 0);
-    glBindTextureUnit(5, 0);
+    scope.texture(gl::bind::ReachLo, reach.boundsLo).texture(gl::bind::ReachHi, reach.boundsHi);
 }
 
 namespace {
@@ -146,29 +141,31 @@ void ReceiverBoundsPyramid::build(const gl::Texture& positions, float validMin,
                                   const DiskLight& light, PenumbraReach& reach,
                                   const gl::Buffer* region, int regionTile) {
     const gl::Program& program = programs_[0][region != nullptr];
-    glBindTextureUnit(0, positions.id());
-    build(program, positions.width(), positions.height(), validMin, light, reach, region,
+    gl::BindScope scope;
+    scope.texture(gl::bind::ReachPositions, positions.id());
+    build(scope, program, positions.width(), positions.height(), validMin, light, reach, region,
           regionTile);
 }
 
 void ReceiverBoundsPyramid::build(const EyeCells& eye, const DiskLight& light,
                                   PenumbraReach& reach) {
     const gl::Program& program = programs_[2][0];
-    eye.bind(program);
-    build(program, eye.width(), eye.height(), -0.5f, light, reach, nullptr, 8); // w >= 0
-    unbindEyeCells();
+    gl::BindScope scope;
+    eye.bind(scope, program);
+    build(scope, program, eye.width(), eye.height(), -0.5f, light, reach, nullptr, 8); // w >= 0
 }
 
 void ReceiverBoundsPyramid::build(const MapPositions& map, const DiskLight& light,
                                   PenumbraReach& reach, const gl::Buffer* region, int regionTile) {
     const gl::Program& program = programs_[1][region != nullptr];
-    map.bind(program, 0);
-    build(program, map.size(), map.size(), 0.5f, light, reach, region, regionTile); // w = 1
+    gl::BindScope scope;
+    map.bind(scope, program, gl::bind::ReachPositions);
+    build(scope, program, map.size(), map.size(), 0.5f, light, reach, region, regionTile); // w = 1
 }
 
-void ReceiverBoundsPyramid::build(const gl::Program& program, int width, int height, float validMin,
-                                  const DiskLight& light, PenumbraReach& reach,
-                                  const gl::Buffer* region, int regionTile) {
+void ReceiverBoundsPyramid::build(gl::BindScope& scope, const gl::Program& program, int width,
+                                  int height, float validMin, const DiskLight& light,
+                                  PenumbraReach& reach, const gl::Buffer* region, int regionTile) {
     const int w0 = (width + 7) / 8, h0 = (height + 7) / 8;
     if (!lo_ || lo_.width() != w0 || lo_.height() != h0) {
         levels_ = 1; // GL's mip chain: sizes halve rounding down, to 1 x 1
@@ -182,17 +179,17 @@ void ReceiverBoundsPyramid::build(const gl::Program& program, int width, int hei
     program.set("uValidMin", validMin);
     program.set("uRegionTile", regionTile);
     program.set("uRegionTilesX", (width + regionTile - 1) / regionTile);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, region != nullptr ? region->id() : 0);
+    scope.storage(gl::bind::SeedRegion, region != nullptr ? region->id() : 0);
     int w = w0, h = h0, sw = width, sh = height;
     for (int level = 0; level < levels_; ++level) {
         program.set("uMode", level == 0 ? 0 : 1);
         program.set("uDstSize", glm::ivec2(w, h));
         program.set("uSrcSize", glm::ivec2(sw, sh));
-        glBindImageTexture(0, lo_.id(), level, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-        glBindImageTexture(1, hi_.id(), level, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+        scope.image(gl::bind::ReachLoOut, lo_.id(), GL_WRITE_ONLY, GL_RGBA32F, level)
+            .image(gl::bind::ReachHiOut, hi_.id(), GL_WRITE_ONLY, GL_RGBA32F, level);
         if (level > 0) {
-            glBindImageTexture(2, lo_.id(), level - 1, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
-            glBindImageTexture(3, hi_.id(), level - 1, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+            scope.image(gl::bind::ReachLoIn, lo_.id(), GL_READ_ONLY, GL_RGBA32F, level - 1)
+                .image(gl::bind::ReachHiIn, hi_.id(), GL_READ_ONLY, GL_RGBA32F, level - 1);
         }
         glDispatchCompute(GLuint((w + 7) / 8), GLuint((h + 7) / 8), 1);
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
@@ -201,10 +198,7 @@ void ReceiverBoundsPyramid::build(const gl::Program& program, int width, int hei
         w = std::max(1, w / 2);
         h = std::max(1, h / 2);
     }
-    for (GLuint unit = 0; unit < 4; ++unit)
-        glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
-    glBindTextureUnit(0, 0);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, 0);
+    scope.release();
     glUseProgram(0);
     reach.boundsLo = lo_.id();
     reach.boundsHi = hi_.id();

@@ -91,7 +91,10 @@ ReferenceShadowPass::Outputs ReferenceShadowPass::execute(const Inputs& in, gl::
     depth_.set("uSlopeBias", in.shadowSettings.slopeBias);
     depth_.set("uConstantBias", in.shadowSettings.constantBias);
     accumulate_.set("uShadowWarp", glm::mat4(1.0f));
-    in.positions.bind(accumulate_, 0); // the matrix once; the depth again per map, below
+    {
+        gl::BindScope matrix; // the matrix once; the depth is bound per map, below
+        in.positions.bind(matrix, accumulate_, gl::bind::SurfacesDepth);
+    }
     glBlendEquation(GL_FUNC_ADD);
     glBlendFunc(GL_ONE, GL_ONE);
     for (const glm::vec3& q : samples) {
@@ -113,12 +116,13 @@ ReferenceShadowPass::Outputs ReferenceShadowPass::execute(const Inputs& in, gl::
         glDisable(GL_DEPTH_TEST);
         glEnable(GL_BLEND);
         accumulate_.set("uLightViewProj", viewProj);
-        // Bound per map: the scene's draw binds alpha cut-out textures on unit 0.
-        glBindTextureUnit(0, in.positions.depth.id());
-        glBindTextureUnit(1, map_.id());
+        // Bound per map: the scene's draw binds alpha cut-out textures on unit 0, and the next
+        // map pass draws into map_ (the scope unbinds it first).
+        gl::BindScope scope;
+        scope.texture(gl::bind::SurfacesDepth, in.positions.depth.id())
+            .texture(gl::bind::ShadowMap, map_.id());
         gl::drawFullscreenTriangle(accumulate_, emptyVao_);
         glDisable(GL_BLEND);
-        glBindTextureUnit(1, 0); // the next map pass draws into map_
     }
     glBlendFunc(GL_ONE, GL_ZERO); // the default
     // Each sample writes its depth map and adds into the sum.
@@ -131,11 +135,12 @@ ReferenceShadowPass::Outputs ReferenceShadowPass::execute(const Inputs& in, gl::
     glBindFramebuffer(GL_FRAMEBUFFER, visibilityFbo_.id());
     glViewport(0, 0, width, height);
     resolve_.set("uSamples", static_cast<float>(samples.size()));
-    glBindTextureUnit(0, sum_.id());
-    in.positions.bind(resolve_, 1);
-    gl::drawFullscreenTriangle(resolve_, emptyVao_);
-    glBindTextureUnit(0, 0);
-    glBindTextureUnit(1, 0);
+    {
+        gl::BindScope scope;
+        scope.texture(gl::bind::ReferenceSum, sum_.id());
+        in.positions.bind(scope, resolve_, gl::bind::ReferenceSurfacesDepth);
+        gl::drawFullscreenTriangle(resolve_, emptyVao_);
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (timer) timer->wrote(gl::textureBytes(visibility_));
     if (timer) timer->end();

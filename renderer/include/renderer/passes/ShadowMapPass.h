@@ -10,6 +10,7 @@
 // shaders/shadow_lookup.glsl, which applies the same split, so every method takes either
 // provider.
 
+#include <gpu/BindScope.h>
 #include <gpu/Gl.h>
 #include <gpu/Program.h>
 #include <gpu/ShaderLibrary.h>
@@ -39,9 +40,9 @@ struct MapPositions {
     [[nodiscard]] int size() const { return depth->width(); }
     /// Its pass's decodedReceivers(): every position as the shaders decode it, RGBA32F.
     [[nodiscard]] const gl::Texture& decoded() const;
-    /// For mapReceiver(): the target on texture `unit` (the shader's sampler binding) and the
-    /// uMapUnwarp / uMapInverseLightViewProj uniforms of `program`.
-    void bind(const gl::Program& program, GLuint unit) const;
+    /// For mapReceiver(): the target on texture `unit` (the shader's sampler binding) in
+    /// `scope` and the uMapUnwarp / uMapInverseLightViewProj uniforms of `program`.
+    void bind(gl::BindScope& scope, const gl::Program& program, gl::TextureUnit unit) const;
     /// Every texel's position, decoded on the CPU (the twin of mapReceiver()), in GL's row
     /// order (row 0 at the bottom): (xyz, 1), or all 0 where the light sees nothing.
     [[nodiscard]] std::vector<glm::vec4> read() const;
@@ -133,9 +134,10 @@ class ShadowMapPass {
     std::optional<History> history_;
 };
 
-/// Binds the map for shaders/shadow_lookup.glsl: the depth texture on unit 1 and the
-/// uLightViewProj / uShadowWarp uniforms of `program`.
-void bindShadowMap(const gl::Program& program, const ShadowMapPass::Outputs& shadow);
+/// Binds the map for shaders/shadow_lookup.glsl: the depth texture on gl::bind::ShadowMap in
+/// `scope` and the uLightViewProj / uShadowWarp uniforms of `program`.
+void bindShadowMap(gl::BindScope& scope, const gl::Program& program,
+                   const ShadowMapPass::Outputs& shadow);
 
 /// A size x size depth map sampled as the hard test reads it (NEAREST, LEQUAL comparison):
 /// the shadow pass's own, and the ground truth's point-light maps.

@@ -5,6 +5,7 @@
 // world positions come back from the depth, normals are octahedral, the base colour is 8-bit
 // sRGB; shaders/surface_decode.glsl and SurfaceDecode.h read them.
 
+#include <gpu/BindScope.h>
 #include <gpu/Gl.h>
 #include <gpu/Program.h>
 #include <gpu/ShaderLibrary.h>
@@ -25,8 +26,8 @@ struct SurfacePositions {
     [[nodiscard]] int width() const { return depth.width(); }
     [[nodiscard]] int height() const { return depth.height(); }
     /// For shaders/surface_decode.glsl's surfacePosition(): the depth on texture `unit` (the
-    /// shader's sampler binding) and uSurfaceInverseViewProj of `program`.
-    void bind(const gl::Program& program, GLuint unit) const;
+    /// shader's sampler binding) in `scope` and uSurfaceInverseViewProj of `program`.
+    void bind(gl::BindScope& scope, const gl::Program& program, gl::TextureUnit unit) const;
     /// Every pixel's position as RGBA floats, row 0 at the top (readTexture's layout): world xyz
     /// and w = 1, or all 0 for background. The CPU twin of surfacePosition().
     [[nodiscard]] FloatImage read() const;

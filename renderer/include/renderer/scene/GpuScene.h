@@ -26,8 +26,8 @@ class GpuScene {
     /// ones (drawn over the shaded image).
     enum class Surfaces { All, Solid, Blended };
     /// Draws the `which` instances with `program`, setting uModel and the alpha cut-out's
-    /// uAlphaCutoff, uBaseColor, uHasTexture and base-colour texture on unit 0 (every pass that
-    /// draws the scene decides visibility), plus uNormalMatrix and uObjectId for
+    /// uAlphaCutoff, uBaseColor, uHasTexture and base-colour texture (gl::bind::MaterialBaseColor;
+    /// every pass that draws the scene decides visibility), plus uNormalMatrix and uObjectId for
     /// Uniforms::Material.
     void draw(const gl::Program& program, Uniforms what, Surfaces which = Surfaces::All) const;
     /// Poses the scene for the next draws (shaders/pose.glsl): every instance's transform, the

@@ -9,6 +9,7 @@
 #include <renderer/passes/ShadowMapPass.h>
 #include <renderer/soft/PenumbraCriterion.h>
 
+#include <gpu/BindScope.h>
 #include <gpu/Gl.h>
 #include <gpu/Program.h>
 
@@ -71,15 +72,16 @@ struct EyeCells {
     const gl::Texture* ids = nullptr;   // R32F object id per map texel, read when objectIds
     bool objectIds = false;
     const EyeSoftShadowPass* pass = nullptr; // made them (decoded())
-    /// Phase 3's occluder per seed pixel (RGBA32F, eyeSeedOccluder; unit 8), once it has run:
-    /// the flood and the composite read a seed's occluder there instead of decoding it.
+    /// Phase 3's occluder per seed pixel (RGBA32F, eyeSeedOccluder; gl::bind::SeedOccluders),
+    /// once it has run: the flood and the composite read a seed's occluder there instead of
+    /// decoding it.
     const gl::Texture* seedOccluders = nullptr;
 
     [[nodiscard]] int width() const { return cells->width(); }
     [[nodiscard]] int height() const { return cells->height(); }
-    /// eye_decode.glsl's textures (units 2, 3, 6, 7, and 8 when seedOccluders) and uniforms on
+    /// eye_decode.glsl's textures (gl::bind::Eye*, SeedOccluders) in `scope` and uniforms on
     /// `program`, for a grid `factor` times coarser than the frame (1: the frame itself).
-    void bind(const gl::Program& program, int factor = 1) const;
+    void bind(gl::BindScope& scope, const gl::Program& program, int factor = 1) const;
     /// Every pixel decoded on the GPU by eye_decode.glsl (the bits the phases read), as two
     /// RGBA32F textures in EyeImage layout: points and occluders. Made on first use after a
     /// frame, outside it (overlays, tests).
@@ -87,8 +89,5 @@ struct EyeCells {
     /// Every pixel decoded on the CPU (the twin of eye_decode.glsl).
     [[nodiscard]] EyeImage read() const;
 };
-
-/// Unbinds what EyeCells::bind bound (texture units 2, 3, 6, 7 and 8).
-void unbindEyeCells();
 
 } // namespace fl

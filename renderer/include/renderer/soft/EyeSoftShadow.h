@@ -117,8 +117,10 @@ struct EyeSoftCriterion {
     [[nodiscard]] bool accepts(int px, int py, const jfa::Cell& c) const;
     [[nodiscard]] bool better(int px, int py, const jfa::Cell& a, const jfa::Cell& b) const;
 };
-/// The GL kernel's hook (argument-dependent lookup): the eye cells (EyeCells::bind), uniforms.
-void setCriterionUniforms(const gl::Program& program, const EyeSoftCriterion& criterion);
+/// The GL kernel's hook (argument-dependent lookup): the eye cells (EyeCells::bind) and reach
+/// bounds in the run's `scope`, uniforms.
+void setCriterionUniforms(gl::BindScope& scope, const gl::Program& program,
+                          const EyeSoftCriterion& criterion);
 
 /// A JFA-E grid as the GL kernels store it (R32F, packed cells: the seed pixel's index + 1, 0
 /// empty; EyeSoftCriterion::packedCells) turned back into cells, each occluder read from

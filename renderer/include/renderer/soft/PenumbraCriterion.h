@@ -81,7 +81,9 @@ struct PenumbraCriterion {
 /// Sets the disk-light uniforms (shaders/disk_light.glsl) of any program that includes it.
 void setDiskLightUniforms(const gl::Program& program, const DiskLight& light);
 /// The GL kernels' hook (found by argument-dependent lookup from jfa::GlFloodKernel::run):
-/// binds the map's receiver target on unit 2 and sets the light.
-void setCriterionUniforms(const gl::Program& program, const PenumbraCriterion& criterion);
+/// binds the map's receiver target (gl::bind::PenumbraPositions) and the reach bounds in the
+/// run's `scope` and sets the light.
+void setCriterionUniforms(gl::BindScope& scope, const gl::Program& program,
+                          const PenumbraCriterion& criterion);
 
 } // namespace fl

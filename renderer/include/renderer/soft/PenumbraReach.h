@@ -34,6 +34,7 @@
 #include <scene/Pose.h>
 #include <scene/Scene.h>
 
+#include <gpu/BindScope.h>
 #include <gpu/Program.h>
 #include <gpu/ShaderLibrary.h>
 #include <jfa/Band.h>
@@ -71,8 +72,6 @@ struct PenumbraReach {
 /// distances from the light's plane, then the bounds of 2x2 cells up to one texel. Receivers lie
 /// in the grid itself (JFA-L: shadow-map texels; JFA-E: eye pixels), so a cell whose box the cone
 /// of an occluder misses holds no texel that can take it.
-/// Unbinds what setPenumbraReachUniforms bound (the bounds pyramid's texture units 4 and 5).
-void unbindPenumbraReach();
 
 class ReceiverBoundsPyramid {
   public:
@@ -91,9 +90,9 @@ class ReceiverBoundsPyramid {
     [[nodiscard]] std::int64_t bytes() const;
 
   private:
-    void build(const gl::Program& program, int width, int height, float validMin,
-               const DiskLight& light, PenumbraReach& reach, const gl::Buffer* region,
-               int regionTile);
+    void build(gl::BindScope& scope, const gl::Program& program, int width, int height,
+               float validMin, const DiskLight& light, PenumbraReach& reach,
+               const gl::Buffer* region, int regionTile);
     // [source: positions, map, eye cells][seed region]: MAP_RECEIVERS decodes the shadow map's
     // receiver target, EYE_CELLS JFA-E's cells, REACH_REGION limits the receivers to a seed
     // region's tiles.
@@ -141,7 +140,8 @@ std::optional<long long> widestPenumbraTexels(const DiskLight& light,
                                               const geom::ViewVolume& lightVolume, int size,
                                               glm::vec2 nearest, float farDepth);
 
-/// Sets the uReach* uniforms of shaders/disk_light.glsl.
-void setPenumbraReachUniforms(const gl::Program& program, const PenumbraReach& reach);
+/// Sets the uReach* uniforms of shaders/disk_light.glsl and binds the bounds in `scope`.
+void setPenumbraReachUniforms(gl::BindScope& scope, const gl::Program& program,
+                              const PenumbraReach& reach);
 
 } // namespace fl
