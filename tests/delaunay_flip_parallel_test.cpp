@@ -13,7 +13,7 @@
 
 #include <geometry/detail/DelaunayMesh.h>
 #include <geometry/detail/DelaunaySteps.h>
-#include "../geometry/src/TriangulationFlip.h"
+#include <geometry/detail/TriangulationFlip.h>
 
 #include "TriangleSet.h"
 

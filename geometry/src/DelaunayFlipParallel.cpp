@@ -13,7 +13,7 @@
 // 35 ms to find each triangle's strip and 25 % more per test (the ownership look-ups).
 #include <geometry/detail/DelaunaySteps.h>
 
-#include "TriangulationFlip.h"
+#include <geometry/detail/TriangulationFlip.h>
 
 #include <base/Parallel.h>
 

@@ -25,8 +25,8 @@
 // sequential path wherever it is unique (tests: delaunay_test, ParallelC3*).
 #include <geometry/detail/DelaunaySteps.h>
 
-#include "TriangulationFlip.h"
 #include "TriangulationWalk.h"
+#include <geometry/detail/TriangulationFlip.h>
 
 #include <base/Parallel.h>
 

@@ -3,8 +3,8 @@
 // DelaunayMeshCheck.cpp.
 #include <geometry/detail/DelaunayMesh.h>
 
-#include "TriangulationFlip.h"
 #include "TriangulationWalk.h"
+#include <geometry/detail/TriangulationFlip.h>
 
 #include <algorithm>
 #include <stdexcept>

@@ -2,7 +2,7 @@
 // (DelaunayMesh.h) that certifies the mesh C1 hands to C2.
 #include <geometry/detail/DelaunayMesh.h>
 
-#include "TriangulationFlip.h"
+#include <geometry/detail/TriangulationFlip.h>
 
 #include <jfa/CpuKernel.h>
 

@@ -6,8 +6,8 @@
 #include <geometry/Predicates.h>
 #include <geometry/Triangulation.h>
 
-#include "TriangulationFlip.h"
 #include "TriangulationWalk.h"
+#include <geometry/detail/TriangulationFlip.h>
 
 #include <algorithm>
 #include <cmath>

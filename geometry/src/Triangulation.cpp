@@ -1,6 +1,6 @@
 #include <geometry/Triangulation.h>
 
-#include "TriangulationFlip.h"
+#include <geometry/detail/TriangulationFlip.h>
 
 #include <algorithm>
 #include <stdexcept>
