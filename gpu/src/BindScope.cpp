@@ -24,28 +24,32 @@ BindScope& BindScope::image(ImageUnit unit, GLuint texture, GLenum access, GLenu
 }
 
 BindScope& BindScope::storage(StorageBinding binding, GLuint buffer) {
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding.index, buffer);
-    note(Kind::Storage, binding.index);
-    return *this;
+    return bindBuffer(Kind::Storage, binding.index, buffer, true, 0, 0);
 }
 
 BindScope& BindScope::storage(StorageBinding binding, GLuint buffer, GLintptr offset,
                               GLsizeiptr size) {
-    glBindBufferRange(GL_SHADER_STORAGE_BUFFER, binding.index, buffer, offset, size);
-    note(Kind::Storage, binding.index);
-    return *this;
+    return bindBuffer(Kind::Storage, binding.index, buffer, false, offset, size);
 }
 
 BindScope& BindScope::counter(CounterBinding binding, GLuint buffer) {
-    glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, binding.index, buffer);
-    note(Kind::Counter, binding.index);
-    return *this;
+    return bindBuffer(Kind::Counter, binding.index, buffer, true, 0, 0);
 }
 
 BindScope& BindScope::counter(CounterBinding binding, GLuint buffer, GLintptr offset,
                               GLsizeiptr size) {
-    glBindBufferRange(GL_ATOMIC_COUNTER_BUFFER, binding.index, buffer, offset, size);
-    note(Kind::Counter, binding.index);
+    return bindBuffer(Kind::Counter, binding.index, buffer, false, offset, size);
+}
+
+BindScope& BindScope::bindBuffer(Kind kind, GLuint index, GLuint buffer, bool whole,
+                                 GLintptr offset, GLsizeiptr size) {
+    const GLenum target =
+        kind == Kind::Storage ? GL_SHADER_STORAGE_BUFFER : GL_ATOMIC_COUNTER_BUFFER;
+    if (whole)
+        glBindBufferBase(target, index, buffer);
+    else
+        glBindBufferRange(target, index, buffer, offset, size);
+    note(kind, index);
     return *this;
 }
 

@@ -43,6 +43,9 @@ class BindScope {
         GLenum format; // images: unbinding needs a valid format
     };
     void note(Kind kind, GLuint index, GLenum format = 0);
+    // A storage or counter buffer: the whole of it, or `size` bytes from `offset`.
+    BindScope& bindBuffer(Kind kind, GLuint index, GLuint buffer, bool whole, GLintptr offset,
+                          GLsizeiptr size);
 
     std::array<Entry, 16> entries_{}; // a pass binds a handful: no allocation per pass
     std::size_t count_ = 0;
