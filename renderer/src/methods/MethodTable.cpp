@@ -28,6 +28,11 @@ std::unique_ptr<ShadowMethod> makePcf(const ShaderLibrary&);
 std::unique_ptr<ShadowMethod> makePcss(const ShaderLibrary&);
 std::unique_ptr<ShadowMethod> makeGroundTruth(const ShaderLibrary&);
 std::unique_ptr<ShadowMethod> makeVsm(const ShaderLibrary&);
+
+// The options of a method that declares them in its own file (its options struct, each option's
+// flag, key, range, default and help, and the fields binding them): a new method with options of
+// its own is its file and its row below.
+extern const MethodOptionSet kVsmOptions;
 std::unique_ptr<ShadowMethod> makeRayTrace(const ShaderLibrary&);
 
 namespace {
@@ -202,23 +207,6 @@ constexpr MethodOption kTerminatorOffset{
     0,
     0,
     "on|off"};
-constexpr MethodOption kVsmBlur{"--vsm-blur",
-                                "blur",
-                                OptionKind::Float,
-                                "0.1",
-                                "Blur radius as a multiple of the disk light's radius at the "
-                                "scene's centre (0 = no blur)",
-                                0.0,
-                                8.0};
-constexpr MethodOption kVsmBleed{"--vsm-bleed",
-                                 "bleed",
-                                 OptionKind::Float,
-                                 "0.2",
-                                 "Light-bleeding reduction: the share of Chebyshev's bound cut "
-                                 "off as shadow",
-                                 0.0,
-                                 0.95};
-
 // --- Each method's options struct, field by field (OptionStructs.h) ----------------------------
 
 // Choices as their types; the text is validated before it gets here.
@@ -277,8 +265,6 @@ constexpr OptionField kGroundTruthFields[] = {
     field<&GroundTruthOptions::samples>(kReferenceSamples),
     field<&GroundTruthOptions::mapSize>(kReferenceMapSize),
     parsedField<geom::diskPatternNamed, &GroundTruthOptions::pattern>(kReferencePattern)};
-constexpr OptionField kVsmFields[] = {field<&VsmOptions::blur>(kVsmBlur),
-                                      field<&VsmOptions::bleed>(kVsmBleed)};
 constexpr OptionField kRayTraceFields[] = {
     field<&RayTraceOptions::samples>(kRaySamples), field<&RayTraceOptions::grid>(kRayGrid),
     parsedField<terminatorOffsetOn, &RayTraceOptions::terminatorOffset>(kTerminatorOffset)};
@@ -321,100 +307,106 @@ void checkEyeFlood(const MethodOptions& o, const MethodDescriptor& m, int mapSiz
 
 // --- The table ----------------------------------------------------------------------------------
 
-const MethodDescriptor kTable[] = {
-    {.name = "hard",
-     .help = "one shadow-map test at the light's centre",
-     .phases = kHardPhases,
-     .make = makeHard,
-     .cheapest = true},
-    {.name = "jfa-l",
-     .help = "JFA penumbra map in light space (thesis 5.3)",
-     .reference = "flood-l",
-     .options = optionSet<LightFloodOptions>(kLightFloodFields),
-     .phases = kLightFloodPhases,
-     .shadowMapPositions = true,
-     .floods = true,
-     .make = makeJfaL,
-     .check = checkLightFlood},
-    {.name = "flood-l",
-     .help = "jfa-l's standard-flooding reference",
-     .options = optionSet<LightFloodOptions>(kLightFloodFields),
-     .phases = kLightFloodPhases,
-     .shadowMapPositions = true,
-     .floods = true,
-     .make = makeFloodL,
-     .check = checkLightFlood},
-    {.name = "jfa-e",
-     .help = "JFA soft shadows in eye space (thesis 5.4)",
-     .reference = "flood-e",
-     .space = MethodSpace::Eye,
-     .options = optionSet<EyeFloodOptions>(kEyeFloodFields),
-     .phases = kEyeFloodPhases,
-     .shadowMapPositions = true,
-     .floods = true,
-     .make = makeJfaE,
-     .check = checkEyeFlood},
-    {.name = "flood-e",
-     .help = "jfa-e's standard-flooding reference",
-     .space = MethodSpace::Eye,
-     .options = optionSet<EyeFloodOptions>(kEyeFloodFields),
-     .phases = kEyeFloodPhases,
-     .shadowMapPositions = true,
-     .floods = true,
-     .make = makeFloodE,
-     .check = checkEyeFlood},
-    {.name = "pcf",
-     .help = "baseline: percentage-closer filtering, a k x k kernel",
-     .options = optionSet<PcfOptions>(kPcfFields),
-     .phases = kPcfPhases,
-     .make = makePcf},
-    {.name = "pcss",
-     .help = "baseline: percentage-closer soft shadows (Fernando 2005)",
-     .options = optionSet<PcssOptions>(kPcssFields),
-     .phases = kPcssPhases,
-     .make = makePcss},
-    {.name = "vsm",
-     .help = "baseline: variance shadow maps, blur sized from the light radius",
-     .options = optionSet<VsmOptions>(kVsmFields),
-     .phases = kVsmPhases,
-     .make = makeVsm},
-    {.name = "reference",
-     .help = "ground truth: N point-light shadow maps over the disk, averaged",
-     .options = optionSet<GroundTruthOptions>(kGroundTruthFields),
-     .phases = kGroundTruthPhases,
-     .make = makeGroundTruth,
-     .truth = "maps"},
-    {.name = "raytrace",
-     .help = "exact ground truth: N shadow rays per pixel to the disk light (Embree, CPU)",
-     .space = MethodSpace::Eye,
-     .options = optionSet<RayTraceOptions>(kRayTraceFields),
-     .phases = kRayTracePhases,
-     .cycles = false,
-     .make = makeRayTrace,
-     .truth = "raytrace"},
-};
+// The rows, made on first use (a function-local static): a row may take what another file
+// defines (its options), which is then sure to be initialised, whichever file's static
+// initialisers run first and ask for the table.
+std::span<const MethodDescriptor> rows() {
+    static const MethodDescriptor table[] = {
+        {.name = "hard",
+         .help = "one shadow-map test at the light's centre",
+         .phases = kHardPhases,
+         .make = makeHard,
+         .cheapest = true},
+        {.name = "jfa-l",
+         .help = "JFA penumbra map in light space (thesis 5.3)",
+         .reference = "flood-l",
+         .options = optionSet<LightFloodOptions>(kLightFloodFields),
+         .phases = kLightFloodPhases,
+         .shadowMapPositions = true,
+         .floods = true,
+         .make = makeJfaL,
+         .check = checkLightFlood},
+        {.name = "flood-l",
+         .help = "jfa-l's standard-flooding reference",
+         .options = optionSet<LightFloodOptions>(kLightFloodFields),
+         .phases = kLightFloodPhases,
+         .shadowMapPositions = true,
+         .floods = true,
+         .make = makeFloodL,
+         .check = checkLightFlood},
+        {.name = "jfa-e",
+         .help = "JFA soft shadows in eye space (thesis 5.4)",
+         .reference = "flood-e",
+         .space = MethodSpace::Eye,
+         .options = optionSet<EyeFloodOptions>(kEyeFloodFields),
+         .phases = kEyeFloodPhases,
+         .shadowMapPositions = true,
+         .floods = true,
+         .make = makeJfaE,
+         .check = checkEyeFlood},
+        {.name = "flood-e",
+         .help = "jfa-e's standard-flooding reference",
+         .space = MethodSpace::Eye,
+         .options = optionSet<EyeFloodOptions>(kEyeFloodFields),
+         .phases = kEyeFloodPhases,
+         .shadowMapPositions = true,
+         .floods = true,
+         .make = makeFloodE,
+         .check = checkEyeFlood},
+        {.name = "pcf",
+         .help = "baseline: percentage-closer filtering, a k x k kernel",
+         .options = optionSet<PcfOptions>(kPcfFields),
+         .phases = kPcfPhases,
+         .make = makePcf},
+        {.name = "pcss",
+         .help = "baseline: percentage-closer soft shadows (Fernando 2005)",
+         .options = optionSet<PcssOptions>(kPcssFields),
+         .phases = kPcssPhases,
+         .make = makePcss},
+        {.name = "vsm",
+         .help = "baseline: variance shadow maps, blur sized from the light radius",
+         .options = kVsmOptions,
+         .phases = kVsmPhases,
+         .make = makeVsm},
+        {.name = "reference",
+         .help = "ground truth: N point-light shadow maps over the disk, averaged",
+         .options = optionSet<GroundTruthOptions>(kGroundTruthFields),
+         .phases = kGroundTruthPhases,
+         .make = makeGroundTruth,
+         .truth = "maps"},
+        {.name = "raytrace",
+         .help = "exact ground truth: N shadow rays per pixel to the disk light (Embree, CPU)",
+         .space = MethodSpace::Eye,
+         .options = optionSet<RayTraceOptions>(kRayTraceFields),
+         .phases = kRayTracePhases,
+         .cycles = false,
+         .make = makeRayTrace,
+         .truth = "raytrace"},
+    };
+    return table;
+}
 
 } // namespace
 
 const MethodDescriptor& cheapestMethod() {
-    for (const MethodDescriptor& m : kTable)
+    for (const MethodDescriptor& m : rows())
         if (m.cheapest) return m;
     throw std::logic_error("the method table marks no method cheapest");
 }
 
 std::span<const MethodDescriptor> methodTable() {
-    return kTable;
+    return rows();
 }
 
 const MethodDescriptor* findMethod(std::string_view name) {
-    for (const MethodDescriptor& m : kTable)
+    for (const MethodDescriptor& m : rows())
         if (m.name == name) return &m;
     return nullptr;
 }
 
 std::string methodNames(std::string_view separator) {
     std::string out;
-    for (const MethodDescriptor& m : kTable) {
+    for (const MethodDescriptor& m : rows()) {
         if (!out.empty()) out += separator;
         out += m.name;
     }
@@ -423,7 +415,7 @@ std::string methodNames(std::string_view separator) {
 
 std::string methodNamesWhere(const std::function<bool(const MethodDescriptor&)>& pred) {
     std::string out;
-    for (const MethodDescriptor& m : kTable)
+    for (const MethodDescriptor& m : rows())
         if (pred(m)) out += (out.empty() ? "" : ", ") + std::string(m.name);
     return out;
 }
@@ -435,7 +427,7 @@ const MethodDescriptor& methodOrThrow(std::string_view name) {
 }
 
 const MethodDescriptor& groundTruth(std::string_view kind) {
-    for (const MethodDescriptor& m : kTable)
+    for (const MethodDescriptor& m : rows())
         if (!m.truth.empty() && m.truth == kind) return m;
     throw std::invalid_argument(
         cat("unknown ground truth '", kind, "' (valid: ", groundTruthKinds(), ")"));
@@ -443,7 +435,7 @@ const MethodDescriptor& groundTruth(std::string_view kind) {
 
 std::string groundTruthKinds() {
     std::string out;
-    for (const MethodDescriptor& m : kTable)
+    for (const MethodDescriptor& m : rows())
         if (!m.truth.empty()) {
             if (!out.empty()) out += '|';
             out += m.truth;
@@ -453,7 +445,7 @@ std::string groundTruthKinds() {
 
 std::vector<const MethodOption*> allMethodOptions() {
     std::vector<const MethodOption*> out;
-    for (const MethodDescriptor& m : kTable)
+    for (const MethodDescriptor& m : rows())
         for (const MethodOption* o : m.options) {
             bool seen = false;
             for (const MethodOption* s : out) seen = seen || s->flag == o->flag;

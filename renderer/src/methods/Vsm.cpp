@@ -15,7 +15,6 @@
 // The CPU reference of all three phases (moments, blur, lookup: parts of frame step 3) is in
 // tests/vsm_gltest.cpp.
 
-#include <renderer/methods/OptionStructs.h>
 #include <renderer/methods/ShadowMethod.h>
 
 #include <glm/gtc/matrix_inverse.hpp>
@@ -26,6 +25,33 @@
 namespace fl {
 
 namespace {
+
+// Its options, declared here and bound to this struct's fields once (MethodOptions.h); its row
+// in MethodTable.cpp takes them as kVsmOptions.
+struct VsmOptions {
+    float blur;
+    float bleed;
+};
+
+constexpr MethodOption kVsmBlur{"--vsm-blur",
+                                "blur",
+                                OptionKind::Float,
+                                "0.1",
+                                "Blur radius as a multiple of the disk light's radius at the "
+                                "scene's centre (0 = no blur)",
+                                0.0,
+                                8.0};
+constexpr MethodOption kVsmBleed{"--vsm-bleed",
+                                 "bleed",
+                                 OptionKind::Float,
+                                 "0.2",
+                                 "Light-bleeding reduction: the share of Chebyshev's bound cut "
+                                 "off as shadow",
+                                 0.0,
+                                 0.95};
+
+constexpr OptionField kVsmFields[] = {field<&VsmOptions::blur>(kVsmBlur),
+                                      field<&VsmOptions::bleed>(kVsmBleed)};
 
 class Vsm final : public ShadowMethod {
   public:
@@ -141,6 +167,8 @@ class Vsm final : public ShadowMethod {
 };
 
 } // namespace
+
+extern constexpr MethodOptionSet kVsmOptions = optionSet<VsmOptions>(kVsmFields);
 
 std::unique_ptr<ShadowMethod> makeVsm(const gl::ShaderLibrary& shaders) {
     return std::make_unique<Vsm>(shaders);

@@ -1,9 +1,11 @@
 #pragma once
-// Each shadow method's options as a struct: the method reads these fields
-// (in.options<PcfOptions>().kernel), its row in the method table binds each field to its option's
-// metadata (MethodTable.cpp: flag, capture key, range, default, help), and the renderer parses
-// the settings' values into it once per settings. Members take their option's default when
-// parsed, so they carry no initializer of their own (a second copy of the default).
+// The shadow methods' options as structs, for the methods that share them or whose options other
+// code reads (a method with options of its own declares its struct in its own file, as vsm
+// does): the method reads these fields (in.options<PcfOptions>().kernel), its row in the method
+// table binds each field to its option's metadata (MethodTable.cpp: flag, capture key, range,
+// default, help), and the renderer parses the settings' values into it once per settings. Members
+// take their option's default when parsed, so they carry no initializer of their own (a second copy
+// of the default).
 
 #include <renderer/soft/EyeSoftShadow.h>
 #include <renderer/soft/FilteredShadow.h>
@@ -44,11 +46,6 @@ struct PcfOptions {
 
 struct PcssOptions {
     PcssPreset preset;
-};
-
-struct VsmOptions {
-    float blur;
-    float bleed;
 };
 
 /// reference: N point-light shadow maps.
