@@ -138,6 +138,8 @@ TEST(CaptureScript, TheReferenceIsChosenByKind) {
     EXPECT_EQ(rayGrid.reference.options.values().size(), 2u);
     EXPECT_EQ(referenceValue(rayGrid, "grid"), "true");
     EXPECT_EQ(referenceInt(rayGrid, "samples"), 16);
+    EXPECT_EQ(referenceText(rayGrid.reference),
+              "raytrace: 16 shadow rays per pixel to the strata's centres (Embree)");
     // The default is the shadow-map ground truth (the faster one on this machine).
     EXPECT_EQ(parse(script()).reference.kind, "maps");
     // Every ground truth of the table takes its own row's options and describes itself.

@@ -303,7 +303,8 @@ std::string describeGroundTruth(const MethodOptions& o) {
                o.integer(kReferenceMapSize), "^2 (", o.text(kReferencePattern), ")");
 }
 std::string describeRayTrace(const MethodOptions& o) {
-    return cat(o.integer(kRaySamples), " shadow rays per pixel (Embree)");
+    return cat(o.integer(kRaySamples), " shadow rays per pixel",
+               o.flag(kRayGrid) ? " to the strata's centres" : "", " (Embree)");
 }
 
 // --- Checks before rendering --------------------------------------------------------------------
