@@ -36,7 +36,8 @@ void checkScript(const fl::app::CaptureScript& s) {
     for (const auto& [w, h] : s.resolutions) REQUIRE(w >= 1 && w <= 8192 && h >= 1 && h <= 8192);
     REQUIRE(s.shadowMapProvider == "uniform" || s.shadowMapProvider == "tsm");
     REQUIRE(s.shadowMapSize >= 16 && s.shadowMapSize <= 8192);
-    REQUIRE(s.reference.samples >= 1 && s.reference.mapSize >= 16);
+    for (const fl::MethodOption* o : s.reference.method().options) // every one valid
+        REQUIRE(fl::checkOptionValue(*o, s.reference.options.text(*o)).empty());
     (void)fl::app::referenceText(s.reference); // throws for an unknown kind: a bug here
     REQUIRE(!s.methods.empty());
     std::set<std::string> labels;

@@ -19,6 +19,14 @@ CaptureScript parse(const std::string& text) {
     return parseCaptureScript(text, kFile);
 }
 
+// The reference's option `key` (given or its row's default), as text and as an integer.
+std::string referenceValue(const CaptureScript& s, std::string_view key) {
+    return s.reference.options.text(*s.reference.method().option(key));
+}
+int referenceInt(const CaptureScript& s, std::string_view key) {
+    return s.reference.options.integer(*s.reference.method().option(key));
+}
+
 // A minimal valid script with `extra` members added (leading comma included by the caller).
 std::string script(const std::string& extra = "",
                    const std::string& methods = R"(["hard", "jfa-l"])") {
@@ -35,7 +43,7 @@ TEST(CaptureScript, MinimalScriptHasDefaults) {
     ASSERT_EQ(s.resolutions.size(), 1u);
     EXPECT_EQ(s.resolutions[0], std::make_pair(512, 512));
     EXPECT_EQ(s.shadowMapProvider, "uniform");
-    EXPECT_EQ(s.reference.samples, ReferenceSettings{}.samples);
+    EXPECT_EQ(referenceInt(s, "samples"), ReferenceSettings{}.samples);
     ASSERT_EQ(s.methods.size(), 2u);
     EXPECT_EQ(s.methods[1].method, "jfa-l");
     EXPECT_EQ(s.methods[1].label, "jfa-l");
@@ -75,8 +83,8 @@ TEST(CaptureScript, EveryField) {
     EXPECT_EQ(s.jfaPasses, "5");
     EXPECT_EQ(s.reference.kind, "maps");
     EXPECT_EQ(s.reference.method().name, "reference");
-    EXPECT_EQ(s.reference.samples, 16);
-    EXPECT_EQ(s.reference.mapSize, 256);
+    EXPECT_EQ(referenceInt(s, "samples"), 16);
+    EXPECT_EQ(referenceInt(s, "mapSize"), 256);
     EXPECT_FALSE(s.saveFrames);
     ASSERT_EQ(s.methods.size(), 6u);
     const MethodOption& preset = *findMethod("pcss")->option("preset");
@@ -109,21 +117,41 @@ TEST(CaptureScript, TheReferenceIsChosenByKind) {
         parse(script(R"(, "reference": {"kind": "raytrace", "samples": 64})"));
     EXPECT_EQ(rays.reference.kind, "raytrace");
     EXPECT_EQ(rays.reference.method().name, "raytrace");
-    EXPECT_EQ(rays.reference.samples, 64);
+    EXPECT_EQ(referenceInt(rays, "samples"), 64);
     EXPECT_EQ(referenceText(rays.reference), "raytrace: 64 shadow rays per pixel (Embree)");
     const CaptureScript maps = parse(script(R"(, "reference": {"kind": "maps", "mapSize": 512})"));
     EXPECT_EQ(maps.reference.method().name, "reference");
     EXPECT_EQ(referenceText(maps.reference), "maps: 256 point-light shadow maps of 512^2 (spiral)");
     const CaptureScript grid = parse(script(R"(, "reference": {"pattern": "grid"})"));
-    EXPECT_EQ(grid.reference.pattern, "grid");
+    EXPECT_EQ(referenceValue(grid, "pattern"), "grid");
     EXPECT_EQ(referenceText(grid.reference), "maps: 256 point-light shadow maps of 2048^2 (grid)");
     // The ray tracer's terminator offset: on unless the script says off.
-    EXPECT_EQ(rays.reference.terminatorOffset, "on");
-    EXPECT_EQ(parse(script(R"(, "reference": {"kind": "raytrace", "terminatorOffset": "off"})"))
-                  .reference.terminatorOffset,
-              "off");
+    EXPECT_EQ(referenceValue(rays, "terminatorOffset"), "on");
+    EXPECT_EQ(
+        referenceValue(
+            parse(script(R"(, "reference": {"kind": "raytrace", "terminatorOffset": "off"})")),
+            "terminatorOffset"),
+        "off");
+    // Any option of the truth's row, stored by its flag as the script gives it.
+    const CaptureScript rayGrid =
+        parse(script(R"(, "reference": {"kind": "raytrace", "grid": true, "samples": 16.0})"));
+    EXPECT_EQ(rayGrid.reference.options.values().size(), 2u);
+    EXPECT_EQ(referenceValue(rayGrid, "grid"), "true");
+    EXPECT_EQ(referenceInt(rayGrid, "samples"), 16);
+    EXPECT_EQ(referenceText(rayGrid.reference),
+              "raytrace: 16 shadow rays per pixel to the strata's centres (Embree)");
     // The default is the shadow-map ground truth (the faster one on this machine).
     EXPECT_EQ(parse(script()).reference.kind, "maps");
+    // Every ground truth of the table takes its own row's options and describes itself.
+    for (const MethodDescriptor& m : methodTable()) {
+        if (m.truth.empty()) continue;
+        EXPECT_NE(m.describe, nullptr) << m.name;
+        const CaptureScript t =
+            parse(script(R"(, "reference": {"kind": ")" + std::string(m.truth) + "\"}"));
+        EXPECT_EQ(&t.reference.method(), &m);
+        EXPECT_TRUE(referenceText(t.reference).starts_with(std::string(m.truth) + ": "))
+            << referenceText(t.reference);
+    }
 }
 
 TEST(CaptureScript, CameraFromAFile) {
@@ -192,6 +220,9 @@ TEST(CaptureScript, EveryMalformedFieldIsNamed) {
         {script(R"(, "reference": {"kind": "raytrace", "terminatorOffset": "maybe"})"),
          "reference.terminatorOffset"},
         {script(R"(, "reference": {"terminatorOffset": "off"})"), "reference.terminatorOffset"},
+        {script(R"(, "reference": {"grid": true})"), "reference.grid"},
+        {script(R"(, "reference": {"kind": "raytrace", "grid": "yes"})"), "reference.grid"},
+        {script(R"(, "reference": {"lights": 3})"), "reference.lights"},
         {script(R"(, "saveFrames": "yes")"), "saveFrames"},
         {script(R"(, "ground": "maybe")"), "ground"},
         {script(R"(, "ground": true)"), "ground"},

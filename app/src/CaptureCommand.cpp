@@ -72,14 +72,13 @@ void prepareOutput(const fs::path& dir) {
 
 // Whether a script's entry is the ground truth itself (its row is then the reference against
 // itself, from lane 0): the same method, and every option the entry gives has the reference's
-// value. {"method": "reference", "mapSize": 1024} beside a 2048² reference is a method of its
-// own, rendered in its own lane.
+// value (given or the row's default). {"method": "reference", "mapSize": 1024} beside a 2048²
+// reference is a method of its own, rendered in its own lane.
 bool isTheReference(const MethodSpec& m, const RenderSettings& reference) {
     if (m.method != reference.method) return false;
-    for (const auto& [flag, value] : m.options.values()) {
-        const auto it = reference.options.values().find(flag);
-        if (it == reference.options.values().end() || it->second != value) return false;
-    }
+    for (const MethodOption* o : methodOrThrow(m.method).options)
+        if (m.options.has(o->flag) && m.options.text(*o) != reference.options.text(*o))
+            return false;
     return true;
 }
 
@@ -440,17 +439,12 @@ SceneOptions sceneOptionsOf(const CaptureScript& script, const CaptureRequest& r
     return so;
 }
 
-// The ground truth's settings: `base` with the script's reference method and its options.
+// The ground truth's settings: `base` with the script's reference method and the options the
+// script gives it (its row's defaults for the rest).
 RenderSettings referenceSettings(const CaptureScript& script, RenderSettings base) {
-    const MethodDescriptor& truth = script.reference.method();
-    base.method = std::string(truth.name);
-    base.options.set(truth.option("samples")->flag, script.reference.samples);
-    if (const MethodOption* mapSize = truth.option("mapSize"))
-        base.options.set(mapSize->flag, script.reference.mapSize);
-    if (const MethodOption* pattern = truth.option("pattern"))
-        base.options.set(pattern->flag, script.reference.pattern);
-    if (const MethodOption* offset = truth.option("terminatorOffset"))
-        base.options.set(offset->flag, script.reference.terminatorOffset);
+    base.method = std::string(script.reference.method().name);
+    for (const auto& [flag, value] : script.reference.options.values())
+        base.options.set(flag, value);
     return base;
 }
 

@@ -2,6 +2,7 @@
 
 #include <app/CaptureResults.h>
 
+#include <base/Numbers.h>
 #include <base/Stats.h>
 
 #include <algorithm>
@@ -205,6 +206,35 @@ nlohmann::json summaryDefinitions() {
                          "method lights by more than 0.1"}};
 }
 
+// An option's value as JSON by its kind: 256, 0.5, "spiral", true.
+nlohmann::json optionJson(const MethodOptions& values, const MethodOption& o) {
+    switch (o.kind) {
+    case OptionKind::Int:
+        return values.integer(o);
+    case OptionKind::Float: {
+        double v = 0.0; // as written (0.1), not rounded to the method's float
+        parseNumber(values.text(o), v);
+        return v;
+    }
+    case OptionKind::Flag:
+        return values.flag(o);
+    case OptionKind::Choice:
+        break;
+    }
+    return values.text(o);
+}
+
+// The ground truth: its kind, its method and each option of its row by capture key (a flag
+// option only when the script sets it: off is its absence, as on the command line).
+nlohmann::json referenceSummary(const CaptureScript::Reference& ref) {
+    const MethodDescriptor& truth = ref.method();
+    nlohmann::json j = {{"kind", ref.kind}, {"method", std::string(truth.name)}};
+    for (const MethodOption* o : truth.options)
+        if (o->kind != OptionKind::Flag || ref.options.has(o->flag))
+            j[std::string(o->key)] = optionJson(ref.options, *o);
+    return j;
+}
+
 } // namespace
 
 nlohmann::json resultsSummary(const CaptureResults& r) {
@@ -220,14 +250,8 @@ nlohmann::json resultsSummary(const CaptureResults& r) {
     j["shadowMap"] = {{"provider", s.shadowMapProvider}, {"size", s.shadowMapSize}};
     for (const TsmOption& t : tsmOptions()) j["shadowMap"][std::string(t.key)] = s.tsm.*t.field;
     j["jfaPasses"] = s.jfaPasses;
-    j["reference"] = {{"kind", s.reference.kind},
-                      {"method", std::string(s.reference.method().name)},
-                      {"samples", s.reference.samples},
-                      {"medianFrameMs", fl::median(r.referenceFrameMs)}};
-    if (s.reference.method().option("mapSize")) j["reference"]["mapSize"] = s.reference.mapSize;
-    if (s.reference.method().option("pattern")) j["reference"]["pattern"] = s.reference.pattern;
-    if (s.reference.method().option("terminatorOffset"))
-        j["reference"]["terminatorOffset"] = s.reference.terminatorOffset;
+    j["reference"] = referenceSummary(s.reference);
+    j["reference"]["medianFrameMs"] = fl::median(r.referenceFrameMs);
     j["definitions"] = summaryDefinitions();
     const std::vector<std::string> phases = allPhases(r);
     nlohmann::json methods = nlohmann::json::array();

@@ -219,8 +219,17 @@ void parseJfaPasses(const Json& p, CaptureScript& s) {
         fail("jfaPasses", bad);
 }
 
+// The keys a "reference" object may hold: "kind" and every ground truth's options.
+std::set<std::string> referenceKeys() {
+    std::set<std::string> keys{"kind"};
+    for (const MethodDescriptor& m : methodTable())
+        if (!m.truth.empty())
+            for (const MethodOption* o : m.options) keys.emplace(o->key);
+    return keys;
+}
+
 void parseReference(const Json& r, CaptureScript& s) {
-    checkKeys(r, "reference", {"kind", "samples", "mapSize", "pattern", "terminatorOffset"});
+    checkKeys(r, "reference", referenceKeys());
     if (r.contains("kind")) {
         if (!r["kind"].is_string())
             fail("reference.kind", "expected \"" + groundTruthKinds() + "\"");
@@ -242,12 +251,7 @@ void parseReference(const Json& r, CaptureScript& s) {
         if (!o) fail(f, "the " + s.reference.kind + " reference does not take it");
         const std::string given = optionText(value);
         if (const std::string bad = checkOptionValue(*o, given); !bad.empty()) fail(f, bad);
-        if (key == "pattern")
-            s.reference.pattern = given;
-        else if (key == "terminatorOffset")
-            s.reference.terminatorOffset = given;
-        else
-            (key == "samples" ? s.reference.samples : s.reference.mapSize) = std::stoi(given);
+        s.reference.options.set(o->flag, given);
     }
 }
 
@@ -371,10 +375,8 @@ CaptureScript readCaptureScript(const std::filesystem::path& file) {
 }
 
 std::string referenceText(const CaptureScript::Reference& r) {
-    if (r.method().option("mapSize"))
-        return cat(r.kind, ": ", r.samples, " point-light shadow maps of ", r.mapSize, "^2 (",
-                   r.pattern, ")");
-    return cat(r.kind, ": ", r.samples, " shadow rays per pixel (Embree)");
+    const MethodDescriptor& truth = r.method();
+    return cat(r.kind, ": ", truth.describe ? truth.describe(r.options) : std::string(truth.help));
 }
 
 RenderSettings settingsFor(const RenderSettings& base, const MethodSpec& m) {

@@ -12,12 +12,11 @@
 //    "resolutions": [[W, H], ...],                         // default [[512, 512]]
 //    "shadowMap": {"provider": "uniform" | "tsm", "size": S},
 //    "jfaPasses": P | "auto",                              // default "auto" (as --jfa-passes)
-//    "reference": {"kind": "maps" | "raytrace", "samples": N, "mapSize": S,
-//                  "pattern": "spiral" | "grid" | "jittered", "terminatorOffset": "on" | "off"},
-//                                                          // the ground truth every metric is
-//                                                          // measured against (default maps);
-//                                                          // mapSize, pattern: maps only;
-//                                                          // terminatorOffset: raytrace only
+//    "reference": {"kind": KIND, KEY: VALUE, ...},         // the ground truth every metric is
+//                                                          // measured against: the method-table
+//                                                          // row of truth KIND (groundTruthKinds;
+//                                                          // default kCaptureTruth); keys: that
+//                                                          // row's options
 //    "methods": ["hard", "pcss:16/24", "pcf:5", {"method": "jfa-l", "passes": 7, "label": ".."}],
 //                                                          // keys: the method's options in the
 //                                                          // method table ("name:V" sets its
@@ -69,14 +68,11 @@ struct CaptureScript {
     int shadowMapSize = 1024;
     geom::TrapezoidParams tsm; // "shadowMap": the keys of tsmOptions()
     std::string jfaPasses{floodPassesOption().defaultValue}; // --jfa-passes of every flood method
-    /// The ground truth the metrics use: a method of the table with a `truth` kind, with its
-    /// options (samples; mapSize for maps).
+    /// The ground truth the metrics use: a method of the table with a `truth` kind, with the
+    /// options the script gives it, by flag (checked against its row; unset: the row's defaults).
     struct Reference {
-        std::string kind = "maps";
-        int samples = 256;
-        int mapSize = 2048;                  // maps only
-        std::string pattern = "spiral";      // maps only: --reference-pattern
-        std::string terminatorOffset = "on"; // raytrace only: --terminator-offset
+        std::string kind{kCaptureTruth};
+        MethodOptions options;
         /// Its row of the method table.
         [[nodiscard]] const MethodDescriptor& method() const { return groundTruth(kind); }
     } reference;
@@ -97,8 +93,8 @@ CaptureScript parseCaptureScript(const std::string& text, const std::filesystem:
 /// CaptureScriptError.
 CaptureScript readCaptureScript(const std::filesystem::path& file);
 
-/// The reference in words: "maps: 256 point-light shadow maps of 2048^2" or "raytrace: 256
-/// shadow rays per pixel (Embree)".
+/// The reference in words, its kind and what its row says of its options: "maps: 256
+/// point-light shadow maps of 2048^2 (spiral)" or "raytrace: 256 shadow rays per pixel (Embree)".
 std::string referenceText(const CaptureScript::Reference& r);
 
 /// `base` with the method and its options applied.

@@ -282,6 +282,17 @@ constexpr std::string_view kGroundTruthPhases[] = {"reference maps", "reference 
 constexpr std::string_view kVsmPhases[] = {"vsm moments", "vsm blur", "vsm lookup"};
 constexpr std::string_view kRayTracePhases[] = {"raytrace bvh", "raytrace rays"};
 
+// --- The ground truths in words (capture's log and report) ------------------------------------
+
+std::string describeGroundTruth(const MethodOptions& o) {
+    return cat(o.integer(kReferenceSamples), " point-light shadow maps of ",
+               o.integer(kReferenceMapSize), "^2 (", o.text(kReferencePattern), ")");
+}
+std::string describeRayTrace(const MethodOptions& o) {
+    return cat(o.integer(kRaySamples), " shadow rays per pixel",
+               o.flag(kRayGrid) ? " to the strata's centres" : "", " (Embree)");
+}
+
 // --- Checks before rendering --------------------------------------------------------------------
 
 void checkLightFlood(const MethodOptions& o, const MethodDescriptor& m, int mapSize, int w, int h) {
@@ -373,7 +384,8 @@ std::span<const MethodDescriptor> rows() {
          .options = optionSet<GroundTruthOptions>(kGroundTruthFields),
          .phases = kGroundTruthPhases,
          .make = makeGroundTruth,
-         .truth = "maps"},
+         .truth = "maps",
+         .describe = describeGroundTruth},
         {.name = "raytrace",
          .help = "exact ground truth: N shadow rays per pixel to the disk light (Embree, CPU)",
          .space = MethodSpace::Eye,
@@ -381,7 +393,8 @@ std::span<const MethodDescriptor> rows() {
          .phases = kRayTracePhases,
          .cycles = false,
          .make = makeRayTrace,
-         .truth = "raytrace"},
+         .truth = "raytrace",
+         .describe = describeRayTrace},
     };
     return table;
 }

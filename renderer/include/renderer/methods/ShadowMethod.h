@@ -181,6 +181,9 @@ struct MethodDescriptor {
     /// A ground truth (what the others are measured against): the kind capture scripts name it
     /// by ("maps", "raytrace"); "" for the methods being measured.
     std::string_view truth = {};
+    /// A ground truth's options in words, for capture's log and report ("256 point-light shadow
+    /// maps of 2048^2 (spiral)"); null for the methods being measured.
+    std::string (*describe)(const MethodOptions&) = nullptr;
     /// The cheapest method, every frame-time ratio's denominator ("x hard" in the tables).
     bool cheapest = false;
 
@@ -197,6 +200,9 @@ const MethodDescriptor& groundTruth(std::string_view kind);
 std::string groundTruthKinds();
 /// The ground truth every figure is measured against unless asked otherwise: the exact one.
 inline constexpr std::string_view kExactTruth = "raytrace";
+/// The ground truth a capture script gets when it names none: the shadow maps (on the GPU, the
+/// faster of the two on this machine).
+inline constexpr std::string_view kCaptureTruth = "maps";
 
 /// The row marked cheapest (hard shadows): what the frame-time ratios divide by.
 const MethodDescriptor& cheapestMethod();
