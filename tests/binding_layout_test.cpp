@@ -2,6 +2,8 @@
 // names an entry of the layout of the right kind, the C++ constants name the same entries, and no
 // C++ bind call takes a number for its binding point. Reads the source tree; no GL needed.
 
+#include "SourceFolders.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -256,9 +258,7 @@ TEST(BindingLayout, CppConstantsNameExactlyTheLayoutEntries) {
 
 TEST(BindingLayout, NoCppBindCallTakesANumber) {
     std::vector<fs::path> roots;
-    for (const char* dir :
-         {"renderer", "jfa", "jfa_gl", "geometry", "geometry_gl", "scene", "io", "gpu", "app"})
-        roots.push_back(kRoot / dir);
+    for (const std::string_view dir : fl::test::kLibraryFolders) roots.push_back(kRoot / dir);
     const std::vector<std::string> errors = sourceErrors(roots);
     EXPECT_TRUE(errors.empty()) << joined(errors);
 }

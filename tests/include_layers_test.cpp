@@ -3,6 +3,8 @@
 // inside the renderer each folder includes only the folders below it, and nothing reaches into
 // another library's src/. The table below is the rule; the scan reads every source of the tree.
 
+#include "SourceFolders.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -145,13 +147,22 @@ TEST(IncludeLayers, TheCheckFindsEachKindOfProblem) {
     EXPECT_TRUE(layerProblems("app/src/A.cpp", "app", "#include <renderer/Renderer.h>\n").empty());
 }
 
+TEST(IncludeLayers, TheTableNamesEveryLibraryFolder) {
+    std::set<std::string> folders(fl::test::kLibraryFolders.begin(),
+                                  fl::test::kLibraryFolders.end());
+    std::set<std::string> inTable;
+    for (const auto& [library, uses] : layers()) inTable.insert(library);
+    EXPECT_EQ(folders, inTable);
+}
+
 TEST(IncludeLayers, EverySourceOfTheTreeIncludesDownward) {
     const fs::path root = FLOODLIGHT_SOURCE_DIR;
     std::vector<std::string> problems;
     std::size_t files = 0;
-    for (const std::string top :
-         {"base", "io", "gpu", "jfa", "jfa_gl", "geometry", "geometry_gl", "scene", "raytrace",
-          "renderer", "app", "tests", "bench", "fuzz"}) {
+    std::vector<std::string> tops(fl::test::kLibraryFolders.begin(),
+                                  fl::test::kLibraryFolders.end());
+    tops.insert(tops.end(), {"tests", "bench", "fuzz"}); // above every library
+    for (const std::string& top : tops) {
         ASSERT_TRUE(fs::is_directory(root / top)) << top;
         for (const auto& e : fs::recursive_directory_iterator(root / top)) {
             const std::string ext = e.path().extension().string();
