@@ -15,8 +15,6 @@
 #include <renderer/soft/ShadowRayInputs.h>
 #include <scene/GltfLoader.h>
 
-#include <base/Text.h>
-
 #include <BenchSupport.h>
 #include <CLI/CLI.hpp>
 
@@ -91,32 +89,11 @@ struct Entries {
 
     // Every method of the table at its defaults, but the standard-flooding references
     // (flood-l, flood-e: the JFA methods' own yardsticks) and the ground truths; a method with a
-    // swept option (MethodOption::sweep: PCF's two kernels, PCSS's presets) once per value. The
-    // ground truths last, timed on fewer frames.
+    // swept option once per value (bench/support: sweptMethods). The ground truths last, timed
+    // on fewer frames.
     void addAll() {
-        for (const fl::MethodDescriptor& m : fl::methodTable()) {
-            bool isReference = !m.truth.empty();
-            for (const fl::MethodDescriptor& other : fl::methodTable())
-                isReference = isReference || other.reference == m.name;
-            if (isReference) continue;
-            const std::string name(m.name);
-            const fl::MethodOption* swept = nullptr;
-            for (const fl::MethodOption* opt : m.options)
-                if (!opt->sweep.empty()) swept = opt;
-            if (!swept) {
-                add(name, m);
-                continue;
-            }
-            std::string_view items = swept->sweep == "*" ? swept->choices : swept->sweep;
-            while (!items.empty()) {
-                const std::size_t bar = items.find('|');
-                const std::string item(items.substr(0, bar));
-                const std::size_t eq = item.find('=');
-                const std::string value = eq == std::string::npos ? item : item.substr(eq + 1);
-                add(fl::cat(name, " ", item.substr(0, eq)), m, swept->flag, value);
-                items = bar == std::string_view::npos ? std::string_view{} : items.substr(bar + 1);
-            }
-        }
+        for (const fl::bench::MethodEntry& e : fl::bench::sweptMethods(false))
+            add(e.label, *e.method, e.flag, e.value);
         methods = all.size();
         for (const fl::MethodDescriptor& m : fl::methodTable())
             if (!m.truth.empty()) add(std::string(m.truth), m);

@@ -243,5 +243,28 @@ TEST(Metrics, FlickerCountsReceiversInBothFrames) {
     EXPECT_EQ(bothReceivers({}, maskB).data, maskB.data);
 }
 
+TEST(Metrics, LeakCountsTheTruthsUmbraLitAndDarkItsLitDarkened) {
+    // truth:  umbra 0.0 (x4), 0.05, lit 1.0 (x3), 0.95, penumbra 0.5
+    const FloatImage truth = image(10, 1, [](int x, int) {
+        return x < 4 ? 0.0f : x == 4 ? 0.05f : x < 8 ? 1.0f : x == 8 ? 0.95f : 0.5f;
+    });
+    // method: two umbra pixels lit by more than 0.3 (0.31 and 0.36; 0.3 itself is not), one
+    // lit pixel darkened by more than 0.3; the penumbra pixel counts in neither.
+    const std::vector<float> m = {0.31f, 0.3f, 0.0f, 0.0f, 0.36f, 0.6f, 1.0f, 1.0f, 0.95f, 0.0f};
+    const FloatImage method{10, 1, 1, m};
+    const ShadowLeaks l = shadowLeaks(method, truth);
+    EXPECT_EQ(l.umbra, 5u);
+    EXPECT_EQ(l.lit, 4u);
+    EXPECT_DOUBLE_EQ(l.leak, 2.0 / 5.0);
+    EXPECT_DOUBLE_EQ(l.dark, 1.0 / 4.0);
+    // Only receivers count: without pixels 0 and 5 one leak and no dark pixel remain.
+    const FloatImage mask = image(10, 1, [](int x, int) { return x == 0 || x == 5 ? 0.0f : 1.0f; });
+    const ShadowLeaks r = shadowLeaks(method, truth, mask);
+    EXPECT_DOUBLE_EQ(r.leak, 1.0 / 4.0);
+    EXPECT_DOUBLE_EQ(r.dark, 0.0);
+    EXPECT_EQ(shadowLeaks(truth, truth).leak, 0.0);
+    EXPECT_THROW((void)shadowLeaks(constant(2, 1, 0.0f), truth), std::invalid_argument);
+}
+
 } // namespace
 } // namespace fl

@@ -67,5 +67,19 @@ TEST(ShadowStats, HeatMapIsBlackForBackgroundAndGreenAtOnePixelPerTexel) {
     EXPECT_EQ(h.data[8], 255); // red at >= 16
 }
 
+TEST(ShadowStats, TileGridFillsRowsWithAGutter) {
+    const auto tile = [](std::uint8_t v) { return ByteImage{1, 1, 4, {v, v, v, v}}; };
+    const ByteImage g = tileGrid({tile(1), tile(2), tile(3)}, 2, 1);
+    ASSERT_EQ(g.width, 3);
+    ASSERT_EQ(g.height, 3);
+    EXPECT_EQ(g.data[0], 1);
+    EXPECT_EQ(g.data[4], 255); // gutter
+    EXPECT_EQ(g.data[8], 2);
+    EXPECT_EQ(g.data[(2 * 3 + 0) * 4], 3);   // second row
+    EXPECT_EQ(g.data[(2 * 3 + 2) * 4], 255); // no fourth tile: white
+    EXPECT_THROW((void)tileGrid({tile(1), ByteImage{2, 1, 4, std::vector<std::uint8_t>(8)}}, 2),
+                 std::invalid_argument);
+}
+
 } // namespace
 } // namespace fl

@@ -54,5 +54,19 @@ TEST(SoftStats, DifferencePictureScalesByGain) {
     EXPECT_EQ(d.data[4], 255); // clamped
 }
 
+TEST(SoftStats, SignedDifferencePictureIsRedWhereTooBrightBlueWhereTooDark) {
+    // method - reference: +0.25 (half red), -0.5 (full blue), 0 (white), +0.2 off the mask.
+    const FloatImage m = row({0.75f, 0.0f, 0.3f, 0.7f}), r = row({0.5f, 0.5f, 0.3f, 0.5f});
+    const ByteImage d = signedDifferencePicture(m, r, 0.5f, row({1.0f, 1.0f, 1.0f, 0.0f}));
+    const auto px = [&](int i) {
+        return std::vector<int>(d.data.begin() + 4 * i, d.data.begin() + 4 * i + 3);
+    };
+    EXPECT_EQ(px(0), (std::vector<int>{255, 128, 128}));
+    EXPECT_EQ(px(1), (std::vector<int>{0, 0, 255}));
+    EXPECT_EQ(px(2), (std::vector<int>{255, 255, 255}));
+    EXPECT_EQ(px(3), (std::vector<int>{0, 0, 0})); // not a receiver
+    EXPECT_THROW((void)signedDifferencePicture(row({0.0f}), r), std::invalid_argument);
+}
+
 } // namespace
 } // namespace fl

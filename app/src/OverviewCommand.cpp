@@ -38,23 +38,6 @@ struct Result {
     double rmse = 0.0;
 };
 
-// The tiles in rows of `columns`, white between them; every tile has the same size.
-ByteImage grid(const std::vector<ByteImage>& tiles, int columns, int gap = 4) {
-    const int w = tiles.front().width, h = tiles.front().height;
-    const int rows = (static_cast<int>(tiles.size()) + columns - 1) / columns;
-    const int W = columns * w + (columns - 1) * gap, H = rows * h + (rows - 1) * gap;
-    ByteImage out{W, H, 4, std::vector<std::uint8_t>(static_cast<std::size_t>(W) * H * 4, 255)};
-    for (std::size_t t = 0; t < tiles.size(); ++t) {
-        const int x0 = static_cast<int>(t) % columns * (w + gap);
-        const int y0 = static_cast<int>(t) / columns * (h + gap);
-        for (int y = 0; y < h; ++y)
-            std::copy_n(&tiles[t].data[static_cast<std::size_t>(y) * w * 4],
-                        static_cast<std::size_t>(w) * 4,
-                        &out.data[(static_cast<std::size_t>(y0 + y) * W + x0) * 4]);
-    }
-    return out;
-}
-
 } // namespace
 
 int renderOverview(SceneOptions o, int width, int height, const std::filesystem::path& outDir,
@@ -124,7 +107,7 @@ int renderOverview(SceneOptions o, int width, int height, const std::filesystem:
         written.insert(written.end(), {p.png, p.visibilityPng, p.exr});
     }
     const std::filesystem::path picture = outDir / (stem + ".png");
-    writePng(picture, grid(tiles, kColumns));
+    writePng(picture, tileGrid(tiles, kColumns));
     written.push_back(picture);
     for (const std::filesystem::path& p : written) std::cout << "wrote " << p.string() << "\n";
     std::cout << "overview: " << picture.string()

@@ -66,6 +66,35 @@ std::optional<std::string> parseSets(const std::vector<std::string>& sets, Metho
     return std::nullopt;
 }
 
+std::vector<MethodEntry> sweptMethods(bool withFloodReferences) {
+    std::vector<MethodEntry> out;
+    for (const MethodDescriptor& m : methodTable()) {
+        if (!m.truth.empty()) continue;
+        const bool isReference =
+            std::any_of(methodTable().begin(), methodTable().end(),
+                        [&](const MethodDescriptor& other) { return other.reference == m.name; });
+        if (isReference && !withFloodReferences) continue;
+        const std::string name(m.name);
+        const MethodOption* swept = nullptr;
+        for (const MethodOption* opt : m.options)
+            if (!opt->sweep.empty()) swept = opt;
+        if (!swept) {
+            out.push_back({name, &m, {}, {}});
+            continue;
+        }
+        std::string_view items = swept->sweep == "*" ? swept->choices : swept->sweep;
+        while (!items.empty()) {
+            const std::size_t bar = items.find('|');
+            const std::string item(items.substr(0, bar));
+            const std::size_t eq = item.find('=');
+            const std::string value = eq == std::string::npos ? item : item.substr(eq + 1);
+            out.push_back({name + " " + item.substr(0, eq), &m, std::string(swept->flag), value});
+            items = bar == std::string_view::npos ? std::string_view{} : items.substr(bar + 1);
+        }
+    }
+    return out;
+}
+
 std::vector<Lane> lanesOf(const std::vector<std::string>& labels,
                           const std::vector<std::unique_ptr<Renderer>>& renderers) {
     std::vector<Lane> lanes;

@@ -49,6 +49,20 @@ class MethodFlags {
 /// Parses --set's FLAG=VALUE pairs; returns the problem ("--set X: ...") or nothing.
 std::optional<std::string> parseSets(const std::vector<std::string>& sets, MethodOptions& out);
 
+/// One method of the table at one setting: its label ("pcss 16/24"), its row, and the option
+/// its sweep sets ("" for none).
+struct MethodEntry {
+    std::string label;
+    const MethodDescriptor* method = nullptr;
+    std::string flag, value;
+};
+
+/// Every method of the table that is not a ground truth, in table order, at its defaults; a
+/// method with a swept option (MethodOption::sweep: PCF's two kernels, PCSS's presets) once per
+/// value, labelled "NAME ITEM". The standard-flooding references (flood-l, flood-e: the JFA
+/// methods' own yardsticks) only `withFloodReferences`.
+std::vector<MethodEntry> sweptMethods(bool withFloodReferences);
+
 /// One lane per renderer for the frame-loop runner, labelled in order.
 std::vector<Lane> lanesOf(const std::vector<std::string>& labels,
                           const std::vector<std::unique_ptr<Renderer>>& renderers);

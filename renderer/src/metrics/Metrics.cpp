@@ -105,6 +105,28 @@ FrameMetrics compareWithReference(const FloatImage& m, const FloatImage& r,
     return f;
 }
 
+ShadowLeaks shadowLeaks(const FloatImage& m, const FloatImage& r, const FloatImage& mask) {
+    requireSameShape(m, r, "shadowLeaks");
+    requireMaskFor(m, mask, "shadowLeaks");
+    ShadowLeaks out;
+    std::size_t leaks = 0, darks = 0;
+    for (std::size_t i = 0; i < m.data.size(); ++i) {
+        if (!isReceiver(mask, i)) continue;
+        const float d = m.data[i] - r.data[i];
+        if (r.data[i] <= kLeakUmbraAtMost) {
+            ++out.umbra;
+            leaks += d > kLeakBy;
+        }
+        if (r.data[i] >= kLeakLitAtLeast) {
+            ++out.lit;
+            darks += -d > kLeakBy;
+        }
+    }
+    if (out.umbra) out.leak = static_cast<double>(leaks) / static_cast<double>(out.umbra);
+    if (out.lit) out.dark = static_cast<double>(darks) / static_cast<double>(out.lit);
+    return out;
+}
+
 double meanAbsoluteChange(const FloatImage& previous, const FloatImage& current,
                           const FloatImage& mask) {
     requireSameShape(previous, current, "meanAbsoluteChange");

@@ -111,4 +111,24 @@ ByteImage sideBySide(const std::vector<ByteImage>& images, int gap) {
     return out;
 }
 
+ByteImage tileGrid(const std::vector<ByteImage>& tiles, int columns, int gap) {
+    if (tiles.empty() || columns < 1) throw std::invalid_argument("tileGrid: no tiles");
+    const int w = tiles.front().width, h = tiles.front().height;
+    for (const ByteImage& t : tiles)
+        if (t.width != w || t.height != h || t.channels != 4)
+            throw std::invalid_argument("tileGrid: tiles must be RGBA and of one size");
+    const int rows = (static_cast<int>(tiles.size()) + columns - 1) / columns;
+    const int W = columns * w + (columns - 1) * gap, H = rows * h + (rows - 1) * gap;
+    ByteImage out{W, H, 4, std::vector<std::uint8_t>(static_cast<std::size_t>(W) * H * 4, 255)};
+    for (std::size_t t = 0; t < tiles.size(); ++t) {
+        const int x0 = static_cast<int>(t) % columns * (w + gap);
+        const int y0 = static_cast<int>(t) / columns * (h + gap);
+        for (int y = 0; y < h; ++y)
+            std::copy_n(&tiles[t].data[static_cast<std::size_t>(y) * w * 4],
+                        static_cast<std::size_t>(w) * 4,
+                        &out.data[(static_cast<std::size_t>(y0 + y) * W + x0) * 4]);
+    }
+    return out;
+}
+
 } // namespace fl

@@ -57,4 +57,27 @@ ByteImage differencePicture(const FloatImage& m, const FloatImage& r, float gain
     return out;
 }
 
+ByteImage signedDifferencePicture(const FloatImage& m, const FloatImage& r, float range,
+                                  const FloatImage& receivers) {
+    if (m.data.size() != r.data.size() ||
+        (!receivers.data.empty() && receivers.data.size() != m.data.size()))
+        throw std::invalid_argument("signedDifferencePicture: sizes");
+    ByteImage out{m.width, m.height, 4, std::vector<std::uint8_t>(m.data.size() * 4, 255)};
+    for (std::size_t i = 0; i < m.data.size(); ++i) {
+        std::uint8_t* px = &out.data[i * 4];
+        if (!isReceiver(receivers, i)) {
+            px[0] = px[1] = px[2] = 0;
+            continue;
+        }
+        const float d = m.data[i] - r.data[i];
+        const auto keep = static_cast<std::uint8_t>(
+            std::lround((1.0f - std::min(1.0f, std::abs(d) / range)) * 255.0f));
+        // The other two channels fade: red keeps R, blue keeps B.
+        px[0] = d < 0.0f ? keep : 255;
+        px[1] = keep;
+        px[2] = d > 0.0f ? keep : 255;
+    }
+    return out;
+}
+
 } // namespace fl

@@ -56,6 +56,26 @@ struct FrameMetrics {
                                                 const FloatImage& reference,
                                                 const FloatImage& receivers = {});
 
+/// Light through solid shadows and dark on lit surfaces (issue 41): receivers the ground truth
+/// puts in its umbra (v <= kLeakUmbraAtMost) that a method lights by more than kLeakBy, and
+/// receivers it lights fully (v >= kLeakLitAtLeast) that a method darkens by more than kLeakBy.
+/// Wider margins than the classes above: a leak is a gross error, not noise at a class edge.
+inline constexpr float kLeakUmbraAtMost = 0.05f;
+inline constexpr float kLeakLitAtLeast = 0.95f;
+inline constexpr float kLeakBy = 0.3f;
+
+struct ShadowLeaks {
+    std::size_t umbra = 0; // receivers in the reference's umbra
+    std::size_t lit = 0;   // receivers the reference lights fully
+    double leak = 0.0;     // share of `umbra` with method - reference > kLeakBy (0 if none)
+    double dark = 0.0;     // share of `lit` with reference - method > kLeakBy (0 if none)
+};
+
+/// Leak and dark of `method` against `reference` over the receivers (an empty mask: all
+/// pixels); throws std::invalid_argument if the sizes differ.
+[[nodiscard]] ShadowLeaks shadowLeaks(const FloatImage& method, const FloatImage& reference,
+                                      const FloatImage& receivers = {});
+
 /// The 10-90% transition width of a visibility image in pixels over the receivers (estimator
 /// above; an empty mask: all pixels).
 [[nodiscard]] double transitionWidth(const FloatImage& visibility,

@@ -44,4 +44,8 @@ ByteImage footprintHeatMap(const FloatImage& diagnostics);
 /// Images of equal height placed left to right with a `gap`-pixel white gutter.
 ByteImage sideBySide(const std::vector<ByteImage>& images, int gap = 4);
 
+/// Tiles of one size (RGBA) in rows of `columns`, left to right then top to bottom, with a
+/// `gap`-pixel white gutter; throws std::invalid_argument for none or unequal tiles.
+ByteImage tileGrid(const std::vector<ByteImage>& tiles, int columns, int gap = 4);
+
 } // namespace fl

@@ -37,4 +37,10 @@ SoftStats compareSoftShadows(const FloatImage& method, const FloatImage& referen
 ByteImage differencePicture(const FloatImage& method, const FloatImage& reference,
                             float gain = 4.0f, const FloatImage& receivers = {});
 
+/// method - reference per pixel in colour: white at 0, red where the method is brighter (too
+/// lit), blue where it is darker, saturating at +-`range`; black outside `receivers` when a mask
+/// is given (the pixels metrics do not count). Throws std::invalid_argument if sizes differ.
+ByteImage signedDifferencePicture(const FloatImage& method, const FloatImage& reference,
+                                  float range = 0.5f, const FloatImage& receivers = {});
+
 } // namespace fl
