@@ -107,9 +107,15 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool sceneAsOption) {
                                   " MiB); default: built-in scene";
     cmd.add_option(sceneAsOption ? "--scene" : "scene", o.scene, sceneHelp);
     // 0 is allowed: a point light, for which every soft method gives exactly the hard shadows.
-    cmd.add_option("--light-radius", o.lightRadius,
-                   "Disk light radius in scene units (0 = a point light: hard shadows)")
-        ->check(number(0.0));
+    CLI::Option* radius =
+        cmd.add_option("--light-radius", o.lightRadius,
+                       "Disk light radius in scene units (0 = a point light: hard shadows)")
+            ->check(number(0.0));
+    cmd.add_option("--light-size", o.lightSize,
+                   "Disk light radius as a fraction of the model's bounding radius (the bounds "
+                   "without an added ground), 0 to 1: the same softness on any model")
+        ->check(number(0.0, 1.0))
+        ->excludes(radius);
     cmd.add_option("--shader-dir", o.shaderDir,
                    "Load shaders from this folder instead of the binary (files of at most " +
                        std::to_string(kTextInputLimitMiB) + " MiB)");

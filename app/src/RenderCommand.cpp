@@ -91,7 +91,9 @@ int renderHeadless(const RenderRequest& r) {
     const CameraView camera = initialCamera(scene, r.scene, r.width, r.height);
     auto context = EglContext::create();
     std::cout << "context: " << context->description() << "\n"
-              << "scene: " << scene.source << " (" << scene.triangleCount() << " triangles)\n";
+              << "scene: " << scene.source << " (" << scene.triangleCount() << " triangles)\n"
+              << "light: disk radius " << sceneLight(scene).radius << " (scene radius "
+              << scene.bounds.radius() << ")\n";
     const gl::ShaderLibrary shaders = makeShaderLibrary(r.scene);
     const RenderSettings base = makeRenderSettings(r.scene);
     checkMethodOptions(base, r.width, r.height);

@@ -16,7 +16,7 @@ namespace {
 // side, so that the shadow falls beside the model in the default view), placed by hand with
 // --light-dir or --light-position (keeping its radius, colour and intensity); --light-radius
 // applies to whichever it is.
-void placeLight(Scene& scene, const SceneOptions& o) {
+void placeLight(Scene& scene, const SceneOptions& o, float modelRadius) {
     Light l = sceneLight(scene);
     if (!o.lightDir.empty() || !o.lightPosition.empty()) {
         l.name = "--light-" + std::string(o.lightDir.empty() ? "position" : "dir");
@@ -38,6 +38,7 @@ void placeLight(Scene& scene, const SceneOptions& o) {
         }
     }
     if (o.lightRadius) l.radius = *o.lightRadius;
+    if (o.lightSize) l.radius = *o.lightSize * modelRadius;
     scene.light = l;
 }
 
@@ -62,6 +63,8 @@ Scene loadScene(const SceneOptions& o) {
     } catch (const SceneError& e) {
         throw InputError(e.what());
     }
+    // --light-size is relative to the model itself, not to the ground added under it.
+    const float modelRadius = scene.bounds.radius();
     // The ground first: the default light and the camera are placed from the bounds with it.
     if (applyGround(scene, parseGroundMode(o.ground).value_or(GroundMode::Auto)))
         std::cout
@@ -70,7 +73,7 @@ Scene loadScene(const SceneOptions& o) {
                     ? "--ground on"
                     : "it has no surface under it to receive a shadow; --ground off leaves it out")
             << ")\n";
-    placeLight(scene, o);
+    placeLight(scene, o, modelRadius);
     return scene;
 }
 

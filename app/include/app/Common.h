@@ -38,7 +38,10 @@ class UsageError : public std::runtime_error {
 struct SceneOptions {
     std::string scene;                // empty = the built-in default scene
     std::optional<float> lightRadius; // --light-radius
-    std::string shaderDir;            // --shader-dir
+    /// --light-size: the disk's radius as a fraction of the model's bounding radius (the bounds
+    /// before an added ground), so one value means the same softness on any model.
+    std::optional<float> lightSize;
+    std::string shaderDir; // --shader-dir
     int shadowMapSize = 1024;
     std::string shadowMap = "uniform"; // provider: uniform | tsm
     geom::TrapezoidParams tsm;         // --tsm-quantize, --tsm-snap, --tsm-hysteresis
