@@ -15,6 +15,9 @@
 #define FL_TEX_SURFACES_DEPTH 0
 #define FL_TEX_SURFACES_NORMALS 1
 #define FL_TEX_SURFACES_BASE_COLOR 2
+// Every shadow-map lookup's point (surface_lookup.glsl): the lift and the shading normals.
+#define FL_TEX_SURFACES_LIFT 11
+#define FL_TEX_LOOKUP_NORMALS 12
 #define FL_TEX_VISIBILITY 3 // the method's visibility, R32F (shading)
 #define FL_TEX_PRESENT_COLOR 0 // the shaded frame (present)
 // The shadow map: through a comparing sampler (shadow_lookup.glsl) and raw depth (filters).
@@ -40,13 +43,14 @@
 #define FL_TEX_REACH_POSITIONS 0
 // The silhouette seeds' receivers (silhouette): the map's receiver target.
 #define FL_TEX_SILHOUETTE_RECEIVERS 0
-// Eye-space floods (eye_decode.glsl, jfae_*).
-#define FL_TEX_EYE_FLOODED 1
+// Eye-space floods (eye_decode.glsl, jfae_*). Not 1: the composite reads the shadow map there.
+#define FL_TEX_EYE_FLOODED 9
 #define FL_TEX_EYE_CELLS 2
 #define FL_TEX_EYE_DEPTH 3
 #define FL_TEX_EYE_RECEIVERS 6
 #define FL_TEX_EYE_IDS 7
 #define FL_TEX_SEED_OCCLUDERS 8
+#define FL_TEX_EYE_NORMALS 10 // SurfacesPass' normals (jfae_composite: receiver planes)
 // A finished flood read by a follow-up kernel (jfa_exact_repair, jfae_travel).
 #define FL_TEX_FLOODED 0
 // The reference shadow: the accumulated sum, then the surfaces' depth (reference_resolve).

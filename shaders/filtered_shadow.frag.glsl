@@ -5,6 +5,7 @@
 // unwarped NDC plane, looked up through the provider's warp, compared with the receiver-plane
 // depth along the light's ray through the tap.
 #include "surface_decode.glsl"
+#include "surface_lookup.glsl"
 
 // SurfacesPass: positions (surfacePosition)
 layout(binding = FL_TEX_SURFACES_DEPTH) uniform sampler2D uSurfaceDepth;
@@ -128,5 +129,6 @@ void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
     vec4 world = surfacePosition(uSurfaceDepth, p);
     // The receiver plane: the surfaces pass's geometric normal (only the plane is used).
-    oVisibility = world.w == 0.0 ? 1.0 : filtered(world.xyz, surfacePlane(uNormals, p));
+    oVisibility = world.w == 0.0 ? 1.0
+                                 : filtered(surfaceLookupPoint(world.xyz, p), surfacePlane(uNormals, p));
 }

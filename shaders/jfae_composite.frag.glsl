@@ -5,27 +5,78 @@
 // inside flag (inner penumbrae see the part of the light away from the centre). Otherwise the
 // hard shadow decides: 0 inside, 1 lit (and 1 for background). Same as fl::eyeSoftVisibility.
 // Points decode from phase 2's packed cells, seeds' occluders are phase 3's (eye_decode.glsl).
+//
+// With uOccluderEdges (--occluder-points edge, the default) the share is the one the occluder's
+// edges leave (occluder_lines.glsl, from the seed's occluder texel at sub-texel precision, what
+// another occluder covers past them fused in), where the flood's occluder point shades the
+// pixel: a smooth ramp where the penumbra is a few map texels wide, and no light through an
+// occluder one or two texels wide. Off, the thesis' point.
+#include "shadow_lookup.glsl"
 #include "disk_light.glsl"
 #include "shadow_map_decode.glsl"
 #include "occluder_edge.glsl"
+#define OCCLUDER_LINES_FUSE 1
+#include "occluder_lines.glsl"
 #include "surface_decode.glsl"
 #include "eye_decode.glsl"
 
 // packed cells: the seed pixel's index + 1
 layout(binding = FL_TEX_EYE_FLOODED) uniform sampler2D uFlooded;
+// SurfacesPass: normals (surfacePlane, the receiver's plane for the fused test)
+layout(binding = FL_TEX_EYE_NORMALS) uniform sampler2D uEyeNormals;
+uniform int uOccluderEdges;
+uniform float uSilhouetteThreshold;
 
 layout(location = 0) out float oVisibility;
+
+// A pixel the flood left empty next to one it reached borrows its neighbour's occluder (edges
+// only): the flood takes an occluder where the ray through its point reaches the disk, but the
+// point lies up to a texel off the edge, so the outermost ring of a penumbra can be missed.
+// Only from a neighbour on the pixel's own surface (within 30 degrees of its plane): across a
+// depth jump the neighbour's occluder belongs to another surface's shadow.
+float borrowedCell(ivec2 t, vec3 p, vec3 plane) {
+    const ivec2 kAxis[4] = ivec2[4](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1));
+    for (int k = 0; k < 4; ++k) {
+        ivec2 q = t + kAxis[k];
+        if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, textureSize(uFlooded, 0))))
+            continue;
+        float w = texelFetch(uFlooded, q, 0).r;
+        if (w == 0.0) continue;
+        vec4 n = eyeSurface(q);
+        vec3 d = n.xyz - p;
+        if (n.w != 0.0 && abs(dot(d, plane)) <= 0.5 * length(d)) return w;
+    }
+    return 0.0;
+}
 
 void main() {
     ivec2 t = ivec2(gl_FragCoord.xy);
     vec4 r = eyePoint(t);
     float w = texelFetch(uFlooded, t, 0).r;
-    vec4 c = vec4(0.0, 0.0, -1.0, w);
-    if (w != 0.0) c.xyz = eyeSeedOccluder(eyeSeedPixel(w)).xyz;
     bool inside = r.w == 1.0;
     float v = inside ? 0.0 : 1.0;
-    if (r.w >= 0.0 && c.w != 0.0) {
-        float intensity = occluderIntensity(r.xyz, c.xyz, inside);
+    bool edges = uOccluderEdges != 0;
+    bool borrowed = false;
+    if (w == 0.0 && edges && r.w >= 0.0 && uDiskRadius > 0.0) {
+        w = borrowedCell(t, r.xyz, surfacePlane(uEyeNormals, t));
+        borrowed = w != 0.0;
+    }
+    if (r.w >= 0.0 && w != 0.0) {
+        vec3 o = eyeSeedOccluder(eyeSeedPixel(w)).xyz;
+        float intensity = borrowed ? -1.0 : occluderIntensity(r.xyz, o, inside);
+        if (edges && (intensity >= 0.0 || borrowed)) {
+            ivec2 s = eyeFramePixel(eyeSeedPixel(w));
+            ivec2 ot = eyeCellTexel(texelFetch(uEyeCells, s, 0).r);
+            vec3 plane = surfacePlane(uEyeNormals, t);
+            OccluderLines lines = occluderLines(uEyeReceivers, ot, r.xyz, plane);
+            float l = lines.count > 0 ? occluderLinesVisibilityFused(r.xyz, plane, lines)
+                      : borrowed      ? -1.0
+                                      : occluderPointVisibilityFused(r.xyz, plane, o, inside);
+            // A borrowed occluder keeps the pixel on its side of the hard edge: it only softens a
+        // penumbra's outermost ring, never lights a point the map shadows or the reverse.
+        if (borrowed && l >= 0.0) l = inside ? min(l, 0.5) : max(l, 0.5);
+        intensity = l < 0.0 ? intensity : l;
+        }
         v = intensity < 0.0 ? v : intensity;
     }
     oVisibility = v;

@@ -15,6 +15,7 @@
 #include "occluder_edge.glsl"
 #include "surface_decode.glsl"
 #include "eye_decode.glsl"
+#include "surface_lookup.glsl"
 
 uniform int uOccluderEdges;
 uniform float uSilhouetteThreshold;
@@ -29,12 +30,13 @@ void main() {
         return;
     }
     // The same test as the hard method's hardShadow(), so radius 0 reproduces it exactly.
-    float lit = hardShadow(surface.xyz);
+    vec3 lookup = surfaceLookupPoint(surface.xyz, p);
+    float lit = hardShadow(lookup);
     vec3 uvz;
     // Lit outside the map is lit by convention, not by a depth test: it is no evidence of a
     // shadow edge, so phase 3 does not count it (a light inside an object would otherwise get a
     // false penumbra along the edge of the map's coverage).
-    if (!shadowCoord(surface.xyz, uvz)) {
+    if (!shadowCoord(lookup, uvz)) {
         oCell = eyeCellPack(kEyeOutsideMap, ivec2(0), 0u); // hardShadow() calls it lit
         return;
     }

@@ -8,6 +8,7 @@
 #include "soft_penumbra.glsl"
 #endif
 #include "surface_decode.glsl"
+#include "surface_lookup.glsl"
 
 // SurfacesPass: positions (surfacePosition)
 layout(binding = FL_TEX_PENUMBRA_SURFACES_DEPTH) uniform sampler2D uDepth;
@@ -20,6 +21,7 @@ void main() {
         oVisibility = 1.0;
         return;
     }
+    world.xyz = surfaceLookupPoint(world.xyz, ivec2(gl_FragCoord.xy));
 #ifdef SOFT_PENUMBRA_MAP
 #ifdef SOFT_PENUMBRA_BOTH
     oVisibility =

@@ -5,6 +5,7 @@
 // additive blending.
 #include "shadow_lookup.glsl"
 #include "surface_decode.glsl"
+#include "surface_lookup.glsl"
 
 // SurfacesPass: positions (surfacePosition)
 layout(binding = FL_TEX_SURFACES_DEPTH) uniform sampler2D uDepth;
@@ -14,5 +15,5 @@ layout(location = 0) out float oLit;
 void main() {
     vec4 p = surfacePosition(uDepth, ivec2(gl_FragCoord.xy));
     if (p.w == 0.0) discard;
-    oLit = hardShadow(p.xyz);
+    oLit = hardShadow(surfaceLookupPoint(p.xyz, ivec2(gl_FragCoord.xy)));
 }

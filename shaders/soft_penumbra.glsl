@@ -9,6 +9,8 @@
 #include "shadow_map_decode.glsl"
 #ifdef SOFT_PENUMBRA_BOTH
 #include "occluder_edge.glsl"
+#define OCCLUDER_LINES_FUSE 1
+#include "occluder_lines.glsl"
 #endif
 
 layout(binding = FL_TEX_PENUMBRA_MAP) uniform sampler2D uPenumbraMap;
@@ -45,17 +47,43 @@ float penumbraMapVisibility(vec3 world, vec3 plane) {
     bool inside = texture(uShadowMap, uvz) < 0.5;
     ivec2 size = textureSize(uPenumbraMap, 0);
     ivec2 t = clamp(ivec2(uvz.xy * vec2(size)), ivec2(0), size - 1);
-    vec4 o = mapSeedCell(uPenumbraReceivers, texelFetch(uPenumbraMap, t, 0).r);
+    float tag = texelFetch(uPenumbraMap, t, 0).r;
+    // A texel the flood left empty next to one it reached borrows its neighbour's occluder
+    // (edges only): the flood takes an occluder where the ray through its point reaches the
+    // disk, but the point lies up to a texel off the edge, so a penumbra's outermost ring can be
+    // missed.
+    bool borrowed = false;
+    for (int k = 0; k < 4 && tag == 0.0 && uDiskRadius > 0.0; ++k) {
+        ivec2 q = clamp(t + ivec2(k == 0 ? 1 : k == 1 ? -1 : 0, k == 2 ? 1 : k == 3 ? -1 : 0),
+                        ivec2(0), size - 1);
+        tag = texelFetch(uPenumbraMap, q, 0).r;
+        borrowed = tag != 0.0;
+    }
+    vec4 o = mapSeedCell(uPenumbraReceivers, tag);
     float lit = inside ? 0.0 : 1.0; // no occluder, or its ray misses the disk
     if (o.w == 0.0) return lit;
-    // The occluder's point at the silhouette's edge, not its texel's centre half a texel inside
-    // (occluder_edge.glsl says why; the flood ranks the centres).
-    o.xyz = occluderEdgePoint(uPenumbraReceivers,
-                              mapSeedTexel(o.w, textureSize(uPenumbraReceivers, 0).x),
-                              uSilhouetteThreshold);
+    // The occluder's edges at sub-texel precision around the texel the flood chose
+    // (occluder_lines.glsl says why), else its point at the silhouette's edge, not its texel's
+    // centre half a texel inside (occluder_edge.glsl; the flood ranks the centres).
+    ivec2 ot = mapSeedTexel(o.w, textureSize(uPenumbraReceivers, 0).x);
+    OccluderLines lines = occluderLines(uPenumbraReceivers, ot, world, plane);
+    o.xyz = lines.count > 0 ? lines.point[0]
+                            : occluderEdgePoint(uPenumbraReceivers, ot, uSilhouetteThreshold);
     if (inside && (dot(plane, uDiskCenter - world) <= 0.0 || dot(plane, o.xyz - world) <= 0.0))
         return 0.0;
-    float intensity = occluderIntensity(world, o.xyz, inside);
+    float intensity = borrowed ? -1.0 : occluderIntensity(world, o.xyz, inside);
+    // The edges give the share where the occluder's point does shade p (its ray reaches the
+    // disk; or borrowed): an edge of p's own surface, or one not between p and the light,
+    // shades nothing.
+    if (intensity >= 0.0 || borrowed) {
+        float l = lines.count > 0 ? occluderLinesVisibilityFused(world, plane, lines)
+                  : borrowed      ? -1.0
+                                  : occluderPointVisibilityFused(world, plane, o.xyz, inside);
+        // A borrowed occluder keeps the pixel on its side of the hard edge: it only softens a
+        // penumbra's outermost ring, never lights a point the map shadows or the reverse.
+        if (borrowed && l >= 0.0) l = inside ? min(l, 0.5) : max(l, 0.5);
+        intensity = l < 0.0 ? intensity : l;
+    }
     return intensity < 0.0 ? lit : intensity;
 }
 #endif

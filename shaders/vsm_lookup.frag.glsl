@@ -5,6 +5,7 @@
 // (Lauritzen 2007: the bound's tail below uBleed is cut and the rest rescaled).
 #include "shadow_lookup.glsl"
 #include "surface_decode.glsl"
+#include "surface_lookup.glsl"
 
 // SurfacesPass: positions (surfacePosition)
 layout(binding = FL_TEX_SURFACES_DEPTH) uniform sampler2D uDepth;
@@ -25,6 +26,7 @@ float chebyshev(vec2 m, float t) {
 
 void main() {
     vec4 world = surfacePosition(uDepth, ivec2(gl_FragCoord.xy));
+    world.xyz = surfaceLookupPoint(world.xyz, ivec2(gl_FragCoord.xy));
     vec3 uvz;
     if (world.w == 0.0 || !shadowCoord(world.xyz, uvz)) {
         oVisibility = 1.0;

@@ -82,11 +82,11 @@ class EyeMethod final : public ShadowMethod {
         const jfa::FloodRegion region = o.flood.region;
         const PenumbraReach reach = penumbraReach(in.disk, in.camera.proj * in.camera.view,
                                                   {in.width(), in.height()}, in.sceneBounds);
-        const EyeSoftShadowPass::Outputs out =
-            pass_.execute({in.scene, in.camera, in.surfaces.positions(), in.shadow,
-                           in.shadowSettings, in.disk, es, passes, standardFlooding_, in.width(),
-                           in.height(), region, reach, o.flood.bandTile},
-                          in.timer);
+        const EyeSoftShadowPass::Outputs out = pass_.execute(
+            {in.scene, in.camera, in.surfaces.positions(), in.surfaces.normals, in.surfaces.lift,
+             in.shadow, in.shadowSettings, in.disk, es, passes, standardFlooding_, in.width(),
+             in.height(), region, reach, o.flood.bandTile},
+            in.timer);
         flood_ = {.seeds = &out.seeds,
                   .flooded = &out.flooded,
                   .space = &space_,

@@ -21,9 +21,9 @@ class GroundTruth final : public ShadowMethod {
         rs.mapSize = o.mapSize;
         rs.pattern = o.pattern;
         return pass_
-            .execute(
-                {in.scene, in.surfaces.positions(), in.sceneBounds, in.disk, in.shadowSettings, rs},
-                in.timer)
+            .execute({in.scene, in.surfaces.positions(), in.sceneBounds, in.disk, in.shadowSettings,
+                      rs, &in.surfaces.lift, &in.surfaces.normals},
+                     in.timer)
             .visibility;
     }
 

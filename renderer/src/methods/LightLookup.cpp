@@ -42,6 +42,7 @@ const gl::Texture& LightLookup::execute(const FrameInputs& in, const gl::Texture
     gl::BindScope scope;
     bindShadowMap(scope, program, in.shadow);
     in.surfaces.positions().bind(scope, program, gl::bind::PenumbraSurfacesDepth);
+    in.surfaces.bindLookup(scope);
     if (penumbra_) {
         setDiskLightUniforms(program, in.disk);
         scope.texture(gl::bind::PenumbraMap, penumbraMap->id());

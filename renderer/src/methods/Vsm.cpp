@@ -118,6 +118,7 @@ class Vsm final : public ShadowMethod {
         lookup_.set("uBleed", in.options<VsmOptions>().bleed);
         lookup_.set("uMinVariance", kMinVariance);
         in.surfaces.positions().bind(scope, lookup_, gl::bind::SurfacesDepth);
+        in.surfaces.bindLookup(scope);
         scope.texture(gl::bind::VsmMoments, maps_[0].id());
         gl::drawFullscreenTriangle(lookup_, emptyVao_);
         scope.release();

@@ -9,10 +9,12 @@ namespace fl {
 
 namespace {
 gl::Program buildProgram(const gl::ShaderLibrary& shaders, bool motion) {
-    return gl::Program::build(
-        shaders,
-        {{GL_VERTEX_SHADER, "forward.vert.glsl"}, {GL_FRAGMENT_SHADER, "surfaces.frag.glsl"}},
-        motion ? std::vector<std::string>{"FL_MOTION 1"} : std::vector<std::string>{});
+    return gl::Program::build(shaders,
+                              {{GL_VERTEX_SHADER, "forward.vert.glsl"},
+                               {GL_GEOMETRY_SHADER, "surfaces.geom.glsl"},
+                               {GL_FRAGMENT_SHADER, "surfaces.frag.glsl"}},
+                              motion ? std::vector<std::string>{"FL_MOTION 1"}
+                                     : std::vector<std::string>{});
 }
 } // namespace
 
@@ -60,29 +62,31 @@ void SurfacesPass::resize(int width, int height) {
     normals_ = gl::Texture(GL_RGBA16_SNORM, width, height);
     baseColor_ = gl::Texture(GL_RGBA8, width, height);
     receivers_ = gl::Texture(GL_R8, width, height);
+    lift_ = gl::Texture(GL_R32F, width, height);
     motion_ = gl::Texture(GL_RGBA32F, width, height);
     depth_ = gl::Texture(GL_DEPTH_COMPONENT32F, width, height);
-    fbos_[0] = gl::Framebuffer::withTargets({&normals_, &baseColor_, &receivers_}, &depth_,
+    fbos_[0] = gl::Framebuffer::withTargets({&normals_, &baseColor_, &receivers_, &lift_}, &depth_,
                                             "surfaces pass");
-    fbos_[1] = gl::Framebuffer::withTargets({&normals_, &baseColor_, &receivers_, &motion_},
+    fbos_[1] = gl::Framebuffer::withTargets({&normals_, &baseColor_, &receivers_, &lift_, &motion_},
                                             &depth_, "surfaces pass with motion");
 }
 
 SurfacesPass::Outputs SurfacesPass::outputs() const {
-    return {depth_,
-            normals_,
-            baseColor_,
-            receivers_,
-            motionWritten_ ? &motion_ : nullptr,
-            viewProj_,
-            inverseViewProj_,
-            depth_.width(),
-            depth_.height()};
+    return {depth_,         normals_,
+            baseColor_,     receivers_,
+            lift_,          motionWritten_ ? &motion_ : nullptr,
+            viewProj_,      inverseViewProj_,
+            depth_.width(), depth_.height()};
+}
+
+void SurfacesPass::Outputs::bindLookup(gl::BindScope& scope) const {
+    scope.texture(gl::bind::SurfacesLift, lift.id());
+    scope.texture(gl::bind::LookupNormals, normals.id());
 }
 
 std::int64_t SurfacesPass::Outputs::bytes() const {
     std::int64_t sum = 0;
-    for (const gl::Texture* t : {&depth, &normals, &baseColor, &receivers, motion})
+    for (const gl::Texture* t : {&depth, &normals, &baseColor, &receivers, &lift, motion})
         if (t) sum += gl::textureBytes(*t);
     return sum;
 }
@@ -103,7 +107,7 @@ SurfacesPass::Outputs SurfacesPass::execute(const Inputs& in) {
     // metrics) and the motion target (read by them without the depth).
     const float none[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 2, none);
-    if (motionWritten_) glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 3, none);
+    if (motionWritten_) glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 4, none);
     glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &surface::kBackgroundDepth);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
     glViewport(0, 0, depth_.width(), depth_.height());

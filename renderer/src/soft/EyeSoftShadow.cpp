@@ -219,6 +219,8 @@ void EyeSoftShadowPass::drawEyeHardShadows(const Inputs& in) {
     bindShadowMap(scope, eyePass_, in.shadow);
     in.positions.bind(scope, eyePass_, gl::bind::EyeDepth);
     in.shadow.receivers->bind(scope, eyePass_, gl::bind::EyeReceivers);
+    scope.texture(gl::bind::SurfacesLift, in.lift.id())
+        .texture(gl::bind::LookupNormals, in.normals.id());
     gl::drawFullscreenTriangle(eyePass_, emptyVao_);
     scope.release();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -248,8 +250,12 @@ void EyeSoftShadowPass::drawComposite(const Inputs& in, const gl::Texture& flood
     glViewport(0, 0, in.width, in.height);
     glDisable(GL_DEPTH_TEST);
     setDiskLightUniforms(composite_, in.light);
+    composite_.set("uOccluderEdges", in.settings.occluderPoints == OccluderPoints::Edge ? 1 : 0);
+    composite_.set("uSilhouetteThreshold", in.settings.silhouetteThreshold);
     gl::BindScope scope;
     eye_.bind(scope, composite_);
+    bindShadowMap(scope, composite_, in.shadow);
+    scope.texture(gl::bind::EyeNormals, in.normals.id());
     scope.texture(gl::bind::EyeFlooded, flooded.id());
     gl::drawFullscreenTriangle(composite_, emptyVao_);
     scope.release();

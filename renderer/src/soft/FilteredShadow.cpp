@@ -228,6 +228,7 @@ FilteredShadowPass::Outputs FilteredShadowPass::execute(const Inputs& in, gl::Pa
         .sampler(gl::bind::ShadowDepth, rawDepth_.id());
     in.surfaces.positions().bind(scope, program_, gl::bind::SurfacesDepth);
     scope.texture(gl::bind::SurfacesNormals, in.surfaces.normals.id());
+    in.surfaces.bindLookup(scope);
     gl::drawFullscreenTriangle(program_, emptyVao_);
     scope.release();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

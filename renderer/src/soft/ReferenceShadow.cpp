@@ -121,6 +121,9 @@ ReferenceShadowPass::Outputs ReferenceShadowPass::execute(const Inputs& in, gl::
         gl::BindScope scope;
         scope.texture(gl::bind::SurfacesDepth, in.positions.depth.id())
             .texture(gl::bind::ShadowMap, map_.id());
+        if (in.lift && in.normals)
+            scope.texture(gl::bind::SurfacesLift, in.lift->id())
+                .texture(gl::bind::LookupNormals, in.normals->id());
         gl::drawFullscreenTriangle(accumulate_, emptyVao_);
         glDisable(GL_BLEND);
     }

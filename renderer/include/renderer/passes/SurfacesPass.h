@@ -65,6 +65,10 @@ class SurfacesPass {
         /// RGBA8: material base colour with its texture, sRGB-encoded (surfaceBaseColor()).
         const gl::Texture& baseColor;
         const gl::Texture& receivers; // R8: 1 where the surface faces the light (N.L > 0)
+        /// R32F: how far every shadow-map lookup moves the point along its shading normal
+        /// (world units; 0 but where a smooth-shaded triangle is grazed by the light):
+        /// shaders/terminator.glsl, surfaceLookupPoint().
+        const gl::Texture& lift;
         /// RGBA32F: xy = the surface point's pixel position in the previous frame (GL window
         /// coordinates), z = its depth (clip w) there, w = its depth (clip w) in this frame; what
         /// flicker on the same surface point needs (Metrics.h, Reprojection). nullptr when the
@@ -79,6 +83,8 @@ class SurfacesPass {
         /// One of the two normals of every pixel, decoded, as RGBA floats (xyz, w = 0), row 0 at
         /// the top (readTexture's layout); stale values where positions() says background.
         [[nodiscard]] FloatImage readNormals(Normal which) const;
+        /// The lift and the shading normals on the units surface_lookup.glsl reads them from.
+        void bindLookup(gl::BindScope& scope) const;
         /// Bytes of every target above: what the pass writes (clear and draw together).
         [[nodiscard]] std::int64_t bytes() const;
     };
@@ -90,7 +96,7 @@ class SurfacesPass {
   private:
     // [0] without the motion target, [1] with it (FL_MOTION).
     gl::Program programs_[2];
-    gl::Texture normals_, baseColor_, receivers_, motion_, depth_;
+    gl::Texture normals_, baseColor_, receivers_, lift_, motion_, depth_;
     gl::Framebuffer fbos_[2];
     bool motionWritten_ = false;
     glm::mat4 viewProj_{1.0f}, inverseViewProj_{1.0f};

@@ -146,6 +146,8 @@ class EyeSoftShadowPass {
         const GpuScene& scene; // drawn from the light for the object ids
         const CameraView& camera;
         SurfacePositions positions;           // the frame's surfaces (SurfacesPass)
+        const gl::Texture& normals;           // their normals (SurfacesPass; surfacePlane)
+        const gl::Texture& lift;              // their lift (SurfacesPass; surface_lookup.glsl)
         const ShadowMapPass::Outputs& shadow; // phase 1 (frame step 1), made with writeReceivers
         const ShadowMapSettings& shadowSettings;
         const DiskLight& light;

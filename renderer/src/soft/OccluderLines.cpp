@@ -1,0 +1,286 @@
+#include <renderer/soft/OccluderLines.h>
+
+#include <renderer/passes/ShadowMapDecode.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace fl {
+
+namespace {
+
+constexpr int kLineWindow = 2; // the window's radius in texels
+constexpr int kLineSide = 2 * kLineWindow + 1;
+constexpr int kMaxLineSamples = 2 * kLineSide * (kLineSide - 1);
+constexpr int kFuseSamples = 16;
+
+glm::vec3 mapUnproject(const LineMap& m, glm::vec2 tc, float d) {
+    const glm::vec2 uv = tc / glm::vec2(float(m.size)) * 2.0f - 1.0f;
+    const glm::vec3 l = m.unwarp * glm::vec3(uv, 1.0f);
+    const glm::vec4 w = m.inverseLightViewProj * glm::vec4(l.x, l.y, d * l.z, l.z);
+    return glm::vec3(w) / w.w;
+}
+
+glm::vec4 lightClipPlane(const LineMap& m, glm::vec3 p, glm::vec3 n) {
+    return glm::transpose(m.inverseLightViewProj) * glm::vec4(n, -glm::dot(n, p));
+}
+
+float planeDepthAt(const LineMap& m, glm::vec4 plane, glm::vec2 tc) {
+    const glm::vec2 uv = tc / glm::vec2(float(m.size)) * 2.0f - 1.0f;
+    const glm::vec3 l = m.unwarp * glm::vec3(uv, 1.0f);
+    const float den = plane.z * l.z;
+    if (!(std::abs(den) > 1e-30f)) return 2.0f;
+    return -(plane.x * l.x + plane.y * l.y + plane.w * l.z) / den;
+}
+
+struct LineSamples {
+    int count = 0;
+    glm::vec2 mid[kMaxLineSamples]{};
+    glm::vec2 open[kMaxLineSamples]{};
+    float depth[kMaxLineSamples]{};
+};
+
+LineSamples lineSamples(const LineMap& m, glm::ivec2 t, glm::vec4 plane) {
+    LineSamples s;
+    const glm::vec2 c = glm::vec2(t) + 0.5f;
+    const float d0 = planeDepthAt(m, plane, c);
+    const float margin =
+        2.0f * std::max(std::abs(planeDepthAt(m, plane, c + glm::vec2(1.0f, 0.0f)) - d0),
+                        std::abs(planeDepthAt(m, plane, c + glm::vec2(0.0f, 1.0f)) - d0)) +
+        1e-6f;
+    int cover[kLineSide * kLineSide];
+    float depth[kLineSide * kLineSide];
+    for (int j = 0; j < kLineSide; ++j)
+        for (int i = 0; i < kLineSide; ++i) {
+            const glm::ivec2 q = t + glm::ivec2(i - kLineWindow, j - kLineWindow);
+            const int k = j * kLineSide + i;
+            cover[k] = 0;
+            depth[k] = 0.0f;
+            if (q.x < 0 || q.y < 0 || q.x >= m.size || q.y >= m.size) continue;
+            const float d = m.receiverDepth[std::size_t(q.y) * std::size_t(m.size) + q.x];
+            depth[k] = d;
+            const bool covered = d != shadowmap::kNoReceiver &&
+                                 d < planeDepthAt(m, plane, glm::vec2(q) + 0.5f) - margin;
+            cover[k] = covered ? 2 : 1;
+        }
+    for (int j = 0; j < kLineSide; ++j)
+        for (int i = 0; i < kLineSide; ++i) {
+            const int a = cover[j * kLineSide + i];
+            for (int axis = 0; axis < 2; ++axis) {
+                const int i1 = i + (axis == 0 ? 1 : 0), j1 = j + (axis == 1 ? 1 : 0);
+                if (i1 >= kLineSide || j1 >= kLineSide) continue;
+                const int b = cover[j1 * kLineSide + i1];
+                if (a == 0 || b == 0 || a == b) continue;
+                const glm::vec2 step = axis == 0 ? glm::vec2(1.0f, 0.0f) : glm::vec2(0.0f, 1.0f);
+                s.mid[s.count] = glm::vec2(i - kLineWindow, j - kLineWindow) + 0.5f * step;
+                s.open[s.count] = a == 2 ? step : -step;
+                s.depth[s.count] = a == 2 ? depth[j * kLineSide + i] : depth[j1 * kLineSide + i1];
+                ++s.count;
+            }
+        }
+    return s;
+}
+
+// The edges' direction in the window (weighted principal axis of the samples), and each
+// sample's weight: less towards the window's border.
+glm::vec2 lineDirection(const LineSamples& s, float* weight) {
+    float total = 0.0f;
+    glm::vec2 mean(0.0f);
+    for (int k = 0; k < s.count; ++k) {
+        const float r2 =
+            glm::dot(s.mid[k], s.mid[k]) / float((kLineWindow + 1) * (kLineWindow + 1));
+        weight[k] = std::max(1.0f - r2, 0.0f) * std::max(1.0f - r2, 0.0f);
+        total += weight[k];
+        mean += weight[k] * s.mid[k];
+    }
+    if (!(total > 0.0f)) return glm::vec2(0.0f);
+    mean /= total;
+    glm::vec3 m2(0.0f);
+    for (int k = 0; k < s.count; ++k) {
+        const glm::vec2 d = s.mid[k] - mean;
+        m2 += weight[k] * glm::vec3(d.x * d.x, d.y * d.y, d.x * d.y);
+    }
+    const float angle = 0.5f * std::atan2(2.0f * m2.z, m2.x - m2.y);
+    return {std::cos(angle), std::sin(angle)};
+}
+
+struct DiskChord {
+    glm::vec3 u{0.0f};
+    float s = 0.0f;
+};
+
+bool lineChord(const DiskLight& l, glm::vec3 p, glm::vec3 e, glm::vec3 tangent, glm::vec3 open,
+               DiskChord& c) {
+    c = {};
+    const float dp = glm::dot(p - l.center, l.normal);
+    const float de = glm::dot(e - l.center, l.normal);
+    if (!(de > 0.0f && de < dp)) return false;
+    glm::vec3 m = glm::cross(tangent, e - p);
+    const float len = glm::length(m);
+    if (!(len > 0.0f)) return false;
+    m /= len;
+    if (glm::dot(m, open) < 0.0f) m = -m;
+    const glm::vec3 inPlane = m - glm::dot(m, l.normal) * l.normal;
+    const float sinA = glm::length(inPlane);
+    if (!(sinA > 1e-6f)) return false;
+    c.u = inPlane / sinA;
+    c.s = glm::dot(l.center - p, m) / sinA;
+    return true;
+}
+
+float chordOpenShare(const DiskLight& l, float s) {
+    if (!(l.radius > 0.0f)) return s >= 0.0f ? 1.0f : 0.0f;
+    const float seg = segmentFraction(std::abs(s) / l.radius);
+    return s >= 0.0f ? 1.0f - seg : seg;
+}
+
+bool chordsOpen(glm::vec3 x, const DiskChord& a, const DiskChord& b, bool two, bool slit) {
+    const bool oa = glm::dot(x, a.u) > -a.s;
+    if (!two) return oa;
+    const bool ob = glm::dot(x, b.u) > -b.s;
+    return slit ? oa && ob : oa || ob;
+}
+
+// shadow_lookup.glsl's shadowCoord: false off the map or behind the light.
+bool shadowCoord(const LineMap& m, glm::vec3 world, glm::vec3& uvz) {
+    const glm::vec4 light = m.lightViewProj * glm::vec4(world, 1.0f);
+    const glm::vec4 map = m.warp * light;
+    uvz = glm::vec3(0.0f);
+    if (light.w <= 0.0f || map.w <= 0.0f) return false;
+    uvz = glm::vec3(map.x / map.w, map.y / map.w, light.z / light.w) * 0.5f + 0.5f;
+    return glm::all(glm::greaterThanEqual(uvz, glm::vec3(0.0f))) &&
+           glm::all(glm::lessThanEqual(uvz, glm::vec3(1.0f)));
+}
+
+float fusedShare(const LineMap& m, glm::vec3 p, glm::vec3 plane, float de, float share,
+                 const DiskChord& a, const DiskChord& b, bool two, bool slit,
+                 const OccluderLines& guard, int guards) {
+    const DiskLight& l = m.light;
+    if (!(share > 0.0f) || !(l.radius > 0.0f)) return share;
+    const float dp = glm::dot(p - l.center, l.normal);
+    if (!(de < dp)) return share;
+    const float planeAtCentre = glm::dot(p - l.center, plane);
+    const glm::vec3 v = glm::cross(l.normal, a.u);
+    int tested = 0, open = 0;
+    for (int k = 0; k < kFuseSamples; ++k) {
+        const float radius = l.radius * std::sqrt((float(k) + 0.5f) / float(kFuseSamples));
+        const float angle = 2.39996323f * float(k);
+        const glm::vec3 x = radius * (std::cos(angle) * a.u + std::sin(angle) * v);
+        if (!chordsOpen(x, a, b, two, slit)) continue;
+        ++tested;
+        const glm::vec3 q = l.center + x;
+        const glm::vec3 crossing = p + (q - p) * ((dp - de) / dp);
+        bool near = false;
+        for (int g = 0; g < guards; ++g) {
+            const float texel2 = glm::dot(guard.open[g], guard.open[g]);
+            near = near || glm::dot(crossing - guard.point[g], guard.open[g]) < 1.5f * texel2;
+        }
+        if (near) {
+            ++open;
+            continue;
+        }
+        const float den = glm::dot(crossing - l.center, plane);
+        bool lit = true;
+        if (std::abs(den) > 0.0f) {
+            const glm::vec3 y = l.center + (crossing - l.center) * (planeAtCentre / den);
+            lit = lineMapHardShadow(m, y) > 0.5f;
+        }
+        open += lit ? 1 : 0;
+    }
+    return tested == 0 ? share : share * float(open) / float(tested);
+}
+
+} // namespace
+
+float lineMapHardShadow(const LineMap& m, glm::vec3 p) {
+    glm::vec3 uvz;
+    if (!shadowCoord(m, p, uvz)) return 1.0f;
+    const int x = std::clamp(int(std::floor(uvz.x * float(m.size))), 0, m.size - 1);
+    const int y = std::clamp(int(std::floor(uvz.y * float(m.size))), 0, m.size - 1);
+    return uvz.z <= m.depth[std::size_t(y) * std::size_t(m.size) + x] ? 1.0f : 0.0f;
+}
+
+OccluderLines occluderLines(const LineMap& m, glm::ivec2 t, glm::vec3 p, glm::vec3 n) {
+    OccluderLines lines;
+    const LineSamples s = lineSamples(m, t, lightClipPlane(m, p, n));
+    if (s.count < 2) return lines;
+    float weight[kMaxLineSamples];
+    const glm::vec2 dir = lineDirection(s, weight);
+    if (dir == glm::vec2(0.0f)) return lines;
+    const glm::vec2 nrm(-dir.y, dir.x);
+    // Edge 0 opens towards +nrm, edge 1 towards -nrm; samples across (a corner's other leg)
+    // belong to neither.
+    glm::vec2 sum[2]{glm::vec2(0.0f), glm::vec2(0.0f)};
+    float depthSum[2]{0.0f, 0.0f}, count[2]{0.0f, 0.0f};
+    for (int k = 0; k < s.count; ++k) {
+        const float along = glm::dot(s.open[k], nrm);
+        if (std::abs(along) < 0.3f || !(weight[k] > 0.0f)) continue;
+        const int e = along > 0.0f ? 0 : 1;
+        sum[e] += weight[k] * s.mid[k];
+        depthSum[e] += weight[k] * s.depth[k];
+        count[e] += weight[k];
+    }
+    const glm::vec2 centre = glm::vec2(t) + 0.5f;
+    glm::vec2 at[2]{};
+    float atDepth[2]{};
+    for (int e = 0; e < 2; ++e) {
+        if (!(count[e] > 0.0f)) continue;
+        const glm::vec2 c = sum[e] / count[e];
+        const int k = lines.count++;
+        at[k] = c - dir * glm::dot(c, dir);
+        atDepth[k] = depthSum[e] / count[e];
+        lines.point[k] = mapUnproject(m, centre + at[k], atDepth[k]);
+        lines.open[k] =
+            mapUnproject(m, centre + at[k] + (e == 0 ? nrm : -nrm), atDepth[k]) - lines.point[k];
+    }
+    if (lines.count == 0) return lines;
+    lines.tangent = mapUnproject(m, centre + at[0] + dir, atDepth[0]) - lines.point[0];
+    if (lines.count == 2) lines.slit = glm::dot(at[0] - at[1], nrm) < 0.0f;
+    return lines;
+}
+
+float occluderLinesVisibilityFused(const LineMap& m, glm::vec3 p, glm::vec3 n,
+                                   const OccluderLines& lines) {
+    const DiskLight& l = m.light;
+    DiskChord c[2];
+    bool ok[2]{false, false};
+    float share[2]{-1.0f, -1.0f};
+    for (int k = 0; k < lines.count; ++k) {
+        ok[k] = lineChord(l, p, lines.point[k], lines.tangent, lines.open[k], c[k]);
+        if (ok[k]) share[k] = chordOpenShare(l, c[k].s);
+    }
+    if (lines.count == 1 || !ok[0] || !ok[1]) {
+        const int k = ok[0] ? 0 : 1;
+        if (!ok[k]) return -1.0f;
+        OccluderLines one = lines;
+        one.point[0] = lines.point[k];
+        one.open[0] = lines.open[k];
+        return fusedShare(m, p, n, glm::dot(lines.point[k] - l.center, l.normal), share[k], c[k],
+                          c[k], false, false, one, 1);
+    }
+    const float both = lines.slit ? std::max(share[0] + share[1] - 1.0f, 0.0f)
+                                  : std::min(share[0] + share[1], 1.0f);
+    return fusedShare(m, p, n, glm::dot(lines.point[0] - l.center, l.normal), both, c[0], c[1],
+                      true, lines.slit, lines, 2);
+}
+
+float occluderPointVisibilityFused(const LineMap& m, glm::vec3 p, glm::vec3 n, glm::vec3 o,
+                                   bool inside) {
+    const DiskLight& l = m.light;
+    const std::optional<float> intensity = occluderIntensity(l, p, o, inside);
+    const float share = intensity ? *intensity : -1.0f;
+    if (!(share > 0.0f)) return share;
+    const float dp = glm::dot(p - l.center, l.normal);
+    const float dO = glm::dot(o - l.center, l.normal);
+    const glm::vec3 q = p + (o - p) * (dp / (dp - dO));
+    glm::vec3 cq = q - l.center;
+    cq -= glm::dot(cq, l.normal) * l.normal;
+    const float d = glm::length(cq);
+    if (!(d > 0.0f)) return share;
+    DiskChord c;
+    c.u = inside ? cq / d : -cq / d;
+    c.s = inside ? -d : d;
+    return fusedShare(m, p, n, dO, share, c, c, false, false, OccluderLines{}, 0);
+}
+
+} // namespace fl

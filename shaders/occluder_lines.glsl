@@ -1,0 +1,350 @@
+// An occluder's silhouette near a shadow-map texel as straight edges at sub-texel precision, and
+// the share of the disk light a receiver sees past them: JFA-L's lookup and JFA-E's composite
+// recompute a penumbra pixel's visibility with these, from the occluder texel the flood chose.
+// Needs disk_light.glsl, shadow_map_decode.glsl and occluder_edge.glsl. CPU twin:
+// renderer/soft/OccluderLines.h, operation for operation.
+//
+// Why lines, not the flood's occluder point: a point says how far the edge lies from the disk's
+// centre but not which way it runs, so each point stands for a chord at right angles to cq, and
+// the points sit on texel centres (or half a texel out). Where a penumbra is a few texels wide,
+// the chord's distance then jumps from texel to texel (a comb), and which side of the edge the
+// centre lies on comes from the pixel's own hard-shadow test, a staircase of map texels: the
+// value flips between v and 1 - v across each step. Behind an occluder one or two texels wide
+// (a leg, a wire) both sides of the texel are edges and the point stays at its centre, inside
+// the occluder, so its ray reaches the disk near the centre and the umbra is lit.
+//
+// Here the texels of a 5 x 5 window are covered (the occluder or nearer: not across a silhouette
+// edge from the centre texel) or not. Each covered / uncovered pair of axis neighbours puts an
+// edge sample at its midpoint; for a straight edge sampled at texel centres these scatter evenly
+// about the true edge, so their mean lies on it to a fraction of a texel. Their principal axis
+// is the edge's direction. Samples whose uncovered side faces one way make one edge, the other
+// way a second edge (a strip one to four texels wide, or a slit). Each edge is a line at the
+// centre texel's light depth, and a receiver sees the part of the disk beyond it: the plane
+// through the receiver and the line meets the light's plane in a chord, whose signed distance
+// from the centre gives the share (segmentFraction), continuous across the hard edge.
+
+const int kLineWindow = 2; // the window's radius in texels
+
+// World position of map coordinate `tc` (texels; texel t's centre is t + 0.5) at the light's NDC
+// depth d: mapReceiver's unprojection at any point of the map.
+vec3 mapUnproject(vec2 tc, vec2 size, float d) {
+    precise vec2 uv = tc / size * 2.0 - 1.0;
+    precise vec3 l = uMapUnwarp * vec3(uv, 1.0);
+    precise vec4 w = uMapInverseLightViewProj * vec4(l.xy, d * l.z, l.z);
+    return w.xyz / w.w;
+}
+
+// Up to two straight edges of the occluder at a texel, in world space.
+struct OccluderLines {
+    int count;     // 0: none found (no covered / uncovered neighbours), else 1 or 2
+    bool slit;     // two edges whose uncovered sides face each other (else a strip between them)
+    vec3 point[2]; // a point of each edge
+    vec3 tangent;  // the edges' direction (both run the same way)
+    vec3 open[2];  // from each edge towards its uncovered side
+};
+
+// The receiver's plane in the light's clip space: dot(result, clip) = 0 for the clip-space
+// point of every world point of the plane through `p` with normal `n`.
+vec4 lightClipPlane(vec3 p, vec3 n) {
+    return transpose(uMapInverseLightViewProj) * vec4(n, -dot(n, p));
+}
+
+// The light's NDC depth at which the ray of map coordinate `tc` meets the clip-space plane,
+// or 2 (beyond the far plane) where it runs parallel to it.
+float planeDepthAt(vec4 plane, vec2 tc, vec2 size) {
+    vec2 uv = tc / size * 2.0 - 1.0;
+    vec3 l = uMapUnwarp * vec3(uv, 1.0);
+    float den = plane.z * l.z;
+    if (!(abs(den) > 1e-30)) return 2.0;
+    return -(plane.x * l.x + plane.y * l.y + plane.w * l.z) / den;
+}
+
+// The edge samples of the window around texel t: midpoints (relative to t's centre) of axis
+// neighbours of which one is covered and the other not, the direction from the covered one to
+// the other, and the covered one's depth. Covered means, for the receiver whose plane is `plane`
+// (lightClipPlane): the light's centre sees something nearer than that plane there, by more
+// than two texels' change of the plane's depth (so that the plane itself never counts).
+struct LineSamples {
+    int count;
+    vec2 mid[40]; // 2 * 5 * 4 pairs at most
+    vec2 open[40];
+    float depth[40];
+};
+
+LineSamples lineSamples(sampler2D receivers, ivec2 t, vec4 plane) {
+    LineSamples s;
+    s.count = 0;
+    ivec2 size = textureSize(receivers, 0);
+    vec2 fsize = vec2(size);
+    const int n = 2 * kLineWindow + 1;
+    vec2 c = vec2(t) + 0.5;
+    float d0 = planeDepthAt(plane, c, fsize);
+    float margin = 2.0 * max(abs(planeDepthAt(plane, c + vec2(1.0, 0.0), fsize) - d0),
+                             abs(planeDepthAt(plane, c + vec2(0.0, 1.0), fsize) - d0)) +
+                   1e-6;
+    int cover[n * n];
+    float depth[n * n];
+    for (int j = 0; j < n; ++j) {
+        for (int i = 0; i < n; ++i) {
+            ivec2 q = t + ivec2(i - kLineWindow, j - kLineWindow);
+            int k = j * n + i;
+            cover[k] = 0; // outside the map: neither
+            depth[k] = 0.0;
+            if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
+            float d = texelFetch(receivers, q, 0).r;
+            depth[k] = d;
+            bool covered = d != kMapNoReceiver &&
+                           d < planeDepthAt(plane, vec2(q) + 0.5, fsize) - margin;
+            cover[k] = covered ? 2 : 1;
+        }
+    }
+    for (int j = 0; j < n; ++j) {
+        for (int i = 0; i < n; ++i) {
+            int a = cover[j * n + i];
+            for (int axis = 0; axis < 2; ++axis) {
+                int i1 = i + (axis == 0 ? 1 : 0), j1 = j + (axis == 1 ? 1 : 0);
+                if (i1 >= n || j1 >= n) continue;
+                int b = cover[j1 * n + i1];
+                if (a == 0 || b == 0 || a == b) continue;
+                vec2 step = axis == 0 ? vec2(1.0, 0.0) : vec2(0.0, 1.0);
+                s.mid[s.count] = vec2(i - kLineWindow, j - kLineWindow) + 0.5 * step;
+                s.open[s.count] = a == 2 ? step : -step;
+                s.depth[s.count] = a == 2 ? depth[j * n + i] : depth[j1 * n + i1];
+                ++s.count;
+            }
+        }
+    }
+    return s;
+}
+
+// The occluder's edges near texel t as the receiver at p with normal `n` sees them.
+OccluderLines occluderLines(sampler2D receivers, ivec2 t, vec3 p, vec3 n) {
+    OccluderLines L;
+    L.count = 0;
+    L.slit = false;
+    LineSamples s = lineSamples(receivers, t, lightClipPlane(p, n));
+    if (s.count < 2) return L;
+    // Samples weigh less towards the window's border, so that the fit moves smoothly as the
+    // window moves along an edge (a sample entering or leaving at full weight would jolt it).
+    float weight[40];
+    float total = 0.0;
+    vec2 mean = vec2(0.0);
+    for (int k = 0; k < s.count; ++k) {
+        float r2 = dot(s.mid[k], s.mid[k]) / float((kLineWindow + 1) * (kLineWindow + 1));
+        weight[k] = max(1.0 - r2, 0.0) * max(1.0 - r2, 0.0);
+        total += weight[k];
+        mean += weight[k] * s.mid[k];
+    }
+    if (!(total > 0.0)) return L;
+    mean /= total;
+    vec3 m2 = vec3(0.0); // xx, yy, xy about the mean
+    for (int k = 0; k < s.count; ++k) {
+        vec2 d = s.mid[k] - mean;
+        m2 += weight[k] * vec3(d.x * d.x, d.y * d.y, d.x * d.y);
+    }
+    float angle = 0.5 * atan(2.0 * m2.z, m2.x - m2.y);
+    vec2 dir = vec2(cos(angle), sin(angle));
+    vec2 nrm = vec2(-dir.y, dir.x);
+    // Edge 0 opens towards +nrm, edge 1 towards -nrm; samples across the axis (a corner's other
+    // leg) belong to neither.
+    vec2 sum[2] = vec2[2](vec2(0.0), vec2(0.0));
+    float depthSum[2] = float[2](0.0, 0.0);
+    float count[2] = float[2](0.0, 0.0);
+    for (int k = 0; k < s.count; ++k) {
+        float along = dot(s.open[k], nrm);
+        if (abs(along) < 0.3 || !(weight[k] > 0.0)) continue;
+        int e = along > 0.0 ? 0 : 1;
+        sum[e] += weight[k] * s.mid[k];
+        depthSum[e] += weight[k] * s.depth[k];
+        count[e] += weight[k];
+    }
+    vec2 size = vec2(textureSize(receivers, 0));
+    vec2 centre = vec2(t) + 0.5;
+    vec2 at[2];
+    float atDepth[2];
+    for (int e = 0; e < 2; ++e) {
+        if (!(count[e] > 0.0)) continue;
+        vec2 c = sum[e] / count[e];
+        int k = L.count++;
+        at[k] = c - dir * dot(c, dir); // the edge's point nearest t's centre
+        atDepth[k] = depthSum[e] / count[e];
+        L.point[k] = mapUnproject(centre + at[k], size, atDepth[k]);
+        L.open[k] = mapUnproject(centre + at[k] + (e == 0 ? nrm : -nrm), size, atDepth[k]) -
+                    L.point[k];
+    }
+    if (L.count == 0) return L;
+    L.tangent = mapUnproject(centre + at[0] + dir, size, atDepth[0]) - L.point[0];
+    // A strip has its covered texels between the edges: edge 0 (opening to +nrm) lies on the
+    // +nrm side of edge 1.
+    if (L.count == 2) L.slit = dot(at[0] - at[1], nrm) < 0.0;
+    return L;
+}
+
+// The chord that the edge through `e` along `tangent`, uncovered towards `open`, cuts from the
+// light's plane as receiver p sees it: the plane through p and the edge meets the light's plane
+// in a line; u (unit, in the light's plane, at right angles to the line, pointing to the
+// uncovered side) and s, the centre's signed distance from the line (positive on the uncovered
+// side). False when the edge is not between p and the light.
+bool lineChord(vec3 p, vec3 e, vec3 tangent, vec3 open, out vec3 u, out float s) {
+    u = vec3(0.0);
+    s = 0.0;
+    float dp = dot(p - uDiskCenter, uDiskNormal);
+    float de = dot(e - uDiskCenter, uDiskNormal);
+    if (!(de > 0.0 && de < dp)) return false;
+    vec3 m = cross(tangent, e - p);
+    float len = length(m);
+    if (!(len > 0.0)) return false;
+    m /= len;
+    if (dot(m, open) < 0.0) m = -m;
+    vec3 inPlane = m - dot(m, uDiskNormal) * uDiskNormal;
+    float sinA = length(inPlane);
+    if (!(sinA > 1e-6)) return false;
+    u = inPlane / sinA;
+    s = dot(uDiskCenter - p, m) / sinA;
+    return true;
+}
+
+// The share of the disk on the uncovered side of a chord at signed distance s from the centre.
+float chordOpenShare(float s) {
+    if (!(uDiskRadius > 0.0)) return s >= 0.0 ? 1.0 : 0.0;
+    float seg = segmentFraction(abs(s) / uDiskRadius);
+    return s >= 0.0 ? 1.0 - seg : seg;
+}
+
+// The share of the disk receiver p sees past one edge, or -1 when it is not between p and the
+// light.
+float lineOpenShare(vec3 p, vec3 e, vec3 tangent, vec3 open) {
+    vec3 u;
+    float s;
+    if (!lineChord(p, e, tangent, open, u, s)) return -1.0;
+    return chordOpenShare(s);
+}
+
+// The visible share of the disk at p past the occluder's edges L (count > 0), or -1 when no edge
+// lies between p and the light: one edge, or a strip (what passes either edge), or a slit (what
+// passes both).
+float occluderLinesVisibility(vec3 p, OccluderLines L) {
+    float a = lineOpenShare(p, L.point[0], L.tangent, L.open[0]);
+    if (L.count == 1) return a;
+    float b = lineOpenShare(p, L.point[1], L.tangent, L.open[1]);
+    if (a < 0.0 || b < 0.0) return max(a, b);
+    return L.slit ? max(a + b - 1.0, 0.0) : min(a + b, 1.0);
+}
+
+#ifdef OCCLUDER_LINES_FUSE
+// Occluders fused: the edges give the exact share of the disk an occluder leaves open, but
+// another occluder may cover part of that share (a second fin under the first, the head behind
+// an ear, the next finger). Sixteen points spread evenly over the disk (Vogel's spiral, in the
+// frame of the first chord) are tested where they lie in the open part: the ray from p to each
+// crosses the edge's depth at x, and the light's centre sees, at the point of p's own plane on
+// its ray through x, something nearer (the map's depth test fails) or not. Like PCSS's filter
+// against the receiver's plane with the edge's depth as the blocker's, an occluder is taken as
+// reaching down to p's plane. The share is the exact open share times the open points' part of
+// those tested; with no point in the open part, the exact share. Needs shadow_lookup.glsl.
+// `plane`: p's surface normal.
+
+// A chord of the disk: the point c + x of the light's plane (x in it) lies on its open side
+// when dot(x, u) > -s (u unit, s the centre's signed distance from the chord).
+struct DiskChord {
+    vec3 u;
+    float s;
+};
+
+const int kFuseSamples = 16;
+
+// Whether x (from the disk's centre, in its plane) passes chords a (and b, with `two`): one
+// chord; a strip (either chord open); a slit (both open).
+bool chordsOpen(vec3 x, DiskChord a, DiskChord b, bool two, bool slit) {
+    bool oa = dot(x, a.u) > -a.s;
+    if (!two) return oa;
+    bool ob = dot(x, b.u) > -b.s;
+    return slit ? oa && ob : oa || ob;
+}
+
+// `share` (the exact open share of the chords) times the part of the open sample points that
+// the map finds open at p's plane, their rays crossing the occluder's light depth `de`.
+// Points whose ray crosses within a texel and a half of one of the `guards` edges (the edges'
+// points and open vectors, a texel long at their depth; `guards` of them) are not tested: the
+// map cannot tell that side of a texel from the other, and the chord has them exactly.
+float fusedShare(vec3 p, vec3 plane, float de, float share, DiskChord a, DiskChord b, bool two,
+                 bool slit, OccluderLines guard, int guards) {
+    if (!(share > 0.0) || !(uDiskRadius > 0.0)) return share;
+    float dp = dot(p - uDiskCenter, uDiskNormal);
+    if (!(de < dp)) return share;
+    float planeAtCentre = dot(p - uDiskCenter, plane);
+    vec3 v = cross(uDiskNormal, a.u);
+    int tested = 0;
+    int open = 0;
+    for (int k = 0; k < kFuseSamples; ++k) {
+        float radius = uDiskRadius * sqrt((float(k) + 0.5) / float(kFuseSamples));
+        float angle = 2.39996323 * float(k);
+        vec3 x = radius * (cos(angle) * a.u + sin(angle) * v);
+        if (!chordsOpen(x, a, b, two, slit)) continue;
+        ++tested;
+        vec3 q = uDiskCenter + x;
+        vec3 crossing = p + (q - p) * ((dp - de) / dp);
+        bool near = false;
+        for (int g = 0; g < guards; ++g) {
+            float texel2 = dot(guard.open[g], guard.open[g]);
+            near = near || dot(crossing - guard.point[g], guard.open[g]) < 1.5 * texel2;
+        }
+        if (near) {
+            ++open;
+            continue;
+        }
+        float den = dot(crossing - uDiskCenter, plane);
+        bool lit = true;
+        if (abs(den) > 0.0) {
+            vec3 y = uDiskCenter + (crossing - uDiskCenter) * (planeAtCentre / den);
+            vec3 uvz;
+            lit = !shadowCoord(y, uvz) || texture(uShadowMap, uvz) > 0.5;
+        }
+        open += lit ? 1 : 0;
+    }
+    return tested == 0 ? share : share * float(open) / float(tested);
+}
+
+// occluderLinesVisibility with other occluders fused in (fusedShare).
+float occluderLinesVisibilityFused(vec3 p, vec3 plane, OccluderLines L) {
+    DiskChord c[2];
+    bool ok[2] = bool[2](false, false);
+    float share[2] = float[2](-1.0, -1.0);
+    for (int k = 0; k < L.count; ++k) {
+        ok[k] = lineChord(p, L.point[k], L.tangent, L.open[k], c[k].u, c[k].s);
+        if (ok[k]) share[k] = chordOpenShare(c[k].s);
+    }
+    float de = dot(L.point[0] - uDiskCenter, uDiskNormal);
+    if (L.count == 1 || !ok[0] || !ok[1]) {
+        int k = ok[0] ? 0 : 1;
+        if (!ok[k]) return -1.0;
+        OccluderLines one = L;
+        one.point[0] = L.point[k];
+        one.open[0] = L.open[k];
+        return fusedShare(p, plane, dot(L.point[k] - uDiskCenter, uDiskNormal), share[k], c[k],
+                          c[k], false, false, one, 1);
+    }
+    float both = L.slit ? max(share[0] + share[1] - 1.0, 0.0) : min(share[0] + share[1], 1.0);
+    return fusedShare(p, plane, de, both, c[0], c[1], true, L.slit, L, 2);
+}
+
+// The thesis' occluder point o (the flood's, where no edge was found) fused the same way: its
+// chord passes through q (where the ray from p through o meets the light's plane) at right
+// angles to cq, covering the centre inside the hard shadow and not outside. -1 for a miss.
+float occluderPointVisibilityFused(vec3 p, vec3 plane, vec3 o, bool inside) {
+    float share = occluderIntensity(p, o, inside);
+    if (!(share > 0.0)) return share;
+    float dp = dot(p - uDiskCenter, uDiskNormal);
+    float dO = dot(o - uDiskCenter, uDiskNormal);
+    vec3 q = p + (o - p) * (dp / (dp - dO));
+    vec3 cq = q - uDiskCenter;
+    cq -= dot(cq, uDiskNormal) * uDiskNormal;
+    float d = length(cq);
+    if (!(d > 0.0)) return share;
+    DiskChord c;
+    c.u = inside ? cq / d : -cq / d;
+    c.s = inside ? -d : d;
+    OccluderLines none;
+    none.count = 0;
+    return fusedShare(p, plane, dO, share, c, c, false, false, none, 0);
+}
+#endif

@@ -1,0 +1,13 @@
+// The point every shadow-map lookup of a pixel starts from: its surface position lifted along the
+// shading normal by the surfaces pass's lift target (terminator.glsl: the smooth surface, where a
+// smooth-shaded triangle is grazed by the light; the flat triangle everywhere else). Bind with
+// SurfacesPass::Outputs::bindLookup. CPU twin: surface::lookupPoint (SurfaceDecode.h). Needs
+// surface_decode.glsl.
+#include "bindings.glsl"
+layout(binding = FL_TEX_SURFACES_LIFT) uniform sampler2D uSurfaceLift;
+layout(binding = FL_TEX_LOOKUP_NORMALS) uniform sampler2D uLookupNormals;
+
+vec3 surfaceLookupPoint(vec3 world, ivec2 p) {
+    float lift = texelFetch(uSurfaceLift, p, 0).r;
+    return lift > 0.0 ? world + lift * surfaceNormal(uLookupNormals, p) : world;
+}

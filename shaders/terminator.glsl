@@ -1,0 +1,51 @@
+// The shadow terminator of smooth-shaded low-poly surfaces, for the shadow maps' lookups: where a
+// triangle is grazed by the light, every map method looks its shadow up from the smooth surface
+// its vertex normals describe, not from the flat triangle, by the rule the ray-traced truth uses
+// (raytrace/Terminator.h: Hanika's offset, "Hacking the Shadow Terminator", Ray Tracing Gems II
+// ch. 4, applied as Blender Cycles applies its geometry offset). Without it the map sees the
+// facets, and a point of a triangle turned slightly from the light lies behind its neighbour's
+// edge: curved bodies get dark teeth along the terminator that the rays do not show.
+// CPU twin: renderer/passes/TerminatorLift.h.
+
+// Cycles' geometry offset (intern/cycles/kernel/light/sample.h, its default 0.1): the range of
+// cos(angle to the light) over which the offset fades in.
+const float kTerminatorOffset = 0.1;
+
+// Hanika's move of point p of the triangle `corner` (vertex normals `normals`, barycentric
+// weights `w`) onto the smooth surface, seen from the side `side` faces: p projected onto each
+// vertex's tangent plane where that moves it outward, blended by the weights. Zero on a flat or
+// degenerate triangle, or where the move would go below the triangle's plane.
+vec3 terminatorMove(vec3 p, vec3 corner[3], vec3 normals[3], vec3 w, vec3 side) {
+    vec3 c = cross(corner[1] - corner[0], corner[2] - corner[0]);
+    float area = length(c);
+    if (!(area > 0.0)) return vec3(0.0);
+    vec3 plane = c / area;
+    if (dot(plane, side) < 0.0) plane = -plane;
+    vec3 n[3];
+    vec3 blended = vec3(0.0);
+    for (int i = 0; i < 3; ++i) {
+        float len = length(normals[i]);
+        if (!(len > 0.0)) return vec3(0.0);
+        n[i] = normals[i] / len;
+        blended += w[i] * n[i];
+    }
+    float flip = dot(blended, plane) < 0.0 ? -1.0 : 1.0;
+    bool flatTriangle = true;
+    for (int i = 0; i < 3; ++i) flatTriangle = flatTriangle && flip * dot(n[i], plane) >= 1.0 - 1e-6;
+    if (flatTriangle) return vec3(0.0);
+    vec3 move = vec3(0.0);
+    for (int i = 0; i < 3; ++i) {
+        vec3 ni = flip * n[i];
+        move -= w[i] * min(dot(p - corner[i], ni), 0.0) * ni;
+    }
+    return dot(move, plane) < 0.0 ? vec3(0.0) : move;
+}
+
+// How much of the move applies (Cycles' rule): all of it where the triangle turns from the light
+// (its plane's cos to the light ngl <= 0), none where it faces the light by more than the
+// offset, and a ramp between; where the smooth surface itself is grazed (nl < offset) the ramp
+// follows both. `nl`, `ngl`: the shading normal's and the plane's cos to the light.
+float terminatorAmount(float nl, float ngl) {
+    return nl < kTerminatorOffset ? clamp(2.0 - (ngl + nl) / kTerminatorOffset, 0.0, 1.0)
+                                  : clamp(1.0 - ngl / kTerminatorOffset, 0.0, 1.0);
+}
