@@ -14,8 +14,8 @@ in vec3 fNormal;
 in vec2 fTexcoord;
 in vec4 fColor;
 in vec3 fBarycentric;
-flat in vec3 fCorner[3];
-flat in vec3 fCornerNormal[3];
+flat in vec4 fTangentPlane[3];
+flat in vec3 fFront;
 #ifdef FL_MOTION
 in vec4 fPreviousClip;
 #endif
@@ -52,7 +52,7 @@ void main() {
     oReceiver = dot(n, l) > 0.0 ? 1.0 : 0.0;
     // The plane on the seen side, as the shading normal is.
     vec3 plane = dot(g, n) < 0.0 ? -g : g;
-    vec3 move = terminatorMove(fWorld, fCorner, fCornerNormal, fBarycentric, plane);
+    vec3 move = terminatorMove(fWorld, fBarycentric, fTangentPlane, fFront, plane);
     oLift = max(dot(move, n), 0.0) * terminatorAmount(dot(n, l), dot(plane, l));
 #ifdef FL_MOTION
     // Where this point was a frame ago: window coordinates (as gl_FragCoord.xy) and depth. A

@@ -171,19 +171,54 @@ TEST_F(JfaETest, PhasesMatchTheCpuReference) {
 
         // Phase 5: visibility, as the frame shows it (the shading pass reads the composite
         // for exactly the surface pixels and writes 1 on background, where the CPU composite
-        // is 1 too). GLSL acos is not correctly rounded (llvmpipe's polynomial is off by ~1e-5
-        // near 1), so intensities agree to 5e-5; the umbra / lit decisions are exact.
-        const FloatImage cpuVis = eyeSoftVisibility(image, cpuFlood, r.disk());
+        // is 1 too). With centre points: GLSL acos is not correctly rounded (llvmpipe's
+        // polynomial is off by ~1e-5 near 1), so intensities agree to 5e-5 and the umbra / lit
+        // decisions are exact. With edge points the composite fits the occluder's edges
+        // (occluder_lines.glsl): GLSL's atan, cos, sin and divisions are not correctly rounded
+        // either, so the fitted edges agree to ~1e-5 of a texel and the shares to 5e-4; and a
+        // map test or a covered texel at a rounding boundary may decide the other way on either
+        // side: one fused sample of 16 moves a share by up to 1/16, which we allow on 1% of the
+        // penumbra pixels.
+        const std::vector<std::uint32_t> cells = out.eyeCells->words();
+        const LineMap lineMap = readLineMap(*r.shadow(), r.disk());
+        std::vector<glm::vec3> planes(image.points.size());
+        {
+            const FloatImage n = r.surfaces().readNormals(SurfacesPass::Outputs::Normal::Plane);
+            for (int y = 0; y < image.height; ++y) // readNormals: row 0 at the top
+                for (int x = 0; x < image.width; ++x) {
+                    const std::size_t f =
+                        (static_cast<std::size_t>(image.height - 1 - y) * image.width + x) * 4;
+                    planes[image.index(x, y)] = {n.data[f], n.data[f + 1], n.data[f + 2]};
+                }
+        }
+        const CompositeEdges edges{lineMap, planes, cells};
+        const FloatImage cpuVis =
+            eyeSoftVisibility(image, cpuFlood, r.disk(), k.edges ? &edges : nullptr);
         const std::vector<float> frameVis = readR32F(r.visibility());
         ASSERT_EQ(frameVis.size(), cpuVis.data.size());
-        std::size_t penumbra = 0;
+        std::size_t penumbra = 0, apart = 0;
+        float worst = 0.0f;
         for (std::size_t i = 0; i < frameVis.size(); ++i) {
             const float c = cpuVis.data[i];
-            if (c == 0.0f || c == 1.0f)
-                ASSERT_EQ(frameVis[i], c) << "pixel " << i;
-            else
-                ASSERT_NEAR(frameVis[i], c, 5e-5f) << "pixel " << i;
             penumbra += c > 0.0f && c < 1.0f;
+            if (!k.edges) {
+                if (c == 0.0f || c == 1.0f)
+                    ASSERT_EQ(frameVis[i], c) << "pixel " << i;
+                else
+                    ASSERT_NEAR(frameVis[i], c, 5e-5f) << "pixel " << i;
+                continue;
+            }
+            const float d = std::abs(frameVis[i] - c);
+            worst = std::max(worst, d);
+            if (d > 5e-4f) {
+                ++apart;
+                EXPECT_LE(d, 1.0f / 16.0f + 5e-4f) << "pixel " << i;
+            }
+        }
+        if (k.edges) {
+            EXPECT_LE(apart, penumbra / 100) << "worst " << worst;
+            std::printf("edges: %zu of %zu penumbra pixels beyond 5e-4, worst %.3g\n", apart,
+                        penumbra, double(worst));
         }
         EXPECT_GT(penumbra, 50u);
         std::printf("%s%s: %zu shadowed, %zu seeds, %zu flooded, %zu penumbra pixels\n",

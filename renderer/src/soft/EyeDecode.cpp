@@ -75,6 +75,10 @@ std::pair<const gl::Texture&, const gl::Texture&> EyeCells::decoded() const {
     return pass->decodedEyeImage();
 }
 
+std::vector<std::uint32_t> EyeCells::words() const {
+    return readChannel<std::uint32_t>(*cells, GL_RED_INTEGER, GL_UNSIGNED_INT);
+}
+
 EyeImage EyeCells::read() const {
     const std::vector<std::uint32_t> words =
         readChannel<std::uint32_t>(*cells, GL_RED_INTEGER, GL_UNSIGNED_INT);

@@ -123,8 +123,70 @@ jfa::Grid readEyeGrid(const gl::Texture& packed, const jfa::Grid& occluders) {
     });
 }
 
-FloatImage eyeSoftVisibility(const EyeImage& im, const jfa::Grid& flooded, const DiskLight& light) {
+namespace {
+
+// jfae_composite.frag.glsl's borrowedCell: an axis neighbour's occluder, if it lies on the
+// pixel's own surface (within 30 degrees of its plane); 0 for none.
+float borrowedCell(const EyeImage& im, const jfa::Grid& flooded, int x, int y, glm::vec3 p,
+                   glm::vec3 plane) {
+    const glm::ivec2 axis[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+    for (const glm::ivec2 a : axis) {
+        const int qx = x + a.x, qy = y + a.y;
+        if (qx < 0 || qy < 0 || qx >= im.width || qy >= im.height) continue;
+        const float w = flooded.cells[im.index(qx, qy)].w;
+        if (w == 0.0f) continue;
+        const glm::vec4& n = im.points[im.index(qx, qy)];
+        const glm::vec3 d = glm::vec3(n) - p;
+        if (n.w >= 0.0f && std::abs(glm::dot(d, plane)) <= 0.5f * glm::length(d)) return w;
+    }
+    return 0.0f;
+}
+
+// One pixel of the composite with edges (the shader's main()).
+float compositeWithEdges(const EyeImage& im, const jfa::Grid& flooded, const DiskLight& light,
+                         const CompositeEdges& e, int x, int y) {
+    const std::size_t i = im.index(x, y);
+    const glm::vec4& r = im.points[i];
+    const glm::vec3 plane = e.planes[i];
+    float w = flooded.cells[i].w;
+    const bool inside = r.w == 1.0f;
+    float v = inside ? 0.0f : 1.0f;
+    bool borrowed = false;
+    if (w == 0.0f && r.w >= 0.0f && light.radius > 0.0f) {
+        w = borrowedCell(im, flooded, x, y, glm::vec3(r), plane);
+        borrowed = w != 0.0f;
+    }
+    if (r.w < 0.0f || w == 0.0f) return v;
+    const std::size_t seed = static_cast<std::size_t>(w) - 1;
+    const glm::vec3 o(im.occluders[seed]);
+    float intensity = -1.0f;
+    if (!borrowed)
+        if (const std::optional<float> k = occluderIntensity(light, glm::vec3(r), o, inside))
+            intensity = *k;
+    if (intensity >= 0.0f || borrowed) {
+        const OccluderLines lines =
+            occluderLines(e.map, eyecell::texel(e.cells[seed]), glm::vec3(r), plane);
+        float l = lines.count > 0 ? occluderLinesVisibilityFused(e.map, glm::vec3(r), plane, lines)
+                  : borrowed      ? -1.0f
+                                  : occluderPointVisibilityFused(e.map, glm::vec3(r), plane, o,
+                                                                 inside);
+        if (borrowed && l >= 0.0f) l = inside ? std::min(l, 0.5f) : std::max(l, 0.5f);
+        intensity = l < 0.0f ? intensity : l;
+    }
+    return intensity < 0.0f ? v : intensity;
+}
+
+} // namespace
+
+FloatImage eyeSoftVisibility(const EyeImage& im, const jfa::Grid& flooded, const DiskLight& light,
+                             const CompositeEdges* edges) {
     FloatImage out{im.width, im.height, 1, std::vector<float>(im.points.size(), 1.0f)};
+    if (edges) {
+        for (int y = 0; y < im.height; ++y)
+            for (int x = 0; x < im.width; ++x)
+                out.data[im.index(x, y)] = compositeWithEdges(im, flooded, light, *edges, x, y);
+        return out;
+    }
     for (std::size_t i = 0; i < im.points.size(); ++i) {
         const glm::vec4& r = im.points[i];
         const jfa::Cell& c = flooded.cells[i];

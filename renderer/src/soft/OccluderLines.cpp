@@ -1,6 +1,7 @@
 #include <renderer/soft/OccluderLines.h>
 
 #include <renderer/passes/ShadowMapDecode.h>
+#include <renderer/soft/FilteredShadow.h>
 
 #include <algorithm>
 #include <cmath>
@@ -191,6 +192,26 @@ float fusedShare(const LineMap& m, glm::vec3 p, glm::vec3 plane, float de, float
 }
 
 } // namespace
+
+LineMap readLineMap(const ShadowMapPass::Outputs& shadow, const DiskLight& light) {
+    LineMap m;
+    m.size = shadow.depth.width();
+    m.depth = readDepthMap(shadow.depth);
+    if (shadow.receivers) {
+        const gl::Texture& r = *shadow.receivers->depth;
+        m.receiverDepth.resize(static_cast<std::size_t>(m.size) * static_cast<std::size_t>(m.size));
+        glGetTextureImage(r.id(), 0, GL_RED, GL_FLOAT,
+                          static_cast<GLsizei>(m.receiverDepth.size() * sizeof(float)),
+                          m.receiverDepth.data());
+        gl::throwIfErrors("receiver target read-back");
+        m.unwarp = shadow.receivers->unwarp;
+        m.inverseLightViewProj = shadow.receivers->inverseLightViewProj;
+    }
+    m.lightViewProj = shadow.lightViewProj;
+    m.warp = shadow.warp;
+    m.light = light;
+    return m;
+}
 
 float lineMapHardShadow(const LineMap& m, glm::vec3 p) {
     glm::vec3 uvz;

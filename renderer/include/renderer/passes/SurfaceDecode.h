@@ -30,6 +30,13 @@ glm::vec2 octEncode(glm::vec3 n);
 /// The unit vector of octEncode's two numbers.
 glm::vec3 octDecode(glm::vec2 e);
 
+/// The point every shadow-map lookup of a pixel starts from (surfaceLookupPoint() in
+/// surface_lookup.glsl): its position lifted along its shading normal by its lift (the lift
+/// target, TerminatorLift.h).
+inline glm::vec3 lookupPoint(glm::vec3 world, float lift, glm::vec3 shadingNormal) {
+    return lift > 0.0f ? world + lift * shadingNormal : world;
+}
+
 /// The sRGB transfer function and its inverse, per channel, for values in [0, 1].
 glm::vec3 linearToSrgb(glm::vec3 c);
 glm::vec3 srgbToLinear(glm::vec3 c);

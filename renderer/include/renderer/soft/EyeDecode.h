@@ -88,6 +88,8 @@ struct EyeCells {
     [[nodiscard]] std::pair<const gl::Texture&, const gl::Texture&> decoded() const;
     /// Every pixel decoded on the CPU (the twin of eye_decode.glsl).
     [[nodiscard]] EyeImage read() const;
+    /// The packed cells themselves, EyeImage's layout (eyecell::state, texel, edgeCode).
+    [[nodiscard]] std::vector<std::uint32_t> words() const;
 };
 
 } // namespace fl

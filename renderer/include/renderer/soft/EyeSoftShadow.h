@@ -19,6 +19,7 @@
 #include <renderer/scene/GpuScene.h>
 #include <renderer/soft/EyeDecode.h>
 #include <renderer/soft/OccluderEdge.h>
+#include <renderer/soft/OccluderLines.h>
 #include <renderer/soft/PenumbraReach.h>
 #include <scene/DiskLight.h>
 
@@ -128,10 +129,22 @@ void setCriterionUniforms(gl::BindScope& scope, const gl::Program& program,
 /// CPU twin.
 jfa::Grid readEyeGrid(const gl::Texture& packed, const jfa::Grid& occluders);
 
-/// CPU reference of phase 5 (shaders/jfae_composite.frag.glsl): one visibility per pixel.
-/// Uses std::acos, so equal to the GL result only to float rounding (~1e-6).
+/// What phase 5 reads for the occluders' edges (--occluder-points edge): the shadow map, each
+/// pixel's receiver plane (surfacePlane) and its eye cell (EyeCells::words), in EyeImage's
+/// layout.
+struct CompositeEdges {
+    const LineMap& map;
+    const std::vector<glm::vec3>& planes;
+    const std::vector<std::uint32_t>& cells;
+};
+
+/// CPU reference of phase 5 (shaders/jfae_composite.frag.glsl): one visibility per pixel; with
+/// `edges`, from the occluders' edges (occluder_lines.glsl), else the thesis' points. Uses
+/// std::acos, so equal to the GL result only to float rounding (~1e-6) with points; with edges
+/// the fits' atan, cos and sin differ more, and the map's tests may decide otherwise at a
+/// rounding boundary.
 FloatImage eyeSoftVisibility(const EyeImage& image, const jfa::Grid& flooded,
-                             const DiskLight& light);
+                             const DiskLight& light, const CompositeEdges* edges = nullptr);
 
 /// The technique's phases 2-5 on the GPU, inside frame step 3. Phase 1 (the shadow map with
 /// receiver positions) is the caller's frame step 1; the result is the method's visibility.

@@ -4,6 +4,7 @@
 // twin of shaders/occluder_lines.glsl (operation for operation; the GLSL file says why). JFA-L's
 // lookup and JFA-E's composite recompute a penumbra pixel's visibility with these.
 
+#include <renderer/passes/ShadowMapPass.h>
 #include <scene/DiskLight.h>
 
 #include <glm/glm.hpp>
@@ -24,6 +25,9 @@ struct LineMap {
     glm::mat4 lightViewProj{1.0f}, warp{1.0f};
     DiskLight light;
 };
+
+/// A frame's shadow map read back (its receiver target and depths) as the edges read it.
+LineMap readLineMap(const ShadowMapPass::Outputs& shadow, const DiskLight& light);
 
 /// Up to two straight edges of an occluder, in world space (occluder_lines.glsl's struct).
 struct OccluderLines {
