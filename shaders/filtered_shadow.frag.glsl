@@ -129,12 +129,6 @@ void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
     vec4 world = surfacePosition(uSurfaceDepth, p);
     // The receiver plane: the surfaces pass's geometric normal (only the plane is used).
-    // Lifted onto the smooth surface (near the terminator), its tangent plane is the receiver's
-    // plane: the triangle's, extended a few texels at a grazing angle, would pass above the
-    // facets curving towards the light and shadow the point by its own body.
-    bool lifted = texelFetch(uSurfaceLift, p, 0).r > 0.0;
-    oVisibility = world.w == 0.0 ? 1.0
-                                 : filtered(surfaceLookupPoint(world.xyz, p),
-                                            lifted ? surfaceNormal(uNormals, p)
-                                                   : surfacePlane(uNormals, p));
+    oVisibility =
+        world.w == 0.0 ? 1.0 : filtered(surfaceLookupPoint(world.xyz, p), surfaceLookupPlane(p));
 }
