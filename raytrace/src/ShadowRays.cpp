@@ -78,9 +78,10 @@ struct SkipContext {
     std::uint32_t skip = kNoTriangle;
 };
 
-/// Embree's occlusion filter: a hit on the ray's own triangle is no hit (Cycles'
-/// intersection_skip_self_shadow), nor one on a cut-out triangle where the surface transmits;
-/// traversal goes on behind either.
+/// Embree's filter (every occlusion ray; intersection rays where there are cut-outs): a hit on
+/// the ray's own triangle is no hit (Cycles' intersection_skip_self_shadow), nor one on a cut-out
+/// triangle where the surface transmits; traversal goes on behind either. Every ray is cast with
+/// a SkipContext.
 void occlusionFilter(const RTCFilterFunctionNArguments* args) {
     const auto* alpha = static_cast<const AlphaTest*>(args->geometryUserPtr);
     const std::uint32_t skip = reinterpret_cast<const SkipContext*>(args->context)->skip;
@@ -162,10 +163,13 @@ RayScene::RayScene(const Triangles& t) : e_(std::make_unique<Embree>()) {
     std::copy(t.indices.begin(), t.indices.end(), indices);
     e_->indices = indices;
     e_->normals = t.normals;
-    if (std::any_of(t.cutOut.begin(), t.cutOut.end(), [](std::uint8_t f) { return f != 0; }))
-        e_->alpha = {t.cutOut, t.transmits};
     rtcSetGeometryUserData(e_->geometry, &e_->alpha);
     rtcSetGeometryOccludedFilterFunction(e_->geometry, occlusionFilter);
+    if (std::any_of(t.cutOut.begin(), t.cutOut.end(), [](std::uint8_t f) { return f != 0; })) {
+        e_->alpha = {t.cutOut, t.transmits};
+        // The receiver's lookup (surface) sees through cut-outs as the rasteriser did.
+        rtcSetGeometryIntersectFilterFunction(e_->geometry, occlusionFilter);
+    }
     rtcCommitGeometry(e_->geometry);
     rtcAttachGeometry(e_->scene, e_->geometry);
     rtcCommitScene(e_->scene);
@@ -238,8 +242,8 @@ std::optional<SurfacePoint> RayScene::surface(glm::vec3 point, glm::vec3 side,
         margin = std::max(1e-3f * distance, window);
     }
     if (!(distance > 0.0f) || !(glm::length(d) > 0.0f)) return std::nullopt;
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
+    SkipContext context; // skips nothing: the filter only reads its cut-outs here
+    rtcInitIntersectContext(&context.embree);
     RTCRayHit hit{};
     hit.ray.org_x = from.x;
     hit.ray.org_y = from.y;
@@ -251,7 +255,7 @@ std::optional<SurfacePoint> RayScene::surface(glm::vec3 point, glm::vec3 side,
     hit.ray.tfar = distance + margin;
     hit.ray.mask = 0xFFFFFFFFu;
     hit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(e_->scene, &context, &hit);
+    rtcIntersect1(e_->scene, &context.embree, &hit);
     if (hit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
     SurfacePoint out;
     out.triangle = hit.hit.primID;
