@@ -75,6 +75,40 @@ TEST(GltfLoaderValidation, InfinitePosition) {
     expectRejected(g, "inf_position.gltf", {"accessors[3]", "vertex 2 is not finite"});
 }
 
+// Bounds with no size (issue 41, bad input): nothing to place a light, a camera or a ground by.
+// Each is one message naming the file, never a ground at NaN.
+TEST(GltfLoaderValidation, EveryTriangleOfZeroArea) {
+    const std::vector<std::string> zeroArea = {"scene", "every triangle has zero area"};
+    Gltf collinear = triangle();
+    collinear.prim()["attributes"]["POSITION"] = collinear.vec3({{0, 0, 0}, {1, 0, 0}, {3, 0, 0}});
+    expectRejected(collinear, "zero_area_collinear.gltf", zeroArea);
+    Gltf equal = triangle();
+    equal.prim()["attributes"]["POSITION"] = equal.vec3(std::vector<glm::vec3>(3, {1, 2, 3}));
+    expectRejected(equal, "zero_area_equal.gltf", zeroArea);
+    Gltf scaled = triangle();
+    scaled.node(0)["scale"] = {0.0, 0.0, 0.0};
+    expectRejected(scaled, "zero_area_scale0.gltf", zeroArea);
+    scaled.node(0)["scale"] = {1.0, 0.0, 1.0}; // the triangle is in the xy plane: a line
+    expectRejected(scaled, "zero_area_scale_y0.gltf", zeroArea);
+    scaled.node(0)["scale"] = {1e-30, 1e-30, 1e-30}; // an area below float's range
+    expectRejected(scaled, "zero_area_scale_tiny.gltf", zeroArea);
+    // One point: its triangle is dropped, or it is a POINTS primitive; the scene has none.
+    Gltf point = triangle();
+    point.prim()["indices"] = point.indices(std::vector<std::uint16_t>{1, 1, 1}, kU16);
+    expectRejected(point, "one_point.gltf", {"scene", "no triangle primitives"});
+    point.prim().erase("indices");
+    point.prim()["mode"] = 0;
+    expectRejected(point, "points.gltf", {"scene", "no triangle primitives"});
+    // A zero-scaled node beside a real one is only a point in the bounds: loaded, finite.
+    Gltf two = triangle();
+    two.node(0)["scale"] = {0.0, 0.0, 0.0};
+    two.push("nodes", {{"mesh", 0}, {"translation", {0.0, -5.0, 0.0}}});
+    two.doc["scenes"][0]["nodes"] = {0, 1};
+    const Scene s = load(two.write("zero_scale_beside_one.gltf")).scene;
+    EXPECT_EQ(s.bounds.min, glm::vec3(0, -5, 0));
+    EXPECT_EQ(s.bounds.max, glm::vec3(1, 0, 0));
+}
+
 TEST(GltfLoaderValidation, AccessorPastBufferView) {
     Gltf g = triangle();
     g.accessorAt(0)["count"] = 4; // 4 * 12 bytes > the view's 36

@@ -10,6 +10,7 @@
 #include <io/ImageIO.h>
 #include <scene/SceneGenerator.h>
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 namespace fl::test {
@@ -97,6 +98,24 @@ TEST(GroundCli, TheLightByHand) {
     EXPECT_EQ(o.code, 2) << o.output;
     o = render("nan", "--light-position 1,nan,3").outcome;
     EXPECT_EQ(o.code, 2) << o.output;
+}
+
+TEST(GroundCli, AModelWithNoSizeIsOneMessageNotAGroundAtNaN) {
+    // The box scaled to a point by its node (issue 41, bad input).
+    Scene s;
+    s.meshes.push_back(box(glm::vec3(0.0f), glm::vec3(1.0f, 2.0f, 1.0f)));
+    s.instances.push_back(Instance{0, glm::scale(glm::mat4(1.0f), glm::vec3(0.0f)), 1, "box"});
+    s.computeBounds();
+    const fs::path file = outputDir("ground_cli") / "point.glb";
+    writeGlb(s, file);
+    const Outcome o = runCommand(std::string(FLOODLIGHT_BINARY) + " render --scene " +
+                                 file.string() + " --width 64 --height 64 --out " +
+                                 outputDir("ground_cli").string() + " --name point");
+    EXPECT_EQ(o.code, 1) << o.output;
+    EXPECT_NE(o.output.find("error: point.glb: scene: every triangle has zero area"),
+              std::string::npos)
+        << o.output;
+    EXPECT_EQ(o.output.find("ground: added"), std::string::npos) << o.output;
 }
 
 } // namespace

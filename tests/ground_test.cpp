@@ -4,10 +4,13 @@
 #include "TestPaths.h"
 #include "TestScenes.h"
 
+#include <scene/Camera.h>
+#include <scene/DiskLight.h>
 #include <scene/GltfLoader.h>
 #include <scene/Ground.h>
 #include <scene/SceneGenerator.h>
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 namespace fl {
@@ -87,6 +90,64 @@ TEST(Ground, AddedUnderTheBoundsReachingPastTheFootprint) {
     EXPECT_GT(n.y, 0.0f);
     EXPECT_TRUE(hasGround(box));
     EXPECT_FALSE(applyGround(box, GroundMode::Auto)); // not twice
+}
+
+// An octahedron (vertices at +-1 on each axis) placed by a node turned 45 degrees about x, then
+// 45 about z, written and loaded as a file. Its lowest vertex is at y = -0.707; the corners of its
+// own box, turned the same way, reach y = -1.707 (the bounds before issue 41 item 6).
+TEST(Ground, ARotatedModelsGroundTouchesItsLowestVertex) {
+    Scene s;
+    Mesh m;
+    m.positions = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    m.normals = m.positions;
+    for (std::uint32_t x : {0u, 1u})
+        for (std::uint32_t y : {2u, 3u})
+            for (std::uint32_t z : {4u, 5u}) {
+                // Counter-clockwise seen from outside: an even number of negative axes.
+                const bool outward = ((x == 0) == (y == 2)) == (z == 4);
+                m.indices.insert(m.indices.end(), {x, outward ? y : z, outward ? z : y});
+            }
+    s.meshes.push_back(m);
+    const glm::mat4 turn =
+        glm::rotate(glm::rotate(glm::mat4(1.0f), glm::radians(45.0f), glm::vec3(0, 0, 1)),
+                    glm::radians(45.0f), glm::vec3(1, 0, 0));
+    s.instances.push_back(
+        Instance{0, glm::translate(glm::mat4(1.0f), {2, 3, -1}) * turn, 1, "gem"});
+    s.computeBounds();
+    const auto file = test::outputDir("ground") / "turned_octahedron.glb";
+    writeGlb(s, file);
+    Scene loaded = loadGltf(file);
+    ASSERT_EQ(loaded.instances.size(), 1u);
+
+    // The box of the vertices as the vertex stage places them.
+    geom::Aabb tight;
+    for (const glm::vec3& p : loaded.meshes[0].positions)
+        tight.extend(glm::vec3(loaded.instances[0].world * glm::vec4(p, 1.0f)));
+    EXPECT_NEAR(tight.min.y, 3.0f - std::sqrt(0.5f), 1e-5f);
+    EXPECT_EQ(loaded.bounds.min, tight.min);
+    EXPECT_EQ(loaded.bounds.max, tight.max);
+
+    // The default light, its disk and the automatic view come from those bounds (what the
+    // renderer and the ray tracer are handed: Renderer's disk is makeDiskLight of these).
+    Scene reference = loaded;
+    reference.bounds = tight;
+    const Light light = sceneLight(loaded);
+    EXPECT_EQ(light.position, sceneLight(reference).position);
+    EXPECT_EQ(makeDiskLight(light, loaded.bounds).center,
+              makeDiskLight(sceneLight(reference), tight).center);
+    const CameraSpec automatic{CameraSpec::Kind::Auto};
+    EXPECT_EQ(makeCameraView(loaded, automatic, 1.0f).view,
+              makeCameraView(reference, automatic, 1.0f).view);
+
+    // The added ground lies just under the lowest vertex: 1e-4 of the scene's radius below it
+    // (Ground.cpp: no depth fight with a flat underside), within float rounding.
+    ASSERT_TRUE(applyGround(loaded, GroundMode::Auto));
+    const Mesh& g = loaded.meshes.at(static_cast<std::size_t>(loaded.instances.back().mesh));
+    const float radius = tight.radius();
+    for (const glm::vec3& p : g.positions) {
+        EXPECT_LT(p.y, tight.min.y);
+        EXPECT_NEAR(p.y, tight.min.y - 1e-4f * radius, 1e-6f * radius);
+    }
 }
 
 TEST(Ground, OnAndOffOverrideTheRule) {

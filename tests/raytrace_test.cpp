@@ -154,7 +154,7 @@ TEST(RayTraceTest, FullyOccludedIsZeroUnoccludedIsOne) {
                                      {{10, 0.5f, 0}, {-1, 0, 0}, true}};
     VisibilitySettings s;
     s.samples = 64;
-    std::uint64_t rays = 0;
+    fl::rt::RayCounts rays;
     const std::vector<float> v = fl::rt::diskVisibility(scene, disk, r, s, &rays);
     EXPECT_EQ(v[0], 0.0f);
     EXPECT_EQ(v[1], 1.0f);
@@ -163,7 +163,9 @@ TEST(RayTraceTest, FullyOccludedIsZeroUnoccludedIsOne) {
     // A wall at x = 10 whose normal is given as -x: it faces the light's centre (x = 0), and the
     // whole disk (|x| <= 0.5) is in front of it, above the occluder's edge: all lit.
     EXPECT_EQ(v[4], 1.0f);
-    EXPECT_EQ(rays, 4u * 64u);
+    EXPECT_EQ(rays.cast, 4u * 64u);
+    EXPECT_EQ(rays.offset, 0u);   // no normals: nothing to offset
+    EXPECT_EQ(rays.unplaced, 4u); // the receivers lie on no triangle of the scene
 }
 
 // Alpha cut-outs: a hit where transmits() says so is no hit, and the ray goes on to what lies

@@ -1,7 +1,10 @@
 // The ray-traced truth's terminator offset (raytrace/Terminator.h, Hanika 2021): flat triangles do
-// not move, curved ones move out towards the smooth surface their normals describe and never in,
-// and through the shadow rays: flat scenes give the same visibility with the offset on or off,
+// not move, curved ones move out towards the smooth surface their normals describe and never in;
+// Cycles' amount per ray (0 facing the light, 1 facing away, a ramp between); and through the
+// shadow rays: flat scenes give the same visibility with the offset on or off,
 // off is the flat triangle's answer exactly, and on lights the terminator of a low-poly sphere.
+
+#include "RayScenes.h"
 
 #include <raytrace/ShadowRays.h>
 #include <raytrace/Terminator.h>
@@ -23,6 +26,7 @@ using fl::rt::Receiver;
 using fl::rt::terminatorOffset;
 using fl::rt::Triangles;
 using fl::rt::VisibilitySettings;
+using fl::test::lowPolySphere;
 
 using Corners = std::array<glm::vec3, 3>;
 
@@ -106,33 +110,23 @@ TEST(TerminatorOffset, NoSmoothSurfaceWithoutUnitNormalsOrArea) {
     EXPECT_FALSE(terminatorOffset(glm::vec3(0.5f, 0, 0), line, c, 0.25f, 0.0f, up));
 }
 
-// A UV sphere of radius 1 at the origin, `rings` x `segments`, shared vertices with the sphere's
-// normals: the low-poly smooth-shaded object whose terminator the offset is for.
-Triangles lowPolySphere(int rings, int segments) {
-    Triangles t;
-    const float pi = glm::pi<float>();
-    for (int r = 0; r <= rings; ++r)
-        for (int s = 0; s < segments; ++s) {
-            const float theta = pi * static_cast<float>(r) / static_cast<float>(rings);
-            const float phi = 2.0f * pi * static_cast<float>(s) / static_cast<float>(segments);
-            const glm::vec3 p(std::sin(theta) * std::cos(phi), std::cos(theta),
-                              std::sin(theta) * std::sin(phi));
-            t.vertices.push_back(p);
-            t.normals.push_back(glm::normalize(p));
-        }
-    const auto index = [&](int r, int s) {
-        return static_cast<std::uint32_t>(r * segments + (s % segments));
-    };
-    for (int r = 0; r < rings; ++r)
-        for (int s = 0; s < segments; ++s) {
-            // The poles' zero-area triangles are left out.
-            if (r > 0)
-                t.indices.insert(t.indices.end(), {index(r, s), index(r, s + 1), index(r + 1, s)});
-            if (r + 1 < rings)
-                t.indices.insert(t.indices.end(),
-                                 {index(r, s + 1), index(r + 1, s + 1), index(r + 1, s)});
-        }
-    return t;
+TEST(TerminatorOffset, CyclesAmountIsZeroFacingTheLightOneFacingAwayARampBetween) {
+    using fl::rt::offsetAmount;
+    constexpr float c = fl::rt::kGeometryOffset;
+    // Both normals face the light by c or more: no offset (most rays).
+    EXPECT_EQ(offsetAmount(0.5f, 0.5f, c), 0.0f);
+    EXPECT_EQ(offsetAmount(c, c, c), 0.0f);
+    EXPECT_EQ(offsetAmount(1.0f, c, c), 0.0f);
+    // The triangle faces away while its smooth surface faces the light: the whole offset.
+    EXPECT_EQ(offsetAmount(0.5f, 0.0f, c), 1.0f);
+    EXPECT_EQ(offsetAmount(0.05f, -0.2f, c), 1.0f);
+    // Between: 1 - Ng.L / c above N.L = c, 2 - (Ng.L + N.L) / c below, equal at N.L = c.
+    EXPECT_NEAR(offsetAmount(0.5f, 0.25f * c, c), 0.75f, 1e-6f);
+    EXPECT_NEAR(offsetAmount(0.5f * c, 0.75f * c, c), 0.75f, 1e-6f);
+    EXPECT_NEAR(offsetAmount(c, 0.5f * c, c), offsetAmount(std::nextafter(c, 0.0f), 0.5f * c, c),
+                1e-5f);
+    // A cut-off of 0 is Cycles' "off".
+    EXPECT_EQ(offsetAmount(0.5f, -0.5f, 0.0f), 0.0f);
 }
 
 // A receiver on the sphere's flat triangles, with the eye that sees it (out along the plane).
@@ -232,7 +226,7 @@ TEST(TerminatorRays, FlatScenesAreTheSameOnAndOff) {
             receivers.push_back({{-4.0f + 0.2f * i, 0.0f, -4.0f + 0.2f * j}, {0, 1, 0}, true});
     VisibilitySettings s;
     s.samples = 64;
-    s.eye = {0.5f, 8.0f, 6.0f};
+    s.eye = glm::vec3(0.5f, 8.0f, 6.0f);
     const Disk disk{{0.3f, 5, 0.1f}, {0, -1, 0}, 1.0f};
     s.terminatorOffset = false;
     const std::vector<float> off = fl::rt::diskVisibility(scene, disk, receivers, s);

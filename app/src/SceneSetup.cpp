@@ -66,9 +66,11 @@ Scene loadScene(const SceneOptions& o) {
     // --light-size is relative to the model itself, not to the ground added under it.
     const float modelRadius = scene.bounds.radius();
     // The ground first: the default light and the camera are placed from the bounds with it.
+    const float lowest = scene.bounds.min.y;
     if (applyGround(scene, parseGroundMode(o.ground).value_or(GroundMode::Auto)))
         std::cout
-            << "ground: added under the scene ("
+            << "ground: added under the scene at y = " << scene.bounds.min.y
+            << " (its lowest vertex: " << lowest << "; "
             << (o.ground == "on"
                     ? "--ground on"
                     : "it has no surface under it to receive a shadow; --ground off leaves it out")

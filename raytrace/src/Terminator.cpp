@@ -46,4 +46,11 @@ std::optional<SmoothPoint> terminatorOffset(glm::vec3 p, const std::array<glm::v
     return SmoothPoint{p + move, glm::normalize(flip * smooth)};
 }
 
+float offsetAmount(float shadingL, float planeL, float cutoff) {
+    if (!(cutoff > 0.0f)) return 0.0f;
+    const float amount =
+        shadingL < cutoff ? 2.0f - (planeL + shadingL) / cutoff : 1.0f - planeL / cutoff;
+    return std::clamp(amount, 0.0f, 1.0f);
+}
+
 } // namespace fl::rt

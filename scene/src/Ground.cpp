@@ -1,10 +1,13 @@
 #include <scene/Ground.h>
 
+#include <geometry/Finite.h>
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <vector>
 
 namespace fl {
@@ -85,6 +88,10 @@ bool hasGround(const Scene& scene) {
 
 void addGround(Scene& scene) {
     const geom::Aabb b = scene.bounds;
+    // The loader refuses such scenes (restHasArea); a ground must never come out at NaN.
+    if (!b.valid() || !geom::allFinite(b.min) || !geom::allFinite(b.max))
+        throw std::invalid_argument(scene.source + ": no ground under bounds that are empty or "
+                                                   "not finite");
     const glm::vec3 c = b.center(), e = b.extent();
     // The default light (sceneLight) stands 58 degrees above the horizon: a shadow reaches
     // 0.61 x the height past the footprint; 0.75 x leaves a margin. The first view frames the

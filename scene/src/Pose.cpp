@@ -1,6 +1,7 @@
 #include <scene/Pose.h>
 
 #include <base/Text.h>
+#include <geometry/Finite.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -281,7 +282,8 @@ geom::Aabb posedBounds(const Scene& scene, const Pose& pose) {
         const Instance& inst = scene.instances[i];
         const Mesh& mesh = scene.meshes.at(static_cast<std::size_t>(inst.mesh));
         if (!isSkinned(inst, mesh) && mesh.targets.empty()) {
-            // Rigid: the mesh's own box moved (the loader's rest bounds do the same).
+            // Rigid: the mesh's own box moved. Looser than its vertices where the node turns;
+            // animatedBounds keeps that margin for the turns between the poses it samples.
             geom::Aabb local;
             for (const glm::vec3& p : mesh.positions) local.extend(p);
             box.extend(local.transformed(pose.instanceWorld[i]));
@@ -291,6 +293,65 @@ geom::Aabb posedBounds(const Scene& scene, const Pose& pose) {
         for (const glm::vec3& p : positions) box.extend(p);
     }
     return box;
+}
+
+namespace {
+
+/// The scene at rest, posed on first use: only skinned and morphed instances need the pose.
+class RestPose {
+  public:
+    explicit RestPose(const Scene& scene) : scene_(scene) {}
+    /// Instance i's vertices at rest in world space, or nullptr for a rigid instance (its
+    /// `world` moves its mesh's positions).
+    const std::vector<glm::vec3>* posed(std::size_t i) {
+        const Instance& inst = scene_.instances[i];
+        const Mesh& mesh = scene_.meshes.at(static_cast<std::size_t>(inst.mesh));
+        if (!isSkinned(inst, mesh) && mesh.targets.empty()) return nullptr;
+        if (pose_.instanceWorld.empty()) pose_ = evaluatePose(scene_, {}, 0.0);
+        posedVertices(scene_, pose_, i, vertices_);
+        return &vertices_;
+    }
+
+  private:
+    const Scene& scene_;
+    Pose pose_;
+    std::vector<glm::vec3> vertices_;
+};
+
+} // namespace
+
+geom::Aabb restBounds(const Scene& scene) {
+    geom::Aabb box;
+    RestPose rest(scene);
+    for (std::size_t i = 0; i < scene.instances.size(); ++i) {
+        const Instance& inst = scene.instances[i];
+        if (const std::vector<glm::vec3>* posed = rest.posed(i))
+            box.extend(geom::Aabb::around(*posed, glm::mat4(1.0f)));
+        else
+            box.extend(geom::Aabb::around(
+                scene.meshes.at(static_cast<std::size_t>(inst.mesh)).positions, inst.world));
+    }
+    return box;
+}
+
+bool restHasArea(const Scene& scene) {
+    RestPose rest(scene);
+    for (std::size_t i = 0; i < scene.instances.size(); ++i) {
+        const Instance& inst = scene.instances[i];
+        const Mesh& mesh = scene.meshes.at(static_cast<std::size_t>(inst.mesh));
+        const std::vector<glm::vec3>* posed = rest.posed(i);
+        const std::vector<glm::vec3>& v = posed ? *posed : mesh.positions;
+        const glm::mat4 world = posed ? glm::mat4(1.0f) : inst.world;
+        for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+            glm::vec3 p[3];
+            for (int k = 0; k < 3; ++k)
+                p[k] = glm::vec3(world * glm::vec4(v[mesh.indices[t + k]], 1.0f));
+            // Not the cross product's length: squaring overflows for large triangles.
+            const glm::vec3 n = glm::cross(p[1] - p[0], p[2] - p[0]);
+            if (n != glm::vec3(0.0f) && geom::allFinite(n)) return true;
+        }
+    }
+    return false;
 }
 
 geom::Aabb animatedBounds(const Scene& scene, std::span<const int> animations, int steps) {

@@ -1,5 +1,7 @@
 #include <scene/Scene.h>
 
+#include <scene/Pose.h>
+
 namespace fl {
 
 std::optional<float> shadowCutoff(const Material& m) {
@@ -21,12 +23,7 @@ std::size_t Scene::triangleCount() const {
 }
 
 void Scene::computeBounds() {
-    bounds = {};
-    for (const Instance& inst : instances) {
-        geom::Aabb local;
-        for (const glm::vec3& p : meshes.at(inst.mesh).positions) local.extend(p);
-        bounds.extend(local.transformed(inst.world));
-    }
+    bounds = restBounds(*this);
 }
 
 } // namespace fl

@@ -4,6 +4,7 @@
 #include <glm/glm.hpp>
 
 #include <limits>
+#include <span>
 
 namespace fl::geom {
 
@@ -29,8 +30,13 @@ struct Aabb {
     [[nodiscard]] glm::vec3 extent() const { return max - min; }
     /// Radius of the sphere around center() that contains the box.
     [[nodiscard]] float radius() const { return 0.5f * glm::length(max - min); }
-    /// The box around the 8 transformed corners of this box.
+    /// The box around the 8 transformed corners of this box: it holds every point of the box
+    /// moved, but is loose around what the box held once `m` rotates (see around()).
     [[nodiscard]] Aabb transformed(const glm::mat4& m) const;
+    /// The tight box around `points`, each moved by the affine `m` exactly as the vertex stage
+    /// and scene/Pose.h place a vertex (vec3(m * vec4(p, 1)), no divide by w): its faces touch
+    /// moved points, whatever the rotation. Invalid for no points.
+    [[nodiscard]] static Aabb around(std::span<const glm::vec3> points, const glm::mat4& m);
 };
 
 } // namespace fl::geom

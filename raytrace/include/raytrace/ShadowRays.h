@@ -4,12 +4,27 @@
 // aliasing, the map's resolution). Per receiver point, N rays go to stratified points of the
 // disk; its visibility is the share of them that nothing blocks. Pure CPU, all cores.
 //
-// Ray offsets: a ray leaves the receiver `epsilon()` along the receiver's geometric normal
-// (on the side it is seen from) and stops `epsilon()` short of the disk, with epsilon() = 1e-5 of
-// the scene's bounding-box diagonal. That is far above float rounding at the scene's scale and
-// far below any feature a shadow map resolves (a 4096^2 map's texel is 1/4096 of the scene).
-// With VisibilitySettings::terminatorOffset the ray first moves from the flat triangle onto the
-// smooth surface its vertex normals describe (raytrace/Terminator.h), then by epsilon().
+// Where rays start (issue 41 item 5, as Blender Cycles does): each receiver is found on the
+// triangle the eye's ray meets there (RayScene::surface), and its rays start on that triangle and
+// skip it (Cycles' self-intersection rule: intern/cycles/kernel/bvh/util.h,
+// intersection_skip_self_shadow) rather than starting an epsilon off it. A ray nearly parallel to
+// its triangle then meets what it meets whatever the epsilon, where a ray started above the
+// plane crossed it past the triangle's edge, or grazed an occluder's edge, by the epsilon's size.
+// A start on an edge or a corner moves into its triangle (each barycentric at least 1e-4), so the
+// neighbour sharing that edge does not pass through the ray's start.
+// Rays stop `epsilon` x the scene's diagonal short of the disk (the disk is no geometry; this only
+// keeps a triangle lying in the disk from blocking it). A receiver on no triangle (a point the
+// scene's surfaces do not hold) starts `epsilon` x the diagonal along its normal instead: 1e-5 by
+// default, far above float rounding at the scene's scale and far below any feature a shadow map
+// resolves.
+//
+// With VisibilitySettings::terminatorOffset, the smooth surface the vertex normals describe
+// decides which light a receiver faces, and a ray near the shadow terminator starts on that
+// surface: moved by Hanika's offset (raytrace/Terminator.h) times Cycles' amount for that ray
+// (offsetAmount: 0 unless the ray grazes the triangle or its smooth surface), decided per ray
+// since each ray is one of Cycles' light samples. Such a ray skips its triangle only while the
+// triangle's plane faces its light point (Ng.L > 0): otherwise it is meant to meet it, as in
+// Cycles.
 
 #include <base/Numbers.h>
 #include <raytrace/Terminator.h>
@@ -47,6 +62,15 @@ struct Triangles {
     std::vector<glm::vec3> normals;
 };
 
+/// A receiver's place on its triangle (RayScene::surface).
+struct SurfacePoint {
+    std::uint32_t triangle = 0;        // the triangle: its rays skip it
+    glm::vec3 position{0.0f};          // on it (barycentrics at least 1e-4: off its edges)
+    glm::vec3 normal{0.0f};            // its plane's unit normal, on the side it is seen from
+    std::optional<SmoothPoint> smooth; // Hanika's point on its smooth surface; nullopt where the
+                                       // scene has no normals or the triangle is flat
+};
+
 /// Largest |coordinate| a vertex may have (fl::kMaxWorldCoordinate): Embree works in float, and
 /// the BVH's bounds and the ray offsets lose all precision far beyond the scene's own scale.
 inline constexpr float kMaxCoordinate = static_cast<float>(kMaxWorldCoordinate);
@@ -69,16 +93,21 @@ class RayScene {
     /// BVH (Embree rebuilds it; a refit was measured no faster); the same checks as the
     /// constructor. `normals`: the vertices' new normals, or empty (the scene then has none).
     void refit(std::span<const glm::vec3> vertices, std::span<const glm::vec3> normals = {});
-    /// True when a triangle crosses the segment from `from` to `to` (both ends excluded).
-    [[nodiscard]] bool occluded(glm::vec3 from, glm::vec3 to) const;
-    /// The smooth surface (terminatorOffset) under `point`, a point of the surface the eye at
-    /// `eye` sees, on the side `side`: the triangle is the first the ray from `eye` meets within
-    /// 1e-3 of the distance (or 16 epsilon()) of `point`. nullopt when the scene has no normals,
-    /// no triangle lies there or the triangle is flat.
-    [[nodiscard]] std::optional<SmoothPoint> smoothSurface(glm::vec3 eye, glm::vec3 point,
-                                                           glm::vec3 side) const;
-    /// The ray offset (see the header comment).
-    [[nodiscard]] float epsilon() const { return epsilon_; }
+    /// True when a triangle other than `skip` (an index into the triangles; none for nullopt)
+    /// crosses the ray from `from` towards `to`, up to `shortOf` before `to` (`to` excluded).
+    /// The ray's direction is the same for any `shortOf`, so what it meets on the way is too.
+    [[nodiscard]] bool occluded(glm::vec3 from, glm::vec3 to,
+                                std::optional<std::uint32_t> skip = std::nullopt,
+                                float shortOf = 0.0f) const;
+    /// The surface under `point`, seen on the side `side` (unit): the first triangle that the
+    /// ray from `eye` through the point meets within 1e-3 of the distance (at least 1.6e-4 x the
+    /// diagonal) of it, as the rasteriser drew it there; without an eye, the first the line
+    /// along `side` meets within 1.6e-4 x the diagonal. nullopt where none lies there or it has
+    /// no area.
+    [[nodiscard]] std::optional<SurfacePoint> surface(glm::vec3 point, glm::vec3 side,
+                                                      std::optional<glm::vec3> eye) const;
+    /// The length of the diagonal of the vertices' bounding box: the scale of every offset.
+    [[nodiscard]] float diagonal() const { return diagonal_; }
     [[nodiscard]] std::size_t triangleCount() const { return triangleCount_; }
     /// Wall time of the last build or refit, ms.
     [[nodiscard]] double lastBuildMs() const { return buildMs_; }
@@ -86,7 +115,7 @@ class RayScene {
   private:
     struct Embree;
     std::unique_ptr<Embree> e_;
-    float epsilon_ = 0.0f;
+    float diagonal_ = 0.0f;
     std::size_t triangleCount_ = 0;
     double buildMs_ = 0.0;
 };
@@ -100,6 +129,9 @@ struct Receiver {
     bool valid = true;
 };
 
+/// The default ray offset, x the scene's diagonal.
+inline constexpr float kRayEpsilon = 1e-5f;
+
 /// Limits of N, the rays per receiver.
 inline constexpr int kMinSamples = 1;
 inline constexpr int kMaxSamples = 16384;
@@ -111,12 +143,20 @@ struct VisibilitySettings {
     /// reference places its point lights (its bands along straight edges are this pattern's).
     bool jitter = true;
     int threads = 0; // 0: every core
-    /// true: each ray starts on the smooth surface of its receiver's triangle (Hanika's terminator
-    /// offset; RayScene::smoothSurface, seen from `eye`), and that surface's tangent plane, not
-    /// the triangle's, blocks the light behind it. Changes nothing on flat triangles or in a
-    /// scene without normals.
+    /// true: the smooth surface of a receiver's triangle (its vertex normals) decides which
+    /// light it faces, and each ray that grazes the triangle or that surface starts on the
+    /// surface, by Cycles' amount (the header comment; raytrace/Terminator.h). false: the flat
+    /// triangle decides, and every ray starts on it. The same on flat triangles or in a scene
+    /// without normals.
     bool terminatorOffset = false;
-    glm::vec3 eye{0.0f}; // the eye the receivers were seen from (terminatorOffset only)
+    /// Cycles' Geometry Offset: the cosine under which a ray counts as grazing (offsetAmount).
+    float geometryOffset = kGeometryOffset;
+    /// The eye the receivers were seen from: it finds each receiver's triangle (RayScene::surface;
+    /// without it, the line along the receiver's normal does).
+    std::optional<glm::vec3> eye;
+    /// The ray epsilon as a share of RayScene::diagonal(), in (0, 0.01): what a ray stops short
+    /// of the disk, and a receiver on no triangle starts off it (the header comment).
+    float epsilon = kRayEpsilon;
     /// Called on the caller's thread with the share of receivers done (up to about 100 times,
     /// rising, the last call 1); empty: not called.
     std::function<void(double)> progress;
@@ -128,13 +168,19 @@ struct VisibilitySettings {
 std::vector<glm::vec3> diskSamples(const Disk& disk, const VisibilitySettings& settings,
                                    std::uint64_t receiver);
 
+/// What diskVisibility cast.
+struct RayCounts {
+    std::uint64_t cast = 0;     // rays cast
+    std::uint64_t offset = 0;   // of them, started off their triangle by the terminator offset
+    std::uint64_t unplaced = 0; // receivers on no triangle (RayScene::surface found none)
+};
+
 /// The visible share of the disk from each receiver: receivers[i] -> result[i] in [0, 1]. A
 /// sample counts as blocked when a triangle crosses its ray, when the receiver's surface faces
-/// away from it, or when it lies behind the disk (a disk lights one side). `raysCast`, if set,
-/// receives the number of rays cast. Throws std::invalid_argument for settings out of range.
+/// away from it, or when it lies behind the disk (a disk lights one side). `counts`, if set,
+/// receives what was cast. Throws std::invalid_argument for settings out of range.
 std::vector<float> diskVisibility(const RayScene& scene, const Disk& disk,
                                   std::span<const Receiver> receivers,
-                                  const VisibilitySettings& settings,
-                                  std::uint64_t* raysCast = nullptr);
+                                  const VisibilitySettings& settings, RayCounts* counts = nullptr);
 
 } // namespace fl::rt

@@ -200,10 +200,11 @@ constexpr MethodOption kTerminatorOffset{
     "terminatorOffset",
     OptionKind::Choice,
     "on",
-    "on: each ray starts on the smooth surface the vertex normals describe (Hanika 2021, the "
-    "shadow terminator of low-poly objects), whose tangent plane blocks the light behind it; off: "
-    "on the flat triangle, whose plane does (dark wherever a triangle faces away from the light). "
-    "Flat triangles are the same either way",
+    "on: the smooth surface the vertex normals describe decides which light a pixel faces, and "
+    "a ray that grazes its triangle or that surface starts on the smooth surface (Hanika 2021, "
+    "by Cycles' Geometry Offset amount: the shadow terminator of low-poly objects); off: the "
+    "flat triangle decides and every ray starts on it (dark wherever a triangle faces away from "
+    "the light). Flat triangles are the same either way",
     0,
     0,
     "on|off"};

@@ -1,9 +1,10 @@
 // raytrace: the ray-traced ground truth. Per pixel of the frame's surfaces (step 2), N shadow
 // rays to stratified points of the disk light, cast on the CPU by Embree over the same
 // triangles the GPU draws (raytrace/ShadowRays.h); visibility is the share nothing blocks. It
-// uses no shadow map, so it carries none of the errors of the methods it judges. With
-// --terminator-offset on (the default) rays leave the smooth surface the vertex normals describe
-// (raytrace/Terminator.h), as production ray tracers do.
+// uses no shadow map, so it carries none of the errors of the methods it judges. Each pixel's
+// rays start on the triangle the eye sees there and skip it; with --terminator-offset on (the
+// default) the smooth surface the vertex normals describe decides what the pixel faces, and rays
+// that graze start on it (raytrace/ShadowRays.h, raytrace/Terminator.h), as Cycles does.
 
 #include <renderer/methods/OptionStructs.h>
 #include <renderer/methods/ShadowMethod.h>

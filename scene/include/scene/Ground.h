@@ -36,7 +36,9 @@ bool hasGround(const Scene& scene);
 /// bottom of the bounds, centred under them, reaching past the footprint by 0.75 x the scene's
 /// height (a shadow cast from 53 degrees above the horizon or higher lands on it whole; the
 /// default light stands at 58), as one instance with its own object id and material named
-/// "floodlight ground". Scene::addedGround names the instance.
+/// "floodlight ground". Scene::addedGround names the instance. The bottom of the bounds is the
+/// lowest vertex (Scene::bounds is tight), so the ground touches what stands on it. Throws
+/// std::invalid_argument for bounds that are empty or not finite (the loader refuses those).
 void addGround(Scene& scene);
 
 /// What the first view of a scene with an added ground frames (issue 30 item 6): the model's

@@ -57,8 +57,21 @@ struct Pose {
 void posedVertices(const Scene& scene, const Pose& pose, std::size_t instance,
                    std::vector<glm::vec3>& positions, std::vector<glm::vec3>* normals = nullptr);
 
-/// The scene's bounds in `pose`.
+/// The scene's bounds in `pose`: skinned and morphed instances' posed vertices, and each rigid
+/// instance's mesh box moved by its transform (looser than its vertices where the transform
+/// turns: the clip's margin, animatedBounds).
 [[nodiscard]] geom::Aabb posedBounds(const Scene& scene, const Pose& pose);
+
+/// The scene's bounds at rest (what Scene::computeBounds stores): the tight box around every
+/// vertex where the vertex stage places it with no animation applied; rigid instances' vertices
+/// moved by their `world`, skinned and morphed ones posed at rest (evaluatePose with none).
+/// The added ground, the default light, the auto camera and the ray tracer's disk all start here.
+[[nodiscard]] geom::Aabb restBounds(const Scene& scene);
+
+/// True when some triangle at rest (placed as restBounds places its vertices) has a nonzero,
+/// finite area in float: false for a scene whose vertices all lie in one point or on one line,
+/// or whose every node is scaled to 0. Stops at the first such triangle.
+[[nodiscard]] bool restHasArea(const Scene& scene);
 
 /// The bounds of every pose `animations` take over their duration: the union over every key
 /// time (at most 256 of them) and `steps` even steps. The light's frustum fits these, so that the

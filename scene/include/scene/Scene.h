@@ -159,14 +159,16 @@ struct Scene {
                                  // animations; empty otherwise
     std::vector<Skin> skins;
     std::vector<Animation> animations;
-    geom::Aabb bounds; // world-space bounds of all instances
+    /// World-space bounds of every instance's vertices at rest, tight however a node turns
+    /// (restBounds in scene/Pose.h; the clip's bounds are animatedBounds).
+    geom::Aabb bounds;
     /// The instance addGround (Ground.h) added under the scene, -1 for none: the first view
     /// frames the model without it (makeCameraView).
     int addedGround = -1;
 
     /// Total triangles over all instances.
     [[nodiscard]] std::size_t triangleCount() const;
-    /// Recomputes `bounds` from the instances.
+    /// Recomputes `bounds` from the instances (restBounds).
     void computeBounds();
 };
 

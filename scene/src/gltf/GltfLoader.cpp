@@ -315,6 +315,11 @@ Scene convert(const gltf::Context& ctx, tinygltf::Model& model, const std::files
     if (!scene.bounds.valid() || !inWorld(scene.bounds))
         ctx.fail("scene", cat("world-space bounds are not finite or reach beyond ",
                               kMaxWorldCoordinate, " (positions or transforms too large)"));
+    // Nothing to draw, to cast a shadow or to stand a ground under: a point or a line has no
+    // size to place a light, a camera or a ground from.
+    if (!restHasArea(scene))
+        ctx.fail("scene", "every triangle has zero area where its node places it (its vertices "
+                          "lie in one point or on one line, or a node scale is 0)");
 
     std::vector<bool> used(ctx.model().materials.size(), false);
     for (const Mesh& mesh : scene.meshes)
