@@ -6,6 +6,7 @@
 // depth along the light's ray through the tap.
 #include "surface_decode.glsl"
 #include "surface_lookup.glsl"
+#include "normal_offset.glsl"
 
 // SurfacesPass: positions (surfacePosition)
 layout(binding = FL_TEX_SURFACES_DEPTH) uniform sampler2D uSurfaceDepth;
@@ -129,6 +130,14 @@ void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
     vec4 world = surfacePosition(uSurfaceDepth, p);
     // The receiver plane: the surfaces pass's geometric normal (only the plane is used).
-    oVisibility =
-        world.w == 0.0 ? 1.0 : filtered(surfaceLookupPoint(world.xyz, p), surfaceLookupPlane(p));
+    if (world.w == 0.0) {
+        oVisibility = 1.0;
+        return;
+    }
+    vec3 plane = surfaceLookupPlane(p);
+    vec3 lookup = surfaceLookupPoint(world.xyz, p);
+    lookup = normalOffset(lookup, plane, normalize(uDiskCenter - lookup),
+                          uShadowWarp * uLightProj * uLightView,
+                          float(textureSize(uDepth, 0).x));
+    oVisibility = filtered(lookup, plane);
 }

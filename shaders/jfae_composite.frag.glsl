@@ -65,16 +65,27 @@ void main() {
         vec3 o = eyeSeedOccluder(eyeSeedPixel(w)).xyz;
         float intensity = borrowed ? -1.0 : occluderIntensity(r.xyz, o, inside);
         if (edges && (intensity >= 0.0 || borrowed)) {
-            ivec2 s = eyeFramePixel(eyeSeedPixel(w));
-            ivec2 ot = eyeCellTexel(texelFetch(uEyeCells, s, 0).r);
             vec3 plane = surfacePlane(uEyeNormals, t);
-            OccluderLines lines = occluderLines(uEyeReceivers, ot, r.xyz, plane);
-            float l = lines.count > 0 ? occluderLinesVisibilityFused(r.xyz, plane, lines)
+            // The edges around the pixel's own texel where it lies within the window (the same
+            // edges whichever seed the flood brought), else around the seed's occluder texel.
+            ivec2 own = eyeCellTexel(texelFetch(uEyeCells, eyeFramePixel(t), 0).r);
+            OccluderLines lines = occluderLines(uEyeReceivers, own, r.xyz, plane);
+            if (lines.count == 0) {
+                ivec2 s = eyeFramePixel(eyeSeedPixel(w));
+                lines = occluderLines(uEyeReceivers, eyeCellTexel(texelFetch(uEyeCells, s, 0).r),
+                                      r.xyz, plane);
+            }
+            // The occluder over the pixel itself, for the fused test (inside the hard shadow).
+            vec4 over = mapReceiver(uEyeReceivers, own);
+            float ownDepth =
+                inside && over.w != 0.0 ? dot(over.xyz - uDiskCenter, uDiskNormal) : 0.0;
+            float l = lines.count > 0 ? occluderLinesVisibilityFused(r.xyz, plane, lines, ownDepth)
                       : borrowed      ? -1.0
-                                      : occluderPointVisibilityFused(r.xyz, plane, o, inside);
-            // A borrowed occluder keeps the pixel on its side of the hard edge: it only softens a
-        // penumbra's outermost ring, never lights a point the map shadows or the reverse.
-        if (borrowed && l >= 0.0) l = inside ? min(l, 0.5) : max(l, 0.5);
+                                      : occluderPointVisibilityFused(r.xyz, plane, o, inside,
+                                                                     ownDepth);
+            // A borrowed occluder only softens a penumbra's outermost ring: where its edges put the
+        // point on the other side of the hard edge, the point keeps its hard result.
+        if (borrowed && (inside ? l > 0.5 : l < 0.5)) l = -1.0;
         intensity = l < 0.0 ? intensity : l;
         }
         v = intensity < 0.0 ? v : intensity;

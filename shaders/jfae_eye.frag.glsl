@@ -30,7 +30,7 @@ void main() {
         return;
     }
     // The same test as the hard method's hardShadow(), so radius 0 reproduces it exactly.
-    vec3 lookup = surfaceLookupPoint(surface.xyz, p);
+    vec3 lookup = shadowNormalOffset(surfaceLookupPoint(surface.xyz, p), surfaceLookupPlane(p));
     float lit = hardShadow(lookup);
     vec3 uvz;
     // Lit outside the map is lit by convention, not by a depth test: it is no evidence of a

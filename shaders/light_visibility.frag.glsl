@@ -22,14 +22,16 @@ void main() {
         return;
     }
     world.xyz = surfaceLookupPoint(world.xyz, ivec2(gl_FragCoord.xy));
+    // The hard test's point: off the surface by the normal offset (shadow_lookup.glsl).
+    vec3 tested = shadowNormalOffset(world.xyz, surfaceLookupPlane(ivec2(gl_FragCoord.xy)));
 #ifdef SOFT_PENUMBRA_MAP
 #ifdef SOFT_PENUMBRA_BOTH
-    oVisibility =
-        penumbraMapVisibility(world.xyz, surfacePlane(uPenumbraNormals, ivec2(gl_FragCoord.xy)));
+    oVisibility = penumbraMapVisibility(
+        world.xyz, tested, surfacePlane(uPenumbraNormals, ivec2(gl_FragCoord.xy)));
 #else
-    oVisibility = penumbraMapVisibility(world.xyz, vec3(0.0)); // outer: the plane is not read
+    oVisibility = penumbraMapVisibility(world.xyz, tested, vec3(0.0)); // outer: no plane read
 #endif
 #else
-    oVisibility = hardShadow(world.xyz);
+    oVisibility = hardShadow(tested);
 #endif
 }

@@ -261,17 +261,32 @@ bool chordsOpen(vec3 x, DiskChord a, DiskChord b, bool two, bool slit) {
     return slit ? oa && ob : oa || ob;
 }
 
+// Whether the light's centre sees, at the point of p's plane on its ray through `crossing`,
+// nothing nearer (the map's depth test passes). `planeAtCentre`: dot(p - centre, plane).
+bool fusedRayOpen(vec3 crossing, vec3 plane, float planeAtCentre) {
+    float den = dot(crossing - uDiskCenter, plane);
+    if (!(abs(den) > 0.0)) return true;
+    vec3 y = uDiskCenter + (crossing - uDiskCenter) * (planeAtCentre / den);
+    vec3 uvz;
+    return !shadowCoord(y, uvz) || texture(uShadowMap, uvz) > 0.5;
+}
+
 // `share` (the exact open share of the chords) times the part of the open sample points that
 // the map finds open at p's plane, their rays crossing the occluder's light depth `de`.
 // Points whose ray crosses within a texel and a half of one of the `guards` edges (the edges'
 // points and open vectors, a texel long at their depth; `guards` of them) are not tested: the
 // map cannot tell that side of a texel from the other, and the chord has them exactly.
+// `own`: the light depth of the occluder the light's centre sees over p (its own texel's, for a
+// point in the hard shadow; 0 for none): where it lies at another depth than the edge, a ray is
+// also tested where it crosses that depth, so the occluder right over p blocks what passes
+// beyond a farther edge.
 float fusedShare(vec3 p, vec3 plane, float de, float share, DiskChord a, DiskChord b, bool two,
-                 bool slit, OccluderLines guard, int guards) {
+                 bool slit, OccluderLines guard, int guards, float own) {
     if (!(share > 0.0) || !(uDiskRadius > 0.0)) return share;
     float dp = dot(p - uDiskCenter, uDiskNormal);
     if (!(de < dp)) return share;
     float planeAtCentre = dot(p - uDiskCenter, plane);
+    bool ownLayer = own > 0.0 && own < dp && abs(own - de) > 0.02 * dp;
     vec3 v = cross(uDiskNormal, a.u);
     int tested = 0;
     int open = 0;
@@ -292,20 +307,15 @@ float fusedShare(vec3 p, vec3 plane, float de, float share, DiskChord a, DiskCho
             ++open;
             continue;
         }
-        float den = dot(crossing - uDiskCenter, plane);
-        bool lit = true;
-        if (abs(den) > 0.0) {
-            vec3 y = uDiskCenter + (crossing - uDiskCenter) * (planeAtCentre / den);
-            vec3 uvz;
-            lit = !shadowCoord(y, uvz) || texture(uShadowMap, uvz) > 0.5;
-        }
+        bool lit = fusedRayOpen(crossing, plane, planeAtCentre);
+        if (lit && ownLayer) lit = fusedRayOpen(p + (q - p) * ((dp - own) / dp), plane, planeAtCentre);
         open += lit ? 1 : 0;
     }
     return tested == 0 ? share : share * float(open) / float(tested);
 }
 
 // occluderLinesVisibility with other occluders fused in (fusedShare).
-float occluderLinesVisibilityFused(vec3 p, vec3 plane, OccluderLines L) {
+float occluderLinesVisibilityFused(vec3 p, vec3 plane, OccluderLines L, float own) {
     DiskChord c[2];
     bool ok[2] = bool[2](false, false);
     float share[2] = float[2](-1.0, -1.0);
@@ -321,16 +331,16 @@ float occluderLinesVisibilityFused(vec3 p, vec3 plane, OccluderLines L) {
         one.point[0] = L.point[k];
         one.open[0] = L.open[k];
         return fusedShare(p, plane, dot(L.point[k] - uDiskCenter, uDiskNormal), share[k], c[k],
-                          c[k], false, false, one, 1);
+                          c[k], false, false, one, 1, own);
     }
     float both = L.slit ? max(share[0] + share[1] - 1.0, 0.0) : min(share[0] + share[1], 1.0);
-    return fusedShare(p, plane, de, both, c[0], c[1], true, L.slit, L, 2);
+    return fusedShare(p, plane, de, both, c[0], c[1], true, L.slit, L, 2, own);
 }
 
 // The thesis' occluder point o (the flood's, where no edge was found) fused the same way: its
 // chord passes through q (where the ray from p through o meets the light's plane) at right
 // angles to cq, covering the centre inside the hard shadow and not outside. -1 for a miss.
-float occluderPointVisibilityFused(vec3 p, vec3 plane, vec3 o, bool inside) {
+float occluderPointVisibilityFused(vec3 p, vec3 plane, vec3 o, bool inside, float own) {
     float share = occluderIntensity(p, o, inside);
     if (!(share > 0.0)) return share;
     float dp = dot(p - uDiskCenter, uDiskNormal);
@@ -345,6 +355,6 @@ float occluderPointVisibilityFused(vec3 p, vec3 plane, vec3 o, bool inside) {
     c.s = inside ? -d : d;
     OccluderLines none;
     none.count = 0;
-    return fusedShare(p, plane, dO, share, c, c, false, false, none, 0);
+    return fusedShare(p, plane, dO, share, c, c, false, false, none, 0, own);
 }
 #endif

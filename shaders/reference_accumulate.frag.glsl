@@ -15,5 +15,6 @@ layout(location = 0) out float oLit;
 void main() {
     vec4 p = surfacePosition(uDepth, ivec2(gl_FragCoord.xy));
     if (p.w == 0.0) discard;
-    oLit = hardShadow(surfaceLookupPoint(p.xyz, ivec2(gl_FragCoord.xy)));
+    ivec2 t = ivec2(gl_FragCoord.xy);
+    oLit = hardShadow(shadowNormalOffset(surfaceLookupPoint(p.xyz, t), surfaceLookupPlane(t)));
 }

@@ -20,10 +20,10 @@ layout(binding = FL_TEX_PENUMBRA_RECEIVERS) uniform sampler2D uPenumbraReceivers
 // texel's occluder (the inner half, from 0 deep in the umbra to 0.5 at the hard edge); without it
 // (outer) 0 there, the thesis' lookup unchanged.
 #ifndef SOFT_PENUMBRA_BOTH
-float penumbraMapVisibility(vec3 world, vec3 plane) {
+float penumbraMapVisibility(vec3 world, vec3 tested, vec3 plane) {
     vec3 uvz;
     if (!shadowCoord(world, uvz)) return 1.0;
-    if (texture(uShadowMap, uvz) < 0.5) return 0.0;
+    if (hardShadow(tested) < 0.5) return 0.0;
     ivec2 size = textureSize(uPenumbraMap, 0);
     ivec2 t = clamp(ivec2(uvz.xy * vec2(size)), ivec2(0), size - 1);
     vec4 o = mapSeedCell(uPenumbraReceivers, texelFetch(uPenumbraMap, t, 0).r);
@@ -41,10 +41,10 @@ layout(binding = FL_TEX_PENUMBRA_NORMALS) uniform sampler2D uPenumbraNormals;
 // surface, is shadowed by that surface whatever the occluder's edge leaves (the back of a post,
 // a trunk, a cap's underside under their own silhouettes), so it stays 0: such a plane sees at
 // most the sliver of the disk in front of it, nothing once it turns r / distance past grazing.
-float penumbraMapVisibility(vec3 world, vec3 plane) {
+float penumbraMapVisibility(vec3 world, vec3 tested, vec3 plane) {
     vec3 uvz;
     if (!shadowCoord(world, uvz)) return 1.0;
-    bool inside = texture(uShadowMap, uvz) < 0.5;
+    bool inside = hardShadow(tested) < 0.5;
     ivec2 size = textureSize(uPenumbraMap, 0);
     ivec2 t = clamp(ivec2(uvz.xy * vec2(size)), ivec2(0), size - 1);
     float tag = texelFetch(uPenumbraMap, t, 0).r;
@@ -62,11 +62,17 @@ float penumbraMapVisibility(vec3 world, vec3 plane) {
     vec4 o = mapSeedCell(uPenumbraReceivers, tag);
     float lit = inside ? 0.0 : 1.0; // no occluder, or its ray misses the disk
     if (o.w == 0.0) return lit;
-    // The occluder's edges at sub-texel precision around the texel the flood chose
-    // (occluder_lines.glsl says why), else its point at the silhouette's edge, not its texel's
-    // centre half a texel inside (occluder_edge.glsl; the flood ranks the centres).
+    // The occluder's edges at sub-texel precision (occluder_lines.glsl says why): around the
+    // point's own texel where one lies within the window (the same edges whichever occluder the
+    // flood brought), else around the occluder's texel; without edges, its point at the
+    // silhouette's edge, not its texel's centre half a texel inside (occluder_edge.glsl; the
+    // flood ranks the centres).
+    OccluderLines lines = occluderLines(uPenumbraReceivers, t, world, plane);
     ivec2 ot = mapSeedTexel(o.w, textureSize(uPenumbraReceivers, 0).x);
-    OccluderLines lines = occluderLines(uPenumbraReceivers, ot, world, plane);
+    if (lines.count == 0) lines = occluderLines(uPenumbraReceivers, ot, world, plane);
+    // The occluder over the point itself, for the fused test (inside the hard shadow).
+    vec4 over = mapReceiver(uPenumbraReceivers, t);
+    float ownDepth = inside && over.w != 0.0 ? dot(over.xyz - uDiskCenter, uDiskNormal) : 0.0;
     o.xyz = lines.count > 0 ? lines.point[0]
                             : occluderEdgePoint(uPenumbraReceivers, ot, uSilhouetteThreshold);
     if (inside && (dot(plane, uDiskCenter - world) <= 0.0 || dot(plane, o.xyz - world) <= 0.0))
@@ -76,12 +82,13 @@ float penumbraMapVisibility(vec3 world, vec3 plane) {
     // disk; or borrowed): an edge of p's own surface, or one not between p and the light,
     // shades nothing.
     if (intensity >= 0.0 || borrowed) {
-        float l = lines.count > 0 ? occluderLinesVisibilityFused(world, plane, lines)
+        float l = lines.count > 0 ? occluderLinesVisibilityFused(world, plane, lines, ownDepth)
                   : borrowed      ? -1.0
-                                  : occluderPointVisibilityFused(world, plane, o.xyz, inside);
-        // A borrowed occluder keeps the pixel on its side of the hard edge: it only softens a
-        // penumbra's outermost ring, never lights a point the map shadows or the reverse.
-        if (borrowed && l >= 0.0) l = inside ? min(l, 0.5) : max(l, 0.5);
+                                  : occluderPointVisibilityFused(world, plane, o.xyz, inside,
+                                                                 ownDepth);
+        // A borrowed occluder only softens a penumbra's outermost ring: where its edges put the
+        // point on the other side of the hard edge, the point keeps its hard result.
+        if (borrowed && (inside ? l > 0.5 : l < 0.5)) l = -1.0;
         intensity = l < 0.0 ? intensity : l;
     }
     return intensity < 0.0 ? lit : intensity;

@@ -26,7 +26,8 @@ float chebyshev(vec2 m, float t) {
 
 void main() {
     vec4 world = surfacePosition(uDepth, ivec2(gl_FragCoord.xy));
-    world.xyz = surfaceLookupPoint(world.xyz, ivec2(gl_FragCoord.xy));
+    world.xyz = shadowNormalOffset(surfaceLookupPoint(world.xyz, ivec2(gl_FragCoord.xy)),
+                                   surfaceLookupPlane(ivec2(gl_FragCoord.xy)));
     vec3 uvz;
     if (world.w == 0.0 || !shadowCoord(world.xyz, uvz)) {
         oVisibility = 1.0;

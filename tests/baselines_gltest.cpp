@@ -9,7 +9,9 @@
 
 #include <renderer/Renderer.h>
 #include <renderer/io/TextureImage.h>
+#include <renderer/passes/SurfaceDecode.h>
 #include <renderer/passes/SurfacesPass.h>
+#include <renderer/passes/TerminatorLift.h>
 #include <renderer/run/Capture.h>
 #include <renderer/run/ClosedFormRender.h>
 #include <renderer/soft/FilteredShadow.h>
@@ -83,14 +85,27 @@ void compareFilterWithCpu(ShadowMapProvider provider, bool pcss) {
     const FloatImage vis = readTexture(out.visibility, 1);
     const FloatImage points = surfaces.positions().read();
     const FloatImage normals = surfaces.readNormals(SurfacesPass::Outputs::Normal::Plane);
+    // Every lookup starts from the lifted point, against the smooth tangent plane where lifted
+    // (surfaceLookupPoint, surfaceLookupPlane in surface_lookup.glsl).
+    const FloatImage shading = surfaces.readNormals(SurfacesPass::Outputs::Normal::Shading);
+    const FloatImage lift = readTexture(surfaces.lift, 1);
+    std::size_t lifted = 0;
     std::size_t surface = 0, differ = 0, partial = 0;
     double sumAbs = 0.0, maxAbs = 0.0;
     for (int y = 0; y < size; ++y)
         for (int x = 0; x < size; ++x) {
             if (points.at(x, y, 3) == 0.0f) continue;
             ++surface;
-            const glm::vec3 p(points.at(x, y, 0), points.at(x, y, 1), points.at(x, y, 2));
-            const glm::vec3 n(normals.at(x, y, 0), normals.at(x, y, 1), normals.at(x, y, 2));
+            const glm::vec3 ns(shading.at(x, y, 0), shading.at(x, y, 1), shading.at(x, y, 2));
+            const float h = lift.at(x, y, 0);
+            lifted += h > 0.0f;
+            const glm::vec3 n =
+                h > 0.0f ? ns
+                         : glm::vec3(normals.at(x, y, 0), normals.at(x, y, 1), normals.at(x, y, 2));
+            glm::vec3 p = surface::lookupPoint(
+                {points.at(x, y, 0), points.at(x, y, 1), points.at(x, y, 2)}, h, ns);
+            p = surface::normalOffset(p, n, glm::normalize(f.disk.center - p),
+                                      f.warp * f.lightProj * f.lightView, float(f.size));
             const float cpu = filteredVisibility(f, p, n);
             const float gpuV = vis.at(x, y, 0);
             const double d = std::abs(static_cast<double>(cpu) - gpuV);
@@ -99,8 +114,9 @@ void compareFilterWithCpu(ShadowMapProvider provider, bool pcss) {
             differ += d > 1e-5;
             partial += gpuV > 0.0f && gpuV < 1.0f;
         }
-    std::printf("%s %s: %zu surface pixels, %zu partial, %zu differ > 1e-5, mean %.2e max %.3f\n",
-                std::string(providerName(provider)).c_str(), pcss ? "pcss" : "pcf", surface,
+    std::printf("%s %s: %zu surface pixels (%zu lifted), %zu partial, %zu differ > 1e-5, mean "
+                "%.2e max %.3f\n",
+                std::string(providerName(provider)).c_str(), pcss ? "pcss" : "pcf", surface, lifted,
                 partial, differ, sumAbs / static_cast<double>(surface), maxAbs);
     ASSERT_GT(surface, 5000u);
     ASSERT_GT(partial, 200u) << "the view must show filtered edges";

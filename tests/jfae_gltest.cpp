@@ -343,8 +343,12 @@ std::size_t umbraHoles(const Frame& method, const Frame& reference) {
 // The midpoint check samples one pixel of the path the occluder jumped over, so it is a
 // heuristic: with the thesis' occluder points (texel centres) it removes every hole of the
 // default view; with edge points (the default) the points differ by half a texel and two
-// pixels, (90,174) and (91,174), keep an occluder seeded 12 pixels away whose midpoint accepts it
-// while every path of standard flooding rejects it.
+// pixels, (185,120) and (184,121), keep an occluder seeded 6 pixels away whose midpoint accepts
+// it while every path of standard flooding rejects it. Since every hard test reads the map from
+// the lifted, normal-offset point (issue 41), fewer pixels of the tree's crown are hard-shadowed
+// by their own crown: the view shows 13 holes without the fixes with centre points (33 before)
+// and 4 with edge points, all of them self-shadowing, which no fix is for; so the fixes' effect
+// is checked with centre points, and with edge points only that they leave the pair above.
 TEST_F(JfaETest, JumpTooFarFixesRemoveUmbraHoles) {
     for (const char* points : {"centre", "edge"}) {
         SCOPED_TRACE(std::string("occluder points ") + points);
@@ -368,8 +372,10 @@ TEST_F(JfaETest, JumpTooFarFixesRemoveUmbraHoles) {
         std::printf("%s points: umbra holes: no fixes %zu (%zu of them self-shadowing), object id "
                     "%zu, midpoint %zu, both %zu\n",
                     points, hNone, sameObject, hIds, hMid, hBoth);
-        EXPECT_GE(hNone, 20u) << "the default view must show the jump-too-far problem";
-        EXPECT_LT(hIds, hNone) << "the object-ID fix removes the holes across objects";
+        if (std::string_view(points) == "centre") {
+            EXPECT_GE(hNone, 10u) << "the default view must show the jump-too-far problem";
+            EXPECT_LT(hIds, hNone) << "the object-ID fix removes the holes across objects";
+        }
         EXPECT_LE(hIds, sameObject) << "and leaves at most the self-shadowing ones";
         const std::size_t left = std::string_view(points) == "centre" ? 0u : 2u;
         EXPECT_LE(hMid, left) << "the midpoint check removes all but the two explained above";

@@ -6,7 +6,9 @@
 //  - a box under a small light, whose penumbra is a few map texels wide: JFA-E's comb;
 //  - a coarse smooth-shaded sphere: the map methods' terminator teeth, where a point of a facet
 //    turned slightly from the light lies behind its neighbour's edge in the map.
-// A failure writes the frames' visibility next to the truth's under tests/output/real_models/.
+// A failure writes the frames' visibility next to the truth's under tests/output/real_models/;
+// FLOODLIGHT_KEEP_FRAMES=1 writes every frame there, and each scene as sceneN.glb (N in test
+// order) for `floodlight render --scene`.
 
 #include "GlTest.h"
 #include "TestPaths.h"

@@ -194,13 +194,14 @@ TEST_F(RendererTest, BytesWrittenAreTheTargetsFormatsTimesTheirTexels) {
         r.render(camera);
         const std::map<std::string, std::int64_t> b = bytesOf(r);
         EXPECT_EQ(b.at("shadow map"), texels * 4); // DEPTH32F
-        // DEPTH32F, RGBA16_SNORM normals, RGBA8 base colour, R8 receivers: 17 bytes a pixel.
-        EXPECT_EQ(b.at("surfaces"), pixels * (4 + 8 + 4 + 1));
+        // DEPTH32F, RGBA16_SNORM normals, RGBA8 base colour, R8 receivers, R32F lift: 21 bytes
+        // a pixel.
+        EXPECT_EQ(b.at("surfaces"), pixels * (4 + 8 + 4 + 1 + 4));
         EXPECT_EQ(b.at("hard shadows"), pixels * 4); // R32F
         EXPECT_EQ(b.at("shading"), pixels * 8);      // RGBA16F
-        EXPECT_EQ(r.timer().frameBytes(), texels * 4 + pixels * (17 + 4 + 8));
+        EXPECT_EQ(r.timer().frameBytes(), texels * 4 + pixels * (21 + 4 + 8));
         r.render(camera, camera); // with the previous camera: the motion target too
-        EXPECT_EQ(bytesOf(r).at("surfaces"), pixels * (17 + 16));
+        EXPECT_EQ(bytesOf(r).at("surfaces"), pixels * (21 + 16));
     }
     for (const char* method : {"jfa-l", "jfa-e"}) {
         RenderSettings s = settings;

@@ -18,6 +18,7 @@ class ShaderTest : public GlTest {};
 TEST_F(ShaderTest, EveryEmbeddedProgramCompiles) {
     const gl::ShaderLibrary lib;
     EXPECT_NO_THROW(gl::Program::build(lib, {{GL_VERTEX_SHADER, "forward.vert.glsl"},
+                                             {GL_GEOMETRY_SHADER, "surfaces.geom.glsl"},
                                              {GL_FRAGMENT_SHADER, "surfaces.frag.glsl"}}));
     EXPECT_NO_THROW(gl::Program::build(lib, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
                                              {GL_FRAGMENT_SHADER, "shading.frag.glsl"}}));

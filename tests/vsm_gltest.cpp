@@ -8,6 +8,8 @@
 
 #include <renderer/Renderer.h>
 #include <renderer/io/TextureImage.h>
+#include <renderer/passes/SurfaceDecode.h>
+#include <renderer/passes/TerminatorLift.h>
 #include <renderer/run/Capture.h>
 #include <renderer/soft/FilteredShadow.h>
 #include <scene/GltfLoader.h>
@@ -71,6 +73,7 @@ struct CpuVsm {
 
 struct VsmFrame {
     FloatImage visibility, hard, positions, receivers;
+    FloatImage lift, shading, planes; // the lookup point's inputs (surface_lookup.glsl)
 };
 
 VsmFrame renderVsm(float radius, float blur, float bleed, std::vector<float>* depth = nullptr,
@@ -92,6 +95,9 @@ VsmFrame renderVsm(float radius, float blur, float bleed, std::vector<float>* de
     f.visibility = readTexture(r.visibility(), 1);
     f.positions = r.surfaces().positions().read();
     f.receivers = readTexture(r.receivers(), 1);
+    f.lift = readTexture(r.surfaces().lift, 1);
+    f.shading = r.surfaces().readNormals(SurfacesPass::Outputs::Normal::Shading);
+    f.planes = r.surfaces().readNormals(SurfacesPass::Outputs::Normal::Plane);
     if (depth) {
         *depth = readDepthMap(r.shadow()->depth);
         *mapSize = r.shadow()->depth.width();
@@ -131,8 +137,17 @@ TEST_F(VsmTest, MatchesTheCpuReference) {
     for (int i = 0; i < 128 * 128; ++i) {
         const std::size_t k = static_cast<std::size_t>(i);
         if (f.positions.data[4 * k + 3] == 0.0f) continue;
-        const glm::vec3 p(f.positions.data[4 * k], f.positions.data[4 * k + 1],
-                          f.positions.data[4 * k + 2]);
+        // The lookup's point: lifted, then the normal offset (surface_lookup.glsl,
+        // normal_offset.glsl).
+        const auto vec = [&](const FloatImage& im) {
+            return glm::vec3(im.data[4 * k], im.data[4 * k + 1], im.data[4 * k + 2]);
+        };
+        const float h = f.lift.data[k];
+        const glm::vec3 plane = h > 0.0f ? vec(f.shading) : vec(f.planes);
+        glm::vec3 p = surface::lookupPoint(vec(f.positions), h, vec(f.shading));
+        const glm::vec4 light = glm::inverse(lightViewProj) * glm::vec4(0.0f, 0.0f, 1.0f, 0.0f);
+        p = surface::normalOffset(p, plane, glm::normalize(glm::vec3(light) / light.w - p),
+                                  lightViewProj, float(mapSize));
         const glm::vec4 c = lightViewProj * glm::vec4(p, 1.0f);
         float expected = 1.0f;
         const glm::vec3 uvz = glm::vec3(c) / c.w * 0.5f + 0.5f;

@@ -179,6 +179,11 @@ void bindShadowMap(gl::BindScope& scope, const gl::Program& program,
     scope.texture(gl::bind::ShadowMap, shadow.depth.id());
     program.set("uLightViewProj", shadow.lightViewProj);
     program.set("uShadowWarp", shadow.warp);
+    program.set("uShadowLight", shadowLight(shadow.lightViewProj));
+}
+
+glm::vec4 shadowLight(const glm::mat4& lightViewProj) {
+    return glm::vec4(glm::inverse(glm::dmat4(lightViewProj)) * glm::dvec4(0.0, 0.0, 1.0, 0.0));
 }
 
 } // namespace fl

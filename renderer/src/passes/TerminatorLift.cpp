@@ -1,6 +1,7 @@
 #include <renderer/passes/TerminatorLift.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace fl::surface {
 
@@ -48,6 +49,24 @@ float terminatorLift(glm::vec3 p, glm::vec3 w, const TangentPlanes& t, glm::vec3
                      glm::vec3 l) {
     const glm::vec3 move = terminatorMove(p, w, t, plane);
     return std::max(glm::dot(move, n), 0.0f) * terminatorAmount(glm::dot(n, l), glm::dot(plane, l));
+}
+
+float mapTexelWorld(glm::vec3 world, const glm::mat4& m, float size) {
+    const glm::vec4 c = m * glm::vec4(world, 1.0f);
+    const glm::vec3 rowX(m[0][0], m[1][0], m[2][0]), rowY(m[0][1], m[1][1], m[2][1]);
+    const glm::vec3 rowW(m[0][3], m[1][3], m[2][3]);
+    const glm::vec3 gx = (rowX * c.w - c.x * rowW) / (c.w * c.w);
+    const glm::vec3 gy = (rowY * c.w - c.y * rowW) / (c.w * c.w);
+    const float perUnit = std::min(glm::length(gx), glm::length(gy)) * 0.5f * size;
+    return perUnit > 0.0f ? 1.0f / perUnit : 0.0f;
+}
+
+glm::vec3 normalOffset(glm::vec3 world, glm::vec3 n, glm::vec3 toLight,
+                       const glm::mat4& mapViewProj, float size) {
+    const float c = glm::dot(n, toLight);
+    if (!(c > 0.0f)) return world;
+    const float s = std::sqrt(std::max(1.0f - c * c, 0.0f));
+    return world + n * (kNormalOffsetTexels * s * mapTexelWorld(world, mapViewProj, size));
 }
 
 } // namespace fl::surface

@@ -164,13 +164,17 @@ float compositeWithEdges(const EyeImage& im, const jfa::Grid& flooded, const Dis
         if (const std::optional<float> k = occluderIntensity(light, glm::vec3(r), o, inside))
             intensity = *k;
     if (intensity >= 0.0f || borrowed) {
-        const OccluderLines lines =
-            occluderLines(e.map, eyecell::texel(e.cells[seed]), glm::vec3(r), plane);
-        float l = lines.count > 0 ? occluderLinesVisibilityFused(e.map, glm::vec3(r), plane, lines)
-                  : borrowed      ? -1.0f
-                                  : occluderPointVisibilityFused(e.map, glm::vec3(r), plane, o,
-                                                                 inside);
-        if (borrowed && l >= 0.0f) l = inside ? std::min(l, 0.5f) : std::max(l, 0.5f);
+        const glm::ivec2 own = eyecell::texel(e.cells[i]);
+        OccluderLines lines = occluderLines(e.map, own, glm::vec3(r), plane);
+        if (lines.count == 0)
+            lines = occluderLines(e.map, eyecell::texel(e.cells[seed]), glm::vec3(r), plane);
+        const float ownDepth = inside ? lineMapDepth(e.map, own) : 0.0f;
+        float l = lines.count > 0
+                      ? occluderLinesVisibilityFused(e.map, glm::vec3(r), plane, lines, ownDepth)
+                  : borrowed ? -1.0f
+                             : occluderPointVisibilityFused(e.map, glm::vec3(r), plane, o, inside,
+                                                            ownDepth);
+        if (borrowed && (inside ? l > 0.5f : l < 0.5f)) l = -1.0f;
         intensity = l < 0.0f ? intensity : l;
     }
     return intensity < 0.0f ? v : intensity;

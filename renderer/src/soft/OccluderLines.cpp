@@ -153,14 +153,23 @@ bool shadowCoord(const LineMap& m, glm::vec3 world, glm::vec3& uvz) {
            glm::all(glm::lessThanEqual(uvz, glm::vec3(1.0f)));
 }
 
+bool fusedRayOpen(const LineMap& m, glm::vec3 crossing, glm::vec3 plane, float planeAtCentre) {
+    const DiskLight& l = m.light;
+    const float den = glm::dot(crossing - l.center, plane);
+    if (!(std::abs(den) > 0.0f)) return true;
+    const glm::vec3 y = l.center + (crossing - l.center) * (planeAtCentre / den);
+    return lineMapHardShadow(m, y) > 0.5f;
+}
+
 float fusedShare(const LineMap& m, glm::vec3 p, glm::vec3 plane, float de, float share,
                  const DiskChord& a, const DiskChord& b, bool two, bool slit,
-                 const OccluderLines& guard, int guards) {
+                 const OccluderLines& guard, int guards, float own) {
     const DiskLight& l = m.light;
     if (!(share > 0.0f) || !(l.radius > 0.0f)) return share;
     const float dp = glm::dot(p - l.center, l.normal);
     if (!(de < dp)) return share;
     const float planeAtCentre = glm::dot(p - l.center, plane);
+    const bool ownLayer = own > 0.0f && own < dp && std::abs(own - de) > 0.02f * dp;
     const glm::vec3 v = glm::cross(l.normal, a.u);
     int tested = 0, open = 0;
     for (int k = 0; k < kFuseSamples; ++k) {
@@ -180,12 +189,9 @@ float fusedShare(const LineMap& m, glm::vec3 p, glm::vec3 plane, float de, float
             ++open;
             continue;
         }
-        const float den = glm::dot(crossing - l.center, plane);
-        bool lit = true;
-        if (std::abs(den) > 0.0f) {
-            const glm::vec3 y = l.center + (crossing - l.center) * (planeAtCentre / den);
-            lit = lineMapHardShadow(m, y) > 0.5f;
-        }
+        bool lit = fusedRayOpen(m, crossing, plane, planeAtCentre);
+        if (lit && ownLayer)
+            lit = fusedRayOpen(m, p + (q - p) * ((dp - own) / dp), plane, planeAtCentre);
         open += lit ? 1 : 0;
     }
     return tested == 0 ? share : share * float(open) / float(tested);
@@ -211,6 +217,13 @@ LineMap readLineMap(const ShadowMapPass::Outputs& shadow, const DiskLight& light
     m.warp = shadow.warp;
     m.light = light;
     return m;
+}
+
+float lineMapDepth(const LineMap& m, glm::ivec2 t) {
+    const float d = m.receiverDepth[std::size_t(t.y) * std::size_t(m.size) + t.x];
+    if (d == shadowmap::kNoReceiver) return 0.0f;
+    const glm::vec3 p = mapUnproject(m, glm::vec2(t) + 0.5f, d);
+    return glm::dot(p - m.light.center, m.light.normal);
 }
 
 float lineMapHardShadow(const LineMap& m, glm::vec3 p) {
@@ -261,7 +274,7 @@ OccluderLines occluderLines(const LineMap& m, glm::ivec2 t, glm::vec3 p, glm::ve
 }
 
 float occluderLinesVisibilityFused(const LineMap& m, glm::vec3 p, glm::vec3 n,
-                                   const OccluderLines& lines) {
+                                   const OccluderLines& lines, float own) {
     const DiskLight& l = m.light;
     DiskChord c[2];
     bool ok[2]{false, false};
@@ -277,16 +290,16 @@ float occluderLinesVisibilityFused(const LineMap& m, glm::vec3 p, glm::vec3 n,
         one.point[0] = lines.point[k];
         one.open[0] = lines.open[k];
         return fusedShare(m, p, n, glm::dot(lines.point[k] - l.center, l.normal), share[k], c[k],
-                          c[k], false, false, one, 1);
+                          c[k], false, false, one, 1, own);
     }
     const float both = lines.slit ? std::max(share[0] + share[1] - 1.0f, 0.0f)
                                   : std::min(share[0] + share[1], 1.0f);
     return fusedShare(m, p, n, glm::dot(lines.point[0] - l.center, l.normal), both, c[0], c[1],
-                      true, lines.slit, lines, 2);
+                      true, lines.slit, lines, 2, own);
 }
 
 float occluderPointVisibilityFused(const LineMap& m, glm::vec3 p, glm::vec3 n, glm::vec3 o,
-                                   bool inside) {
+                                   bool inside, float own) {
     const DiskLight& l = m.light;
     const std::optional<float> intensity = occluderIntensity(l, p, o, inside);
     const float share = intensity ? *intensity : -1.0f;
@@ -301,7 +314,7 @@ float occluderPointVisibilityFused(const LineMap& m, glm::vec3 p, glm::vec3 n, g
     DiskChord c;
     c.u = inside ? cq / d : -cq / d;
     c.s = inside ? -d : d;
-    return fusedShare(m, p, n, dO, share, c, c, false, false, OccluderLines{}, 0);
+    return fusedShare(m, p, n, dO, share, c, c, false, false, OccluderLines{}, 0, own);
 }
 
 } // namespace fl

@@ -116,6 +116,7 @@ ReferenceShadowPass::Outputs ReferenceShadowPass::execute(const Inputs& in, gl::
         glDisable(GL_DEPTH_TEST);
         glEnable(GL_BLEND);
         accumulate_.set("uLightViewProj", viewProj);
+        accumulate_.set("uShadowLight", shadowLight(viewProj));
         // Bound per map: the scene's draw binds alpha cut-out textures on unit 0, and the next
         // map pass draws into map_ (the scope unbinds it first).
         gl::BindScope scope;

@@ -135,9 +135,13 @@ class ShadowMapPass {
 };
 
 /// Binds the map for shaders/shadow_lookup.glsl: the depth texture on gl::bind::ShadowMap in
-/// `scope` and the uLightViewProj / uShadowWarp uniforms of `program`.
+/// `scope` and the uLightViewProj / uShadowWarp / uShadowLight uniforms of `program`.
 void bindShadowMap(gl::BindScope& scope, const gl::Program& program,
                    const ShadowMapPass::Outputs& shadow);
+
+/// shadow_lookup.glsl's uShadowLight: inverse(lightViewProj) * (0, 0, 1, 0), the light's
+/// position (homogeneous, w != 0) or, for an orthographic map, its travel direction (w = 0).
+glm::vec4 shadowLight(const glm::mat4& lightViewProj);
 
 /// A size x size depth map sampled as the hard test reads it (NEAREST, LEQUAL comparison):
 /// the shadow pass's own, and the ground truth's point-light maps.

@@ -36,4 +36,16 @@ float terminatorAmount(float nl, float ngl);
 float terminatorLift(glm::vec3 p, glm::vec3 w, const TangentPlanes& t, glm::vec3 n, glm::vec3 plane,
                      glm::vec3 l);
 
+/// The normal offset's share of a texel (shaders/normal_offset.glsl says why a quarter).
+inline constexpr float kNormalOffsetTexels = 0.25f;
+
+/// The world size of a texel of a `size`-texel map made with `mapViewProj` at `world`
+/// (mapTexelWorld() in normal_offset.glsl).
+float mapTexelWorld(glm::vec3 world, const glm::mat4& mapViewProj, float size);
+
+/// `world` moved off its surface (normal n) by the normal offset, `toLight` unit towards the
+/// light (normalOffset() in normal_offset.glsl).
+glm::vec3 normalOffset(glm::vec3 world, glm::vec3 n, glm::vec3 toLight,
+                       const glm::mat4& mapViewProj, float size);
+
 } // namespace fl::surface

@@ -43,15 +43,19 @@ struct OccluderLines {
 OccluderLines occluderLines(const LineMap& map, glm::ivec2 t, glm::vec3 p, glm::vec3 n);
 
 /// The share of the disk p sees past the edges, other occluders fused in (what the map shows
-/// nearer than p's plane where the rays cross the edge's depth), or -1 when no edge lies
-/// between p and the light.
+/// nearer than p's plane where the rays cross the edge's depth, and `own`, the light depth of
+/// the occluder over p, 0 for none), or -1 when no edge lies between p and the light.
 float occluderLinesVisibilityFused(const LineMap& map, glm::vec3 p, glm::vec3 n,
-                                   const OccluderLines& lines);
+                                   const OccluderLines& lines, float own);
 
 /// The thesis' occluder point o fused the same way (its chord at right angles to cq), or -1 for
 /// a miss.
 float occluderPointVisibilityFused(const LineMap& map, glm::vec3 p, glm::vec3 n, glm::vec3 o,
-                                   bool inside);
+                                   bool inside, float own);
+
+/// The light depth (along the disk's normal) of what texel t of the receiver target sees, 0
+/// where it sees nothing.
+float lineMapDepth(const LineMap& map, glm::ivec2 t);
 
 /// The hard test of the map at world point p (hardShadow() in shadow_lookup.glsl): 1 lit (or
 /// off the map), 0 shadowed.
