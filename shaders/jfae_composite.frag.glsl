@@ -49,32 +49,60 @@ float borrowedCell(ivec2 t, vec3 p, vec3 plane) {
     return 0.0;
 }
 
+// Two passes (EyeSoftShadowPass::drawComposite): the first gives every pixel its thesis value
+// (the hard result, or its occluder point's share) and marks in the depth target the pixels
+// the edges will recompute (flooded, or next to a flooded pixel); the second, with
+// COMPOSITE_EDGES, runs only there (an early depth test), so that the edges' fits cost only
+// around the penumbrae: a software rasteriser runs every fragment of a block through both sides
+// of a branch.
+#ifndef COMPOSITE_EDGES
+bool nextToFlooded(ivec2 t) {
+    bool any = false;
+    for (int k = 0; k < 4; ++k) {
+        ivec2 q = t + ivec2(k == 0 ? 1 : k == 1 ? -1 : 0, k == 2 ? 1 : k == 3 ? -1 : 0);
+        ivec2 c = clamp(q, ivec2(0), textureSize(uFlooded, 0) - 1);
+        any = any || texelFetch(uFlooded, c, 0).r != 0.0;
+    }
+    return any;
+}
+
 void main() {
     ivec2 t = ivec2(gl_FragCoord.xy);
     vec4 r = eyePoint(t);
     float w = texelFetch(uFlooded, t, 0).r;
     bool inside = r.w == 1.0;
     float v = inside ? 0.0 : 1.0;
-    bool edges = uOccluderEdges != 0;
+    if (r.w >= 0.0 && w != 0.0) {
+        float intensity = occluderIntensity(r.xyz, eyeSeedOccluder(eyeSeedPixel(w)).xyz, inside);
+        v = intensity < 0.0 ? v : intensity;
+    }
+    oVisibility = v;
+    bool edges = uOccluderEdges != 0 && r.w >= 0.0 && uDiskRadius > 0.0;
+    gl_FragDepth = edges && (w != 0.0 || nextToFlooded(t)) ? 0.0 : 1.0;
+}
+#else
+void main() {
+    ivec2 t = ivec2(gl_FragCoord.xy);
+    vec4 r = eyePoint(t);
+    float w = texelFetch(uFlooded, t, 0).r;
+    bool inside = r.w == 1.0;
+    float v = inside ? 0.0 : 1.0;
     bool borrowed = false;
-    if (w == 0.0 && edges && r.w >= 0.0 && uDiskRadius > 0.0) {
+    if (w == 0.0) {
         w = borrowedCell(t, r.xyz, surfacePlane(uEyeNormals, t));
         borrowed = w != 0.0;
     }
-    if (r.w >= 0.0 && w != 0.0) {
+    if (w != 0.0) {
         vec3 o = eyeSeedOccluder(eyeSeedPixel(w)).xyz;
         float intensity = borrowed ? -1.0 : occluderIntensity(r.xyz, o, inside);
-        if (edges && (intensity >= 0.0 || borrowed)) {
+        if (intensity >= 0.0 || borrowed) {
             vec3 plane = surfacePlane(uEyeNormals, t);
-            // The edges around the pixel's own texel where it lies within the window (the same
-            // edges whichever seed the flood brought), else around the seed's occluder texel.
+            // The edges around the pixel's own texel (the same edges whichever seed the flood
+            // brought); where none lies within the window the penumbra is wide and the seed's
+            // point (fused) is close enough.
             ivec2 own = eyeCellTexel(texelFetch(uEyeCells, eyeFramePixel(t), 0).r);
             OccluderLines lines = occluderLines(uEyeReceivers, own, r.xyz, plane);
-            if (lines.count == 0) {
-                ivec2 s = eyeFramePixel(eyeSeedPixel(w));
-                lines = occluderLines(uEyeReceivers, eyeCellTexel(texelFetch(uEyeCells, s, 0).r),
-                                      r.xyz, plane);
-            }
+
             // The occluder over the pixel itself, for the fused test (inside the hard shadow).
             vec4 over = mapReceiver(uEyeReceivers, own);
             float ownDepth =
@@ -83,12 +111,13 @@ void main() {
                       : borrowed      ? -1.0
                                       : occluderPointVisibilityFused(r.xyz, plane, o, inside,
                                                                      ownDepth);
-            // A borrowed occluder only softens a penumbra's outermost ring: where its edges put the
-        // point on the other side of the hard edge, the point keeps its hard result.
-        if (borrowed && (inside ? l > 0.5 : l < 0.5)) l = -1.0;
-        intensity = l < 0.0 ? intensity : l;
+            // A borrowed occluder only softens a penumbra's outermost ring: where its edges put
+            // the point on the other side of the hard edge, the point keeps its hard result.
+            if (borrowed && (inside ? l > 0.5 : l < 0.5)) l = -1.0;
+            intensity = l < 0.0 ? intensity : l;
         }
         v = intensity < 0.0 ? v : intensity;
     }
     oVisibility = v;
 }
+#endif

@@ -59,21 +59,17 @@ float planeDepthAt(vec4 plane, vec2 tc, vec2 size) {
     return -(plane.x * l.x + plane.y * l.y + plane.w * l.z) / den;
 }
 
-// The edge samples of the window around texel t: midpoints (relative to t's centre) of axis
-// neighbours of which one is covered and the other not, the direction from the covered one to
-// the other, and the covered one's depth. Covered means, for the receiver whose plane is `plane`
-// (lightClipPlane): the light's centre sees something nearer than that plane there, by more
-// than two texels' change of the plane's depth (so that the plane itself never counts).
-struct LineSamples {
-    int count;
-    vec2 mid[40]; // 2 * 5 * 4 pairs at most
-    vec2 open[40];
-    float depth[40];
+// The window around texel t, for the receiver whose plane is `plane` (lightClipPlane): each
+// texel 0 outside the map, 1 uncovered, 2 covered, and its depth. Covered means the light's
+// centre sees something nearer than that plane there, by more than two texels' change of the
+// plane's depth (so that the plane itself never counts).
+struct LineWindow {
+    int cover[(2 * kLineWindow + 1) * (2 * kLineWindow + 1)];
+    float depth[(2 * kLineWindow + 1) * (2 * kLineWindow + 1)];
 };
 
-LineSamples lineSamples(sampler2D receivers, ivec2 t, vec4 plane) {
-    LineSamples s;
-    s.count = 0;
+LineWindow lineWindow(sampler2D receivers, ivec2 t, vec4 plane) {
+    LineWindow win;
     ivec2 size = textureSize(receivers, 0);
     vec2 fsize = vec2(size);
     const int n = 2 * kLineWindow + 1;
@@ -82,66 +78,75 @@ LineSamples lineSamples(sampler2D receivers, ivec2 t, vec4 plane) {
     float margin = 2.0 * max(abs(planeDepthAt(plane, c + vec2(1.0, 0.0), fsize) - d0),
                              abs(planeDepthAt(plane, c + vec2(0.0, 1.0), fsize) - d0)) +
                    1e-6;
-    int cover[n * n];
-    float depth[n * n];
     for (int j = 0; j < n; ++j) {
         for (int i = 0; i < n; ++i) {
             ivec2 q = t + ivec2(i - kLineWindow, j - kLineWindow);
             int k = j * n + i;
-            cover[k] = 0; // outside the map: neither
-            depth[k] = 0.0;
+            win.cover[k] = 0; // outside the map: neither
+            win.depth[k] = 0.0;
             if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
             float d = texelFetch(receivers, q, 0).r;
-            depth[k] = d;
+            win.depth[k] = d;
             bool covered = d != kMapNoReceiver &&
                            d < planeDepthAt(plane, vec2(q) + 0.5, fsize) - margin;
-            cover[k] = covered ? 2 : 1;
+            win.cover[k] = covered ? 2 : 1;
         }
     }
-    for (int j = 0; j < n; ++j) {
-        for (int i = 0; i < n; ++i) {
-            int a = cover[j * n + i];
-            for (int axis = 0; axis < 2; ++axis) {
-                int i1 = i + (axis == 0 ? 1 : 0), j1 = j + (axis == 1 ? 1 : 0);
-                if (i1 >= n || j1 >= n) continue;
-                int b = cover[j1 * n + i1];
-                if (a == 0 || b == 0 || a == b) continue;
-                vec2 step = axis == 0 ? vec2(1.0, 0.0) : vec2(0.0, 1.0);
-                s.mid[s.count] = vec2(i - kLineWindow, j - kLineWindow) + 0.5 * step;
-                s.open[s.count] = a == 2 ? step : -step;
-                s.depth[s.count] = a == 2 ? depth[j * n + i] : depth[j1 * n + i1];
-                ++s.count;
-            }
-        }
-    }
-    return s;
+    return win;
 }
 
-// The occluder's edges near texel t as the receiver at p with normal `n` sees them.
+// An edge sample: axis neighbours k and k1 of the window of which one is covered and the other
+// not. Its midpoint (relative to t's centre), the direction from the covered one to the other,
+// the covered one's depth, and its weight (less towards the window's border, so that the fit
+// moves smoothly as the window moves along an edge); false for no sample.
+bool lineSample(LineWindow win, int i, int j, int axis, out vec2 mid, out vec2 open,
+                out float depth, out float weight) {
+    const int n = 2 * kLineWindow + 1;
+    int i1 = i + (axis == 0 ? 1 : 0), j1 = j + (axis == 1 ? 1 : 0);
+    mid = vec2(0.0);
+    open = vec2(0.0);
+    depth = 0.0;
+    weight = 0.0;
+    if (i1 >= n || j1 >= n) return false;
+    int a = win.cover[j * n + i], b = win.cover[j1 * n + i1];
+    if (a == 0 || b == 0 || a == b) return false;
+    vec2 step = axis == 0 ? vec2(1.0, 0.0) : vec2(0.0, 1.0);
+    mid = vec2(i - kLineWindow, j - kLineWindow) + 0.5 * step;
+    open = a == 2 ? step : -step;
+    depth = a == 2 ? win.depth[j * n + i] : win.depth[j1 * n + i1];
+    float r2 = dot(mid, mid) / float((kLineWindow + 1) * (kLineWindow + 1));
+    weight = max(1.0 - r2, 0.0) * max(1.0 - r2, 0.0);
+    return true;
+}
+
+// The occluder's edges near texel t as the receiver at p with normal `n` sees them. The samples
+// are visited twice in the same order, first for their principal axis, then for the edges, so
+// that none is stored (an array indexed at run time costs a software rasteriser a gather per
+// access).
 OccluderLines occluderLines(sampler2D receivers, ivec2 t, vec3 p, vec3 n) {
     OccluderLines L;
     L.count = 0;
     L.slit = false;
-    LineSamples s = lineSamples(receivers, t, lightClipPlane(p, n));
-    if (s.count < 2) return L;
-    // Samples weigh less towards the window's border, so that the fit moves smoothly as the
-    // window moves along an edge (a sample entering or leaving at full weight would jolt it).
-    float weight[40];
+    LineWindow win = lineWindow(receivers, t, lightClipPlane(p, n));
+    const int side = 2 * kLineWindow + 1;
+    int samples = 0;
     float total = 0.0;
-    vec2 mean = vec2(0.0);
-    for (int k = 0; k < s.count; ++k) {
-        float r2 = dot(s.mid[k], s.mid[k]) / float((kLineWindow + 1) * (kLineWindow + 1));
-        weight[k] = max(1.0 - r2, 0.0) * max(1.0 - r2, 0.0);
-        total += weight[k];
-        mean += weight[k] * s.mid[k];
-    }
-    if (!(total > 0.0)) return L;
-    mean /= total;
-    vec3 m2 = vec3(0.0); // xx, yy, xy about the mean
-    for (int k = 0; k < s.count; ++k) {
-        vec2 d = s.mid[k] - mean;
-        m2 += weight[k] * vec3(d.x * d.x, d.y * d.y, d.x * d.y);
-    }
+    vec2 sum1 = vec2(0.0);
+    vec3 sum2 = vec3(0.0); // xx, yy, xy
+    for (int j = 0; j < side; ++j)
+        for (int i = 0; i < side; ++i)
+            for (int axis = 0; axis < 2; ++axis) {
+                vec2 mid, open;
+                float depth, w;
+                if (!lineSample(win, i, j, axis, mid, open, depth, w)) continue;
+                ++samples;
+                total += w;
+                sum1 += w * mid;
+                sum2 += w * vec3(mid.x * mid.x, mid.y * mid.y, mid.x * mid.y);
+            }
+    if (samples < 2 || !(total > 0.0)) return L;
+    vec2 mean = sum1 / total;
+    vec3 m2 = sum2 / total - vec3(mean.x * mean.x, mean.y * mean.y, mean.x * mean.y);
     float angle = 0.5 * atan(2.0 * m2.z, m2.x - m2.y);
     vec2 dir = vec2(cos(angle), sin(angle));
     vec2 nrm = vec2(-dir.y, dir.x);
@@ -150,27 +155,48 @@ OccluderLines occluderLines(sampler2D receivers, ivec2 t, vec3 p, vec3 n) {
     vec2 sum[2] = vec2[2](vec2(0.0), vec2(0.0));
     float depthSum[2] = float[2](0.0, 0.0);
     float count[2] = float[2](0.0, 0.0);
-    for (int k = 0; k < s.count; ++k) {
-        float along = dot(s.open[k], nrm);
-        if (abs(along) < 0.3 || !(weight[k] > 0.0)) continue;
-        int e = along > 0.0 ? 0 : 1;
-        sum[e] += weight[k] * s.mid[k];
-        depthSum[e] += weight[k] * s.depth[k];
-        count[e] += weight[k];
-    }
+    for (int j = 0; j < side; ++j)
+        for (int i = 0; i < side; ++i)
+            for (int axis = 0; axis < 2; ++axis) {
+                vec2 mid, open;
+                float depth, w;
+                if (!lineSample(win, i, j, axis, mid, open, depth, w)) continue;
+                float along = dot(open, nrm);
+                if (abs(along) < 0.3 || !(w > 0.0)) continue;
+                if (along > 0.0) {
+                    sum[0] += w * mid;
+                    depthSum[0] += w * depth;
+                    count[0] += w;
+                } else {
+                    sum[1] += w * mid;
+                    depthSum[1] += w * depth;
+                    count[1] += w;
+                }
+            }
     vec2 size = vec2(textureSize(receivers, 0));
     vec2 centre = vec2(t) + 0.5;
-    vec2 at[2];
-    float atDepth[2];
+    vec2 at[2] = vec2[2](vec2(0.0), vec2(0.0));
+    float atDepth[2] = float[2](0.0, 0.0);
+    vec2 opens[2] = vec2[2](nrm, -nrm);
     for (int e = 0; e < 2; ++e) {
         if (!(count[e] > 0.0)) continue;
         vec2 c = sum[e] / count[e];
-        int k = L.count++;
-        at[k] = c - dir * dot(c, dir); // the edge's point nearest t's centre
-        atDepth[k] = depthSum[e] / count[e];
-        L.point[k] = mapUnproject(centre + at[k], size, atDepth[k]);
-        L.open[k] = mapUnproject(centre + at[k] + (e == 0 ? nrm : -nrm), size, atDepth[k]) -
-                    L.point[k];
+        vec2 a = c - dir * dot(c, dir); // the edge's point nearest t's centre
+        float d = depthSum[e] / count[e];
+        vec3 point = mapUnproject(centre + a, size, d);
+        vec3 open = mapUnproject(centre + a + opens[e], size, d) - point;
+        if (L.count == 0) {
+            at[0] = a;
+            atDepth[0] = d;
+            L.point[0] = point;
+            L.open[0] = open;
+        } else {
+            at[1] = a;
+            atDepth[1] = d;
+            L.point[1] = point;
+            L.open[1] = open;
+        }
+        ++L.count;
     }
     if (L.count == 0) return L;
     L.tangent = mapUnproject(centre + at[0] + dir, size, atDepth[0]) - L.point[0];
@@ -234,7 +260,7 @@ float occluderLinesVisibility(vec3 p, OccluderLines L) {
 #ifdef OCCLUDER_LINES_FUSE
 // Occluders fused: the edges give the exact share of the disk an occluder leaves open, but
 // another occluder may cover part of that share (a second fin under the first, the head behind
-// an ear, the next finger). Sixteen points spread evenly over the disk (Vogel's spiral, in the
+// an ear, the next finger). Eight points spread evenly over the disk (Vogel's spiral, in the
 // frame of the first chord) are tested where they lie in the open part: the ray from p to each
 // crosses the edge's depth at x, and the light's centre sees, at the point of p's own plane on
 // its ray through x, something nearer (the map's depth test fails) or not. Like PCSS's filter
@@ -250,7 +276,7 @@ struct DiskChord {
     float s;
 };
 
-const int kFuseSamples = 16;
+const int kFuseSamples = 8;
 
 // Whether x (from the disk's centre, in its plane) passes chords a (and b, with `two`): one
 // chord; a strip (either chord open); a slit (both open).

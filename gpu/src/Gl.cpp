@@ -205,6 +205,8 @@ std::int64_t texelBytes(GLenum internalFormat) {
     switch (internalFormat) {
     case GL_R8:
         return 1;
+    case GL_DEPTH_COMPONENT16:
+        return 2;
     case GL_RGBA8:
     case GL_SRGB8_ALPHA8:
     case GL_R32F:

@@ -165,9 +165,7 @@ float compositeWithEdges(const EyeImage& im, const jfa::Grid& flooded, const Dis
             intensity = *k;
     if (intensity >= 0.0f || borrowed) {
         const glm::ivec2 own = eyecell::texel(e.cells[i]);
-        OccluderLines lines = occluderLines(e.map, own, glm::vec3(r), plane);
-        if (lines.count == 0)
-            lines = occluderLines(e.map, eyecell::texel(e.cells[seed]), glm::vec3(r), plane);
+        const OccluderLines lines = occluderLines(e.map, own, glm::vec3(r), plane);
         const float ownDepth = inside ? lineMapDepth(e.map, own) : 0.0f;
         float l = lines.count > 0
                       ? occluderLinesVisibilityFused(e.map, glm::vec3(r), plane, lines, ownDepth)
@@ -215,6 +213,10 @@ EyeSoftShadowPass::EyeSoftShadowPass(const gl::ShaderLibrary& shaders)
                                              {GL_FRAGMENT_SHADER, "jfae_boundary.frag.glsl"}})),
       composite_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
                                               {GL_FRAGMENT_SHADER, "jfae_composite.frag.glsl"}})),
+      compositeEdges_(gl::Program::build(shaders,
+                                         {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
+                                          {GL_FRAGMENT_SHADER, "jfae_composite.frag.glsl"}},
+                                         {"COMPOSITE_EDGES 1"})),
       unpack_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
                                            {GL_FRAGMENT_SHADER, "jfae_unpack.frag.glsl"}})),
       emptyVao_(gl::VertexArray::create()), kernel_(shaders, jfa::GlKernelKind::Fragment),
@@ -246,10 +248,11 @@ void EyeSoftShadowPass::resize(int width, int height, int shadowSize) {
     seeds_ = gl::Texture(GL_R32F, width, height);  // packed flood cells (EyeSoftCriterion)
     seedOccluders_ = gl::Texture(GL_RGBA32F, width, height); // eyeSeedOccluder
     visibility_ = gl::Texture(GL_R32F, width, height);
+    mask_ = gl::Texture(GL_DEPTH_COMPONENT16, width, height);
     eyeFbo_ = gl::Framebuffer::forColor(cells_, "JFA-E eye pass");
     seedsFbo_ =
         gl::Framebuffer::withTargets({&seeds_, &seedOccluders_}, nullptr, "JFA-E boundary seeds");
-    visibilityFbo_ = gl::Framebuffer::forColor(visibility_, "JFA-E visibility");
+    visibilityFbo_ = gl::Framebuffer::withTargets({&visibility_}, &mask_, "JFA-E visibility");
 }
 
 void EyeSoftShadowPass::drawOccluderIds(const Inputs& in) {
@@ -314,17 +317,32 @@ void EyeSoftShadowPass::drawBoundaries(const Inputs& in, BoundaryThreshold th) {
 void EyeSoftShadowPass::drawComposite(const Inputs& in, const gl::Texture& flooded) {
     glBindFramebuffer(GL_FRAMEBUFFER, visibilityFbo_.id());
     glViewport(0, 0, in.width, in.height);
+    const bool edges = in.settings.occluderPoints == OccluderPoints::Edge && in.light.radius > 0.0f;
+    // The first pass marks the pixels the edges recompute (depth 0; the rest 1); the second runs
+    // only there: fullscreen at depth 0.5, GL_GREATER.
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+    glDepthMask(GL_TRUE);
+    for (const gl::Program* program : {&composite_, &compositeEdges_}) {
+        if (program == &compositeEdges_) {
+            if (!edges) break;
+            glDepthFunc(GL_GREATER);
+            glDepthMask(GL_FALSE);
+        }
+        setDiskLightUniforms(*program, in.light);
+        program->set("uOccluderEdges", edges ? 1 : 0);
+        program->set("uSilhouetteThreshold", in.settings.silhouetteThreshold);
+        gl::BindScope scope;
+        eye_.bind(scope, *program);
+        bindShadowMap(scope, *program, in.shadow);
+        scope.texture(gl::bind::EyeNormals, in.normals.id());
+        scope.texture(gl::bind::EyeFlooded, flooded.id());
+        gl::drawFullscreenTriangle(*program, emptyVao_);
+        scope.release();
+    }
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
     glDisable(GL_DEPTH_TEST);
-    setDiskLightUniforms(composite_, in.light);
-    composite_.set("uOccluderEdges", in.settings.occluderPoints == OccluderPoints::Edge ? 1 : 0);
-    composite_.set("uSilhouetteThreshold", in.settings.silhouetteThreshold);
-    gl::BindScope scope;
-    eye_.bind(scope, composite_);
-    bindShadowMap(scope, composite_, in.shadow);
-    scope.texture(gl::bind::EyeNormals, in.normals.id());
-    scope.texture(gl::bind::EyeFlooded, flooded.id());
-    gl::drawFullscreenTriangle(composite_, emptyVao_);
-    scope.release();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
@@ -413,7 +431,7 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::Pass
     // Phase 5: visibility per pixel.
     if (timer) timer->begin("composite");
     drawComposite(in, flooded);
-    if (timer) timer->wrote(gl::textureBytes(visibility_));
+    if (timer) timer->wrote(gl::textureBytes(visibility_) + gl::textureBytes(mask_));
     if (timer) timer->end();
     return {eye_, seeds_, flooded, visibility_, kernel_.passesRun(), passes, geometric, measured};
 }

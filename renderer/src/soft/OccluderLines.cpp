@@ -12,8 +12,7 @@ namespace {
 
 constexpr int kLineWindow = 2; // the window's radius in texels
 constexpr int kLineSide = 2 * kLineWindow + 1;
-constexpr int kMaxLineSamples = 2 * kLineSide * (kLineSide - 1);
-constexpr int kFuseSamples = 16;
+constexpr int kFuseSamples = 8;
 
 glm::vec3 mapUnproject(const LineMap& m, glm::vec2 tc, float d) {
     const glm::vec2 uv = tc / glm::vec2(float(m.size)) * 2.0f - 1.0f;
@@ -34,75 +33,54 @@ float planeDepthAt(const LineMap& m, glm::vec4 plane, glm::vec2 tc) {
     return -(plane.x * l.x + plane.y * l.y + plane.w * l.z) / den;
 }
 
-struct LineSamples {
-    int count = 0;
-    glm::vec2 mid[kMaxLineSamples]{};
-    glm::vec2 open[kMaxLineSamples]{};
-    float depth[kMaxLineSamples]{};
+struct LineWindow {
+    int cover[kLineSide * kLineSide];
+    float depth[kLineSide * kLineSide];
 };
 
-LineSamples lineSamples(const LineMap& m, glm::ivec2 t, glm::vec4 plane) {
-    LineSamples s;
+LineWindow lineWindow(const LineMap& m, glm::ivec2 t, glm::vec4 plane) {
+    LineWindow win{};
     const glm::vec2 c = glm::vec2(t) + 0.5f;
     const float d0 = planeDepthAt(m, plane, c);
     const float margin =
         2.0f * std::max(std::abs(planeDepthAt(m, plane, c + glm::vec2(1.0f, 0.0f)) - d0),
                         std::abs(planeDepthAt(m, plane, c + glm::vec2(0.0f, 1.0f)) - d0)) +
         1e-6f;
-    int cover[kLineSide * kLineSide];
-    float depth[kLineSide * kLineSide];
     for (int j = 0; j < kLineSide; ++j)
         for (int i = 0; i < kLineSide; ++i) {
             const glm::ivec2 q = t + glm::ivec2(i - kLineWindow, j - kLineWindow);
             const int k = j * kLineSide + i;
-            cover[k] = 0;
-            depth[k] = 0.0f;
+            win.cover[k] = 0;
+            win.depth[k] = 0.0f;
             if (q.x < 0 || q.y < 0 || q.x >= m.size || q.y >= m.size) continue;
             const float d = m.receiverDepth[std::size_t(q.y) * std::size_t(m.size) + q.x];
-            depth[k] = d;
+            win.depth[k] = d;
             const bool covered = d != shadowmap::kNoReceiver &&
                                  d < planeDepthAt(m, plane, glm::vec2(q) + 0.5f) - margin;
-            cover[k] = covered ? 2 : 1;
+            win.cover[k] = covered ? 2 : 1;
         }
-    for (int j = 0; j < kLineSide; ++j)
-        for (int i = 0; i < kLineSide; ++i) {
-            const int a = cover[j * kLineSide + i];
-            for (int axis = 0; axis < 2; ++axis) {
-                const int i1 = i + (axis == 0 ? 1 : 0), j1 = j + (axis == 1 ? 1 : 0);
-                if (i1 >= kLineSide || j1 >= kLineSide) continue;
-                const int b = cover[j1 * kLineSide + i1];
-                if (a == 0 || b == 0 || a == b) continue;
-                const glm::vec2 step = axis == 0 ? glm::vec2(1.0f, 0.0f) : glm::vec2(0.0f, 1.0f);
-                s.mid[s.count] = glm::vec2(i - kLineWindow, j - kLineWindow) + 0.5f * step;
-                s.open[s.count] = a == 2 ? step : -step;
-                s.depth[s.count] = a == 2 ? depth[j * kLineSide + i] : depth[j1 * kLineSide + i1];
-                ++s.count;
-            }
-        }
-    return s;
+    return win;
 }
 
-// The edges' direction in the window (weighted principal axis of the samples), and each
-// sample's weight: less towards the window's border.
-glm::vec2 lineDirection(const LineSamples& s, float* weight) {
-    float total = 0.0f;
-    glm::vec2 mean(0.0f);
-    for (int k = 0; k < s.count; ++k) {
-        const float r2 =
-            glm::dot(s.mid[k], s.mid[k]) / float((kLineWindow + 1) * (kLineWindow + 1));
-        weight[k] = std::max(1.0f - r2, 0.0f) * std::max(1.0f - r2, 0.0f);
-        total += weight[k];
-        mean += weight[k] * s.mid[k];
-    }
-    if (!(total > 0.0f)) return glm::vec2(0.0f);
-    mean /= total;
-    glm::vec3 m2(0.0f);
-    for (int k = 0; k < s.count; ++k) {
-        const glm::vec2 d = s.mid[k] - mean;
-        m2 += weight[k] * glm::vec3(d.x * d.x, d.y * d.y, d.x * d.y);
-    }
-    const float angle = 0.5f * std::atan2(2.0f * m2.z, m2.x - m2.y);
-    return {std::cos(angle), std::sin(angle)};
+struct LineSample {
+    glm::vec2 mid{0.0f}, open{0.0f};
+    float depth = 0.0f, weight = 0.0f;
+};
+
+// lineSample() in GLSL: axis neighbours (i, j) and the next along `axis`.
+bool lineSample(const LineWindow& win, int i, int j, int axis, LineSample& s) {
+    const int i1 = i + (axis == 0 ? 1 : 0), j1 = j + (axis == 1 ? 1 : 0);
+    s = {};
+    if (i1 >= kLineSide || j1 >= kLineSide) return false;
+    const int a = win.cover[j * kLineSide + i], b = win.cover[j1 * kLineSide + i1];
+    if (a == 0 || b == 0 || a == b) return false;
+    const glm::vec2 step = axis == 0 ? glm::vec2(1.0f, 0.0f) : glm::vec2(0.0f, 1.0f);
+    s.mid = glm::vec2(i - kLineWindow, j - kLineWindow) + 0.5f * step;
+    s.open = a == 2 ? step : -step;
+    s.depth = a == 2 ? win.depth[j * kLineSide + i] : win.depth[j1 * kLineSide + i1];
+    const float r2 = glm::dot(s.mid, s.mid) / float((kLineWindow + 1) * (kLineWindow + 1));
+    s.weight = std::max(1.0f - r2, 0.0f) * std::max(1.0f - r2, 0.0f);
+    return true;
 }
 
 struct DiskChord {
@@ -236,24 +214,44 @@ float lineMapHardShadow(const LineMap& m, glm::vec3 p) {
 
 OccluderLines occluderLines(const LineMap& m, glm::ivec2 t, glm::vec3 p, glm::vec3 n) {
     OccluderLines lines;
-    const LineSamples s = lineSamples(m, t, lightClipPlane(m, p, n));
-    if (s.count < 2) return lines;
-    float weight[kMaxLineSamples];
-    const glm::vec2 dir = lineDirection(s, weight);
-    if (dir == glm::vec2(0.0f)) return lines;
+    const LineWindow win = lineWindow(m, t, lightClipPlane(m, p, n));
+    int samples = 0;
+    float total = 0.0f;
+    glm::vec2 sum1(0.0f);
+    glm::vec3 sum2(0.0f);
+    LineSample s;
+    for (int j = 0; j < kLineSide; ++j)
+        for (int i = 0; i < kLineSide; ++i)
+            for (int axis = 0; axis < 2; ++axis) {
+                if (!lineSample(win, i, j, axis, s)) continue;
+                ++samples;
+                total += s.weight;
+                sum1 += s.weight * s.mid;
+                sum2 +=
+                    s.weight * glm::vec3(s.mid.x * s.mid.x, s.mid.y * s.mid.y, s.mid.x * s.mid.y);
+            }
+    if (samples < 2 || !(total > 0.0f)) return lines;
+    const glm::vec2 mean = sum1 / total;
+    const glm::vec3 m2 =
+        sum2 / total - glm::vec3(mean.x * mean.x, mean.y * mean.y, mean.x * mean.y);
+    const float angle = 0.5f * std::atan2(2.0f * m2.z, m2.x - m2.y);
+    const glm::vec2 dir(std::cos(angle), std::sin(angle));
     const glm::vec2 nrm(-dir.y, dir.x);
     // Edge 0 opens towards +nrm, edge 1 towards -nrm; samples across (a corner's other leg)
     // belong to neither.
     glm::vec2 sum[2]{glm::vec2(0.0f), glm::vec2(0.0f)};
     float depthSum[2]{0.0f, 0.0f}, count[2]{0.0f, 0.0f};
-    for (int k = 0; k < s.count; ++k) {
-        const float along = glm::dot(s.open[k], nrm);
-        if (std::abs(along) < 0.3f || !(weight[k] > 0.0f)) continue;
-        const int e = along > 0.0f ? 0 : 1;
-        sum[e] += weight[k] * s.mid[k];
-        depthSum[e] += weight[k] * s.depth[k];
-        count[e] += weight[k];
-    }
+    for (int j = 0; j < kLineSide; ++j)
+        for (int i = 0; i < kLineSide; ++i)
+            for (int axis = 0; axis < 2; ++axis) {
+                if (!lineSample(win, i, j, axis, s)) continue;
+                const float along = glm::dot(s.open, nrm);
+                if (std::abs(along) < 0.3f || !(s.weight > 0.0f)) continue;
+                const int e = along > 0.0f ? 0 : 1;
+                sum[e] += s.weight * s.mid;
+                depthSum[e] += s.weight * s.depth;
+                count[e] += s.weight;
+            }
     const glm::vec2 centre = glm::vec2(t) + 0.5f;
     glm::vec2 at[2]{};
     float atDepth[2]{};

@@ -200,9 +200,11 @@ class EyeSoftShadowPass {
     /// The measured auto count (EyeFloodReach.h) at most maxPasses; -1 for a frame too small.
     int measurePasses(const Inputs& in, BoundaryThreshold threshold, int maxPasses);
 
-    gl::Program lightIds_, eyePass_, boundary_, composite_, unpack_;
+    // composite_ gives every pixel its thesis value and marks where the edges recompute it
+    // (mask_); compositeEdges_ runs there (shaders/jfae_composite.frag.glsl).
+    gl::Program lightIds_, eyePass_, boundary_, composite_, compositeEdges_, unpack_;
     gl::VertexArray emptyVao_;
-    gl::Texture ids_, cells_, seeds_, seedOccluders_, visibility_;
+    gl::Texture ids_, cells_, seeds_, seedOccluders_, visibility_, mask_;
     gl::Framebuffer eyeFbo_, seedsFbo_, visibilityFbo_;
     EyeCells eye_; // the last frame's, for the phases and the Outputs
     // decodedEyeImage()'s: made on demand, outside the frame.
