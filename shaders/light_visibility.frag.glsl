@@ -19,6 +19,9 @@ void main() {
     vec4 world = surfacePosition(uDepth, ivec2(gl_FragCoord.xy));
     if (world.w == 0.0) {
         oVisibility = 1.0;
+#if defined(SOFT_PENUMBRA_BOTH) && !defined(PENUMBRA_EDGES)
+        gl_FragDepth = 1.0;
+#endif
         return;
     }
     world.xyz = surfaceLookupPoint(world.xyz, ivec2(gl_FragCoord.xy));
@@ -26,8 +29,15 @@ void main() {
     vec3 tested = shadowNormalOffset(world.xyz, surfaceLookupPlane(ivec2(gl_FragCoord.xy)));
 #ifdef SOFT_PENUMBRA_MAP
 #ifdef SOFT_PENUMBRA_BOTH
-    oVisibility = penumbraMapVisibility(
-        world.xyz, tested, surfacePlane(uPenumbraNormals, ivec2(gl_FragCoord.xy)));
+    vec3 plane = surfacePlane(uPenumbraNormals, ivec2(gl_FragCoord.xy));
+#ifdef PENUMBRA_EDGES
+    oVisibility = penumbraMapVisibility(world.xyz, tested, plane);
+#else
+    // The first of two passes (soft_penumbra.glsl): depth 0 marks where the second runs.
+    bool edges;
+    oVisibility = penumbraMapVisibility(world.xyz, tested, plane, edges);
+    gl_FragDepth = edges ? 0.0 : 1.0;
+#endif
 #else
     oVisibility = penumbraMapVisibility(world.xyz, tested, vec3(0.0)); // outer: no plane read
 #endif

@@ -41,6 +41,39 @@ layout(binding = FL_TEX_PENUMBRA_NORMALS) uniform sampler2D uPenumbraNormals;
 // surface, is shadowed by that surface whatever the occluder's edge leaves (the back of a post,
 // a trunk, a cap's underside under their own silhouettes), so it stays 0: such a plane sees at
 // most the sliver of the disk in front of it, nothing once it turns r / distance past grazing.
+// Two passes (LightLookup::execute): the first (without PENUMBRA_EDGES) gives every point the
+// value of the occluder's point and `edges` true where the edges recompute it (the texel or an
+// axis neighbour holds an occluder); the second (PENUMBRA_EDGES) runs only at those points.
+#ifndef PENUMBRA_EDGES
+float penumbraMapVisibility(vec3 world, vec3 tested, vec3 plane, out bool edges) {
+    edges = false;
+    vec3 uvz;
+    if (!shadowCoord(world, uvz)) return 1.0;
+    bool inside = hardShadow(tested) < 0.5;
+    ivec2 size = textureSize(uPenumbraMap, 0);
+    ivec2 t = clamp(ivec2(uvz.xy * vec2(size)), ivec2(0), size - 1);
+    float tag = texelFetch(uPenumbraMap, t, 0).r;
+    bool near = false;
+    for (int k = 0; k < 4; ++k) {
+        ivec2 q = clamp(t + ivec2(k == 0 ? 1 : k == 1 ? -1 : 0, k == 2 ? 1 : k == 3 ? -1 : 0),
+                        ivec2(0), size - 1);
+        near = near || texelFetch(uPenumbraMap, q, 0).r != 0.0;
+    }
+    edges = uDiskRadius > 0.0 && (tag != 0.0 || near);
+    vec4 o = mapSeedCell(uPenumbraReceivers, tag);
+    float lit = inside ? 0.0 : 1.0; // no occluder, or its ray misses the disk
+    if (o.w == 0.0) return lit;
+    // The occluder's point at the silhouette's edge, not its texel's centre half a texel inside
+    // (occluder_edge.glsl says why; the flood ranks the centres).
+    o.xyz = occluderEdgePoint(uPenumbraReceivers,
+                              mapSeedTexel(o.w, textureSize(uPenumbraReceivers, 0).x),
+                              uSilhouetteThreshold);
+    if (inside && (dot(plane, uDiskCenter - world) <= 0.0 || dot(plane, o.xyz - world) <= 0.0))
+        return 0.0;
+    float intensity = occluderIntensity(world, o.xyz, inside);
+    return intensity < 0.0 ? lit : intensity;
+}
+#else
 float penumbraMapVisibility(vec3 world, vec3 tested, vec3 plane) {
     vec3 uvz;
     if (!shadowCoord(world, uvz)) return 1.0;
@@ -48,12 +81,11 @@ float penumbraMapVisibility(vec3 world, vec3 tested, vec3 plane) {
     ivec2 size = textureSize(uPenumbraMap, 0);
     ivec2 t = clamp(ivec2(uvz.xy * vec2(size)), ivec2(0), size - 1);
     float tag = texelFetch(uPenumbraMap, t, 0).r;
-    // A texel the flood left empty next to one it reached borrows its neighbour's occluder
-    // (edges only): the flood takes an occluder where the ray through its point reaches the
-    // disk, but the point lies up to a texel off the edge, so a penumbra's outermost ring can be
-    // missed.
+    // A texel the flood left empty next to one it reached borrows its neighbour's occluder:
+    // the flood takes an occluder where the ray through its point reaches the disk, but the
+    // point lies up to a texel off the edge, so a penumbra's outermost ring can be missed.
     bool borrowed = false;
-    for (int k = 0; k < 4 && tag == 0.0 && uDiskRadius > 0.0; ++k) {
+    for (int k = 0; k < 4 && tag == 0.0; ++k) {
         ivec2 q = clamp(t + ivec2(k == 0 ? 1 : k == 1 ? -1 : 0, k == 2 ? 1 : k == 3 ? -1 : 0),
                         ivec2(0), size - 1);
         tag = texelFetch(uPenumbraMap, q, 0).r;
@@ -62,14 +94,12 @@ float penumbraMapVisibility(vec3 world, vec3 tested, vec3 plane) {
     vec4 o = mapSeedCell(uPenumbraReceivers, tag);
     float lit = inside ? 0.0 : 1.0; // no occluder, or its ray misses the disk
     if (o.w == 0.0) return lit;
-    // The occluder's edges at sub-texel precision (occluder_lines.glsl says why): around the
-    // point's own texel where one lies within the window (the same edges whichever occluder the
-    // flood brought), else around the occluder's texel; without edges, its point at the
-    // silhouette's edge, not its texel's centre half a texel inside (occluder_edge.glsl; the
-    // flood ranks the centres).
-    OccluderLines lines = occluderLines(uPenumbraReceivers, t, world, plane);
+    // The occluder's edges at sub-texel precision (occluder_lines.glsl says why) around its
+    // silhouette texel (a seed: an edge always lies in its window); without them, its point at
+    // the silhouette's edge, not its texel's centre half a texel inside (occluder_edge.glsl; the
+    // flood ranks the centres), fused.
     ivec2 ot = mapSeedTexel(o.w, textureSize(uPenumbraReceivers, 0).x);
-    if (lines.count == 0) lines = occluderLines(uPenumbraReceivers, ot, world, plane);
+    OccluderLines lines = occluderLines(uPenumbraReceivers, ot, world, plane);
     // The occluder over the point itself, for the fused test (inside the hard shadow).
     vec4 over = mapReceiver(uPenumbraReceivers, t);
     float ownDepth = inside && over.w != 0.0 ? dot(over.xyz - uDiskCenter, uDiskNormal) : 0.0;
@@ -93,4 +123,5 @@ float penumbraMapVisibility(vec3 world, vec3 tested, vec3 plane) {
     }
     return intensity < 0.0 ? lit : intensity;
 }
+#endif
 #endif

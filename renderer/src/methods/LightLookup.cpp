@@ -17,28 +17,32 @@ LightLookup::LightLookup(const gl::ShaderLibrary& shaders, bool penumbra)
       emptyVao_(gl::VertexArray::create()) {
     // Its own program, so that outer's is the thesis' lookup instruction for instruction (the
     // same picture and cost as before the umbra side).
-    if (penumbra)
+    if (penumbra) {
         bothProgram_ = gl::Program::build(shaders,
                                           {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
                                            {GL_FRAGMENT_SHADER, "light_visibility.frag.glsl"}},
                                           {"SOFT_PENUMBRA_MAP 1", "SOFT_PENUMBRA_BOTH 1"});
+        edgesProgram_ =
+            gl::Program::build(shaders,
+                               {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
+                                {GL_FRAGMENT_SHADER, "light_visibility.frag.glsl"}},
+                               {"SOFT_PENUMBRA_MAP 1", "SOFT_PENUMBRA_BOTH 1", "PENUMBRA_EDGES 1"});
+    }
 }
 
 void LightLookup::resize(int width, int height) {
     if (visibility_ && visibility_.width() == width && visibility_.height() == height) return;
     visibility_ = gl::Texture(GL_R32F, width, height);
-    fbo_ = gl::Framebuffer::forColor(visibility_, "light-space lookup");
+    if (penumbra_) {
+        mask_ = gl::Texture(GL_DEPTH_COMPONENT16, width, height);
+        fbo_ = gl::Framebuffer::withTargets({&visibility_}, &mask_, "light-space lookup");
+    } else {
+        fbo_ = gl::Framebuffer::forColor(visibility_, "light-space lookup");
+    }
 }
 
-const gl::Texture& LightLookup::execute(const FrameInputs& in, const gl::Texture* penumbraMap,
-                                        bool bothSides) {
-    if (penumbra_ && penumbraMap == nullptr)
-        throw std::logic_error("LightLookup: the penumbra lookup needs a penumbra map");
-    resize(in.width(), in.height());
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-    glViewport(0, 0, in.width(), in.height());
-    glDisable(GL_DEPTH_TEST);
-    const gl::Program& program = penumbra_ && bothSides ? bothProgram_ : program_;
+void LightLookup::draw(const FrameInputs& in, const gl::Program& program,
+                       const gl::Texture* penumbraMap, bool bothSides) const {
     gl::BindScope scope;
     bindShadowMap(scope, program, in.shadow);
     in.surfaces.positions().bind(scope, program, gl::bind::PenumbraSurfacesDepth);
@@ -56,6 +60,35 @@ const gl::Texture& LightLookup::execute(const FrameInputs& in, const gl::Texture
     }
     gl::drawFullscreenTriangle(program, emptyVao_);
     scope.release();
+}
+
+const gl::Texture& LightLookup::execute(const FrameInputs& in, const gl::Texture* penumbraMap,
+                                        bool bothSides) {
+    if (penumbra_ && penumbraMap == nullptr)
+        throw std::logic_error("LightLookup: the penumbra lookup needs a penumbra map");
+    resize(in.width(), in.height());
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    glViewport(0, 0, in.width(), in.height());
+    glDisable(GL_DEPTH_TEST);
+    const bool both = penumbra_ && bothSides;
+    // --penumbra both: the first pass marks the points the edges recompute (depth 0, the rest
+    // 1); the second runs only there, fullscreen at depth 0.5 with GL_GREATER.
+    if (both) {
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_ALWAYS);
+        glDepthMask(GL_TRUE);
+    }
+    for (const gl::Program* program : {&(both ? bothProgram_ : program_), &edgesProgram_}) {
+        if (program == &edgesProgram_) {
+            if (!both || !(in.disk.radius > 0.0f)) break;
+            glDepthFunc(GL_GREATER);
+            glDepthMask(GL_FALSE);
+        }
+        draw(in, *program, penumbraMap, both);
+    }
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_DEPTH_TEST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return visibility_;
 }

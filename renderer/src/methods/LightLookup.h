@@ -21,11 +21,18 @@ class LightLookup {
                                bool bothSides = false);
 
   private:
+    /// One fullscreen pass of `program` with every input it reads bound.
+    void draw(const FrameInputs& in, const gl::Program& program, const gl::Texture* penumbraMap,
+              bool bothSides) const;
+
     bool penumbra_;
     gl::Program program_;
     gl::Program bothProgram_; // with `penumbra`: --penumbra both (SOFT_PENUMBRA_BOTH)
+    // --penumbra both's second pass (PENUMBRA_EDGES): the occluders' edges where the first
+    // marked mask_ (soft_penumbra.glsl).
+    gl::Program edgesProgram_;
     gl::VertexArray emptyVao_;
-    gl::Texture visibility_;
+    gl::Texture visibility_, mask_;
     gl::Framebuffer fbo_;
 };
 
