@@ -97,11 +97,16 @@ void main() {
         float intensity = borrowed ? -1.0 : occluderIntensity(r.xyz, o, inside);
         if (intensity >= 0.0 || borrowed) {
             vec3 plane = surfacePlane(uEyeNormals, t);
-            // The edges around the pixel's own texel (the same edges whichever seed the flood
-            // brought); where none lies within the window the penumbra is wide and the seed's
-            // point (fused) is close enough.
+            // The edges around the pixel's own texel where one lies within the window (the same
+            // edges whichever seed the flood brought), else around the seed's occluder texel (a
+            // wide penumbra: the seed lies at the edge).
             ivec2 own = eyeCellTexel(texelFetch(uEyeCells, eyeFramePixel(t), 0).r);
             OccluderLines lines = occluderLines(uEyeReceivers, own, r.xyz, plane);
+            if (lines.count == 0) {
+                ivec2 s = eyeFramePixel(eyeSeedPixel(w));
+                lines = occluderLines(uEyeReceivers, eyeCellTexel(texelFetch(uEyeCells, s, 0).r),
+                                      r.xyz, plane);
+            }
 
             // The occluder over the pixel itself, for the fused test (inside the hard shadow).
             vec4 over = mapReceiver(uEyeReceivers, own);

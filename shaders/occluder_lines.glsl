@@ -260,7 +260,7 @@ float occluderLinesVisibility(vec3 p, OccluderLines L) {
 #ifdef OCCLUDER_LINES_FUSE
 // Occluders fused: the edges give the exact share of the disk an occluder leaves open, but
 // another occluder may cover part of that share (a second fin under the first, the head behind
-// an ear, the next finger). Eight points spread evenly over the disk (Vogel's spiral, in the
+// an ear, the next finger). Sixteen points spread evenly over the disk (Vogel's spiral, in the
 // frame of the first chord) are tested where they lie in the open part: the ray from p to each
 // crosses the edge's depth at x, and the light's centre sees, at the point of p's own plane on
 // its ray through x, something nearer (the map's depth test fails) or not. Like PCSS's filter
@@ -276,7 +276,7 @@ struct DiskChord {
     float s;
 };
 
-const int kFuseSamples = 8;
+const int kFuseSamples = 16;
 
 // Whether x (from the disk's centre, in its plane) passes chords a (and b, with `two`): one
 // chord; a strip (either chord open); a slit (both open).
@@ -299,20 +299,22 @@ bool fusedRayOpen(vec3 crossing, vec3 plane, float planeAtCentre) {
 
 // `share` (the exact open share of the chords) times the part of the open sample points that
 // the map finds open at p's plane, their rays crossing the occluder's light depth `de`.
-// Points whose ray crosses within a texel and a half of one of the `guards` edges (the edges'
-// points and open vectors, a texel long at their depth; `guards` of them) are not tested: the
-// map cannot tell that side of a texel from the other, and the chord has them exactly.
+// Points whose ray crosses within a texel and a half of the edge (of a chord they pass; `texel`
+// the world size of the map's texel at the edge's depth) are not tested: the map cannot tell
+// that side of a texel from the other, and the chord has them exactly.
 // `own`: the light depth of the occluder the light's centre sees over p (its own texel's, for a
 // point in the hard shadow; 0 for none): where it lies at another depth than the edge, a ray is
 // also tested where it crosses that depth, so the occluder right over p blocks what passes
 // beyond a farther edge.
 float fusedShare(vec3 p, vec3 plane, float de, float share, DiskChord a, DiskChord b, bool two,
-                 bool slit, OccluderLines guard, int guards, float own) {
+                 bool slit, float texel, float own) {
     if (!(share > 0.0) || !(uDiskRadius > 0.0)) return share;
     float dp = dot(p - uDiskCenter, uDiskNormal);
     if (!(de < dp)) return share;
     float planeAtCentre = dot(p - uDiskCenter, plane);
     bool ownLayer = own > 0.0 && own < dp && abs(own - de) > 0.02 * dp;
+    // A point's distance beyond a chord, scaled to the edge's depth, in texels there.
+    float toTexels = (dp - de) / dp / max(texel, 1e-30);
     vec3 v = cross(uDiskNormal, a.u);
     int tested = 0;
     int open = 0;
@@ -324,11 +326,9 @@ float fusedShare(vec3 p, vec3 plane, float de, float share, DiskChord a, DiskCho
         ++tested;
         vec3 q = uDiskCenter + x;
         vec3 crossing = p + (q - p) * ((dp - de) / dp);
-        bool near = false;
-        for (int g = 0; g < guards; ++g) {
-            float texel2 = dot(guard.open[g], guard.open[g]);
-            near = near || dot(crossing - guard.point[g], guard.open[g]) < 1.5 * texel2;
-        }
+        float beyondA = (dot(x, a.u) + a.s) * toTexels;
+        float beyondB = two ? (dot(x, b.u) + b.s) * toTexels : -1.0;
+        bool near = (beyondA >= 0.0 && beyondA < 1.5) || (beyondB >= 0.0 && beyondB < 1.5);
         if (near) {
             ++open;
             continue;
@@ -353,14 +353,11 @@ float occluderLinesVisibilityFused(vec3 p, vec3 plane, OccluderLines L, float ow
     if (L.count == 1 || !ok[0] || !ok[1]) {
         int k = ok[0] ? 0 : 1;
         if (!ok[k]) return -1.0;
-        OccluderLines one = L;
-        one.point[0] = L.point[k];
-        one.open[0] = L.open[k];
         return fusedShare(p, plane, dot(L.point[k] - uDiskCenter, uDiskNormal), share[k], c[k],
-                          c[k], false, false, one, 1, own);
+                          c[k], false, false, length(L.open[k]), own);
     }
     float both = L.slit ? max(share[0] + share[1] - 1.0, 0.0) : min(share[0] + share[1], 1.0);
-    return fusedShare(p, plane, de, both, c[0], c[1], true, L.slit, L, 2, own);
+    return fusedShare(p, plane, de, both, c[0], c[1], true, L.slit, length(L.open[0]), own);
 }
 
 // The thesis' occluder point o (the flood's, where no edge was found) fused the same way: its
@@ -379,8 +376,11 @@ float occluderPointVisibilityFused(vec3 p, vec3 plane, vec3 o, bool inside, floa
     DiskChord c;
     c.u = inside ? cq / d : -cq / d;
     c.s = inside ? -d : d;
-    OccluderLines none;
-    none.count = 0;
-    return fusedShare(p, plane, dO, share, c, c, false, false, none, 0, own);
+    // Its chord is only as good as the point: inside the hard shadow every point of the small
+    // part past it is tested (no texel is trusted: another occluder there is what lit umbrae);
+    // outside, the ones within a texel and a half of it are not (the map there would darken
+    // the lit side of a single straight edge).
+    return fusedShare(p, plane, dO, share, c, c, false, false, inside ? 0.0 : shadowTexelWorld(o),
+                      own);
 }
 #endif

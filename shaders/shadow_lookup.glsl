@@ -30,6 +30,11 @@ vec3 shadowToLight(vec3 world) {
                                        : -normalize(uShadowLight.xyz);
 }
 
+// The world size of this map's texel at `world` (normal_offset.glsl's mapTexelWorld).
+float shadowTexelWorld(vec3 world) {
+    return mapTexelWorld(world, uShadowWarp * uLightViewProj, float(textureSize(uShadowMap, 0).x));
+}
+
 // The normal offset of a lookup of this map (normal_offset.glsl).
 vec3 shadowNormalOffset(vec3 world, vec3 n) {
     return normalOffset(world, n, shadowToLight(world), uShadowWarp * uLightViewProj,

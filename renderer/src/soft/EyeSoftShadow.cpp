@@ -165,7 +165,9 @@ float compositeWithEdges(const EyeImage& im, const jfa::Grid& flooded, const Dis
             intensity = *k;
     if (intensity >= 0.0f || borrowed) {
         const glm::ivec2 own = eyecell::texel(e.cells[i]);
-        const OccluderLines lines = occluderLines(e.map, own, glm::vec3(r), plane);
+        OccluderLines lines = occluderLines(e.map, own, glm::vec3(r), plane);
+        if (lines.count == 0)
+            lines = occluderLines(e.map, eyecell::texel(e.cells[seed]), glm::vec3(r), plane);
         const float ownDepth = inside ? lineMapDepth(e.map, own) : 0.0f;
         float l = lines.count > 0
                       ? occluderLinesVisibilityFused(e.map, glm::vec3(r), plane, lines, ownDepth)

@@ -1,6 +1,7 @@
 #include <renderer/soft/OccluderLines.h>
 
 #include <renderer/passes/ShadowMapDecode.h>
+#include <renderer/passes/TerminatorLift.h>
 #include <renderer/soft/FilteredShadow.h>
 
 #include <algorithm>
@@ -12,7 +13,7 @@ namespace {
 
 constexpr int kLineWindow = 2; // the window's radius in texels
 constexpr int kLineSide = 2 * kLineWindow + 1;
-constexpr int kFuseSamples = 8;
+constexpr int kFuseSamples = 16;
 
 glm::vec3 mapUnproject(const LineMap& m, glm::vec2 tc, float d) {
     const glm::vec2 uv = tc / glm::vec2(float(m.size)) * 2.0f - 1.0f;
@@ -140,14 +141,15 @@ bool fusedRayOpen(const LineMap& m, glm::vec3 crossing, glm::vec3 plane, float p
 }
 
 float fusedShare(const LineMap& m, glm::vec3 p, glm::vec3 plane, float de, float share,
-                 const DiskChord& a, const DiskChord& b, bool two, bool slit,
-                 const OccluderLines& guard, int guards, float own) {
+                 const DiskChord& a, const DiskChord& b, bool two, bool slit, float texel,
+                 float own) {
     const DiskLight& l = m.light;
     if (!(share > 0.0f) || !(l.radius > 0.0f)) return share;
     const float dp = glm::dot(p - l.center, l.normal);
     if (!(de < dp)) return share;
     const float planeAtCentre = glm::dot(p - l.center, plane);
     const bool ownLayer = own > 0.0f && own < dp && std::abs(own - de) > 0.02f * dp;
+    const float toTexels = (dp - de) / dp / std::max(texel, 1e-30f);
     const glm::vec3 v = glm::cross(l.normal, a.u);
     int tested = 0, open = 0;
     for (int k = 0; k < kFuseSamples; ++k) {
@@ -158,11 +160,10 @@ float fusedShare(const LineMap& m, glm::vec3 p, glm::vec3 plane, float de, float
         ++tested;
         const glm::vec3 q = l.center + x;
         const glm::vec3 crossing = p + (q - p) * ((dp - de) / dp);
-        bool near = false;
-        for (int g = 0; g < guards; ++g) {
-            const float texel2 = glm::dot(guard.open[g], guard.open[g]);
-            near = near || glm::dot(crossing - guard.point[g], guard.open[g]) < 1.5f * texel2;
-        }
+        const float beyondA = (glm::dot(x, a.u) + a.s) * toTexels;
+        const float beyondB = two ? (glm::dot(x, b.u) + b.s) * toTexels : -1.0f;
+        const bool near =
+            (beyondA >= 0.0f && beyondA < 1.5f) || (beyondB >= 0.0f && beyondB < 1.5f);
         if (near) {
             ++open;
             continue;
@@ -284,16 +285,13 @@ float occluderLinesVisibilityFused(const LineMap& m, glm::vec3 p, glm::vec3 n,
     if (lines.count == 1 || !ok[0] || !ok[1]) {
         const int k = ok[0] ? 0 : 1;
         if (!ok[k]) return -1.0f;
-        OccluderLines one = lines;
-        one.point[0] = lines.point[k];
-        one.open[0] = lines.open[k];
         return fusedShare(m, p, n, glm::dot(lines.point[k] - l.center, l.normal), share[k], c[k],
-                          c[k], false, false, one, 1, own);
+                          c[k], false, false, glm::length(lines.open[k]), own);
     }
     const float both = lines.slit ? std::max(share[0] + share[1] - 1.0f, 0.0f)
                                   : std::min(share[0] + share[1], 1.0f);
     return fusedShare(m, p, n, glm::dot(lines.point[0] - l.center, l.normal), both, c[0], c[1],
-                      true, lines.slit, lines, 2, own);
+                      true, lines.slit, glm::length(lines.open[0]), own);
 }
 
 float occluderPointVisibilityFused(const LineMap& m, glm::vec3 p, glm::vec3 n, glm::vec3 o,
@@ -312,7 +310,9 @@ float occluderPointVisibilityFused(const LineMap& m, glm::vec3 p, glm::vec3 n, g
     DiskChord c;
     c.u = inside ? cq / d : -cq / d;
     c.s = inside ? -d : d;
-    return fusedShare(m, p, n, dO, share, c, c, false, false, OccluderLines{}, 0, own);
+    return fusedShare(
+        m, p, n, dO, share, c, c, false, false,
+        inside ? 0.0f : surface::mapTexelWorld(o, m.warp * m.lightViewProj, float(m.size)), own);
 }
 
 } // namespace fl
