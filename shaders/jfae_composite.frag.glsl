@@ -55,6 +55,15 @@ float borrowedCell(ivec2 t, vec3 p, vec3 plane) {
 // COMPOSITE_EDGES, runs only there (an early depth test), so that the edges' fits cost only
 // around the penumbrae: a software rasteriser runs every fragment of a block through both sides
 // of a branch.
+// Pixel t's receiver (eyePoint), its flood cell `w` and its hard value (0 in the hard shadow,
+// else 1; what the thesis leaves where the flood brought no occluder).
+vec4 compositePixel(ivec2 t, out float w, out float hard) {
+    vec4 r = eyePoint(t);
+    w = texelFetch(uFlooded, t, 0).r;
+    hard = r.w == 1.0 ? 0.0 : 1.0;
+    return r;
+}
+
 #ifndef COMPOSITE_EDGES
 bool nextToFlooded(ivec2 t) {
     bool any = false;
@@ -68,10 +77,9 @@ bool nextToFlooded(ivec2 t) {
 
 void main() {
     ivec2 t = ivec2(gl_FragCoord.xy);
-    vec4 r = eyePoint(t);
-    float w = texelFetch(uFlooded, t, 0).r;
+    float w, v;
+    vec4 r = compositePixel(t, w, v);
     bool inside = r.w == 1.0;
-    float v = inside ? 0.0 : 1.0;
     if (r.w >= 0.0 && w != 0.0) {
         float intensity = occluderIntensity(r.xyz, eyeSeedOccluder(eyeSeedPixel(w)).xyz, inside);
         v = intensity < 0.0 ? v : intensity;
@@ -83,10 +91,9 @@ void main() {
 #else
 void main() {
     ivec2 t = ivec2(gl_FragCoord.xy);
-    vec4 r = eyePoint(t);
-    float w = texelFetch(uFlooded, t, 0).r;
+    float w, v;
+    vec4 r = compositePixel(t, w, v);
     bool inside = r.w == 1.0;
-    float v = inside ? 0.0 : 1.0;
     bool borrowed = false;
     if (w == 0.0) {
         w = borrowedCell(t, r.xyz, surfacePlane(uEyeNormals, t));

@@ -44,22 +44,41 @@ layout(binding = FL_TEX_PENUMBRA_NORMALS) uniform sampler2D uPenumbraNormals;
 // Two passes (LightLookup::execute): the first (without PENUMBRA_EDGES) gives every point the
 // value of the occluder's point and `edges` true where the edges recompute it (the texel or an
 // axis neighbour holds an occluder); the second (PENUMBRA_EDGES) runs only at those points.
+// The point's penumbra-map texel t, whether the hard test (at `tested`) shadows it, and the tag
+// the map holds there; false off the map (lit).
+bool penumbraTexel(vec3 world, vec3 tested, out ivec2 t, out bool inside, out float tag) {
+    t = ivec2(0);
+    inside = false;
+    tag = 0.0;
+    vec3 uvz;
+    if (!shadowCoord(world, uvz)) return false;
+    inside = hardShadow(tested) < 0.5;
+    ivec2 size = textureSize(uPenumbraMap, 0);
+    t = clamp(ivec2(uvz.xy * vec2(size)), ivec2(0), size - 1);
+    tag = texelFetch(uPenumbraMap, t, 0).r;
+    return true;
+}
+
+// The tag of the first axis neighbour of texel t that holds one, 0 for none.
+float neighbourTag(ivec2 t) {
+    ivec2 size = textureSize(uPenumbraMap, 0);
+    float tag = 0.0;
+    for (int k = 0; k < 4 && tag == 0.0; ++k) {
+        ivec2 q = clamp(t + ivec2(k == 0 ? 1 : k == 1 ? -1 : 0, k == 2 ? 1 : k == 3 ? -1 : 0),
+                        ivec2(0), size - 1);
+        tag = texelFetch(uPenumbraMap, q, 0).r;
+    }
+    return tag;
+}
+
 #ifndef PENUMBRA_EDGES
 float penumbraMapVisibility(vec3 world, vec3 tested, vec3 plane, out bool edges) {
     edges = false;
-    vec3 uvz;
-    if (!shadowCoord(world, uvz)) return 1.0;
-    bool inside = hardShadow(tested) < 0.5;
-    ivec2 size = textureSize(uPenumbraMap, 0);
-    ivec2 t = clamp(ivec2(uvz.xy * vec2(size)), ivec2(0), size - 1);
-    float tag = texelFetch(uPenumbraMap, t, 0).r;
-    bool near = false;
-    for (int k = 0; k < 4; ++k) {
-        ivec2 q = clamp(t + ivec2(k == 0 ? 1 : k == 1 ? -1 : 0, k == 2 ? 1 : k == 3 ? -1 : 0),
-                        ivec2(0), size - 1);
-        near = near || texelFetch(uPenumbraMap, q, 0).r != 0.0;
-    }
-    edges = uDiskRadius > 0.0 && (tag != 0.0 || near);
+    ivec2 t;
+    bool inside;
+    float tag;
+    if (!penumbraTexel(world, tested, t, inside, tag)) return 1.0;
+    edges = uDiskRadius > 0.0 && (tag != 0.0 || neighbourTag(t) != 0.0);
     vec4 o = mapSeedCell(uPenumbraReceivers, tag);
     float lit = inside ? 0.0 : 1.0; // no occluder, or its ray misses the disk
     if (o.w == 0.0) return lit;
@@ -75,20 +94,16 @@ float penumbraMapVisibility(vec3 world, vec3 tested, vec3 plane, out bool edges)
 }
 #else
 float penumbraMapVisibility(vec3 world, vec3 tested, vec3 plane) {
-    vec3 uvz;
-    if (!shadowCoord(world, uvz)) return 1.0;
-    bool inside = hardShadow(tested) < 0.5;
-    ivec2 size = textureSize(uPenumbraMap, 0);
-    ivec2 t = clamp(ivec2(uvz.xy * vec2(size)), ivec2(0), size - 1);
-    float tag = texelFetch(uPenumbraMap, t, 0).r;
+    ivec2 t;
+    bool inside;
+    float tag;
+    if (!penumbraTexel(world, tested, t, inside, tag)) return 1.0;
     // A texel the flood left empty next to one it reached borrows its neighbour's occluder:
     // the flood takes an occluder where the ray through its point reaches the disk, but the
     // point lies up to a texel off the edge, so a penumbra's outermost ring can be missed.
     bool borrowed = false;
-    for (int k = 0; k < 4 && tag == 0.0; ++k) {
-        ivec2 q = clamp(t + ivec2(k == 0 ? 1 : k == 1 ? -1 : 0, k == 2 ? 1 : k == 3 ? -1 : 0),
-                        ivec2(0), size - 1);
-        tag = texelFetch(uPenumbraMap, q, 0).r;
+    if (tag == 0.0) {
+        tag = neighbourTag(t);
         borrowed = tag != 0.0;
     }
     vec4 o = mapSeedCell(uPenumbraReceivers, tag);
