@@ -22,7 +22,7 @@ class GroundTruth final : public ShadowMethod {
         rs.pattern = o.pattern;
         return pass_
             .execute({in.scene, in.surfaces.positions(), in.sceneBounds, in.disk, in.shadowSettings,
-                      rs, &in.surfaces.lift, &in.surfaces.normals},
+                      rs, in.surfaces.lift, in.surfaces.normals},
                      in.timer)
             .visibility;
     }

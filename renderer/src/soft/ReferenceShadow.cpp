@@ -122,9 +122,8 @@ ReferenceShadowPass::Outputs ReferenceShadowPass::execute(const Inputs& in, gl::
         gl::BindScope scope;
         scope.texture(gl::bind::SurfacesDepth, in.positions.depth.id())
             .texture(gl::bind::ShadowMap, map_.id());
-        if (in.lift && in.normals)
-            scope.texture(gl::bind::SurfacesLift, in.lift->id())
-                .texture(gl::bind::LookupNormals, in.normals->id());
+        scope.texture(gl::bind::SurfacesLift, in.lift.id())
+            .texture(gl::bind::LookupNormals, in.normals.id());
         gl::drawFullscreenTriangle(accumulate_, emptyVao_);
         glDisable(GL_BLEND);
     }
@@ -155,16 +154,16 @@ VisibilityDifference referenceSamplingError(ReferenceShadowPass& pass,
                                             ReferenceShadowPass::Inputs in, int samples) {
     ReferenceSettings s = in.settings;
     s.samples = samples;
-    ReferenceShadowPass::Inputs a{in.scene, in.positions,      in.sceneBounds,
-                                  in.light, in.shadowSettings, s};
+    ReferenceShadowPass::Inputs a{in.scene,          in.positions, in.sceneBounds, in.light,
+                                  in.shadowSettings, s,            in.lift,        in.normals};
     const ReferenceShadowPass::Outputs out = pass.execute(a);
     const FloatImage va = readTexture(out.visibility, 1);
     FloatImage mask = in.positions.read();
     FloatImage surface{mask.width, mask.height, 1, {}};
     for (std::size_t i = 3; i < mask.data.size(); i += 4) surface.data.push_back(mask.data[i]);
     s.samples = 2 * samples;
-    ReferenceShadowPass::Inputs b{in.scene, in.positions,      in.sceneBounds,
-                                  in.light, in.shadowSettings, s};
+    ReferenceShadowPass::Inputs b{in.scene,          in.positions, in.sceneBounds, in.light,
+                                  in.shadowSettings, s,            in.lift,        in.normals};
     const FloatImage vb = readTexture(pass.execute(b).visibility, 1);
     return visibilityDifference(va, vb, surface);
 }

@@ -61,9 +61,9 @@ class ReferenceShadowPass {
         const DiskLight& light;
         const ShadowMapSettings& shadowSettings; // depth bias
         const ReferenceSettings& settings;
-        /// The surfaces pass's lift and normals (surface_lookup.glsl), or none: no lift.
-        const gl::Texture* lift = nullptr;
-        const gl::Texture* normals = nullptr;
+        /// The surfaces pass's lift and normals: where every lookup starts (surface_lookup.glsl).
+        const gl::Texture& lift;
+        const gl::Texture& normals;
     };
     struct Outputs {
         const gl::Texture& visibility; // R32F: lit samples / N
