@@ -8,7 +8,8 @@
 // CPU twin: renderer/passes/TerminatorLift.h, operation for operation.
 
 // Cycles' geometry offset (intern/cycles/kernel/light/sample.h, its default 0.1): the range of
-// cos(angle to the light) over which the offset fades in.
+// cos(angle to the light) over which the offset fades in. Keep equal to rt::kGeometryOffset
+// (raytrace/Terminator.h), the truth's.
 const float kTerminatorOffset = 0.1;
 
 // Per triangle (the geometry stage): each unit vertex normal as the plane through its vertex,

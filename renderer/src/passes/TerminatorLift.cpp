@@ -41,8 +41,7 @@ glm::vec3 terminatorMove(glm::vec3 p, glm::vec3 w, const TangentPlanes& t, glm::
 }
 
 float terminatorAmount(float nl, float ngl) {
-    return nl < kTerminatorOffset ? std::clamp(2.0f - (ngl + nl) / kTerminatorOffset, 0.0f, 1.0f)
-                                  : std::clamp(1.0f - ngl / kTerminatorOffset, 0.0f, 1.0f);
+    return rt::offsetAmount(nl, ngl, kTerminatorOffset);
 }
 
 float terminatorLift(glm::vec3 p, glm::vec3 w, const TangentPlanes& t, glm::vec3 n, glm::vec3 plane,

@@ -5,15 +5,17 @@
 // describe (Hanika's offset, by Cycles' geometry-offset amount) as the ray-traced truth's rays
 // start there (raytrace/Terminator.h). The GLSL file says why.
 
+#include <raytrace/Terminator.h>
+
 #include <glm/glm.hpp>
 
 #include <array>
 
 namespace fl::surface {
 
-/// Cycles' geometry offset (its default): the range of cos(angle to the light) the lift fades
-/// in over.
-inline constexpr float kTerminatorOffset = 0.1f;
+/// Cycles' geometry offset (its default, the ray-traced truth's): the range of cos(angle to the
+/// light) the lift fades in over.
+inline constexpr float kTerminatorOffset = rt::kGeometryOffset;
 
 /// A triangle's vertex normals as tangent planes (unit n, n . a) and its plane on their side;
 /// all zero where the lift is 0 (degenerate, a zero normal, or flat within 1e-6).
@@ -28,7 +30,7 @@ TangentPlanes terminatorPlanes(const std::array<glm::vec3, 3>& corner,
 glm::vec3 terminatorMove(glm::vec3 p, glm::vec3 w, const TangentPlanes& t, glm::vec3 side);
 
 /// The share of the move that applies: `nl` and `ngl` the shading normal's and the plane's cos
-/// to the light.
+/// to the light (the truth's rule, rt::offsetAmount).
 float terminatorAmount(float nl, float ngl);
 
 /// The lift of point p of the triangle (weights w) whose shading normal (facing the eye) is n and
