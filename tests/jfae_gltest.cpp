@@ -67,6 +67,55 @@ std::size_t nonEmpty(const jfa::Grid& g) {
     return n;
 }
 
+// Each pixel's receiver plane (SurfacesPass's plane normal) in the EyeImage's layout.
+std::vector<glm::vec3> receiverPlanes(const SurfacesPass::Outputs& surfaces, const EyeImage& im) {
+    std::vector<glm::vec3> planes(im.points.size());
+    const FloatImage n = surfaces.readNormals(SurfacesPass::Outputs::Normal::Plane);
+    for (int y = 0; y < im.height; ++y) // readNormals: row 0 at the top
+        for (int x = 0; x < im.width; ++x) {
+            const std::size_t f = (static_cast<std::size_t>(im.height - 1 - y) * im.width + x) * 4;
+            planes[im.index(x, y)] = {n.data[f], n.data[f + 1], n.data[f + 2]};
+        }
+    return planes;
+}
+
+// Phase 5 on the GPU (`frame`) against its CPU twin (`cpu`); the penumbra pixels counted. With
+// centre points: GLSL acos is not correctly rounded (llvmpipe's polynomial is off by ~1e-5 near
+// 1), so intensities agree to 5e-5 and the umbra / lit decisions are exact. With edge points the
+// composite fits the occluder's edges (occluder_lines.glsl): GLSL's atan, cos, sin and divisions
+// are not correctly rounded either, so the fitted edges agree to ~1e-5 of a texel and the shares
+// to 5e-4; and a map test or a covered texel at a rounding boundary may decide the other way on
+// either side: one fused sample of 16 moves a share by up to 1/16, which we allow on 1% of the
+// penumbra pixels.
+std::size_t expectCompositeMatches(const std::vector<float>& frame, const std::vector<float>& cpu,
+                                   bool edges) {
+    std::size_t penumbra = 0, apart = 0;
+    float worst = 0.0f;
+    for (std::size_t i = 0; i < frame.size(); ++i) {
+        const float c = cpu[i];
+        penumbra += c > 0.0f && c < 1.0f;
+        if (!edges) {
+            if (c == 0.0f || c == 1.0f)
+                EXPECT_EQ(frame[i], c) << "pixel " << i;
+            else
+                EXPECT_NEAR(frame[i], c, 5e-5f) << "pixel " << i;
+            continue;
+        }
+        const float d = std::abs(frame[i] - c);
+        worst = std::max(worst, d);
+        if (d > 5e-4f) {
+            ++apart;
+            EXPECT_LE(d, 1.0f / 16.0f + 5e-4f) << "pixel " << i;
+        }
+    }
+    if (edges) {
+        EXPECT_LE(apart, penumbra / 100) << "worst " << worst;
+        std::printf("edges: %zu of %zu penumbra pixels beyond 5e-4, worst %.3g\n", apart, penumbra,
+                    double(worst));
+    }
+    return penumbra;
+}
+
 TEST_F(JfaETest, PhasesMatchTheCpuReference) {
     // A box on a ground plane under a large disk light (the JFA-L test's scene): inner and outer
     // penumbrae on the ground, self-shadowing on the box.
@@ -171,55 +220,16 @@ TEST_F(JfaETest, PhasesMatchTheCpuReference) {
 
         // Phase 5: visibility, as the frame shows it (the shading pass reads the composite
         // for exactly the surface pixels and writes 1 on background, where the CPU composite
-        // is 1 too). With centre points: GLSL acos is not correctly rounded (llvmpipe's
-        // polynomial is off by ~1e-5 near 1), so intensities agree to 5e-5 and the umbra / lit
-        // decisions are exact. With edge points the composite fits the occluder's edges
-        // (occluder_lines.glsl): GLSL's atan, cos, sin and divisions are not correctly rounded
-        // either, so the fitted edges agree to ~1e-5 of a texel and the shares to 5e-4; and a
-        // map test or a covered texel at a rounding boundary may decide the other way on either
-        // side: one fused sample of 16 moves a share by up to 1/16, which we allow on 1% of the
-        // penumbra pixels.
+        // is 1 too); the tolerances: expectCompositeMatches.
         const std::vector<std::uint32_t> cells = out.eyeCells->words();
         const LineMap lineMap = readLineMap(*r.shadow(), r.disk());
-        std::vector<glm::vec3> planes(image.points.size());
-        {
-            const FloatImage n = r.surfaces().readNormals(SurfacesPass::Outputs::Normal::Plane);
-            for (int y = 0; y < image.height; ++y) // readNormals: row 0 at the top
-                for (int x = 0; x < image.width; ++x) {
-                    const std::size_t f =
-                        (static_cast<std::size_t>(image.height - 1 - y) * image.width + x) * 4;
-                    planes[image.index(x, y)] = {n.data[f], n.data[f + 1], n.data[f + 2]};
-                }
-        }
+        const std::vector<glm::vec3> planes = receiverPlanes(r.surfaces(), image);
         const CompositeEdges edges{lineMap, planes, cells};
         const FloatImage cpuVis =
             eyeSoftVisibility(image, cpuFlood, r.disk(), k.edges ? &edges : nullptr);
         const std::vector<float> frameVis = readR32F(r.visibility());
         ASSERT_EQ(frameVis.size(), cpuVis.data.size());
-        std::size_t penumbra = 0, apart = 0;
-        float worst = 0.0f;
-        for (std::size_t i = 0; i < frameVis.size(); ++i) {
-            const float c = cpuVis.data[i];
-            penumbra += c > 0.0f && c < 1.0f;
-            if (!k.edges) {
-                if (c == 0.0f || c == 1.0f)
-                    ASSERT_EQ(frameVis[i], c) << "pixel " << i;
-                else
-                    ASSERT_NEAR(frameVis[i], c, 5e-5f) << "pixel " << i;
-                continue;
-            }
-            const float d = std::abs(frameVis[i] - c);
-            worst = std::max(worst, d);
-            if (d > 5e-4f) {
-                ++apart;
-                EXPECT_LE(d, 1.0f / 16.0f + 5e-4f) << "pixel " << i;
-            }
-        }
-        if (k.edges) {
-            EXPECT_LE(apart, penumbra / 100) << "worst " << worst;
-            std::printf("edges: %zu of %zu penumbra pixels beyond 5e-4, worst %.3g\n", apart,
-                        penumbra, double(worst));
-        }
+        const std::size_t penumbra = expectCompositeMatches(frameVis, cpuVis.data, k.edges);
         EXPECT_GT(penumbra, 50u);
         std::printf("%s%s: %zu shadowed, %zu seeds, %zu flooded, %zu penumbra pixels\n",
                     std::string(k.method).c_str(), k.fixes ? "" : " (no fixes)", shadowed,
