@@ -224,4 +224,20 @@ void drawFullscreenTriangle(const Program& program, const VertexArray& emptyVao)
     glUseProgram(0);
 }
 
+void drawMarkedThenRefined(const std::function<void(const Program&)>& draw, const Program& mark,
+                           const Program* refine) {
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+    glDepthMask(GL_TRUE);
+    draw(mark);
+    if (refine) {
+        glDepthFunc(GL_GREATER);
+        glDepthMask(GL_FALSE);
+        draw(*refine);
+    }
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_DEPTH_TEST);
+}
+
 } // namespace fl::gl

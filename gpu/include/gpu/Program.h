@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -56,6 +57,15 @@ class Program {
 /// Draws one triangle covering the viewport with `program` (fullscreen.vert.glsl makes its
 /// positions from gl_VertexID, so `emptyVao` has no attributes); unbinds both afterwards.
 void drawFullscreenTriangle(const Program& program, const VertexArray& emptyVao);
+
+/// Two fullscreen passes into the bound framebuffer, which has a depth target: `mark` runs on
+/// every pixel and writes gl_FragDepth 0 where `refine` must run, 1 elsewhere; `refine` (none:
+/// skipped) then runs only there, behind an early depth test (its fragments lie at depth 0.5,
+/// tested GL_GREATER), so that a costly branch costs only where it is taken: a software
+/// rasteriser runs every fragment of a block through both sides of a branch. `draw` binds a
+/// program's inputs and draws it. Leaves the depth test off, GL_LESS, depth writes on.
+void drawMarkedThenRefined(const std::function<void(const Program&)>& draw, const Program& mark,
+                           const Program* refine);
 
 /// Rewrites a driver info log so that "0:12(5): error" style references name the file and line;
 /// `files` maps #line source-string numbers to file names. Exposed for tests.

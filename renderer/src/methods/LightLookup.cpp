@@ -69,26 +69,19 @@ const gl::Texture& LightLookup::execute(const FrameInputs& in, const gl::Texture
     resize(in.width(), in.height());
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glViewport(0, 0, in.width(), in.height());
-    glDisable(GL_DEPTH_TEST);
     const bool both = penumbra_ && bothSides;
-    // --penumbra both: the first pass marks the points the edges recompute (depth 0, the rest
-    // 1); the second runs only there, fullscreen at depth 0.5 with GL_GREATER.
+    const auto drawWith = [&](const gl::Program& program) {
+        draw(in, program, penumbraMap, both);
+    };
+    // --penumbra both: the first pass marks the points the edges recompute; the second runs
+    // only there (soft_penumbra.glsl).
     if (both) {
-        glEnable(GL_DEPTH_TEST);
-        glDepthFunc(GL_ALWAYS);
-        glDepthMask(GL_TRUE);
+        gl::drawMarkedThenRefined(drawWith, bothProgram_,
+                                  in.disk.radius > 0.0f ? &edgesProgram_ : nullptr);
+    } else {
+        glDisable(GL_DEPTH_TEST);
+        drawWith(program_);
     }
-    for (const gl::Program* program : {&(both ? bothProgram_ : program_), &edgesProgram_}) {
-        if (program == &edgesProgram_) {
-            if (!both || !(in.disk.radius > 0.0f)) break;
-            glDepthFunc(GL_GREATER);
-            glDepthMask(GL_FALSE);
-        }
-        draw(in, *program, penumbraMap, both);
-    }
-    glDepthMask(GL_TRUE);
-    glDepthFunc(GL_LESS);
-    glDisable(GL_DEPTH_TEST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return visibility_;
 }

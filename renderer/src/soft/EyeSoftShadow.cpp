@@ -320,31 +320,19 @@ void EyeSoftShadowPass::drawComposite(const Inputs& in, const gl::Texture& flood
     glBindFramebuffer(GL_FRAMEBUFFER, visibilityFbo_.id());
     glViewport(0, 0, in.width, in.height);
     const bool edges = in.settings.occluderPoints == OccluderPoints::Edge && in.light.radius > 0.0f;
-    // The first pass marks the pixels the edges recompute (depth 0; the rest 1); the second runs
-    // only there: fullscreen at depth 0.5, GL_GREATER.
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_ALWAYS);
-    glDepthMask(GL_TRUE);
-    for (const gl::Program* program : {&composite_, &compositeEdges_}) {
-        if (program == &compositeEdges_) {
-            if (!edges) break;
-            glDepthFunc(GL_GREATER);
-            glDepthMask(GL_FALSE);
-        }
-        setDiskLightUniforms(*program, in.light);
-        program->set("uOccluderEdges", edges ? 1 : 0);
-        program->set("uSilhouetteThreshold", in.settings.silhouetteThreshold);
+    // The first pass marks the pixels the edges recompute; the second runs only there.
+    const auto draw = [&](const gl::Program& program) {
+        setDiskLightUniforms(program, in.light);
+        program.set("uOccluderEdges", edges ? 1 : 0);
         gl::BindScope scope;
-        eye_.bind(scope, *program);
-        bindShadowMap(scope, *program, in.shadow);
+        eye_.bind(scope, program);
+        bindShadowMap(scope, program, in.shadow);
         scope.texture(gl::bind::EyeNormals, in.normals.id());
         scope.texture(gl::bind::EyeFlooded, flooded.id());
-        gl::drawFullscreenTriangle(*program, emptyVao_);
+        gl::drawFullscreenTriangle(program, emptyVao_);
         scope.release();
-    }
-    glDepthMask(GL_TRUE);
-    glDepthFunc(GL_LESS);
-    glDisable(GL_DEPTH_TEST);
+    };
+    gl::drawMarkedThenRefined(draw, composite_, edges ? &compositeEdges_ : nullptr);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
