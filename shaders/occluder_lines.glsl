@@ -25,15 +25,6 @@
 
 const int kLineWindow = 2; // the window's radius in texels
 
-// World position of map coordinate `tc` (texels; texel t's centre is t + 0.5) at the light's NDC
-// depth d: mapReceiver's unprojection at any point of the map.
-vec3 mapUnproject(vec2 tc, vec2 size, float d) {
-    precise vec2 uv = tc / size * 2.0 - 1.0;
-    precise vec3 l = uMapUnwarp * vec3(uv, 1.0);
-    precise vec4 w = uMapInverseLightViewProj * vec4(l.xy, d * l.z, l.z);
-    return w.xyz / w.w;
-}
-
 // Up to two straight edges of the occluder at a texel, in world space.
 struct OccluderLines {
     int count;     // 0: none found (no covered / uncovered neighbours), else 1 or 2
@@ -52,8 +43,7 @@ vec4 lightClipPlane(vec3 p, vec3 n) {
 // The light's NDC depth at which the ray of map coordinate `tc` meets the clip-space plane,
 // or 2 (beyond the far plane) where it runs parallel to it.
 float planeDepthAt(vec4 plane, vec2 tc, vec2 size) {
-    vec2 uv = tc / size * 2.0 - 1.0;
-    vec3 l = uMapUnwarp * vec3(uv, 1.0);
+    vec3 l = mapClipRay(tc, size);
     float den = plane.z * l.z;
     if (!(abs(den) > 1e-30)) return 2.0;
     return -(plane.x * l.x + plane.y * l.y + plane.w * l.z) / den;

@@ -12,17 +12,30 @@ uniform mat4 uMapInverseLightViewProj;
 
 const float kMapNoReceiver = -4.0;
 
-// (xyz, 1) the world position the map's texel t sees, or vec4(0) where it sees nothing.
-vec4 mapReceiver(sampler2D receiverDepth, ivec2 t) {
-    float d = texelFetch(receiverDepth, t, 0).r;
-    if (d == kMapNoReceiver) return vec4(0.0);
-    precise vec2 uv = (vec2(t) + 0.5) / vec2(textureSize(receiverDepth, 0)) * 2.0 - 1.0;
+// The light's clip-space ray through map coordinate `tc` (texels; texel t's centre is t + 0.5)
+// of a `size` map: (x, y, w) of its light clip coordinates, z free (the map's NDC unwarped).
+vec3 mapClipRay(vec2 tc, vec2 size) {
+    precise vec2 uv = tc / size * 2.0 - 1.0;
     precise vec3 l = uMapUnwarp * vec3(uv, 1.0);
+    return l;
+}
+
+// The world position at map coordinate `tc` and the light's NDC depth d: mapReceiver's
+// unprojection at any point of the map.
+vec3 mapUnproject(vec2 tc, vec2 size, float d) {
+    precise vec3 l = mapClipRay(tc, size);
     // Light clip (l.x, l.y, d l.z, l.z) is NDC (l.xy / l.z, d) unscaled: one division, not two
     // (a division is not exact in GLSL and may round differently from shader to shader).
     precise vec4 w = uMapInverseLightViewProj * vec4(l.xy, d * l.z, l.z);
     precise vec3 p = w.xyz / w.w;
-    return vec4(p, 1.0);
+    return p;
+}
+
+// (xyz, 1) the world position the map's texel t sees, or vec4(0) where it sees nothing.
+vec4 mapReceiver(sampler2D receiverDepth, ivec2 t) {
+    float d = texelFetch(receiverDepth, t, 0).r;
+    if (d == kMapNoReceiver) return vec4(0.0);
+    return vec4(mapUnproject(vec2(t) + 0.5, vec2(textureSize(receiverDepth, 0)), d), 1.0);
 }
 
 // A silhouette seed's w (JFA-L): the texel it was found at, as the bits of 1.0 plus the texel's

@@ -33,13 +33,31 @@ glm::mat4 inverseLightViewProj(const glm::mat4& lightViewProj) {
     return glm::mat4(glm::inverse(glm::dmat4(lightViewProj)));
 }
 
+glm::vec3 clipRay(glm::vec2 tc, int size, const glm::mat3& unwarp) {
+    const glm::vec2 uv = tc / glm::vec2(float(size)) * 2.0f - 1.0f;
+    return unwarp * glm::vec3(uv, 1.0f);
+}
+
+glm::vec3 unproject(glm::vec2 tc, float depth, int size, const glm::mat3& unwarp,
+                    const glm::mat4& inverseLightViewProj) {
+    const glm::vec3 l = clipRay(tc, size, unwarp);
+    const glm::vec4 w = inverseLightViewProj * glm::vec4(l.x, l.y, depth * l.z, l.z);
+    return glm::vec3(w) / w.w;
+}
+
 glm::vec4 receiverPosition(float depth, glm::ivec2 texel, int size, const glm::mat3& unwarp,
                            const glm::mat4& inverseLightViewProj) {
     if (depth == kNoReceiver) return glm::vec4(0.0f);
-    const glm::vec2 uv = (glm::vec2(texel) + 0.5f) / glm::vec2(float(size)) * 2.0f - 1.0f;
-    const glm::vec3 l = unwarp * glm::vec3(uv, 1.0f);
-    const glm::vec4 w = inverseLightViewProj * glm::vec4(l.x, l.y, depth * l.z, l.z);
-    return glm::vec4(glm::vec3(w) / w.w, 1.0f);
+    return glm::vec4(
+        unproject(glm::vec2(texel) + 0.5f, depth, size, unwarp, inverseLightViewProj), 1.0f);
+}
+
+std::optional<glm::vec3> mapCoord(const glm::mat4& lightViewProj, const glm::mat4& warp,
+                                  glm::vec3 world) {
+    const glm::vec4 light = lightViewProj * glm::vec4(world, 1.0f);
+    const glm::vec4 map = warp * light;
+    if (light.w <= 0.0f || map.w <= 0.0f) return std::nullopt;
+    return glm::vec3(glm::vec2(map) / map.w, light.z / light.w) * 0.5f + 0.5f;
 }
 
 } // namespace fl::shadowmap

@@ -16,10 +16,7 @@ constexpr int kLineSide = 2 * kLineWindow + 1;
 constexpr int kFuseSamples = 16;
 
 glm::vec3 mapUnproject(const LineMap& m, glm::vec2 tc, float d) {
-    const glm::vec2 uv = tc / glm::vec2(float(m.size)) * 2.0f - 1.0f;
-    const glm::vec3 l = m.unwarp * glm::vec3(uv, 1.0f);
-    const glm::vec4 w = m.inverseLightViewProj * glm::vec4(l.x, l.y, d * l.z, l.z);
-    return glm::vec3(w) / w.w;
+    return shadowmap::unproject(tc, d, m.size, m.unwarp, m.inverseLightViewProj);
 }
 
 glm::vec4 lightClipPlane(const LineMap& m, glm::vec3 p, glm::vec3 n) {
@@ -27,8 +24,7 @@ glm::vec4 lightClipPlane(const LineMap& m, glm::vec3 p, glm::vec3 n) {
 }
 
 float planeDepthAt(const LineMap& m, glm::vec4 plane, glm::vec2 tc) {
-    const glm::vec2 uv = tc / glm::vec2(float(m.size)) * 2.0f - 1.0f;
-    const glm::vec3 l = m.unwarp * glm::vec3(uv, 1.0f);
+    const glm::vec3 l = shadowmap::clipRay(tc, m.size, m.unwarp);
     const float den = plane.z * l.z;
     if (!(std::abs(den) > 1e-30f)) return 2.0f;
     return -(plane.x * l.x + plane.y * l.y + plane.w * l.z) / den;
@@ -121,17 +117,6 @@ bool chordsOpen(glm::vec3 x, const DiskChord& a, const DiskChord& b, bool two, b
     return slit ? oa && ob : oa || ob;
 }
 
-// shadow_lookup.glsl's shadowCoord: false off the map or behind the light.
-bool shadowCoord(const LineMap& m, glm::vec3 world, glm::vec3& uvz) {
-    const glm::vec4 light = m.lightViewProj * glm::vec4(world, 1.0f);
-    const glm::vec4 map = m.warp * light;
-    uvz = glm::vec3(0.0f);
-    if (light.w <= 0.0f || map.w <= 0.0f) return false;
-    uvz = glm::vec3(map.x / map.w, map.y / map.w, light.z / light.w) * 0.5f + 0.5f;
-    return glm::all(glm::greaterThanEqual(uvz, glm::vec3(0.0f))) &&
-           glm::all(glm::lessThanEqual(uvz, glm::vec3(1.0f)));
-}
-
 bool fusedRayOpen(const LineMap& m, glm::vec3 crossing, glm::vec3 plane, float planeAtCentre) {
     const DiskLight& l = m.light;
     const float den = glm::dot(crossing - l.center, plane);
@@ -206,8 +191,12 @@ float lineMapDepth(const LineMap& m, glm::ivec2 t) {
 }
 
 float lineMapHardShadow(const LineMap& m, glm::vec3 p) {
-    glm::vec3 uvz;
-    if (!shadowCoord(m, p, uvz)) return 1.0f;
+    // shadow_lookup.glsl's shadowCoord: lit off the map or behind the light.
+    const std::optional<glm::vec3> coord = shadowmap::mapCoord(m.lightViewProj, m.warp, p);
+    if (!coord || glm::any(glm::lessThan(*coord, glm::vec3(0.0f))) ||
+        glm::any(glm::greaterThan(*coord, glm::vec3(1.0f))))
+        return 1.0f;
+    const glm::vec3 uvz = *coord;
     const int x = std::clamp(int(std::floor(uvz.x * float(m.size))), 0, m.size - 1);
     const int y = std::clamp(int(std::floor(uvz.y * float(m.size))), 0, m.size - 1);
     return uvz.z <= m.depth[std::size_t(y) * std::size_t(m.size) + x] ? 1.0f : 0.0f;

@@ -79,10 +79,10 @@ std::vector<std::uint8_t> penumbraViewTiles(const ReceiverGrid& eyePositions,
     std::vector<std::uint8_t> out(std::size_t(tiles) * std::size_t(tiles), 0);
     for (const glm::vec4& p : eyePositions.points) {
         if (p.w == 0.0f) continue;
-        const glm::vec4 light = lightViewProj * glm::vec4(glm::vec3(p), 1.0f);
-        const glm::vec4 map = warp * light;
-        if (light.w <= 0.0f || map.w <= 0.0f) continue;
-        const glm::vec3 uvz = glm::vec3(glm::vec2(map) / map.w, light.z / light.w) * 0.5f + 0.5f;
+        const std::optional<glm::vec3> coord =
+            shadowmap::mapCoord(lightViewProj, warp, glm::vec3(p));
+        if (!coord) continue;
+        const glm::vec3 uvz = *coord;
         constexpr float kMargin = 1e-4f;
         if (glm::any(glm::lessThan(uvz, glm::vec3(-kMargin))) ||
             glm::any(glm::greaterThan(uvz, glm::vec3(1.0f + kMargin))))

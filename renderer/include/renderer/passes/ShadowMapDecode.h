@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <optional>
 
 namespace fl::shadowmap {
 
@@ -30,9 +31,24 @@ glm::mat3 unwarp(const glm::mat4& warp);
 /// The inverse of the light's view-projection, computed in double.
 glm::mat4 inverseLightViewProj(const glm::mat4& lightViewProj);
 
+/// The light's clip-space ray (x, y, w) through map coordinate `tc` (texels; texel t's centre
+/// is t + 0.5) of a `size` x `size` map. The same operations as mapClipRay() in GLSL.
+glm::vec3 clipRay(glm::vec2 tc, int size, const glm::mat3& unwarp);
+
+/// The world position at map coordinate `tc` and the light's NDC depth `depth`. The same
+/// operations as mapUnproject() in GLSL.
+glm::vec3 unproject(glm::vec2 tc, float depth, int size, const glm::mat3& unwarp,
+                    const glm::mat4& inverseLightViewProj);
+
 /// The world position texel `texel` of a `size` x `size` map sees: (xyz, 1), or (0, 0, 0, 0)
 /// where its receiver depth is kNoReceiver. The same operations as mapReceiver() in GLSL.
 glm::vec4 receiverPosition(float depth, glm::ivec2 texel, int size, const glm::mat3& unwarp,
                            const glm::mat4& inverseLightViewProj);
+
+/// The map coordinates of `world` for a map made with `lightViewProj` and `warp`: xy on the map
+/// in [0, 1]², z the light's depth in [0, 1]; nullopt behind the light. Not clipped to the map
+/// (shadowCoordWith() in shadow_lookup.glsl is this and the test that uvz lies in [0, 1]³).
+std::optional<glm::vec3> mapCoord(const glm::mat4& lightViewProj, const glm::mat4& warp,
+                                  glm::vec3 world);
 
 } // namespace fl::shadowmap
