@@ -80,23 +80,22 @@ std::vector<std::uint32_t> EyeCells::words() const {
 }
 
 EyeImage EyeCells::read() const {
-    const std::vector<std::uint32_t> words =
-        readChannel<std::uint32_t>(*cells, GL_RED_INTEGER, GL_UNSIGNED_INT);
+    const std::vector<std::uint32_t> cellWords = words();
     const std::vector<float> depths = readChannel<float>(*depth, GL_DEPTH_COMPONENT, GL_FLOAT);
     const ReceiverGrid receivers{map.size(), map.size(), map.read()};
     std::vector<float> idValues;
     if (objectIds) idValues = readChannel<float>(*ids, GL_RED, GL_FLOAT);
     EyeImage im{width(), height(), {}, {}};
-    im.points.reserve(words.size());
-    im.occluders.reserve(words.size());
+    im.points.reserve(cellWords.size());
+    im.occluders.reserve(cellWords.size());
     for (int y = 0; y < im.height; ++y)
         for (int x = 0; x < im.width; ++x) {
             const std::size_t i = im.index(x, y);
             const glm::vec4 surface =
                 surface::position(depths[i], {x, y}, {im.width, im.height}, inverseViewProj);
-            im.points.push_back(eyecell::point(words[i], surface));
+            im.points.push_back(eyecell::point(cellWords[i], surface));
             im.occluders.push_back(
-                eyecell::occluder(words[i], receivers, objectIds ? &idValues : nullptr));
+                eyecell::occluder(cellWords[i], receivers, objectIds ? &idValues : nullptr));
         }
     return im;
 }
