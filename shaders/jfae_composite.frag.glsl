@@ -25,7 +25,6 @@ layout(binding = FL_TEX_EYE_FLOODED) uniform sampler2D uFlooded;
 // SurfacesPass: normals (surfacePlane, the receiver's plane for the fused test)
 layout(binding = FL_TEX_EYE_NORMALS) uniform sampler2D uEyeNormals;
 uniform int uOccluderEdges;
-uniform float uSilhouetteThreshold;
 
 layout(location = 0) out float oVisibility;
 
@@ -95,15 +94,15 @@ void main() {
     vec4 r = compositePixel(t, w, v);
     bool inside = r.w == 1.0;
     bool borrowed = false;
+    vec3 plane = surfacePlane(uEyeNormals, t);
     if (w == 0.0) {
-        w = borrowedCell(t, r.xyz, surfacePlane(uEyeNormals, t));
+        w = borrowedCell(t, r.xyz, plane);
         borrowed = w != 0.0;
     }
     if (w != 0.0) {
         vec3 o = eyeSeedOccluder(eyeSeedPixel(w)).xyz;
         float intensity = borrowed ? -1.0 : occluderIntensity(r.xyz, o, inside);
         if (intensity >= 0.0 || borrowed) {
-            vec3 plane = surfacePlane(uEyeNormals, t);
             // The edges around the pixel's own texel where one lies within the window (the same
             // edges whichever seed the flood brought), else around the seed's occluder texel (a
             // wide penumbra: the seed lies at the edge).
@@ -114,18 +113,8 @@ void main() {
                 lines = occluderLines(uEyeReceivers, eyeCellTexel(texelFetch(uEyeCells, s, 0).r),
                                       r.xyz, plane);
             }
-
-            // The occluder over the pixel itself, for the fused test (inside the hard shadow).
-            vec4 over = mapReceiver(uEyeReceivers, own);
-            float ownDepth =
-                inside && over.w != 0.0 ? dot(over.xyz - uDiskCenter, uDiskNormal) : 0.0;
-            float l = lines.count > 0 ? occluderLinesVisibilityFused(r.xyz, plane, lines, ownDepth)
-                      : borrowed      ? -1.0
-                                      : occluderPointVisibilityFused(r.xyz, plane, o, inside,
-                                                                     ownDepth);
-            // A borrowed occluder only softens a penumbra's outermost ring: where its edges put
-            // the point on the other side of the hard edge, the point keeps its hard result.
-            if (borrowed && (inside ? l > 0.5 : l < 0.5)) l = -1.0;
+            float l = occluderShareFused(uEyeReceivers, own, r.xyz, plane, lines, o, inside,
+                                         borrowed);
             intensity = l < 0.0 ? intensity : l;
         }
         v = intensity < 0.0 ? v : intensity;

@@ -373,4 +373,21 @@ float occluderPointVisibilityFused(vec3 p, vec3 plane, vec3 o, bool inside, floa
     return fusedShare(p, plane, dO, share, c, c, false, false, inside ? 0.0 : shadowTexelWorld(o),
                       own);
 }
+
+// A penumbra point's share (JFA-L's lookup, JFA-E's composite): from its occluder's edges
+// `lines`, or where none were found from the occluder point o, fused; -1 where neither shades p.
+// `own`: p's texel of the receiver target, whose occluder the fused test also crosses inside the
+// hard shadow. A borrowed occluder (a neighbour's, for a penumbra's outermost ring that the flood
+// missed) counts only through its edges, and only where they leave p on its own side of the hard
+// edge: it softens that ring and nothing else.
+float occluderShareFused(sampler2D receivers, ivec2 own, vec3 p, vec3 plane, OccluderLines lines,
+                         vec3 o, bool inside, bool borrowed) {
+    vec4 over = mapReceiver(receivers, own);
+    float ownDepth = inside && over.w != 0.0 ? dot(over.xyz - uDiskCenter, uDiskNormal) : 0.0;
+    float l = lines.count > 0 ? occluderLinesVisibilityFused(p, plane, lines, ownDepth)
+              : borrowed      ? -1.0
+                              : occluderPointVisibilityFused(p, plane, o, inside, ownDepth);
+    if (borrowed && (inside ? l > 0.5 : l < 0.5)) l = -1.0;
+    return l;
+}
 #endif

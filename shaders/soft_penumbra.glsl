@@ -115,9 +115,6 @@ float penumbraMapVisibility(vec3 world, vec3 tested, vec3 plane) {
     // flood ranks the centres), fused.
     ivec2 ot = mapSeedTexel(o.w, textureSize(uPenumbraReceivers, 0).x);
     OccluderLines lines = occluderLines(uPenumbraReceivers, ot, world, plane);
-    // The occluder over the point itself, for the fused test (inside the hard shadow).
-    vec4 over = mapReceiver(uPenumbraReceivers, t);
-    float ownDepth = inside && over.w != 0.0 ? dot(over.xyz - uDiskCenter, uDiskNormal) : 0.0;
     o.xyz = lines.count > 0 ? lines.point[0]
                             : occluderEdgePoint(uPenumbraReceivers, ot, uSilhouetteThreshold);
     if (inside && (dot(plane, uDiskCenter - world) <= 0.0 || dot(plane, o.xyz - world) <= 0.0))
@@ -127,13 +124,8 @@ float penumbraMapVisibility(vec3 world, vec3 tested, vec3 plane) {
     // disk; or borrowed): an edge of p's own surface, or one not between p and the light,
     // shades nothing.
     if (intensity >= 0.0 || borrowed) {
-        float l = lines.count > 0 ? occluderLinesVisibilityFused(world, plane, lines, ownDepth)
-                  : borrowed      ? -1.0
-                                  : occluderPointVisibilityFused(world, plane, o.xyz, inside,
-                                                                 ownDepth);
-        // A borrowed occluder only softens a penumbra's outermost ring: where its edges put the
-        // point on the other side of the hard edge, the point keeps its hard result.
-        if (borrowed && (inside ? l > 0.5 : l < 0.5)) l = -1.0;
+        float l = occluderShareFused(uPenumbraReceivers, t, world, plane, lines, o.xyz, inside,
+                                     borrowed);
         intensity = l < 0.0 ? intensity : l;
     }
     return intensity < 0.0 ? lit : intensity;

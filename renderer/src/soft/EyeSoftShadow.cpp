@@ -168,13 +168,8 @@ float compositeWithEdges(const EyeImage& im, const jfa::Grid& flooded, const Dis
         OccluderLines lines = occluderLines(e.map, own, glm::vec3(r), plane);
         if (lines.count == 0)
             lines = occluderLines(e.map, eyecell::texel(e.cells[seed]), glm::vec3(r), plane);
-        const float ownDepth = inside ? lineMapDepth(e.map, own) : 0.0f;
-        float l = lines.count > 0
-                      ? occluderLinesVisibilityFused(e.map, glm::vec3(r), plane, lines, ownDepth)
-                  : borrowed ? -1.0f
-                             : occluderPointVisibilityFused(e.map, glm::vec3(r), plane, o, inside,
-                                                            ownDepth);
-        if (borrowed && (inside ? l > 0.5f : l < 0.5f)) l = -1.0f;
+        const float l =
+            occluderShareFused(e.map, own, glm::vec3(r), plane, lines, o, inside, borrowed);
         intensity = l < 0.0f ? intensity : l;
     }
     return intensity < 0.0f ? v : intensity;

@@ -304,4 +304,14 @@ float occluderPointVisibilityFused(const LineMap& m, glm::vec3 p, glm::vec3 n, g
         inside ? 0.0f : surface::mapTexelWorld(o, m.warp * m.lightViewProj, float(m.size)), own);
 }
 
+float occluderShareFused(const LineMap& m, glm::ivec2 own, glm::vec3 p, glm::vec3 n,
+                         const OccluderLines& lines, glm::vec3 o, bool inside, bool borrowed) {
+    const float ownDepth = inside ? lineMapDepth(m, own) : 0.0f;
+    float l = lines.count > 0 ? occluderLinesVisibilityFused(m, p, n, lines, ownDepth)
+              : borrowed      ? -1.0f
+                              : occluderPointVisibilityFused(m, p, n, o, inside, ownDepth);
+    if (borrowed && (inside ? l > 0.5f : l < 0.5f)) l = -1.0f;
+    return l;
+}
+
 } // namespace fl

@@ -53,6 +53,13 @@ float occluderLinesVisibilityFused(const LineMap& map, glm::vec3 p, glm::vec3 n,
 float occluderPointVisibilityFused(const LineMap& map, glm::vec3 p, glm::vec3 n, glm::vec3 o,
                                    bool inside, float own);
 
+/// A penumbra point's share from its occluder's edges `lines` (count 0: none found) or else the
+/// occluder point o, fused, with the occluder over p's texel `own` crossed inside the hard shadow;
+/// a borrowed occluder only through its edges and only where they keep p on its side of the hard
+/// edge; -1 where neither shades p (occluderShareFused() in occluder_lines.glsl).
+float occluderShareFused(const LineMap& map, glm::ivec2 own, glm::vec3 p, glm::vec3 n,
+                         const OccluderLines& lines, glm::vec3 o, bool inside, bool borrowed);
+
 /// The light depth (along the disk's normal) of what texel t of the receiver target sees, 0
 /// where it sees nothing.
 float lineMapDepth(const LineMap& map, glm::ivec2 t);
