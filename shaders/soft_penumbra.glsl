@@ -3,7 +3,8 @@
 // whose penumbra-map texel holds an occluder gets the intensity recomputed here, at the point
 // itself (not the value at the texel, which would make the penumbra blocky where the shadow map
 // is coarse); everything else is lit. Needs shadow_lookup.glsl. The map's cells are packed
-// (jfa_penumbra.glsl): the occluder comes back from the shadow map's receiver target.
+// (jfa_penumbra.glsl): the occluder comes back from the shadow map's receiver target. CPU twin
+// of --penumbra both (both passes): renderer/soft/PenumbraLookup.h.
 #include "bindings.glsl"
 #include "disk_light.glsl"
 #include "shadow_map_decode.glsl"
