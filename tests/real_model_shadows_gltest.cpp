@@ -16,6 +16,7 @@
 
 #include <io/ImageIO.h>
 #include <renderer/Renderer.h>
+#include <renderer/metrics/Metrics.h>
 #include <renderer/run/Capture.h>
 #include <scene/SceneGenerator.h>
 
@@ -84,14 +85,9 @@ Mesh sphere(glm::vec3 centre, float radius, int segments, int rings) {
 
 struct Scored {
     FrameImages frame;
-    std::size_t receivers = 0, umbra = 0, leaks = 0, lit = 0, darkened = 0, penumbra = 0;
-    double penumbraSq = 0.0;
+    ShadowLeaks leaks;                 // leak and dark (renderer/metrics/Metrics.h)
+    FrameMetrics error;                // RMSE, over the truth's penumbra too
     std::vector<float> penumbraErrors; // |method - truth| over the truth's penumbra
-    [[nodiscard]] double leakShare() const { return umbra ? double(leaks) / double(umbra) : 0.0; }
-    [[nodiscard]] double darkShare() const { return lit ? double(darkened) / double(lit) : 0.0; }
-    [[nodiscard]] double penumbraRmse() const {
-        return penumbra ? std::sqrt(penumbraSq / double(penumbra)) : 0.0;
-    }
     [[nodiscard]] double penumbraMedian() const {
         std::vector<float> e = penumbraErrors;
         if (e.empty()) return 0.0;
@@ -115,32 +111,19 @@ FrameImages render(const SceneView& v, std::string_view method) {
     return readFrame(r);
 }
 
-// The method's frame against the truth's over the truth's receivers: leak (the truth's umbra,
-// <= 0.05, lit by more than 0.3), dark (its lit receivers, >= 0.95, darkened by more than 0.3),
-// and the RMSE over its penumbra (0.02 < truth < 0.98), as bench/real_models_bench counts them.
+// The method's frame against the truth's over the truth's receivers, with the metrics that
+// bench/real_models_bench reports: leak and dark (shadowLeaks), the penumbra's RMSE, and here
+// also the median |error| over the truth's penumbra (its classes: classifyVisibility).
 Scored score(const SceneView& v, std::string_view method, const FrameImages& truth,
              const std::string& label) {
-    Scored s{render(v, method)};
+    Scored s{render(v, method), {}, {}, {}};
+    s.leaks = shadowLeaks(s.frame.visibility, truth.visibility, truth.receivers);
+    s.error = compareWithReference(s.frame.visibility, truth.visibility, truth.receivers);
     const std::vector<float>& t = truth.visibility.data;
     const std::vector<float>& m = s.frame.visibility.data;
-    for (std::size_t i = 0; i < t.size(); ++i) {
-        if (!(truth.receivers.data[i] > 0.5f)) continue;
-        ++s.receivers;
-        const float d = m[i] - t[i];
-        if (t[i] <= 0.05f) {
-            ++s.umbra;
-            s.leaks += d > 0.3f;
-        }
-        if (t[i] >= 0.95f) {
-            ++s.lit;
-            s.darkened += d < -0.3f;
-        }
-        if (t[i] > 0.02f && t[i] < 0.98f) {
-            ++s.penumbra;
-            s.penumbraSq += double(d) * double(d);
-            s.penumbraErrors.push_back(std::abs(d));
-        }
-    }
+    for (std::size_t i = 0; i < t.size(); ++i)
+        if (isReceiver(truth.receivers, i) && classifyVisibility(t[i]) == ShadowClass::Penumbra)
+            s.penumbraErrors.push_back(std::abs(m[i] - t[i]));
     if (std::getenv("FLOODLIGHT_KEEP_FRAMES")) {
         const std::filesystem::path dir = outputDir("real_models");
         std::filesystem::create_directories(dir);
@@ -150,9 +133,9 @@ Scored score(const SceneView& v, std::string_view method, const FrameImages& tru
     }
     std::printf("%s %s: %zu receivers, leak %.2f%% of %zu, dark %.2f%% of %zu, penumbra RMSE "
                 "%.4f, median |error| %.4f over %zu\n",
-                label.c_str(), std::string(method).c_str(), s.receivers, 100.0 * s.leakShare(),
-                s.umbra, 100.0 * s.darkShare(), s.lit, s.penumbraRmse(), s.penumbraMedian(),
-                s.penumbra);
+                label.c_str(), std::string(method).c_str(), s.error.pixels, 100.0 * s.leaks.leak,
+                s.leaks.umbra, 100.0 * s.leaks.dark, s.leaks.lit, s.error.rmsePenumbra,
+                s.penumbraMedian(), s.error.penumbraPixels);
     return s;
 }
 
@@ -183,11 +166,11 @@ TEST_F(RealModelShadowsTest, NoLightThroughTheSolidUmbraOfACombOfFins) {
     const FrameImages truth = render(v, "raytrace");
     for (const char* method : {"jfa-l", "jfa-e"}) {
         const Scored s = score(v, method, truth, "fins");
-        ASSERT_GT(s.umbra, 500u) << "the fins must cast a solid umbra in view";
+        ASSERT_GT(s.leaks.umbra, 500u) << "the fins must cast a solid umbra in view";
         // The bound on every real model: at most 0.5% of the umbra lit by > 0.3.
         // Before the edges and the fused occluders JFA-L lit 8.4% of the engine's.
-        EXPECT_LE(s.leakShare(), 0.005);
-        if (s.leakShare() > 0.005) keep(s, truth, std::string("fins_") + method);
+        EXPECT_LE(s.leaks.leak, 0.005);
+        if (s.leaks.leak > 0.005) keep(s, truth, std::string("fins_") + method);
     }
 }
 
@@ -199,7 +182,7 @@ TEST_F(RealModelShadowsTest, ANarrowPenumbraIsARampNotAComb) {
     const SceneView v{s, lookAtCamera(s, {2.5f, 3.0f, 2.5f}, {0.9f, 0.0f, 0.6f}, 30.0f)};
     const FrameImages truth = render(v, "raytrace");
     const Scored e = score(v, "jfa-e", truth, "narrow");
-    ASSERT_GT(e.penumbra, 100u);
+    ASSERT_GT(e.error.penumbraPixels, 100u);
     // A comb puts every other penumbra pixel off by a step: the thesis' points (and the edge
     // points before the fitted edges) gave a median |error| of 0.20 here, the fitted edges 0.06
     // (the truth's 256 rays alone scatter by 0.03). The median, not the RMSE: at the shadow's
@@ -220,10 +203,10 @@ TEST_F(RealModelShadowsTest, ACoarseSmoothSphereHasNoTerminatorTeeth) {
     // 0.69%, 0.77% with the lift alone: its taps against the triangle's plane).
     for (const char* method : {"hard", "pcf", "pcss", "vsm", "jfa-l", "jfa-e", "reference"}) {
         const Scored m = score(v, method, truth, "sphere");
-        ASSERT_GT(m.lit, 1000u);
+        ASSERT_GT(m.leaks.lit, 1000u);
         // Teeth are facets darkened where the rays see the smooth surface lit.
-        EXPECT_LE(m.darkShare(), 0.005) << method;
-        if (m.darkShare() > 0.005) keep(m, truth, std::string("sphere_") + method);
+        EXPECT_LE(m.leaks.dark, 0.005) << method;
+        if (m.leaks.dark > 0.005) keep(m, truth, std::string("sphere_") + method);
     }
 }
 
