@@ -70,9 +70,7 @@ const gl::Texture& LightLookup::execute(const FrameInputs& in, const gl::Texture
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glViewport(0, 0, in.width(), in.height());
     const bool both = penumbra_ && bothSides;
-    const auto drawWith = [&](const gl::Program& program) {
-        draw(in, program, penumbraMap, both);
-    };
+    const auto drawWith = [&](const gl::Program& program) { draw(in, program, penumbraMap, both); };
     // --penumbra both: the first pass marks the points the edges recompute; the second runs
     // only there (soft_penumbra.glsl).
     if (both) {

@@ -48,8 +48,8 @@ glm::vec3 unproject(glm::vec2 tc, float depth, int size, const glm::mat3& unwarp
 glm::vec4 receiverPosition(float depth, glm::ivec2 texel, int size, const glm::mat3& unwarp,
                            const glm::mat4& inverseLightViewProj) {
     if (depth == kNoReceiver) return glm::vec4(0.0f);
-    return glm::vec4(
-        unproject(glm::vec2(texel) + 0.5f, depth, size, unwarp, inverseLightViewProj), 1.0f);
+    return glm::vec4(unproject(glm::vec2(texel) + 0.5f, depth, size, unwarp, inverseLightViewProj),
+                     1.0f);
 }
 
 std::optional<glm::vec3> mapCoord(const glm::mat4& lightViewProj, const glm::mat4& warp,

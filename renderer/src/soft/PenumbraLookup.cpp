@@ -69,10 +69,9 @@ glm::ivec2 seedTexel(float tag, int width) {
 
 // The shared ending of both passes: a hard-shadowed point whose surface faces away from the
 // light's centre or from its occluder stays 0; else the occluder point's share, -1 for a miss.
-std::optional<float> selfShadowed(const DiskLight& l, glm::vec3 world, glm::vec3 plane,
-                                  glm::vec3 o, bool inside) {
-    if (inside &&
-        (glm::dot(plane, l.center - world) <= 0.0f || glm::dot(plane, o - world) <= 0.0f))
+std::optional<float> selfShadowed(const DiskLight& l, glm::vec3 world, glm::vec3 plane, glm::vec3 o,
+                                  bool inside) {
+    if (inside && (glm::dot(plane, l.center - world) <= 0.0f || glm::dot(plane, o - world) <= 0.0f))
         return 0.0f;
     return std::nullopt;
 }
@@ -123,9 +122,8 @@ float lookupPixel(const LookupMap& L, glm::vec3 position, float lift, glm::vec3 
                   glm::vec3 plane) {
     const glm::vec3 world = surface::lookupPoint(position, lift, shading);
     const glm::vec3 lookupPlane = lift > 0.0f ? shading : plane; // surfaceLookupPlane
-    const glm::vec3 tested =
-        surface::normalOffset(world, lookupPlane, toLight(L.m, world),
-                              L.m.warp * L.m.lightViewProj, float(L.m.size));
+    const glm::vec3 tested = surface::normalOffset(world, lookupPlane, toLight(L.m, world),
+                                                   L.m.warp * L.m.lightViewProj, float(L.m.size));
     glm::ivec2 t(0);
     bool inside = false;
     float tag = 0.0f;

@@ -154,16 +154,18 @@ VisibilityDifference referenceSamplingError(ReferenceShadowPass& pass,
                                             ReferenceShadowPass::Inputs in, int samples) {
     ReferenceSettings s = in.settings;
     s.samples = samples;
-    ReferenceShadowPass::Inputs a{in.scene,          in.positions, in.sceneBounds, in.light,
-                                  in.shadowSettings, s,            in.lift,        in.normals};
+    ReferenceShadowPass::Inputs a{in.scene, in.positions,      in.sceneBounds,
+                                  in.light, in.shadowSettings, s,
+                                  in.lift,  in.normals};
     const ReferenceShadowPass::Outputs out = pass.execute(a);
     const FloatImage va = readTexture(out.visibility, 1);
     FloatImage mask = in.positions.read();
     FloatImage surface{mask.width, mask.height, 1, {}};
     for (std::size_t i = 3; i < mask.data.size(); i += 4) surface.data.push_back(mask.data[i]);
     s.samples = 2 * samples;
-    ReferenceShadowPass::Inputs b{in.scene,          in.positions, in.sceneBounds, in.light,
-                                  in.shadowSettings, s,            in.lift,        in.normals};
+    ReferenceShadowPass::Inputs b{in.scene, in.positions,      in.sceneBounds,
+                                  in.light, in.shadowSettings, s,
+                                  in.lift,  in.normals};
     const FloatImage vb = readTexture(pass.execute(b).visibility, 1);
     return visibilityDifference(va, vb, surface);
 }
