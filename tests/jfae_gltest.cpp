@@ -7,6 +7,7 @@
 #include "TestPaths.h"
 #include "TestScenes.h"
 
+#include <gpu/ReadBack.h>
 #include <renderer/Renderer.h>
 #include <renderer/run/Capture.h>
 #include <renderer/soft/EyeFloodReach.h>
@@ -34,11 +35,7 @@ std::vector<glm::vec4> readVec4(const gl::Texture& t) {
 
 // An R32F texture, row 0 first (GL order, as the EyeImage).
 std::vector<float> readR32F(const gl::Texture& t) {
-    std::vector<float> v(static_cast<std::size_t>(t.width()) *
-                         static_cast<std::size_t>(t.height()));
-    glGetTextureImage(t.id(), 0, GL_RED, GL_FLOAT, static_cast<GLsizei>(v.size() * sizeof(float)),
-                      v.data());
-    return v;
+    return gl::readTexels<float>(t, GL_RED, GL_FLOAT);
 }
 
 // Phase 2's output of an eye-space flood, decoded from its packed cells by the GPU's helpers

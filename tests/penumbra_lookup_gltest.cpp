@@ -6,6 +6,7 @@
 #include "TestMethods.h"
 #include "TestScenes.h"
 
+#include <gpu/ReadBack.h>
 #include <renderer/Renderer.h>
 #include <renderer/io/TextureImage.h>
 #include <renderer/soft/OccluderEdge.h>
@@ -18,15 +19,6 @@ namespace fl::test {
 namespace {
 
 class PenumbraLookupTest : public GlTest {};
-
-// An R32F texture in GL's row order (the penumbra map's packed cells).
-std::vector<float> readTags(const gl::Texture& t) {
-    std::vector<float> v(static_cast<std::size_t>(t.width()) *
-                         static_cast<std::size_t>(t.height()));
-    glGetTextureImage(t.id(), 0, GL_RED, GL_FLOAT, static_cast<GLsizei>(v.size() * sizeof(float)),
-                      v.data());
-    return v;
-}
 
 // The CPU follows the GPU operation for operation, but GLSL's atan, cos, sin, acos and divisions
 // are not correctly rounded and the normal offset's point is computed on either side in its own
@@ -58,7 +50,8 @@ TEST_F(PenumbraLookupTest, BothPassesMatchTheCpuReference) {
         const FloatImage gpu = readTexture(r.visibility(), 1);
         const FloatImage cpu = penumbraLookupVisibility(
             readLookupSurfaces(r.surfaces()), readLineMap(*r.shadow(), r.disk()),
-            readTags(*r.flood()->flooded), silhouetteThreshold(s.scene.bounds.radius()));
+            gl::readTexels<float>(*r.flood()->flooded, GL_RED, GL_FLOAT),
+            silhouetteThreshold(s.scene.bounds.radius()));
         ASSERT_EQ(gpu.data.size(), cpu.data.size());
         std::size_t receivers = 0, penumbra = 0, apart = 0;
         float worst = 0.0f;

@@ -7,8 +7,21 @@
 #include <gpu/Gl.h>
 
 #include <cstddef>
+#include <vector>
 
 namespace fl::gl {
+
+/// Level 0 of `texture` read back now, one T a texel (`format`, `type`: one channel, e.g.
+/// GL_RED / GL_FLOAT, GL_DEPTH_COMPONENT / GL_FLOAT, GL_RED_INTEGER / GL_UNSIGNED_INT), GL's row
+/// order (row 0 at the bottom). It waits for the GPU: for CPU twins and tests, not in a frame.
+template <typename T>
+std::vector<T> readTexels(const Texture& texture, GLenum format, GLenum type) {
+    std::vector<T> v(static_cast<std::size_t>(texture.width()) *
+                     static_cast<std::size_t>(texture.height()));
+    glGetTextureImage(texture.id(), 0, format, type, static_cast<GLsizei>(v.size() * sizeof(T)),
+                      v.data());
+    return v;
+}
 
 /// A fence (glFenceSync) after the commands issued so far; move-only, deleted with the object.
 class Fence {

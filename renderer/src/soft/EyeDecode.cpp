@@ -1,5 +1,7 @@
 #include <renderer/passes/SurfaceDecode.h>
 #include <renderer/soft/EyeDecode.h>
+
+#include <gpu/ReadBack.h>
 #include <renderer/soft/EyeSoftShadow.h>
 #include <renderer/soft/OccluderEdge.h>
 
@@ -47,17 +49,6 @@ glm::vec4 occluder(std::uint32_t cell, const ReceiverGrid& receivers,
 
 } // namespace eyecell
 
-namespace {
-// A texture's first channel read back, GL row order.
-template <typename T>
-std::vector<T> readChannel(const gl::Texture& t, GLenum format, GLenum type) {
-    std::vector<T> v(static_cast<std::size_t>(t.width()) * static_cast<std::size_t>(t.height()));
-    glGetTextureImage(t.id(), 0, format, type, static_cast<GLsizei>(v.size() * sizeof(T)),
-                      v.data());
-    return v;
-}
-} // namespace
-
 void EyeCells::bind(gl::BindScope& scope, const gl::Program& program, int factor) const {
     scope.texture(gl::bind::EyeCells, cells->id()).texture(gl::bind::EyeDepth, depth->id());
     program.set("uSurfaceInverseViewProj", inverseViewProj);
@@ -76,15 +67,15 @@ std::pair<const gl::Texture&, const gl::Texture&> EyeCells::decoded() const {
 }
 
 std::vector<std::uint32_t> EyeCells::words() const {
-    return readChannel<std::uint32_t>(*cells, GL_RED_INTEGER, GL_UNSIGNED_INT);
+    return gl::readTexels<std::uint32_t>(*cells, GL_RED_INTEGER, GL_UNSIGNED_INT);
 }
 
 EyeImage EyeCells::read() const {
     const std::vector<std::uint32_t> cellWords = words();
-    const std::vector<float> depths = readChannel<float>(*depth, GL_DEPTH_COMPONENT, GL_FLOAT);
+    const std::vector<float> depths = gl::readTexels<float>(*depth, GL_DEPTH_COMPONENT, GL_FLOAT);
     const ReceiverGrid receivers{map.size(), map.size(), map.read()};
     std::vector<float> idValues;
-    if (objectIds) idValues = readChannel<float>(*ids, GL_RED, GL_FLOAT);
+    if (objectIds) idValues = gl::readTexels<float>(*ids, GL_RED, GL_FLOAT);
     EyeImage im{width(), height(), {}, {}};
     im.points.reserve(cellWords.size());
     im.occluders.reserve(cellWords.size());

@@ -110,10 +110,7 @@ DiskImage diskImage(const FilterFrame& f, glm::vec3 pv, glm::vec3 cv, float bloc
 } // namespace
 
 std::vector<float> readDepthMap(const gl::Texture& depth) {
-    std::vector<float> out(static_cast<std::size_t>(depth.width()) * depth.height());
-    glGetTextureImage(depth.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
-                      static_cast<GLsizei>(out.size() * sizeof(float)), out.data());
-    return out;
+    return gl::readTexels<float>(depth, GL_DEPTH_COMPONENT, GL_FLOAT);
 }
 
 float filteredVisibility(const FilterFrame& f, glm::vec3 p, glm::vec3 n) {

@@ -4,6 +4,8 @@
 #include <renderer/passes/TerminatorLift.h>
 #include <renderer/soft/FilteredShadow.h>
 
+#include <gpu/ReadBack.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -168,11 +170,7 @@ LineMap readLineMap(const ShadowMapPass::Outputs& shadow, const DiskLight& light
     m.size = shadow.depth.width();
     m.depth = readDepthMap(shadow.depth);
     if (shadow.receivers) {
-        const gl::Texture& r = *shadow.receivers->depth;
-        m.receiverDepth.resize(static_cast<std::size_t>(m.size) * static_cast<std::size_t>(m.size));
-        glGetTextureImage(r.id(), 0, GL_RED, GL_FLOAT,
-                          static_cast<GLsizei>(m.receiverDepth.size() * sizeof(float)),
-                          m.receiverDepth.data());
+        m.receiverDepth = gl::readTexels<float>(*shadow.receivers->depth, GL_RED, GL_FLOAT);
         gl::throwIfErrors("receiver target read-back");
         m.unwarp = shadow.receivers->unwarp;
         m.inverseLightViewProj = shadow.receivers->inverseLightViewProj;
