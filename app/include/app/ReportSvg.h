@@ -13,8 +13,8 @@ struct Series {
     std::vector<double> values; // one per x position (frame)
 };
 
-/// The i-th colour of the palette (cycles).
-const char* colour(std::size_t i);
+/// The i-th colour: twenty distinct ones, then distinct hues (never a repeat).
+std::string colour(std::size_t i);
 
 /// Lines of y over frame index, one per series, with a legend.
 std::string lineChart(const std::string& title, const std::string& yLabel,
