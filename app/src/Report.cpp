@@ -1,15 +1,18 @@
 // The capture report: one HTML file that opens in any browser without a network. Summary table,
 // SVG charts (per-frame errors, |dI| buckets against standard flooding as in thesis Fig. 5.4(a),
 // time per phase as in Fig. 5.10, cost against error), and each method's worst frame next to
-// the reference with a difference picture. A tiny inline script checks on load that every chart
-// has a size and content, and records the result on <body> (data-charts-ok="N/M") so headless
-// browsers in tests can read it from the DOM.
+// the reference with a difference picture. Every chart shows a legend entry for each series,
+// in colours that differ, and a column or chart that would read 0 throughout says why instead.
+// A small inline script checks on load that every chart has a size and content and its legend
+// fits inside it, and records what it finds in the DOM (data-charts-ok="N/M" on <body>, and
+// <pre id="selfcheck">) so headless browsers in tests can read it.
 
 #include <app/CaptureResults.h>
 #include <app/ReportSvg.h>
 
 #include <base/Text.h>
 
+#include <algorithm>
 #include <iomanip>
 #include <sstream>
 
@@ -32,52 +35,176 @@ svg.chart text{font-size:11px;fill:#333}svg.chart .ct{font-size:13px;font-weight
 svg.chart .axis line{stroke:#444}svg.chart line.grid{stroke:#e4e4e4}
 figure{display:inline-block;margin:8px 16px 8px 0}figure img{max-width:100%;min-width:480px;
 image-rendering:pixelated;border:1px solid #ccc}dt{font-weight:bold}
+.allzero{color:#555;font-style:italic}td.allzero{text-align:left;vertical-align:top;
+min-width:9em;max-width:16em}#selfcheck{color:#888;font-size:11px}
 </style>)";
 
-// Records on <body> how many charts have a non-empty box and drawn content, and how many images
-// decoded; tests read these from the DOM a headless browser dumps.
+// First in <head>: the page's errors (a script's, a resource that failed to load) and its
+// console.error calls are kept for the self-check below, which a headless browser cannot
+// otherwise report through --dump-dom.
+const char* kErrorTrap = R"(<script>
+var reportErrors = [];
+window.addEventListener('error', function (e) {
+  var t = e.target, src = t && t !== window ? t.src || t.href : null;
+  reportErrors.push(src ? 'failed to load ' + src : 'error: ' + e.message);
+}, true);
+window.addEventListener('unhandledrejection', function (e) {
+  reportErrors.push('unhandled rejection: ' + e.reason);
+});
+(function () {
+  var original = console.error;
+  console.error = function () {
+    reportErrors.push('console.error: ' + Array.prototype.slice.call(arguments).join(' '));
+    return original.apply(console, arguments);
+  };
+})();
+</script>)";
+
+// On load, records on <body> how many charts have a non-empty box and drawn content, and how
+// many images decoded, and writes into <pre id="selfcheck"> every problem found: a legend entry
+// outside its chart, over the plot or over another entry, two entries of one colour, a series
+// without a legend entry, and the errors kept above. Tests read these from the DOM a headless
+// browser dumps.
 const char* kCheckScript = R"(<script>
 window.addEventListener('load', function () {
-  var charts = document.querySelectorAll('svg.chart'), ok = 0;
+  var problems = [], charts = document.querySelectorAll('svg.chart'), ok = 0;
+  function outside(q, r) {
+    return q.left < r.left - 0.5 || q.right > r.right + 0.5 || q.top < r.top - 0.5 ||
+           q.bottom > r.bottom + 0.5;
+  }
   charts.forEach(function (c) {
-    var r = c.getBoundingClientRect(), b = c.getBBox();
+    var r = c.getBoundingClientRect(), b = c.getBBox(), name = c.querySelector('title').textContent;
     if (r.width > 0 && r.height > 0 && b.width > 0 && b.height > 0 &&
-        c.querySelectorAll('polyline,rect,circle').length > 0) ok++;
+        c.querySelectorAll('polyline,rect,circle,path').length > 0) ok++;
+    else problems.push(name + ': nothing drawn');
+    var k = r.width / c.viewBox.baseVal.width;
+    var plotRight = r.left + k * parseFloat(c.getAttribute('data-plot-right'));
+    var entries = c.querySelectorAll('.legend .entry'), named = {}, colours = {}, last = null;
+    entries.forEach(function (e) {
+      var s = e.getAttribute('data-series'), col = e.getAttribute('data-colour');
+      var q = e.getBoundingClientRect();
+      named[s] = true;
+      if (outside(q, r)) problems.push(name + ': legend entry "' + s + '" outside its chart');
+      if (q.left < plotRight) problems.push(name + ': legend entry "' + s + '" over the plot');
+      if (last && q.top < last.bottom - 0.5)
+        problems.push(name + ': legend entry "' + s + '" over the one before');
+      if (colours[col]) problems.push(name + ': "' + s + '" and "' + colours[col] +
+                                      '" share the colour ' + col);
+      colours[col] = s;
+      last = q;
+    });
+    c.querySelectorAll('[data-series]').forEach(function (e) {
+      var s = e.getAttribute('data-series');
+      if (named[s]) return;
+      named[s] = true;
+      problems.push(name + ': series "' + s + '" has no legend entry');
+    });
   });
   var imgs = document.querySelectorAll('img'), shown = 0;
   imgs.forEach(function (i) { if (i.complete && i.naturalWidth > 0) shown++; });
   document.body.setAttribute('data-charts-ok', ok + '/' + charts.length);
   document.body.setAttribute('data-images-ok', shown + '/' + imgs.length);
+  problems = problems.concat(reportErrors);
+  document.getElementById('selfcheck').textContent = 'self-check: ' + problems.length +
+      ' problem(s)' + (problems.length ? '\n' + problems.join('\n') : '');
 });
 </script>)";
 
+// Whether a cell reads as zero ("0.00000", "-0.00", not "-" nor "0.00 (3.15)").
+bool readsZero(const std::string& cell) {
+    return cell.find('0') != std::string::npos &&
+           cell.find_first_not_of("-0.") == std::string::npos;
+}
+
+// Why a summary column reads 0 for every method; its key is the summary's field.
+std::string whyAllZero(const std::string& key, const nlohmann::json& summary) {
+    const bool oneFrame = summary["frames"].get<int>() < 2;
+    if ((key == "addedFlicker" || key == "addedFlickerScreen") && oneFrame)
+        return "a single frame, and flicker compares consecutive ones";
+    if (key == "addedFlicker")
+        return "no method's visibility changed on a surface point between frames by more than "
+               "the reference's (camera motion alone adds none)";
+    if (key == "addedFlickerScreen")
+        return "on the pixels that are receivers in consecutive frames, no method's visibility "
+               "changed more than the reference's did";
+    if (key == "acne") return "no method darkens a lit receiver facing the light by over 0.1";
+    if (key == "peterPanning")
+        return "no method lights the reference's umbra beside a contact by over 0.1";
+    return "every method matches the reference here, to the precision shown";
+}
+
 std::string summaryTable(const nlohmann::json& summary) {
+    struct Column {
+        const char* header;
+        const char* key; // the summary's field, for why it may read 0
+        std::vector<std::string> cells;
+    };
+    std::vector<Column> cols{{"RMSE", "rmse", {}},
+                             {"RMSE penumbra", "rmsePenumbra", {}},
+                             {"misclassified %", "misclassifiedPercent", {}},
+                             {"|width error| px", "meanAbsWidthErrorPx", {}},
+                             {"width px (ref.)", "meanWidthPx", {}},
+                             {"added flicker", "addedFlicker", {}},
+                             {"(same pixel)", "addedFlickerScreen", {}},
+                             {"frame ms (median)", "medianFrameMs", {}},
+                             {"time / hard", "frameTimeOverHard", {}},
+                             {"acne %", "acne", {}},
+                             {"peter-panning %", "peterPanning", {}}};
+    const auto& methods = summary["methods"];
+    for (const auto& m : methods) {
+        const auto value = [&](const char* key, double scale, int precision) {
+            return m.contains(key) ? fmt(scale * m[key].get<double>(), precision)
+                                   : std::string("-");
+        };
+        const std::string cells[] = {value("rmse", 1, 4),
+                                     value("rmsePenumbra", 1, 4),
+                                     value("misclassifiedPercent", 1, 2),
+                                     value("meanAbsWidthErrorPx", 1, 2),
+                                     value("meanWidthPx", 1, 2) + " (" +
+                                         value("meanReferenceWidthPx", 1, 2) + ")",
+                                     value("addedFlicker", 1, 5),
+                                     value("addedFlickerScreen", 1, 5),
+                                     value("medianFrameMs", 1, 2),
+                                     value("frameTimeOverHard", 1, 2),
+                                     value("acne", 100, 2),
+                                     value("peterPanning", 100, 2)};
+        for (std::size_t c = 0; c < cols.size(); ++c) cols[c].cells.push_back(cells[c]);
+    }
     std::ostringstream s;
-    s << "<table id=\"summary\"><tr><th>method</th><th>RMSE</th><th>RMSE penumbra</th>"
-         "<th>misclassified %</th><th>|width error| px</th><th>width px (ref.)</th>"
-         "<th>added flicker</th><th>(same pixel)</th><th>frame ms (median)</th>"
-         "<th>time / hard</th><th>acne %</th><th>peter-panning %</th></tr>";
-    for (const auto& m : summary["methods"]) {
-        s << "<tr><td>" << xmlEscape(m["label"].get<std::string>()) << "</td><td>"
-          << fmt(m["rmse"].get<double>(), 4) << "</td><td>"
-          << fmt(m["rmsePenumbra"].get<double>(), 4) << "</td><td>"
-          << fmt(m["misclassifiedPercent"].get<double>(), 2) << "</td><td>"
-          << fmt(m["meanAbsWidthErrorPx"].get<double>(), 2) << "</td><td>"
-          << fmt(m["meanWidthPx"].get<double>(), 2) << " ("
-          << fmt(m["meanReferenceWidthPx"].get<double>(), 2) << ")</td><td>"
-          << fmt(m["addedFlicker"].get<double>(), 5) << "</td><td>"
-          << fmt(m["addedFlickerScreen"].get<double>(), 5) << "</td><td>"
-          << fmt(m["medianFrameMs"].get<double>(), 2) << "</td><td>"
-          << (m.contains("frameTimeOverHard") ? fmt(m["frameTimeOverHard"].get<double>(), 2)
-                                              : std::string("-"))
-          << "</td><td>" << fmt(100.0 * m["acne"].get<double>(), 2) << "</td><td>"
-          << fmt(100.0 * m["peterPanning"].get<double>(), 2) << "</td></tr>";
+    s << "<table id=\"summary\"><tr><th>method</th>";
+    for (const Column& c : cols) s << "<th>" << c.header << "</th>";
+    s << "</tr>";
+    // A column that reads 0 for every method says so once, and why, in one cell down it (one
+    // cell across neighbours with the same reason).
+    std::vector<std::string> why;
+    for (const Column& c : cols)
+        why.push_back(!c.cells.empty() && std::all_of(c.cells.begin(), c.cells.end(), readsZero)
+                          ? whyAllZero(c.key, summary)
+                          : std::string());
+    for (std::size_t r = 0; r < methods.size(); ++r) {
+        s << "<tr><td>" << xmlEscape(methods[r]["label"].get<std::string>()) << "</td>";
+        for (std::size_t c = 0; c < cols.size(); ++c) {
+            if (why[c].empty()) {
+                s << "<td>" << cols[c].cells[r] << "</td>";
+                continue;
+            }
+            std::size_t span = 1;
+            while (c + span < cols.size() && why[c + span] == why[c]) ++span;
+            if (r == 0)
+                s << "<td class=\"allzero\" rowspan=\"" << methods.size() << "\" colspan=\"" << span
+                  << "\">0 for every method: " << xmlEscape(why[c]) << "</td>";
+            c += span - 1;
+        }
+        s << "</tr>";
     }
     return s.str() + "</table>";
 }
 
-std::string errorCharts(const CaptureResults& r) {
+// The flicker chart clamps each frame at 0 (a method flickering less than the reference adds
+// none); when every value is then 0 the chart would be a flat line, so a sentence says why.
+std::string errorCharts(const CaptureResults& r, const nlohmann::json& summary) {
     std::vector<svg::Series> all, pen, flicker;
+    bool anyFlicker = false;
     for (const MethodRun& m : r.runs) {
         if (m.spec.method == r.script->reference.method().name) continue; // zero against itself
         svg::Series a{m.label, {}}, p{m.label, {}}, f{m.label, {}};
@@ -85,17 +212,31 @@ std::string errorCharts(const CaptureResults& r) {
             a.values.push_back(row.metrics.rmse);
             p.values.push_back(row.metrics.rmsePenumbra);
             f.values.push_back(row.flicker ? std::max(0.0, *row.flicker) : 0.0);
+            anyFlicker = anyFlicker || f.values.back() > 0.0;
         }
         all.push_back(std::move(a));
         pen.push_back(std::move(p));
         flicker.push_back(std::move(f));
     }
     if (all.empty()) return "<p>Only the reference was captured: nothing to compare.</p>";
-    return svg::lineChart("RMSE of visibility per frame (receivers)", "RMSE", all) +
-           svg::lineChart("RMSE of visibility per frame (reference penumbra pixels)",
-                          "RMSE (penumbra)", pen) +
-           svg::lineChart("Added flicker per frame (clamped at 0)", "mean |dV| - reference's",
-                          flicker);
+    std::string out = svg::lineChart("RMSE of visibility per frame (receivers)", "RMSE", all) +
+                      svg::lineChart("RMSE of visibility per frame (reference penumbra pixels)",
+                                     "RMSE (penumbra)", pen);
+    const bool meansZero =
+        std::all_of(summary["methods"].begin(), summary["methods"].end(),
+                    [](const nlohmann::json& m) { return m["addedFlicker"].get<double>() == 0.0; });
+    if (anyFlicker)
+        out += svg::lineChart("Added flicker per frame (clamped at 0)", "mean |dV| - reference's",
+                              flicker);
+    else
+        out += "<p class=\"allzero\" id=\"no-flicker-chart\">Added flicker per frame: not drawn, "
+               "as it is 0 in every frame for every method: " +
+               xmlEscape(meansZero ? whyAllZero("addedFlicker", summary)
+                                   : "no method's visibility changed more than the reference's "
+                                     "in any frame (the table's means are negative where a "
+                                     "method changed less)") +
+               ".</p>";
+    return out;
 }
 
 std::string bucketCharts(const CaptureResults& r) {
@@ -156,7 +297,7 @@ std::string reportHtml(const CaptureResults& r, const nlohmann::json& summary,
     std::ostringstream h;
     h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Floodlight "
          "capture: "
-      << xmlEscape(s.file.filename().string()) << "</title>" << kStyle << kCheckScript
+      << xmlEscape(s.file.filename().string()) << "</title>" << kStyle << kErrorTrap << kCheckScript
       << "</head><body>\n<h1>Floodlight capture report</h1>\n<dl><dt>script</dt><dd>"
       << xmlEscape(s.file.string()) << "</dd><dt>scene</dt><dd>" << xmlEscape(r.sceneName)
       << "</dd><dt>frames</dt><dd>" << s.frames << " at";
@@ -181,11 +322,12 @@ std::string reportHtml(const CaptureResults& r, const nlohmann::json& summary,
          "|V<sub>t</sub> &minus; V<sub>t&minus;1</sub>| per pixel.</p>\n"
       << "<h2>Summary</h2>\n"
       << summaryTable(summary) << "\n<h2>Error per frame</h2>\n"
-      << errorCharts(r) << "\n<h2>|dI| against standard flooding</h2>\n"
+      << errorCharts(r, summary) << "\n<h2>|dI| against standard flooding</h2>\n"
       << bucketCharts(r) << "\n<h2>Time and cost</h2>\n"
       << timeAndCostCharts(summary) << "\n<h2>Worst frames</h2>\n"
       << worstFrames(r, imageDir) << "\n<p>Data: <a href=\"frames.csv\">frames.csv</a>, "
-      << "<a href=\"summary.json\">summary.json</a>.</p>\n</body></html>\n";
+      << "<a href=\"summary.json\">summary.json</a>.</p>\n"
+      << "<pre id=\"selfcheck\">self-check: did not run</pre>\n</body></html>\n";
     return h.str();
 }
 
