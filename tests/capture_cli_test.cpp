@@ -1,11 +1,13 @@
 // `floodlight capture`: a short run of examples/capture/short.json on the default scene (3
 // frames, 64x64, every kind of method, a 16-sample ground truth) writes every frame, the CSV, the
-// summary and a report that headless Chromium loads with every chart drawn; bad input is one
-// clear message, exit code 1 and no summary or report left behind.
+// summary and a report that headless Chromium loads with every chart drawn, every legend entry
+// inside its chart and no error (and screenshots, as report.png); bad input is one clear
+// message, exit code 1 and no summary or report left behind.
 
 #include "CliRun.h"
 #include "TestPaths.h"
 
+#include <io/ImageIO.h>
 #include <renderer/methods/ShadowMethod.h>
 
 #include <gtest/gtest.h>
@@ -130,23 +132,79 @@ void checkSummary(const fs::path& dir) {
     }
 }
 
+// The largest per-frame added flicker any method has in frames.csv (0 when none has any).
+double maxFrameFlicker(const fs::path& dir) {
+    std::istringstream csv(fileContents(dir / "frames.csv"));
+    std::string line;
+    std::getline(csv, line);
+    std::size_t column = 0;
+    for (std::size_t at = 0; line.compare(at, 14, "added_flicker,") != 0; ++column) {
+        at = line.find(',', at);
+        if (at == std::string::npos) return 0.0;
+        ++at;
+    }
+    double most = 0.0;
+    while (std::getline(csv, line)) {
+        std::stringstream row(line);
+        std::string cell;
+        for (std::size_t c = 0; c <= column; ++c) std::getline(row, cell, ',');
+        if (!cell.empty()) most = std::max(most, std::stod(cell));
+    }
+    return most;
+}
+
+// Headless Chromium loads the report once: it dumps the DOM after the report's own self-check
+// ran on load, and screenshots the page (kept as report.png beside the report, to look at).
 void checkReportInChromium(const fs::path& dir, const std::string& chromium) {
     const fs::path profile = outputDir("capture_chromium_profile");
+    const fs::path screenshot = dir / "report.png";
+    constexpr int kShotW = 1280, kShotH = 4800; // the whole report of this run
     const Outcome r =
         shell("timeout 120 " + chromium +
               " --headless --no-sandbox --disable-gpu --user-data-dir=" + profile.string() +
-              " --dump-dom file://" + fs::absolute(dir / "report.html").string());
+              " --window-size=" + std::to_string(kShotW) + "," + std::to_string(kShotH) +
+              " --screenshot=" + screenshot.string() + " --dump-dom file://" +
+              fs::absolute(dir / "report.html").string());
     ASSERT_EQ(r.code, 0) << r.output.substr(0, 2000);
     std::smatch m;
     ASSERT_TRUE(std::regex_search(r.output, m, std::regex("data-charts-ok=\"(\\d+)/(\\d+)\"")))
         << "the report's check script did not run:\n"
         << r.output.substr(0, 2000);
-    // 3 error curves, 2 |dI| charts (jfa-l, jfa-e), time per phase, cost against error.
+    // 3 error curves (the flicker one left out, with a sentence why, when every method's is 0 in
+    // every frame), 2 |dI| charts (jfa-l, jfa-e), time per phase, cost against error.
+    const bool flickerShown = maxFrameFlicker(dir) > 0.0;
     EXPECT_EQ(m[1], m[2]) << "charts drawn / charts";
-    EXPECT_EQ(std::stoi(m[2]), 7);
+    EXPECT_EQ(std::stoi(m[2]), flickerShown ? 7 : 6);
+    EXPECT_EQ(r.output.find("id=\"no-flicker-chart\"") == std::string::npos, flickerShown);
     ASSERT_TRUE(std::regex_search(r.output, m, std::regex("data-images-ok=\"(\\d+)/(\\d+)\"")));
     EXPECT_EQ(m[1], m[2]) << "images shown / images";
     EXPECT_EQ(std::stoi(m[2]), static_cast<int>(std::size(kMethods)));
+    // The self-check: every legend entry inside its chart, off the plot and off the others, in
+    // a colour of its own, a legend entry for every series, no error and no console.error.
+    ASSERT_TRUE(std::regex_search(r.output, m, std::regex("<pre id=\"selfcheck\">([^<]*)</pre>")))
+        << r.output.substr(0, 2000);
+    EXPECT_EQ(m[1], "self-check: 0 problem(s)");
+    // A summary column that reads 0 for every method says why (here: added flicker when no
+    // method's shadow moves on the surface more than the reference's).
+    const auto summary = nlohmann::json::parse(fileContents(dir / "summary.json"));
+    const bool flickerAllZero =
+        std::all_of(summary["methods"].begin(), summary["methods"].end(),
+                    [](const auto& e) { return e["addedFlicker"].template get<double>() == 0.0; });
+    EXPECT_EQ(r.output.find("0 for every method: no method's visibility changed") !=
+                  std::string::npos,
+              flickerAllZero);
+    // The screenshot is the page as asked, with the charts' colours in it.
+    const ByteImage shot = readPng(screenshot);
+    ASSERT_EQ(shot.width, kShotW);
+    ASSERT_EQ(shot.height, kShotH);
+    std::size_t blue = 0, orange = 0; // the first two series' colours, #1f77b4 and #ff7f0e
+    for (std::size_t i = 0; i + 3 < shot.data.size(); i += 4) {
+        const std::uint8_t* p = &shot.data[i];
+        blue += p[0] == 0x1f && p[1] == 0x77 && p[2] == 0xb4;
+        orange += p[0] == 0xff && p[1] == 0x7f && p[2] == 0x0e;
+    }
+    EXPECT_GT(blue, 1000u) << screenshot;
+    EXPECT_GT(orange, 50u) << screenshot;
 }
 
 // One run (about 20 s on llvmpipe), every check on its outputs; the report check needs Chromium.
