@@ -1,5 +1,6 @@
 #include <scene/Camera.h>
 #include <scene/Ground.h>
+#include <scene/Pose.h>
 
 #include <algorithm>
 #include <cmath>
@@ -49,10 +50,14 @@ CameraView makeCameraView(const Scene& scene, const CameraSpec& spec, float aspe
         // A model on the ground Floodlight added is framed with its shadow, as tightly as they
         // allow (a 5% border), not the whole ground it would be a speck on (issue 30 item 6); a
         // scene of its own is framed whole, as before.
-        const std::vector<glm::vec3> focus = modelAndShadowPoints(scene, sceneLight(scene));
+        // In spec.pose, the geometry where it is drawn then (a skinned model at --time).
+        const std::vector<glm::vec3> focus =
+            modelAndShadowPoints(scene, sceneLight(scene), spec.pose);
+        geom::Aabb bounds = scene.bounds;
+        if (spec.pose) bounds.extend(posedBounds(scene, *spec.pose));
         const geom::ViewVolume v =
-            focus.empty() ? geom::frameBounds(scene.bounds, from, fov, aspect)
-                          : geom::framePointsTightly(focus, scene.bounds, from, fov, aspect, 0.9f);
+            focus.empty() ? geom::frameBounds(bounds, from, fov, aspect)
+                          : geom::framePointsTightly(focus, bounds, from, fov, aspect, 0.9f);
         out.view = v.view;
         out.proj = v.proj;
         out.eye = glm::vec3(glm::inverse(v.view)[3]);
@@ -69,7 +74,9 @@ Light sceneLight(const Scene& scene) {
     const float r = std::max(scene.bounds.radius(), 1e-3f);
     l.position = scene.bounds.center() + glm::normalize(glm::vec3(-0.5f, 1.0f, 0.35f)) * (2.5f * r);
     l.direction = glm::normalize(scene.bounds.center() - l.position);
-    l.radius = 0.02f * r;
+    // A scene whose bounds were set by hand has no modelBounds: its whole box is the model.
+    const geom::Aabb& model = scene.modelBounds.valid() ? scene.modelBounds : scene.bounds;
+    l.radius = kDefaultLightSize * std::max(model.radius(), 1e-3f);
     return l;
 }
 

@@ -102,6 +102,26 @@ CameraPath defaultWalkthrough(const CameraView& start, const geom::Aabb& bounds)
     return CameraPath(std::move(keys), yfov);
 }
 
+CameraPath orbitPath(const CameraView& start, const geom::Aabb& focus) {
+    const glm::mat4 inv = glm::inverse(start.view);
+    const glm::vec3 eye = start.eye, forward = -glm::normalize(glm::vec3(inv[2]));
+    const float r = std::max(focus.radius(), 1e-3f);
+    const float along = std::max(glm::dot(focus.center() - eye, forward), 0.1f * r);
+    const glm::vec3 pivot = eye + forward * along;
+    const float yfov = glm::degrees(2.0f * std::atan(1.0f / start.proj[1][1]));
+    const glm::vec3 offset = eye - pivot;
+    std::vector<CameraKey> keys;
+    constexpr int kSteps = 24;
+    for (int i = 0; i <= kSteps; ++i) {
+        const float angle = glm::radians(360.0f * static_cast<float>(i) / kSteps);
+        const float c = std::cos(angle), s = std::sin(angle);
+        keys.push_back(
+            {pivot + glm::vec3{c * offset.x + s * offset.z, offset.y, -s * offset.x + c * offset.z},
+             pivot});
+    }
+    return CameraPath(std::move(keys), yfov);
+}
+
 namespace {
 
 glm::vec3 readVec3(const nlohmann::json& j, const std::string& where) {

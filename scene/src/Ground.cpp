@@ -1,5 +1,7 @@
 #include <scene/Ground.h>
 
+#include <scene/Pose.h>
+
 #include <geometry/Finite.h>
 
 #include <glm/geometric.hpp>
@@ -7,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -125,7 +128,8 @@ void addGround(Scene& scene) {
     scene.computeBounds();
 }
 
-std::vector<glm::vec3> modelAndShadowPoints(const Scene& scene, const Light& light) {
+std::vector<glm::vec3> modelAndShadowPoints(const Scene& scene, const Light& light,
+                                            const Pose* pose) {
     if (scene.addedGround < 0 || scene.addedGround >= static_cast<int>(scene.instances.size()))
         return {};
     const Instance& g = scene.instances[static_cast<std::size_t>(scene.addedGround)];
@@ -135,11 +139,24 @@ std::vector<glm::vec3> modelAndShadowPoints(const Scene& scene, const Light& lig
     const float y = ground.max.y; // the ground is flat: its top is its plane
     std::vector<glm::vec3> out;
     bool offGround = false;
+    // Posed vertices in `pose`; without one, a skinned or morphed instance's at rest (its mesh
+    // positions are not where it is drawn), a rigid one's moved by its `world`.
+    std::optional<Pose> rest;
+    std::vector<glm::vec3> posed;
     for (std::size_t i = 0; i < scene.instances.size(); ++i) {
         if (static_cast<int>(i) == scene.addedGround) continue;
         const Instance& inst = scene.instances[i];
-        for (const glm::vec3& p : scene.meshes.at(static_cast<std::size_t>(inst.mesh)).positions) {
-            const glm::vec3 w(inst.world * glm::vec4(p, 1.0f));
+        const Mesh& mesh = scene.meshes.at(static_cast<std::size_t>(inst.mesh));
+        const Pose* at = pose;
+        if (!at && (isSkinned(inst, mesh) || !mesh.targets.empty())) {
+            if (!rest) rest = evaluatePose(scene, {}, 0.0);
+            at = &*rest;
+        }
+        if (at) posedVertices(scene, *at, i, posed);
+        const std::vector<glm::vec3>& vertices = at ? posed : mesh.positions;
+        const glm::mat4 world = at ? glm::mat4(1.0f) : inst.world;
+        for (const glm::vec3& p : vertices) {
+            const glm::vec3 w(world * glm::vec4(p, 1.0f));
             out.push_back(w);
             // The shadow of a triangle is the triangle of its corners' shadows (each corner
             // below the light meets the plane once): the hull of these holds the model's.

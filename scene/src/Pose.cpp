@@ -320,10 +320,11 @@ class RestPose {
 
 } // namespace
 
-geom::Aabb restBounds(const Scene& scene) {
+geom::Aabb restBounds(const Scene& scene, int skipInstance) {
     geom::Aabb box;
     RestPose rest(scene);
     for (std::size_t i = 0; i < scene.instances.size(); ++i) {
+        if (static_cast<int>(i) == skipInstance) continue;
         const Instance& inst = scene.instances[i];
         if (const std::vector<glm::vec3>* posed = rest.posed(i))
             box.extend(geom::Aabb::around(*posed, glm::mat4(1.0f)));

@@ -24,6 +24,7 @@ std::size_t Scene::triangleCount() const {
 
 void Scene::computeBounds() {
     bounds = restBounds(*this);
+    modelBounds = addedGround >= 0 ? restBounds(*this, addedGround) : bounds;
 }
 
 } // namespace fl

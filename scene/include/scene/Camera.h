@@ -28,6 +28,9 @@ struct CameraSpec {
     int gltfIndex = 0;
     glm::vec3 eye{0.0f}, target{0.0f};
     std::optional<float> yfovDegrees; // overrides the camera's field of view
+    /// Auto: frame the geometry in this pose (a skinned or animated model at --time) instead of
+    /// at rest; nullptr: at rest. Not owned.
+    const struct Pose* pose = nullptr;
 };
 
 /// The automatic view's direction (from the target to the eye) and vertical field of view (when
@@ -38,7 +41,8 @@ inline constexpr float kAutoViewFovDegrees = 50.0f;
 /// The camera for `spec` at the given aspect ratio; throws std::invalid_argument for a glTF
 /// camera index the scene does not have. The automatic view (Auto, and Default for a scene
 /// without cameras) frames the scene's bounds, or, on a ground Floodlight added, the model and
-/// its shadow under sceneLight (modelAndShadowPoints, Ground.h), as tightly as they allow.
+/// its shadow under sceneLight (modelAndShadowPoints, Ground.h), as tightly as they allow; in
+/// spec.pose when given.
 CameraView makeCameraView(const Scene& scene, const CameraSpec& spec, float aspect);
 
 /// The scene's light, or the default one (above and to the side of the bounds) if it has none.

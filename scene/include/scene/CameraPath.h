@@ -65,6 +65,12 @@ void writeCameraPath(const std::filesystem::path& file, const CameraPath& path);
 /// the bounds alone, which is why a path is built from a camera rather than from the bounds.
 CameraPath defaultWalkthrough(const CameraView& start, const geom::Aabb& bounds);
 
+/// A full circle around the vertical axis through the point of `start`'s view axis nearest the
+/// centre of `focus` (the model's bounds), at `start`'s distance, height and field of view: the
+/// auto frame (capture scripts' "path": "orbit") seen from every side, first and last frame at
+/// `start`'s eye. 24 keys, 15 degrees apart, so the spline stays within 0.1% of the circle.
+CameraPath orbitPath(const CameraView& start, const geom::Aabb& focus);
+
 /// The light position at frame i of n along `keys` (piecewise linear; the origin without keys).
 glm::vec3 lightPositionAt(const std::vector<glm::vec3>& keys, int i, int n);
 

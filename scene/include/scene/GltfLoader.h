@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <functional>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 
@@ -19,7 +20,8 @@ class SceneError : public std::runtime_error {
 };
 
 struct LoadOptions {
-    /// Overrides the light's disk radius (else extras.radius, else 2% of the scene's radius).
+    /// Overrides the light's disk radius (else extras.radius, else kDefaultLightSize of the
+    /// scene's radius).
     std::optional<float> lightRadius;
     /// Receives warnings about repaired or skipped content ("file: element: what was done").
     std::function<void(const std::string&)> warn;
@@ -27,5 +29,9 @@ struct LoadOptions {
 
 /// Loads a .gltf or .glb file into a Scene; throws SceneError on anything unusable.
 Scene loadGltf(const std::filesystem::path& file, const LoadOptions& options = {});
+/// Loads a .glb held in memory (the binary's built-in scene), named `name` in messages and in
+/// Scene::source; it can have no external files. Throws SceneError as loadGltf does.
+Scene loadGlbBytes(std::span<const unsigned char> glb, const std::string& name,
+                   const LoadOptions& options = {});
 
 } // namespace fl

@@ -47,7 +47,10 @@ void addGround(Scene& scene);
 /// square; with the ground's four corners when a vertex is level with or above a point light
 /// (that shadow runs off the ground). Their hull holds the model and its shadow. Empty for a
 /// scene without an added ground: its view frames all of it, as before.
-std::vector<glm::vec3> modelAndShadowPoints(const Scene& scene, const Light& light);
+/// Skinned and morphed instances count where they are drawn: posed in `pose` when given, else
+/// at rest (their mesh positions are not where they appear; issue 42's skinned model was cut off).
+std::vector<glm::vec3> modelAndShadowPoints(const Scene& scene, const Light& light,
+                                            const struct Pose* pose = nullptr);
 
 /// Applies `mode`: adds the ground for On, and for Auto when the scene has none. Returns
 /// whether it added one.

@@ -66,7 +66,8 @@ void posedVertices(const Scene& scene, const Pose& pose, std::size_t instance,
 /// vertex where the vertex stage places it with no animation applied; rigid instances' vertices
 /// moved by their `world`, skinned and morphed ones posed at rest (evaluatePose with none).
 /// The added ground, the default light, the auto camera and the ray tracer's disk all start here.
-[[nodiscard]] geom::Aabb restBounds(const Scene& scene);
+/// `skipInstance` (>= 0) leaves that instance out (Scene::modelBounds: the added ground).
+[[nodiscard]] geom::Aabb restBounds(const Scene& scene, int skipInstance = -1);
 
 /// True when some triangle at rest (placed as restBounds places its vertices) has a nonzero,
 /// finite area in float: false for a scene whose vertices all lie in one point or on one line,

@@ -134,6 +134,14 @@ struct Camera {
     std::string name;
 };
 
+/// The disk light's radius as a fraction of the model's bounding radius (Scene::modelBounds)
+/// where the scene does not give one (no light, or a light without extras.radius): what
+/// --light-size means, and its default. 0.02 drew penumbrae one or two pixels wide on an
+/// auto-framed model at 512^2 (hard-looking "soft" shadows, issue 42); at 0.08 the default view's
+/// penumbra is several pixels wide on the ground (tests/default_light_gltest.cpp measures it),
+/// and the real-model benchmark (bench/real_models.sh) scores every method at this size.
+inline constexpr float kDefaultLightSize = 0.08f;
+
 /// The scene light: glTF KHR_lights_punctual's first light, seen as a disk of `radius`.
 struct Light {
     enum class Type { Directional, Point, Spot };
@@ -162,6 +170,9 @@ struct Scene {
     /// World-space bounds of every instance's vertices at rest, tight however a node turns
     /// (restBounds in scene/Pose.h; the clip's bounds are animatedBounds).
     geom::Aabb bounds;
+    /// `bounds` without the added ground (addedGround): the model's own box, which light sizes
+    /// (--light-size, kDefaultLightSize) are fractions of.
+    geom::Aabb modelBounds;
     /// The instance addGround (Ground.h) added under the scene, -1 for none: the first view
     /// frames the model without it (makeCameraView).
     int addedGround = -1;

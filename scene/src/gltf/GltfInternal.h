@@ -69,8 +69,14 @@ class Context {
 
     /// Throws SceneError "file: element: problem".
     [[noreturn]] void fail(std::string_view element, std::string_view problem) const;
-    /// Reports a repair or a skipped part as "file: element: what".
+    /// Records a repair or a skipped part; flushWarnings reports it as "file: element: what".
     void warn(std::string_view element, std::string_view what) const;
+    /// Reports the recorded warnings through LoadOptions::warn, one line per kind (issue 42: 25
+    /// "degenerate triangle(s) dropped" lines came from one model): a warning alone as
+    /// "file: element: what", a kind met in several elements as "file: what, summed, in N
+    /// elements (the first three, ...)". Kinds are the text with its numbers blanked; counts
+    /// leading the text are added up. In the order each kind first came.
+    void flushWarnings() const;
 
     /// Counts `values` decoded components against kMaxDecodedValues; fails past it.
     void charge(std::size_t values, std::string_view element) const;
@@ -100,7 +106,8 @@ class Context {
     std::filesystem::path baseDir_;
     const tinygltf::Model& model_;
     const LoadOptions& options_;
-    mutable std::size_t decodedValues_ = 0; // accessor reads are the only mutation
+    mutable std::size_t decodedValues_ = 0; // accessor reads and warnings are the mutations
+    mutable std::vector<std::pair<std::string, std::string>> warnings_; // element, what
 };
 
 // --- accessors (GltfAccessors.cpp) ---------------------------------------------------------

@@ -34,6 +34,7 @@
 
 #include "GltfCompressed.h"
 #include "GltfInternal.h"
+#include "GltfSniff.h"
 
 #include <base/InputFile.h>
 #include <base/Numbers.h>
@@ -55,7 +56,54 @@ void Context::fail(std::string_view element, std::string_view problem) const {
 }
 
 void Context::warn(std::string_view element, std::string_view what) const {
-    if (options_.warn) options_.warn(cat(fileName_, ": ", element, ": ", what));
+    if (options_.warn) warnings_.emplace_back(element, what);
+}
+
+void Context::flushWarnings() const {
+    struct Kind {
+        std::string key;                  // the text with its numbers blanked
+        std::vector<std::size_t> members; // indices into warnings_
+    };
+    // The same warning twice (a rule checked by two steps) is one.
+    std::vector<std::pair<std::string, std::string>> unique;
+    for (auto& w : warnings_)
+        if (std::find(unique.begin(), unique.end(), w) == unique.end()) unique.push_back(w);
+    warnings_ = std::move(unique);
+    std::vector<Kind> kinds;
+    for (std::size_t i = 0; i < warnings_.size(); ++i) {
+        std::string key;
+        for (char c : warnings_[i].second)
+            if (!std::isdigit(static_cast<unsigned char>(c)))
+                key += c;
+            else if (key.empty() || key.back() != '#')
+                key += '#';
+        auto it =
+            std::find_if(kinds.begin(), kinds.end(), [&](const Kind& k) { return k.key == key; });
+        if (it == kinds.end()) it = kinds.insert(kinds.end(), Kind{key, {}});
+        it->members.push_back(i);
+    }
+    for (const Kind& k : kinds) {
+        const auto& [element, what] = warnings_[k.members.front()];
+        if (k.members.size() == 1) {
+            options_.warn(cat(fileName_, ": ", element, ": ", what));
+            continue;
+        }
+        // A count leading the text ("25 degenerate triangle(s) dropped") is summed.
+        std::string text = what;
+        if (!what.empty() && std::isdigit(static_cast<unsigned char>(what.front()))) {
+            unsigned long long total = 0;
+            for (std::size_t i : k.members) total += std::stoull(warnings_[i].second);
+            text = cat(total, what.substr(what.find_first_not_of("0123456789")));
+        }
+        std::string where;
+        constexpr std::size_t kNamed = 3;
+        for (std::size_t n = 0; n < std::min(kNamed, k.members.size()); ++n)
+            where += (n ? ", " : "") + warnings_[k.members[n]].first;
+        if (k.members.size() > kNamed) where += cat(", and ", k.members.size() - kNamed, " more");
+        options_.warn(
+            cat(fileName_, ": ", text, " in ", k.members.size(), " elements (", where, ")"));
+    }
+    warnings_.clear();
 }
 
 void Context::charge(std::size_t values, std::string_view element) const {
@@ -213,17 +261,20 @@ std::optional<std::string> unsupportedRequired(const std::vector<unsigned char>&
     return std::nullopt;
 }
 
-tinygltf::Model parse(const std::filesystem::path& file, const std::string& name,
+/// `bytes` is the file followed by kPadding zero bytes, `size` the file's own; `baseDir` is
+/// where its external files are (empty: it may have none).
+tinygltf::Model parse(std::vector<unsigned char> bytes, std::size_t size,
+                      const std::filesystem::path& baseDirectory, const std::string& name,
                       const LoadOptions& options) {
-    std::size_t size = 0;
-    std::vector<unsigned char> bytes = readFile(file, name, size);
+    if (const std::string problem = gltf::sniffProblem(bytes, size); !problem.empty())
+        throw SceneError(cat(name, ": ", problem));
     tinygltf::TinyGLTF parser;
     parser.SetImageLoader(&gltf::keepEncodedImage, nullptr);
     parser.SetFsCallbacks(
         {&externalFileExists, &keepPath, &readExternalFile, &tinygltf::WriteWholeFile, nullptr});
     tinygltf::Model model;
     std::string err, warn;
-    const std::string baseDir = file.parent_path().string();
+    const std::string baseDir = baseDirectory.string();
     // Dispatch on the content, not the extension: a mislabelled file still loads.
     const bool binary = size >= 4 && std::equal(bytes.begin(), bytes.begin() + 4, "glTF");
     const auto [jsonBegin, jsonEnd] = jsonRange(bytes, size, binary);
@@ -240,11 +291,16 @@ tinygltf::Model parse(const std::filesystem::path& file, const std::string& name
         if (auto ext = unsupportedRequired(bytes, size, binary))
             throw SceneError(
                 cat(name, ": extensionsRequired: unsupported required extension ", *ext));
+        if (const std::string problem = gltf::jsonProblem(bytes, jsonBegin, jsonEnd);
+            !problem.empty())
+            throw SceneError(cat(name, ": ", problem));
         std::string message;
         for (const std::string& line : lines(err)) message += (message.empty() ? "" : "; ") + line;
         throw SceneError(
             cat(name, ": ", message.empty() ? "tinygltf could not parse it" : message));
     }
+    if (const std::string problem = gltf::versionProblem(model.asset.version); !problem.empty())
+        throw SceneError(cat(name, ": ", problem));
     // tinygltf 2.7 reports a skin without inverseBindMatrices, which the spec allows (identity
     // matrices, 3.7.3.2), as a missing required property: not a problem worth a warning.
     constexpr std::string_view kOptionalMatrices =
@@ -332,12 +388,24 @@ Scene convert(const gltf::Context& ctx, tinygltf::Model& model, const std::files
 
 } // namespace
 
-Scene loadGltf(const std::filesystem::path& file, const LoadOptions& options) {
-    const std::string name =
-        file.has_filename() ? file.filename().string() : file.string(); // names every message
+namespace {
+
+// Both entry points: parse, convert, and one clear error naming the file whatever fails.
+Scene load(std::vector<unsigned char> bytes, std::size_t size, const std::filesystem::path& file,
+           const std::string& name, const LoadOptions& options) {
     try {
-        tinygltf::Model model = parse(file, name, options);
+        tinygltf::Model model = parse(std::move(bytes), size, file.parent_path(), name, options);
         const gltf::Context ctx(name, file.parent_path(), model, options);
+        // The warnings come out summed once the file is read, or before its error.
+        struct Flush {
+            const gltf::Context& ctx;
+            ~Flush() {
+                try {
+                    ctx.flushWarnings();
+                } catch (...) { // a failing printer must not end the program from a destructor
+                }
+            }
+        } flush{ctx};
         return convert(ctx, model, file);
     } catch (const SceneError&) {
         throw;
@@ -348,6 +416,24 @@ Scene loadGltf(const std::filesystem::path& file, const LoadOptions& options) {
         // the caller still gets one clear error naming the file.
         throw SceneError(cat(name, ": ", e.what()));
     }
+}
+
+} // namespace
+
+Scene loadGltf(const std::filesystem::path& file, const LoadOptions& options) {
+    const std::string name =
+        file.has_filename() ? file.filename().string() : file.string(); // names every message
+    std::size_t size = 0;
+    std::vector<unsigned char> bytes = readFile(file, name, size);
+    return load(std::move(bytes), size, file, name, options);
+}
+
+Scene loadGlbBytes(std::span<const unsigned char> glb, const std::string& name,
+                   const LoadOptions& options) {
+    std::vector<unsigned char> bytes(glb.begin(), glb.end());
+    bytes.resize(glb.size() + kPadding, 0);
+    // A name, not a path: no folder, so no external file can be read.
+    return load(std::move(bytes), glb.size(), std::filesystem::path(name), name, options);
 }
 
 } // namespace fl

@@ -244,7 +244,8 @@ float lightRadius(const Context& ctx, const tinygltf::Light& light, const std::s
     }
     if (auto r = extrasRadius(ctx, light, element)) return *r;
     const float sceneRadius = bounds.radius();
-    return sceneRadius > 0.0f && std::isfinite(sceneRadius) ? 0.02f * sceneRadius : Light{}.radius;
+    return sceneRadius > 0.0f && std::isfinite(sceneRadius) ? kDefaultLightSize * sceneRadius
+                                                            : Light{}.radius;
 }
 
 std::optional<Light> makeLight(const Context& ctx, const PlacedNode& placed, int index,
