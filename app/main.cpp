@@ -29,6 +29,14 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
+        // A typo of a flag: name the nearest one the subcommand takes, not just the leftovers.
+        if (dynamic_cast<const CLI::ExtrasError*>(&e))
+            for (const CLI::App* sub : app.get_subcommands())
+                if (const std::string hint = suggestFlags(*sub); !hint.empty()) {
+                    std::cerr << hint << "Run with --help for the options of `" << sub->get_name()
+                              << "`.\n";
+                    return 2;
+                }
         const int code = app.exit(e); // prints help or the message
         return code == 0 ? 0 : 2;
     }

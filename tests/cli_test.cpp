@@ -11,7 +11,9 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
+#include <string>
 #include <sys/wait.h>
 
 namespace fl::test {
@@ -271,6 +273,172 @@ TEST(Cli, VoronoiBadInput) {
             outputDir("cli").string());
     EXPECT_EQ(r.code, 1) << r.output;
     EXPECT_NE(r.output.find("not_a.png"), std::string::npos) << r.output;
+}
+
+// --- first use (issue 42) -----------------------------------------------------------------
+// Issue 42, as a new user meets the binary: the light size they can reason about and the line
+// that says what a render used, ranges in --help, a typo's nearest flag, one line without a
+// display, outputs checked before the work and nothing left by a failure, a file opening on the
+// auto frame with its cameras by index, and capture scripts' light size, auto and orbit paths.
+// Each case of the issue's "Why" is here with its exit code and message (the loader's messages
+// are gltf_messages_test's).
+
+namespace fs = std::filesystem;
+
+const fs::path kSamples = "/usr/share/assimp/models/glTF2";
+
+// One folder per test (ctest runs this file's tests as parallel processes), emptied first.
+fs::path firstUseDir() {
+    const fs::path d = outputDir("first_use_cli") /
+                       ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    std::error_code ec;
+    fs::remove_all(d, ec);
+    fs::create_directories(d);
+    return d;
+}
+
+void expectOutcome(const Outcome& r, int code, const std::string& message) {
+    EXPECT_EQ(r.code, code) << r.output;
+    EXPECT_NE(r.output.find(message), std::string::npos) << "expected: " << message << "\n"
+                                                         << r.output;
+}
+
+std::string small(const fs::path& out) {
+    return " --width 32 --height 32 --shadow-map-size 256 --out " + out.string();
+}
+
+TEST(FirstUseCli, LightSizeAndRadiusHaveRanges) {
+    const fs::path d = firstUseDir();
+    for (const char* bad : {"-1", "nan", "1e30"})
+        expectOutcome(run(std::string("render --light-size ") + bad + small(d)), 2,
+                      std::string("--light-size: must be a finite number in [0, 1], got '") + bad +
+                          "'");
+    expectOutcome(run("render --light-radius 1e30" + small(d)), 2,
+                  "--light-radius: must be a finite number in [0, 1e+15], got '1e30'");
+    // In range for the option, out of range for the scene: a disk wider than its distance.
+    expectOutcome(run("render --light-radius 1e6" + small(d)), 1,
+                  "--light-radius 1e+06: wider than the light's distance to the scene's centre");
+    // 0: a point light, allowed as for --light-radius.
+    expectOutcome(run("render --light-size 0" + small(d)), 0, "disk radius 0 = 0 of the model's");
+}
+
+TEST(FirstUseCli, RenderSaysWhatLightMapAndPassesItUsed) {
+    const Outcome r = run("render --method jfa-e --light-size 0.1" + small(firstUseDir()));
+    expectOutcome(r, 0,
+                  "= 0.1 of the model's radius (--light-size); shadow map: 256^2 uniform; "
+                  "flood: ");
+    EXPECT_NE(r.output.find(" passes (auto chose)"), std::string::npos) << r.output;
+    // The default scene's light keeps its own radius (extras.radius 0.3).
+    expectOutcome(run("render" + small(firstUseDir())), 0, "light: sun, centre (");
+}
+
+TEST(FirstUseCli, HelpShowsRangesAndDefaults) {
+    const Outcome r = run("render --help");
+    EXPECT_EQ(r.code, 0);
+    for (const char* shown :
+         {"--width INT:in [1, 8192]=512", "--shadow-map-size INT:in [16, 8192]=1024",
+          "--fov FLOAT:in [1, 170]", "Default: the glTF camera's, else 50",
+          "--light-size FLOAT:in [0, 1]", "Default 0.08", "--jfa-passes TEXT:in [1, 13] or auto",
+          "Missing folders are created"})
+        EXPECT_NE(r.output.find(shown), std::string::npos) << shown << "\n" << r.output;
+}
+
+TEST(FirstUseCli, ATypoNamesTheNearestFlag) {
+    expectOutcome(run("render --lightradius 2"), 2,
+                  "--lightradius: not an option of `render`; did you mean --light-radius?");
+    expectOutcome(run("render --shadowmap-size=512"), 2, "did you mean --shadow-map-size?");
+    // compare has no --overlay: the message names it, not the arguments after it.
+    const Outcome r = run("compare --overlay voronoi --frames 1");
+    expectOutcome(r, 2, "--overlay: not an option of `compare`");
+    EXPECT_EQ(r.output.find("1 --frames"), std::string::npos) << r.output;
+}
+
+TEST(FirstUseCli, NoDisplayIsOneLineSayingWhatToDo) {
+    const Outcome r = runCommand("env -u DISPLAY -u WAYLAND_DISPLAY timeout 60 " +
+                                 std::string(FLOODLIGHT_BINARY) + " view --frames 1");
+    expectOutcome(r, 1, "use `floodlight render` (headless)");
+    EXPECT_NE(r.output.find("xvfb-run -a floodlight view"), std::string::npos) << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    EXPECT_EQ(r.output.find("GLFW"), std::string::npos) << r.output;
+}
+
+TEST(FirstUseCli, OutputsAreCheckedBeforeTheWork) {
+    const fs::path d = firstUseDir();
+    // A folder where the aliasing map goes: refused before rendering, no file in --out.
+    fs::create_directories(d / "map.exr");
+    const Outcome folderMap =
+        run("render --aliasing-map " + (d / "map.exr").string() + small(d / "out"));
+    expectOutcome(folderMap, 1, "--aliasing-map " + (d / "map.exr").string() + ": is a folder");
+    EXPECT_EQ(folderMap.output.find("context:"), std::string::npos) << "rendered first";
+    EXPECT_FALSE(fs::exists(d / "out"));
+    // A file where the output folder goes: refused before rendering.
+    std::ofstream(d / "file") << "x";
+    const Outcome fileOut = run("render" + small(d / "file"));
+    expectOutcome(fileOut, 1, "--out " + (d / "file").string() + ": is a file, not a folder");
+    EXPECT_EQ(fileOut.output.find("context:"), std::string::npos) << "rendered first";
+    // Missing folders are created, for --out and --aliasing-map alike.
+    const fs::path map = d / "new" / "deeper" / "a.exr";
+    expectOutcome(run("render --aliasing-map " + map.string() + small(d / "made" / "here")), 0,
+                  "wrote");
+    EXPECT_TRUE(fs::is_regular_file(map));
+    EXPECT_TRUE(fs::is_regular_file(d / "made" / "here" / "frame.png"));
+    // Side by side, the map is written once per provider, as --help says.
+    const fs::path pair = d / "pair.exr";
+    expectOutcome(run("render --side-by-side --aliasing-map " + pair.string() + small(d)), 0,
+                  "pair.tsm.exr");
+    EXPECT_TRUE(fs::is_regular_file(d / "pair.uniform.exr"));
+    EXPECT_TRUE(fs::is_regular_file(d / "pair.tsm.exr"));
+}
+
+TEST(FirstUseCli, ABadSceneIsNamedInWords) {
+    const fs::path d = firstUseDir();
+    std::ofstream(d / "photo.glb", std::ios::binary) << "\x89PNG\r\n\x1a\n....";
+    const Outcome r = run("render --scene " + (d / "photo.glb").string() + small(d));
+    expectOutcome(r, 1, "error: photo.glb: not a glTF file (it starts like a PNG image)");
+    EXPECT_EQ(r.output.find('\x89'), std::string::npos);
+    std::ofstream(d / "zero.glb", std::ios::binary) << "";
+    expectOutcome(run("render --scene " + (d / "zero.glb").string() + small(d)), 1,
+                  "zero.glb: empty file (0 bytes)");
+}
+
+// A file opens on the auto frame (its model and shadow), its own cameras by index; the built-in
+// scene keeps its camera (the goldens' view).
+TEST(FirstUseCli, AFileOpensFramedAndItsCamerasStaySelectable) {
+    const fs::path file = kSamples / "cameras" / "Cameras.gltf";
+    ASSERT_TRUE(fs::exists(file)) << "assimp-testmodels (scripts/setup.sh)";
+    const fs::path d = firstUseDir();
+    for (const char* camera : {"default", "auto", "0"})
+        ASSERT_EQ(run("render --scene " + file.string() + " --camera " + camera + " --name " +
+                      camera + small(d))
+                      .code,
+                  0)
+            << camera;
+    const auto bytes = [&](const char* name) {
+        std::ifstream in(d / (std::string(name) + ".png"), std::ios::binary);
+        return std::string((std::istreambuf_iterator<char>(in)), {});
+    };
+    EXPECT_EQ(bytes("default"), bytes("auto"));
+    EXPECT_NE(bytes("0"), bytes("auto"));
+}
+
+TEST(FirstUseCli, CaptureScriptsTakeALightSizeAndTheAutoAndOrbitPaths) {
+    const fs::path d = firstUseDir();
+    for (const char* path : {"auto", "orbit"}) {
+        const fs::path script = d / (std::string(path) + ".json");
+        std::ofstream(script) << R"({"scene": ")"
+                              << (kSamples / "BoxTextured-glTF" / "BoxTextured.gltf").string()
+                              << R"(", "camera": {"frames": 2, "path": ")" << path
+                              << R"("}, "light": {"size": 0.1}, "resolutions": [[32, 32]],
+                  "shadowMap": {"size": 256}, "reference": {"kind": "maps", "samples": 4,
+                  "mapSize": 64}, "methods": ["hard"]})";
+        expectOutcome(run("capture " + script.string() + " --out " + (d / path).string()), 0,
+                      "= 0.1 of the model's radius");
+    }
+    const fs::path both = d / "both.json";
+    std::ofstream(both) << R"({"camera": {"frames": 1, "path": "auto"},
+                               "light": {"radius": 1, "size": 0.1}, "methods": ["hard"]})";
+    expectOutcome(run("capture " + both.string() + " --out " + (d / "both").string()), 1,
+                  "light.size: give radius (scene units) or size");
 }
 
 } // namespace

@@ -536,10 +536,11 @@ TEST(GltfLoaderConvert, LightRadiusOverride) {
     EXPECT_FLOAT_EQ(scene.light->radius, 0.5f);
 }
 
-TEST(GltfLoaderConvert, LightRadiusDefaultsToTwoPercentOfScene) {
+// kDefaultLightSize (0.08) of the model's radius, as --light-size's default (issue 42; 2% before).
+TEST(GltfLoaderConvert, LightRadiusDefaultsToTheDefaultLightSize) {
     const Scene scene = load(litTriangle(json()).write("light_default_radius.gltf")).scene;
     ASSERT_TRUE(scene.light.has_value());
-    EXPECT_FLOAT_EQ(scene.light->radius, 0.02f * scene.bounds.radius());
+    EXPECT_FLOAT_EQ(scene.light->radius, kDefaultLightSize * scene.bounds.radius());
     EXPECT_FLOAT_EQ(scene.bounds.radius(), 0.5f * std::sqrt(2.0f));
 }
 
@@ -559,7 +560,7 @@ TEST(GltfLoaderRepair, LightOverflowingFloatRepaired) {
     ASSERT_TRUE(l.scene.light.has_value());
     EXPECT_FLOAT_EQ(l.scene.light->intensity, 1.0f);
     expectVec3Near(l.scene.light->color, {1, 1, 1});
-    EXPECT_FLOAT_EQ(l.scene.light->radius, 0.02f * l.scene.bounds.radius());
+    EXPECT_FLOAT_EQ(l.scene.light->radius, kDefaultLightSize * l.scene.bounds.radius());
     EXPECT_TRUE(l.warned("intensity is not a finite number >= 0; 1 used"));
     EXPECT_TRUE(l.warned("color is not 3 finite numbers; white used"));
     EXPECT_TRUE(l.warned("extras.radius: not a number in [0, 1e+15]; ignored"));

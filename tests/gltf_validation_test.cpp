@@ -4,10 +4,14 @@
 #include <scene/GltfLoader.h>
 
 #include "GltfBuilder.h"
+#include "TestPaths.h"
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <limits>
+#include <string>
 
 namespace fl::test {
 namespace {
@@ -344,6 +348,115 @@ TEST(GltfLoaderValidation, DracoExtensionOverDataThatIsNotDraco) {
     expectRejected(g, "draco_not_draco.gltf",
                    {"meshes[0].primitives[0].extensions.KHR_draco_mesh_compression",
                     "bufferViews[0] is not a Draco triangle mesh"});
+}
+
+// --- messages for files that are not loadable glTF 2.0 ------------------------------------
+// Issue 42, item 5: what the loader says about a file that is not a loadable glTF 2.0 file, in
+// a user's words: "FILE: not a glTF file (it starts like a PNG image)", "FILE: glTF 1.0 is not
+// supported (asset.version 1.0); glTF 2.0 is needed", "FILE: truncated: ..." - never the JSON
+// parser's or tinygltf's text, and no raw bytes. Repeated warnings come out as one line per kind
+// and file. A .gltf's external buffer is read where its relative URI points, '..' included (the
+// rule --scene's help states).
+
+fs::path messageFile(const std::string& name, const std::string& bytes) {
+    const fs::path p = outputDir("gltf_messages") / name;
+    fs::create_directories(p.parent_path());
+    writeBytes(p, bytes.data(), bytes.size());
+    return p;
+}
+
+// The message names the file first, and carries neither library words nor unprintable bytes.
+void expectMessage(const fs::path& path, const std::string& expected) {
+    const std::string e = errorOf(path);
+    EXPECT_EQ(e, path.filename().string() + ": " + expected);
+    for (const char* library : {"json.exception", "parse_error", "tinygltf", "last read"})
+        EXPECT_EQ(e.find(library), std::string::npos) << e;
+    for (char c : e) EXPECT_TRUE(c >= 0x20 && c < 0x7f) << e;
+}
+
+TEST(GltfMessages, OtherFormatsAreNamed) {
+    expectMessage(messageFile("photo.glb", std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16)),
+                  "not a glTF file (it starts like a PNG image)");
+    expectMessage(messageFile("photo.gltf", "\xFF\xD8\xFF\xE0 JFIF"),
+                  "not a glTF file (it starts like a JPEG image)");
+    expectMessage(messageFile("scene.glb", std::string("PK\x03\x04\x14\0", 6)),
+                  "not a glTF file (it starts like a ZIP archive (unpack it first))");
+    expectMessage(messageFile("mesh.gltf", "v 0 0 0\nv 1 0 0\nf 1 2 3\n"),
+                  "not a glTF file (it is text that does not start with a JSON object '{'; an "
+                  "OBJ mesh? convert it to glTF 2.0 first, e.g. assimp export IN.obj OUT.glb)");
+}
+
+TEST(GltfMessages, EmptyAndTruncatedFiles) {
+    expectMessage(messageFile("zero.glb", ""),
+                  "empty file (0 bytes); a glTF 2.0 file (.gltf or .glb) is needed");
+    const fs::path whole = triangle().write("whole.glb", Container::Glb);
+    std::ifstream in(whole, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), {});
+    expectMessage(messageFile("cut.glb", bytes.substr(0, 60)), "truncated: its .glb header says " +
+                                                                   std::to_string(bytes.size()) +
+                                                                   " bytes, the file has 60");
+    expectMessage(messageFile("cut.gltf", R"({"asset": {"version": "2.0"}, "meshes": [)"),
+                  "truncated: the JSON ends (after 41 bytes) before it is complete");
+    expectMessage(
+        messageFile("bad.gltf", "{\"asset\": {\"version\": \"2.0\"},\n  \"meshes\": [}]}"),
+        "not valid JSON at line 2, column 14 (a glTF file is JSON)");
+}
+
+TEST(GltfMessages, GltfOneIsNamed) {
+    expectMessage(messageFile("v1.gltf", R"({"asset": {"version": "1.0"}, "meshes": {"m": {}}})"),
+                  "glTF 1.0 is not supported (asset.version 1.0); glTF 2.0 is needed");
+    // 1.0 files often have no asset at all: their objects by name tell them.
+    expectMessage(messageFile("v1-no-asset.gltf", R"({"meshes": {"box": {"primitives": []}}})"),
+                  "glTF 1.0 is not supported (its \"meshes\" are an object by name, as in glTF "
+                  "1.0); glTF 2.0 is needed");
+    Gltf g = triangle();
+    g.doc["asset"]["version"] = "3.0";
+    expectMessage(g.write("v3.gltf"),
+                  "glTF 3.0 is not supported (asset.version 3.0); glTF 2.0 is needed");
+    const std::string binary = "glTF" + std::string("\x01\0\0\0\x0c\0\0\0", 8);
+    expectMessage(messageFile("v1.glb", binary),
+                  "glTF binary version 1 is not supported (its header says so); glTF 2.0 is "
+                  "needed");
+}
+
+// 25 lines for one model, one per primitive, on every run: now one line per kind of warning.
+TEST(GltfMessages, RepeatedWarningsAreSummedPerFile) {
+    Gltf g = triangle();
+    // Each primitive: the triangle plus a degenerate one (a repeated index).
+    const int degenerate = g.indices(std::vector<std::uint16_t>{0, 1, 2, 0, 0, 1}, kU16);
+    json prim = g.prim();
+    prim["indices"] = degenerate;
+    for (int p = 0; p < 4; ++p) g.doc["meshes"][0]["primitives"][p] = prim;
+    const Loaded l = load(g.write("degenerate.gltf"));
+    ASSERT_EQ(l.warnings.size(), 1u);
+    EXPECT_EQ(l.warnings[0],
+              "degenerate.gltf: 4 degenerate triangle(s) dropped in 4 elements "
+              "(meshes[0].primitives[0], meshes[0].primitives[1], meshes[0].primitives[2], "
+              "and 1 more)");
+    // A warning alone keeps its element.
+    Gltf one = triangle();
+    one.prim()["indices"] = one.indices(std::vector<std::uint16_t>{0, 1, 2, 0, 0, 1}, kU16);
+    const Loaded single = load(one.write("one-degenerate.gltf"));
+    ASSERT_EQ(single.warnings.size(), 1u);
+    EXPECT_EQ(single.warnings[0],
+              "one-degenerate.gltf: meshes[0].primitives[0]: 1 degenerate triangle(s) dropped");
+}
+
+// The rule for external files: a relative URI resolves from the .gltf's folder, '..' included,
+// as the glTF specification resolves it (sample packs keep shared buffers beside their models).
+TEST(GltfMessages, ABufferUriOutsideTheFolderIsReadWhereItPoints) {
+    const fs::path out = triangle().write("shared.gltf", Container::BinFile);
+    const fs::path sub = out.parent_path() / "models";
+    fs::create_directories(sub);
+    const fs::path inner = sub / "shared.gltf";
+    fs::copy_file(out, inner, fs::copy_options::overwrite_existing);
+    replaceInFile(inner, "\"shared.bin\"", "\"../shared.bin\"");
+    EXPECT_EQ(load(inner).scene.triangleCount(), 1u);
+    // Missing there: the message names the URI as written and the file.
+    replaceInFile(inner, "\"../shared.bin\"", "\"../missing.bin\"");
+    const std::string e = errorOf(inner);
+    EXPECT_NE(e.find("missing.bin"), std::string::npos) << e;
+    EXPECT_EQ(e.rfind("shared.gltf: ", 0), 0u) << e;
 }
 
 } // namespace

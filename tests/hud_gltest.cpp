@@ -44,7 +44,11 @@ ByteImage renderOnGpu(const ByteImage& bg) {
     fbo.check("hud test");
     const gl::ShaderLibrary& shaders = fl::test::testShaders();
     HudPass hud(shaders);
-    hud.draw(kLines, kW, kH, {}, fbo.id());
+    // The golden's lines unwrapped (the CPU reference lays them out so too); wrapping to the
+    // window is layoutHud's, tested in hud_test.
+    HudStyle unwrapped;
+    unwrapped.maxWidth = -1;
+    hud.draw(kLines, kW, kH, unwrapped, fbo.id());
     const FloatImage f = readTexture(target, 4);
     ByteImage out{kW, kH, 4, std::vector<std::uint8_t>(f.data.size())};
     for (size_t i = 0; i < f.data.size(); ++i)
@@ -85,7 +89,11 @@ TEST_F(HudTest, RestoresTheCallersState) {
     glBlendFunc(GL_ONE, GL_ZERO);
     const gl::ShaderLibrary& shaders = fl::test::testShaders();
     HudPass hud(shaders);
-    hud.draw(kLines, kW, kH, {}, fbo.id());
+    // The golden's lines unwrapped (the CPU reference lays them out so too); wrapping to the
+    // window is layoutHud's, tested in hud_test.
+    HudStyle unwrapped;
+    unwrapped.maxWidth = -1;
+    hud.draw(kLines, kW, kH, unwrapped, fbo.id());
     GLint viewport[4], fb = 0, src = 0, dst = 0;
     glGetIntegerv(GL_VIEWPORT, viewport);
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &fb);

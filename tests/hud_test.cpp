@@ -111,5 +111,29 @@ TEST(HudLayout, TabsAlignTheSecondColumn) {
     for (float x : xs[0]) EXPECT_TRUE(x < float(g.boxMin.x + style.padding) + 8.0f || x >= column);
 }
 
+// Issue 42: in a 512-pixel window the HUD's status line ran off the right edge. With the
+// window's width, a long line wraps at spaces, and every glyph stays inside the window.
+TEST(HudLayout, LongLinesWrapToTheWindowsWidth) {
+    const std::vector<std::string> lines{
+        "method jfa-e (4/10)   shadow map uniform 1024^2   JFA passes 6 (auto)   view 31% of "
+        "texels   light size 0.080 (radius 0.300)",
+        "short", "wrote /a/long/path/with/no/spaces/in/it/captures/screenshot_0001.window.png"};
+    HudStyle style;
+    const HudGeometry unwrapped = layoutHud(lines, style);
+    EXPECT_GT(unwrapped.boxMax.x, 512); // the case: wider than the window
+    style.maxWidth = 512;
+    const HudGeometry g = layoutHud(lines, style);
+    EXPECT_LE(g.boxMax.x, 512);
+    EXPECT_GT(g.boxMax.y, unwrapped.boxMax.y); // more rows
+    for (const HudVertex& v : g.triangles) EXPECT_LE(v.pos.x, 512.0f);
+    // The same text, only moved: as many glyph quads as before.
+    EXPECT_EQ(g.triangles.size(), unwrapped.triangles.size());
+    // A window narrower than any word: every piece still fits, nothing lost.
+    style.maxWidth = 64;
+    const HudGeometry narrow = layoutHud(lines, style);
+    EXPECT_LE(narrow.boxMax.x, 64);
+    EXPECT_EQ(narrow.triangles.size(), unwrapped.triangles.size());
+}
+
 } // namespace
 } // namespace fl

@@ -229,7 +229,7 @@ TEST(RobustnessCli, NumbersAreFiniteAndInRangeEverywhere) {
         {"render --target 0,0,1e400 --eye 1,1,1" + out, "--target: must be a finite number"},
         {"render --bias-slope nan" + out, "--bias-slope: must be a finite number in [0, 64]"},
         {"render --fov inf" + out, "--fov: must be a finite number in [1, 170]"},
-        {"render --light-radius -1" + out, "--light-radius: must be a finite number >= 0"},
+        {"render --light-radius -1" + out, "--light-radius: must be a finite number in [0, 1e+15]"},
         {"render --width abc" + out, "--width: must be an integer in [1, 8192], got 'abc'"},
         {"render --width 2.5" + out, "--width: must be an integer in [1, 8192], got '2.5'"},
         {"render --pcss-preset 16/24 --vsm-blur nan" + out, "--vsm-blur: must be a finite number"},

@@ -140,7 +140,9 @@ TEST(ViewScript, EveryMethodAndOverlayFromTheKeyboard) {
         return differing;
     };
     EXPECT_GT(regionDiffers(0, 0, 64, 32), 64 * 32); // box and text
-    EXPECT_EQ(regionDiffers(0, plain.height - 8, plain.width, plain.height), 0);
+    // The lines wrap to the 256-pixel window (issue 42: the HUD ran off a small window's right
+    // edge): the box ends its 6-pixel margin short of the right edge.
+    EXPECT_EQ(regionDiffers(plain.width - 4, 0, plain.width, plain.height), 0);
     // H adds the help below: the bottom rows change too.
     const ByteImage help = readPng(dir / "help.window.png");
     ASSERT_EQ(help.data.size(), hud.data.size());

@@ -169,5 +169,27 @@ TEST(InputScript, PlayerPausesOnWaitAndHoldsKeys) {
     EXPECT_TRUE(p.finished(5));
 }
 
+// Issue 42: "screenshot a.png" then "key M" in the same frame took the picture after the key,
+// naming it after the wrong method. Steps run in the order written: the screenshot's frame is
+// drawn with what came before it, and what follows waits for the next frame.
+TEST(InputScript, StepsAfterAScreenshotWaitForItsFrame) {
+    ScriptPlayer p(parseInputScript("key M\nscreenshot a.png\nkey M\nkey M\nscreenshot b.png\n"
+                                    "quit\n",
+                                    "s"));
+    const auto f0 = p.due(0);
+    ASSERT_EQ(f0.size(), 2u); // key M, then the screenshot of the frame that follows
+    EXPECT_EQ(f0[0].kind, ScriptEvent::Kind::Key);
+    EXPECT_EQ(f0[1].kind, ScriptEvent::Kind::Screenshot);
+    EXPECT_EQ(f0[1].text, "a.png");
+    EXPECT_FALSE(p.finished(0));
+    const auto f1 = p.due(1);
+    ASSERT_EQ(f1.size(), 3u); // key M, key M, screenshot b.png
+    EXPECT_EQ(f1[2].text, "b.png");
+    const auto f2 = p.due(2);
+    ASSERT_EQ(f2.size(), 1u);
+    EXPECT_EQ(f2[0].kind, ScriptEvent::Kind::Quit);
+    EXPECT_TRUE(p.finished(2));
+}
+
 } // namespace
 } // namespace fl::app

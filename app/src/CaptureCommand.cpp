@@ -264,6 +264,19 @@ void takeBack(const CaptureScript& script, const std::vector<const FrameRecord*>
         }
     }
 }
+// The script's camera: its own path, or "path": default (the walkthrough from the scene's
+// camera), auto (the auto frame, still) or orbit (circling it).
+std::variant<CameraView, CameraPath> scriptCamera(const CaptureScript& script, const Scene& scene,
+                                                  const SceneOptions& options, int w, int h) {
+    if (script.camera) return *script.camera;
+    if (script.cameraPath == "default")
+        return defaultWalkthrough(initialCamera(scene, options, w, h), scene.bounds);
+    SceneOptions framed = options;
+    framed.camera = "auto";
+    const CameraView start = initialCamera(scene, framed, w, h);
+    if (script.cameraPath == "auto") return start;
+    return orbitPath(start, scene.modelBounds);
+}
 
 // Every frame of the script at one resolution: appends one MethodRun per method to `results`,
 // takes back the frames an earlier run finished, and records every frame it renders in
@@ -288,9 +301,7 @@ int captureSize(const CaptureSetup& c, const SizeRun& at, FrameRunner& runner,
                                        : std::min(at.budget, script.frames - firstFrame);
     const FramePlan plan{
         .scene = &c.scene,
-        .camera = script.camera
-                      ? *script.camera
-                      : defaultWalkthrough(initialCamera(c.scene, c.options, w, h), c.scene.bounds),
+        .camera = scriptCamera(script, c.scene, c.options, w, h),
         .frames = script.frames,
         .first = firstFrame,
         .last = firstFrame + rendered - 1,
@@ -428,6 +439,7 @@ SceneOptions sceneOptionsOf(const CaptureScript& script, const CaptureRequest& r
     SceneOptions so;
     so.scene = script.scene.string();
     so.lightRadius = script.lightRadius;
+    so.lightSize = script.lightSize;
     so.shaderDir = req.shaderDir;
     so.shadowMapSize = script.shadowMapSize;
     so.shadowMap = script.shadowMapProvider;
@@ -524,7 +536,10 @@ int runCapture(const CaptureRequest& req) {
     std::cout << "context: " << results.context << "\nscene: " << scene.source << " ("
               << scene.triangleCount() << " triangles), " << script.frames << " frames x "
               << script.methods.size() << " methods x " << script.resolutions.size()
-              << " resolution(s); reference: " << referenceText(script.reference) << "\n";
+              << " resolution(s); reference: " << referenceText(script.reference) << "\n"
+              << setupLine(scene, base, script.resolutions.front().first,
+                           script.resolutions.front().second)
+              << "\n";
     if (finished > 0)
         std::cout << "resuming: " << finished << " of " << total << " frames finished earlier\n";
     FrameRunner runner(total, finished);

@@ -63,8 +63,10 @@ void parseCamera(const Json& j, const std::filesystem::path& dir, CaptureScript&
     s.frames = readInt(j["frames"], "camera.frames", 1, kMaxCaptureFrames);
     const bool hasKeys = j.contains("keys"), hasFile = j.contains("file");
     if (j.contains("path")) {
-        if (j["path"] != "default") fail("camera.path", "expected \"default\"");
+        if (j["path"] != "default" && j["path"] != "auto" && j["path"] != "orbit")
+            fail("camera.path", "expected \"default\", \"auto\" or \"orbit\"");
         if (hasKeys || hasFile) fail("camera.path", "give one of path, file and keys");
+        s.cameraPath = j["path"].get<std::string>();
         return;
     }
     if (hasFile) {
@@ -77,7 +79,8 @@ void parseCamera(const Json& j, const std::filesystem::path& dir, CaptureScript&
         }
         return;
     }
-    if (!hasKeys) fail("camera", "missing \"path\": \"default\", \"file\" or \"keys\"");
+    if (!hasKeys)
+        fail("camera", "missing \"path\" (\"default\", \"auto\", \"orbit\"), \"file\" or \"keys\"");
     try {
         s.camera = parseCameraPath(j.dump());
     } catch (const std::runtime_error& e) {
@@ -86,7 +89,11 @@ void parseCamera(const Json& j, const std::filesystem::path& dir, CaptureScript&
 }
 
 void parseLight(const Json& j, CaptureScript& s) {
-    checkKeys(j, "light", {"radius", "keys"});
+    checkKeys(j, "light", {"radius", "size", "keys"});
+    if (j.contains("radius") && j.contains("size"))
+        fail("light.size", "give radius (scene units) or size (a fraction of the model's radius)");
+    if (j.contains("size"))
+        s.lightSize = static_cast<float>(readNumber(j["size"], "light.size", 0.0, 1.0, false));
     if (j.contains("radius")) {
         s.lightRadius = static_cast<float>(
             readNumber(j["radius"], "light.radius", 0.0, kMaxWorldCoordinate, false));

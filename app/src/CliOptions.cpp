@@ -1,9 +1,13 @@
 // The command-line options the subcommands share, and the validators every option uses.
 #include <app/Common.h>
 
+#include <scene/Camera.h>
 #include <scene/Ground.h>
 
 #include <base/InputFile.h>
+#include <base/Text.h>
+
+#include <cstdio>
 
 namespace fl::app {
 
@@ -55,8 +59,9 @@ void addMethodChoice(CLI::App& cmd, SceneOptions& o) {
 void addViewOptions(CLI::App& cmd, SceneOptions& o) {
     cmd.add_option(
            "--camera", o.camera,
-           "default (scene camera, else auto), auto (frame the bounds; on an added ground, the "
-           "model and its shadow), or a glTF camera index")
+           "auto (frame the scene; on an added ground, the model and its shadow; a skinned or "
+           "animated model as it stands at --time), a glTF camera index N (the file's own), or "
+           "default: auto for a file, the built-in scene's own camera for it")
         ->capture_default_str();
     cmd.add_option("--eye", o.eye, "Camera position x,y,z (with --target)")
         ->check(number())
@@ -66,7 +71,10 @@ void addViewOptions(CLI::App& cmd, SceneOptions& o) {
         ->check(number())
         ->delimiter(',')
         ->expected(3);
-    cmd.add_option("--fov", o.fov, "Vertical field of view, degrees")->check(number(1.0, 170.0));
+    cmd.add_option("--fov", o.fov,
+                   "Vertical field of view, degrees. Default: the glTF camera's, else " +
+                       fixed(kAutoViewFovDegrees, 0))
+        ->check(number(1.0, 170.0));
     cmd.add_option("--time", o.time,
                    "Seconds into the scene's animations (glTF animations, skins, morph targets)")
         ->check(number(0.0, kMaxAnimationTime))
@@ -104,16 +112,23 @@ void addLightPlacement(CLI::App& cmd, SceneOptions& o) {
 void addSceneOptions(CLI::App& cmd, SceneOptions& o, bool sceneAsOption) {
     const std::string sceneHelp = "glTF 2.0 scene (.gltf/.glb, at most " +
                                   std::to_string(kSceneInputLimitMiB) +
-                                  " MiB); default: built-in scene";
+                                  " MiB; a .gltf's buffers and images are read where their "
+                                  "relative URIs point from its folder, '..' included); default: "
+                                  "the built-in scene";
     cmd.add_option(sceneAsOption ? "--scene" : "scene", o.scene, sceneHelp);
     // 0 is allowed: a point light, for which every soft method gives exactly the hard shadows.
     CLI::Option* radius =
         cmd.add_option("--light-radius", o.lightRadius,
-                       "Disk light radius in scene units (0 = a point light: hard shadows)")
-            ->check(number(0.0));
+                       "Disk light radius in scene units (0 = a point light: hard shadows); at "
+                       "most the light's distance to the scene's centre. Default: the scene "
+                       "light's extras.radius, else --light-size " +
+                           fixed(kDefaultLightSize, 2))
+            ->check(number(0.0, kMaxWorldCoordinate));
     cmd.add_option("--light-size", o.lightSize,
                    "Disk light radius as a fraction of the model's bounding radius (the bounds "
-                   "without an added ground), 0 to 1: the same softness on any model")
+                   "without an added ground): the same softness on any model. Default " +
+                       fixed(kDefaultLightSize, 2) +
+                       " where the scene's light gives no radius (extras.radius)")
         ->check(number(0.0, 1.0))
         ->excludes(radius);
     cmd.add_option("--shader-dir", o.shaderDir,
@@ -142,8 +157,9 @@ void addMethodOptions(CLI::App& cmd, SceneOptions& o) {
             ->check(CLI::Validator(
                 [opt](const std::string& text) { return checkOptionValue(*opt, text); },
                 opt->kind == OptionKind::Choice ? std::string(opt->choices)
-                : opt->kind == OptionKind::Int  ? std::string("INT")
-                                                : std::string("FLOAT")))
+                : opt->word.empty()
+                    ? rangeText(opt->min, opt->max, "")
+                    : rangeText(opt->min, opt->max, "") + " or " + std::string(opt->word)))
             ->default_str(std::string(opt->defaultValue));
     }
 }
@@ -157,14 +173,75 @@ void addSizeOptions(CLI::App& cmd, int& width, int& height) {
         ->capture_default_str();
 }
 
+std::string rangeText(double lo, double hi, const char* unbounded) {
+    // %g: 8192 and 0.5, not 8192.000000; 1e+15 for the world's bound.
+    const auto g = [](double v) {
+        char b[32];
+        std::snprintf(b, sizeof b, "%g", v);
+        return std::string(b);
+    };
+    const bool low = lo > -kUnbounded, high = hi < kUnbounded;
+    if (low && high) return "in [" + g(lo) + ", " + g(hi) + "]";
+    if (low) return ">= " + g(lo);
+    if (high) return "<= " + g(hi);
+    return unbounded;
+}
+
+// The description is the range, so --help shows every number's range beside its type
+// ("INT:in [16, 8192]=1024").
 CLI::Validator number(double lo, double hi) {
     return CLI::Validator(
-        [lo, hi](const std::string& text) { return numberProblem(text, lo, hi, false); }, "NUMBER");
+        [lo, hi](const std::string& text) { return numberProblem(text, lo, hi, false); },
+        rangeText(lo, hi, "NUMBER"));
 }
 
 CLI::Validator integer(double lo, double hi) {
     return CLI::Validator(
-        [lo, hi](const std::string& text) { return numberProblem(text, lo, hi, true); }, "INT");
+        [lo, hi](const std::string& text) { return numberProblem(text, lo, hi, true); },
+        rangeText(lo, hi, "INT"));
+}
+
+namespace {
+
+// Levenshtein distance over bytes.
+std::size_t editDistance(const std::string& a, const std::string& b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diagonal = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t up = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+            diagonal = up;
+        }
+    }
+    return row[b.size()];
+}
+
+} // namespace
+
+std::string suggestFlags(const CLI::App& cmd) {
+    std::string out;
+    for (const std::string& arg : cmd.remaining()) {
+        if (arg.size() < 2 || arg[0] != '-') continue;
+        const std::string flag = arg.substr(0, arg.find('=')); // --flag=value
+        std::string best;
+        std::size_t bestDistance = std::max<std::size_t>(2, flag.size() / 3) + 1;
+        for (const CLI::Option* o : cmd.get_options()) {
+            std::vector<std::string> names;
+            for (const std::string& n : o->get_lnames()) names.push_back("--" + n);
+            for (const std::string& n : o->get_snames()) names.push_back("-" + n);
+            for (const std::string& n : names)
+                if (const std::size_t d = editDistance(flag, n); d < bestDistance) {
+                    bestDistance = d;
+                    best = n;
+                }
+        }
+        out += flag + ": not an option of `" + cmd.get_name() + "`" +
+               (best.empty() ? std::string() : "; did you mean " + best + "?") + "\n";
+    }
+    return out;
 }
 
 CLI::Validator outputFolder() {
@@ -203,7 +280,11 @@ CLI::Validator outputFile() {
 }
 
 CLI::Option* addOutOption(CLI::App& cmd, std::string& out, const std::string& help) {
-    return cmd.add_option("--out", out, help)->check(outputFolder())->capture_default_str();
+    // One rule for every output (issue 42): said once here, where every command's --out is.
+    return cmd
+        .add_option("--out", out, help + ". Missing folders are created, for every output alike")
+        ->check(outputFolder())
+        ->capture_default_str();
 }
 
 CLI::Option* addNameOption(CLI::App& cmd, std::string& name, const std::string& help) {

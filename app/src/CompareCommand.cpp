@@ -226,7 +226,8 @@ int runCompare(const CompareRequest& r) {
               << "scene: " << scene.source << " (" << scene.triangleCount() << " triangles)\n"
               << method << " vs " << reference << ", " << r.frames << " frames at " << r.width
               << "x" << r.height << ", shadow map " << providerName(settings.shadow.provider) << " "
-              << settings.shadow.size << "^2, " << passesText << " passes\n";
+              << settings.shadow.size << "^2, " << passesText << " passes\n"
+              << setupLine(scene, settings, r.width, r.height) << "\n";
 
     // Lane labels are also the CSV column and JSON key prefixes ("method_flood_ms").
     std::vector<Lane> lanes = {{"method", &methodRenderer, {}},

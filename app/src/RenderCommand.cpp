@@ -74,6 +74,7 @@ ProviderResult renderWith(const gl::ShaderLibrary& shaders, const Scene& scene,
                   << (sm->trapezoid->degenerate ? ", blended towards a focused uniform map" : "")
                   << ")";
     std::cout << ", frame " << width << "x" << height << ":\n";
+    std::cout << setupLine(scene, settings, width, height, &renderer) << "\n";
     printTimings(renderer, std::cout);
     ProviderResult result{readFrame(renderer), readTexture(*renderer.diagnostics(), 4), {}};
     if (!request.overlay.empty()) {
@@ -86,14 +87,41 @@ ProviderResult renderWith(const gl::ShaderLibrary& shaders, const Scene& scene,
     return result;
 }
 
+// Every file the request writes, checked before any work (issue 42: an existing file as --out
+// failed only after the whole frame, and a folder as --aliasing-map after the frame's files
+// had appeared).
+void checkOutputs(const RenderRequest& r, const std::vector<ShadowMapProvider>& providers) {
+    try {
+        checkOutputFolder(r.out, "--out");
+        for (ShadowMapProvider p : providers) {
+            const std::string stem =
+                r.sideBySide ? r.name + "." + std::string(providerName(p)) : r.name;
+            const CapturePaths paths = capturePaths(r.out, stem);
+            for (const std::filesystem::path& f : {paths.png, paths.visibilityPng, paths.exr})
+                checkOutputFile(f, "--name");
+            if (!r.aliasingMap.empty())
+                checkOutputFile(r.sideBySide ? withSuffix(r.aliasingMap, providerName(p))
+                                             : std::filesystem::path(r.aliasingMap),
+                                "--aliasing-map");
+        }
+    } catch (const OutputFileError& e) {
+        throw InputError(e.what());
+    }
+}
+
 int renderHeadless(const RenderRequest& r) {
+    {
+        const ShadowMapProvider p =
+            parseProvider(r.scene.shadowMap).value_or(ShadowMapProvider::Uniform);
+        checkOutputs(r, r.sideBySide
+                            ? std::vector{ShadowMapProvider::Uniform, ShadowMapProvider::Tsm}
+                            : std::vector{p});
+    }
     const Scene scene = loadScene(r.scene);
     const CameraView camera = initialCamera(scene, r.scene, r.width, r.height);
     auto context = EglContext::create();
     std::cout << "context: " << context->description() << "\n"
-              << "scene: " << scene.source << " (" << scene.triangleCount() << " triangles)\n"
-              << "light: disk radius " << sceneLight(scene).radius << " (scene radius "
-              << scene.bounds.radius() << ")\n";
+              << "scene: " << scene.source << " (" << scene.triangleCount() << " triangles)\n";
     const gl::ShaderLibrary shaders = makeShaderLibrary(r.scene);
     const RenderSettings base = makeRenderSettings(r.scene);
     checkMethodOptions(base, r.width, r.height);
@@ -173,7 +201,8 @@ Runner addRenderCommand(CLI::App& app) {
     addNameOption(*cmd, s->name, "File name stem: NAME.png and NAME.exr");
     cmd->add_option("--aliasing-map", s->aliasingMap,
                     "Also write the shadow-map texel footprint (screen pixels per texel), view "
-                    "depth and visibility per pixel to this EXR file")
+                    "depth and visibility per pixel to this EXR file (its folder is created if "
+                    "missing; with --side-by-side, FILE.uniform.exr and FILE.tsm.exr)")
         ->check(outputFile());
     cmd->add_flag("--side-by-side", s->sideBySide,
                   "Render with the uniform and the TSM provider and write NAME.uniform-vs-tsm.png "

@@ -2,11 +2,15 @@
 #include <app/Common.h>
 
 #include <scene/Ground.h>
+#include <scene/Pose.h>
 #include <scene/SceneGenerator.h>
+
+#include <base/Text.h>
 
 #include <algorithm>
 #include <iomanip>
 #include <iostream>
+#include <sstream>
 
 namespace fl::app {
 
@@ -39,19 +43,23 @@ void placeLight(Scene& scene, const SceneOptions& o, float modelRadius) {
     }
     if (o.lightRadius) l.radius = *o.lightRadius;
     if (o.lightSize) l.radius = *o.lightSize * modelRadius;
+    // A disk wider than its distance to the scene wraps around it: no shadow a user means. The
+    // range is the scene's own, so it is checked here, after loading (--light-size's 0..1 of
+    // the model stays inside it: the light stands 2.5 scene radii away).
+    const float reach = l.type == Light::Type::Directional
+                            ? 2.5f * scene.bounds.radius()
+                            : glm::length(scene.bounds.center() - l.position);
+    if (!(l.radius <= reach))
+        throw InputError(cat(o.lightRadius ? "--light-radius " : "the scene's light radius ",
+                             l.radius, ": wider than the light's distance to the scene's centre (",
+                             reach,
+                             "); at most that, or use --light-size (a fraction of the "
+                             "model's radius ",
+                             modelRadius, ")"));
     scene.light = l;
 }
 
 } // namespace
-
-Scene loadDefaultScene(const LoadOptions& options) {
-    const std::filesystem::path asset =
-        std::filesystem::path(FLOODLIGHT_SOURCE_DIR) / "assets" / "default.glb";
-    if (std::filesystem::exists(asset)) return loadGltf(asset, options);
-    Scene s = generateScene({kDefaultSceneTriangles, kDefaultSceneSeed});
-    if (options.lightRadius && s.light) s.light->radius = *options.lightRadius;
-    return s;
-}
 
 Scene loadScene(const SceneOptions& o) {
     LoadOptions lo;
@@ -63,8 +71,6 @@ Scene loadScene(const SceneOptions& o) {
     } catch (const SceneError& e) {
         throw InputError(e.what());
     }
-    // --light-size is relative to the model itself, not to the ground added under it.
-    const float modelRadius = scene.bounds.radius();
     // The ground first: the default light and the camera are placed from the bounds with it.
     const float lowest = scene.bounds.min.y;
     if (applyGround(scene, parseGroundMode(o.ground).value_or(GroundMode::Auto)))
@@ -75,7 +81,8 @@ Scene loadScene(const SceneOptions& o) {
                     ? "--ground on"
                     : "it has no surface under it to receive a shadow; --ground off leaves it out")
             << ")\n";
-    placeLight(scene, o, modelRadius);
+    // --light-size is relative to the model itself, not to the ground added under it.
+    placeLight(scene, o, scene.modelBounds.radius());
     return scene;
 }
 
@@ -154,8 +161,10 @@ CameraSpec makeCameraSpec(const SceneOptions& o) {
         c.target = {o.target[0], o.target[1], o.target[2]};
         return c;
     }
-    if (o.camera == "default") return c;
-    if (o.camera == "auto") {
+    // A file opens framed with its shadow, as model viewers open it (issue 42); its own cameras
+    // are --camera N. The built-in scene keeps its camera.
+    if (o.camera == "default" && o.scene.empty()) return c;
+    if (o.camera == "auto" || o.camera == "default") {
         c.kind = CameraSpec::Kind::Auto;
         return c;
     }
@@ -172,12 +181,51 @@ CameraSpec makeCameraSpec(const SceneOptions& o) {
 
 CameraView initialCamera(const Scene& scene, const SceneOptions& o, int width, int height) {
     try {
-        return makeCameraView(scene, makeCameraSpec(o),
-                              static_cast<float>(width) / static_cast<float>(height));
+        CameraSpec spec = makeCameraSpec(o);
+        // An animated or skinned model is framed as it stands at --time, not at rest.
+        std::optional<Pose> pose;
+        if (isAnimated(scene)) {
+            std::vector<int> chosen;
+            try {
+                chosen = chooseAnimations(scene, o.animation);
+            } catch (const std::invalid_argument& e) { // as applyAnimation says it
+                throw UsageError(std::string("--") + e.what());
+            }
+            pose = evaluatePose(scene, chosen, o.time);
+            spec.pose = &*pose;
+        }
+        return makeCameraView(scene, spec, static_cast<float>(width) / static_cast<float>(height));
     } catch (const std::invalid_argument& e) {
         throw InputError(e.what());
     }
 }
+std::string setupLine(const Scene& scene, const RenderSettings& s, int width, int height,
+                      const Renderer* rendered) {
+    const Light l = sceneLight(scene);
+    const float model = scene.modelBounds.valid() ? scene.modelBounds.radius() : 0.0f;
+    std::ostringstream line;
+    line << std::setprecision(4) << "light: " << (l.name.empty() ? "unnamed" : l.name)
+         << ", centre (" << l.position.x << ", " << l.position.y << ", " << l.position.z
+         << "), disk radius " << l.radius;
+    if (model > 0.0f)
+        line << " = " << std::setprecision(3) << l.radius / model
+             << " of the model's radius (--light-size)";
+    line << "; shadow map: " << s.shadow.size << "^2 " << providerName(s.shadow.provider);
+    const MethodDescriptor& m = methodOrThrow(s.method);
+    if (m.floods) {
+        const FloodFrame* frame = rendered ? rendered->flood() : nullptr;
+        const int asked = requestedPasses(m, s.options, s.shadow.size, width, height);
+        line << "; flood: ";
+        if (frame)
+            line << frame->passes << " passes" << (asked == kAutoPasses ? " (auto chose)" : "");
+        else if (asked == kAutoPasses)
+            line << "auto passes (chosen per frame)";
+        else
+            line << asked << " passes";
+    }
+    return line.str();
+}
+
 void printTimings(const Renderer& renderer, std::ostream& out) {
     out << std::fixed << std::setprecision(2);
     for (const gl::PassTime& p : renderer.timer().passes())

@@ -52,11 +52,20 @@ Runner addViewCommand(CLI::App& app) {
     return [s, captureDir, noHud] {
         s->captureDir = *captureDir;
         s->hud = !*noHud;
+        // One line that says what to do instead (issue 42): render headless, or give the window
+        // a virtual display.
+        const std::string instead =
+            "; use `floodlight render` (headless), or run the window under a virtual display: "
+            "xvfb-run -a floodlight view ...";
+        if (!displayAvailable())
+            throw InputError("no display to open a window on (neither DISPLAY nor "
+                             "WAYLAND_DISPLAY is set)" +
+                             instead);
         try {
             Viewer viewer(*s);
             return viewer.run();
         } catch (const NoWindow& e) {
-            throw InputError(std::string("cannot open a window: ") + e.what());
+            throw InputError(std::string(e.what()) + instead);
         }
     };
 }

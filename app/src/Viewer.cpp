@@ -46,6 +46,10 @@ Viewer::Viewer(const ViewerOptions& options) : options_(options), showHud_(optio
     scene_ = loadScene(options_.scene);
     const CameraView initial =
         initialCamera(scene_, options_.scene, options_.width, options_.height);
+    if (const CameraSpec spec = makeCameraSpec(options_.scene); spec.kind == CameraSpec::Kind::Gltf)
+        cameraIndex_ = spec.gltfIndex;
+    else if (spec.kind == CameraSpec::Kind::Default && !scene_.cameras.empty())
+        cameraIndex_ = 0;
     try {
         window_ = GlfwWindow::create({options_.width, options_.height, "Floodlight", true});
     } catch (const gl::GlError& e) {
@@ -57,6 +61,7 @@ Viewer::Viewer(const ViewerOptions& options) : options_(options), showHud_(optio
     shaders_ = makeShaderLibrary(options_.scene);
     renderer_ = std::make_unique<Renderer>(shaders_, scene_, makeRenderSettings(options_.scene));
     applyAnimation(*renderer_, scene_, options_.scene);
+    std::cout << setupLine(scene_, renderer_->settings(), options_.width, options_.height) << "\n";
     animationTime_ = options_.scene.time;
     controller_ =
         std::make_unique<CameraController>(initial, scene_.bounds.radius(), verticalFov(initial));
@@ -227,6 +232,7 @@ void Viewer::loadDropped(const std::string& path) {
             throw;
         }
         rendererSize_ = glm::ivec2(0);
+        cameraIndex_ = -1; // a file opens on the auto frame
         controller_ = std::make_unique<CameraController>(initial, scene_.bounds.radius(),
                                                          verticalFov(initial));
         stats_.reset();
@@ -327,6 +333,9 @@ void Viewer::renderFrame(glm::ivec2 size, float dt) {
     recordPose(false);
     const double end = glfwGetTime();
     ++fpsFrames_;
+    // Until the first half second is counted, the frame just drawn is the estimate: the HUD read
+    // "0.0 FPS" beside a 65.9 ms frame (issue 42).
+    if (fps_ <= 0.0 && end > start) fps_ = 1.0 / (end - start);
     if (end - fpsTime_ >= 0.5) {
         fps_ = fpsFrames_ / (end - fpsTime_);
         fpsTime_ = end;

@@ -175,6 +175,9 @@ bool Viewer::actOnView(Action a) {
         moveLight(0.0f, a == Action::LightUp ? kLightStep : -kLightStep);
         return true;
     case Action::LightSmaller:
+    case Action::NextCamera:
+        nextCamera();
+        return true;
     case Action::LightLarger:
         scaleLight(a == Action::LightLarger ? 1.25f : 0.8f);
         return true;
@@ -217,10 +220,30 @@ void Viewer::moveLight(float dAzimuth, float dElevation) {
     stats_.reset();
 }
 
+void Viewer::nextCamera() {
+    const int n = static_cast<int>(scene_.cameras.size());
+    cameraIndex_ = cameraIndex_ + 1 >= n ? -1 : cameraIndex_ + 1;
+    SceneOptions o = options_.scene;
+    o.eye.clear();
+    o.target.clear();
+    o.camera = cameraIndex_ < 0 ? "auto" : std::to_string(cameraIndex_);
+    o.time = animationTime_;
+    const glm::ivec2 size = glm::max(window_->framebufferSize(), glm::ivec2(1));
+    const CameraView v = initialCamera(scene_, o, size.x, size.y);
+    controller_ = std::make_unique<CameraController>(v, scene_.bounds.radius(), verticalFov(v));
+    const Camera* own = cameraIndex_ < 0 ? nullptr : &scene_.cameras[std::size_t(cameraIndex_)];
+    setMessage(own ? "camera " + std::to_string(cameraIndex_) + " of " + std::to_string(n) +
+                         (own->name.empty() ? "" : " (" + own->name + ")")
+               : n == 0 ? std::string("camera auto (the scene has no cameras of its own)")
+                        : "camera auto (C: the scene's " + std::to_string(n) + " camera(s))",
+               false);
+}
+
 void Viewer::scaleLight(float factor) {
     Light l = renderer_->light();
-    const float r = std::max(scene_.bounds.radius(), 1e-3f);
-    l.radius = std::clamp(l.radius * factor, 1e-4f * r, 0.5f * r);
+    // --light-size's range, 0 to 1 of the model's radius (a point light is --light-radius 0).
+    const float r = std::max(scene_.modelBounds.radius(), 1e-3f);
+    l.radius = std::clamp(l.radius * factor, 1e-3f * r, r);
     renderer_->setLight(l);
     stats_.reset();
 }
@@ -302,14 +325,20 @@ std::vector<std::string> Viewer::hudLines(const std::vector<std::string>& overla
                   std::to_string(int(flood->kernel->activeShare() * 100.0 + 0.5)) + "% of texels";
     else if (flood)
         passes += "   full grid";
-    lines.push_back("method " + s.method + " (" +
-                    std::to_string(indexOf(std::span<const std::string>(methods), s.method) + 1) +
-                    "/" + std::to_string(methods.size()) + ")   shadow map " +
-                    std::string(providerName(s.shadow.provider)) + " " +
-                    std::to_string(s.shadow.size) + "^2" + passes + "   light radius " +
-                    fixed(renderer_->light().radius, 3));
-    std::string times = fixed(renderer_->timer().frameMs(), 1) + " ms/frame, " + fixed(fps_, 1) +
-                        " FPS (" + renderer_->timer().modeName() + "):";
+    lines.push_back(
+        "method " + s.method + " (" +
+        std::to_string(indexOf(std::span<const std::string>(methods), s.method) + 1) + "/" +
+        std::to_string(methods.size()) + ")   shadow map " +
+        std::string(providerName(s.shadow.provider)) + " " + std::to_string(s.shadow.size) + "^2" +
+        passes + "   light size " +
+        fixed(renderer_->light().radius / std::max(scene_.modelBounds.radius(), 1e-30f), 3) +
+        " (radius " + fixed(renderer_->light().radius, 3) + ")");
+    // Frames per second and the frame time they imply, both from the wall clock, then the GL
+    // frame's own time and its passes: the HUD showed the GL time beside a wall-clock rate, two
+    // numbers that did not agree (issue 42).
+    std::string times = fixed(fps_ > 0.0 ? 1000.0 / fps_ : 0.0, 1) + " ms/frame, " +
+                        fixed(fps_, 1) + " FPS; render " + fixed(renderer_->timer().frameMs(), 1) +
+                        " ms (" + renderer_->timer().modeName() + "):";
     for (const gl::PassTime& p : renderer_->timer().passes())
         times += " " + p.name + " " + fixed(p.ms, 1);
     lines.push_back(times);
@@ -329,6 +358,9 @@ std::vector<std::string> Viewer::hudLines(const std::vector<std::string>& overla
     if (!message_.empty() && glfwGetTime() < messageUntil_) lines.push_back(message_);
     if (!openingNote_.empty()) lines.push_back(openingNote_);
     if (showHelp_) {
+        // The keys in place of the status below the method line: appended, they ran off the
+        // bottom of a small window, where H then seemed to do nothing (issue 42).
+        lines.resize(1);
         lines.push_back("");
         const std::vector<std::string> help = helpLines();
         lines.insert(lines.end(), help.begin(), help.end());

@@ -37,6 +37,7 @@ constexpr KeyBinding kBindings[] = {
     {GLFW_KEY_W, false, Action::None, "W A S D Q E", "fly: forward, left, back, right, down, up"},
     {GLFW_KEY_LEFT_SHIFT, false, Action::None, "Shift (held)", "fly: 4x faster"},
     {GLFW_KEY_R, false, Action::ResetView, "R", "reset the view"},
+    {GLFW_KEY_C, false, Action::NextCamera, "C", "camera: auto frame -> the file's cameras -> auto"},
     {GLFW_KEY_LEFT, false, Action::LightLeft, "arrows", "move the light around the scene centre"},
     {GLFW_KEY_RIGHT, false, Action::LightRight, "arrows", "move the light around the scene centre"},
     {GLFW_KEY_UP, false, Action::LightUp, "arrows", "move the light around the scene centre"},

@@ -100,11 +100,50 @@ void renameInto(const std::filesystem::path& tmp, const std::filesystem::path& p
 void makeOutputFolder(const std::filesystem::path& dir, std::string_view role) {
     if (dir.empty()) return;
     std::error_code ec;
+    // The folders this call makes, outermost first: an uncommitted set removes them again.
+    std::vector<std::filesystem::path> missing;
+    for (std::filesystem::path p = dir; !p.empty() && !std::filesystem::exists(p, ec);
+         p = p.parent_path()) {
+        missing.insert(missing.begin(), p);
+        if (p == p.parent_path()) break;
+    }
     std::filesystem::create_directories(dir, ec);
+    if (current && !ec)
+        current->folders_.insert(current->folders_.end(), missing.begin(), missing.end());
     if (ec || !std::filesystem::is_directory(dir))
         throw OutputFileError((role.empty() ? std::string() : std::string(role) + " ") +
                               dir.string() + ": cannot create the folder (" +
                               (ec ? ec.message() : std::string("a file is in the way")) + ")");
+}
+
+void checkOutputFolder(const std::filesystem::path& dir, std::string_view role) {
+    const std::string who = (role.empty() ? std::string() : std::string(role) + " ") +
+                            (dir.empty() ? std::string(".") : dir.string()) + ": ";
+    std::error_code ec;
+    // The nearest part of the path that exists must be a writable folder.
+    std::filesystem::path p = dir.empty() ? std::filesystem::path(".") : dir;
+    while (!std::filesystem::exists(p, ec)) {
+        const std::filesystem::path up = p.parent_path();
+        if (up.empty() || up == p) {
+            p = std::filesystem::current_path(ec);
+            break;
+        }
+        p = up;
+    }
+    if (!std::filesystem::is_directory(p, ec))
+        throw OutputFileError(who + (p == dir ? std::string("is a file, not a folder")
+                                              : p.string() + " is a file, not a folder"));
+    if (::access(p.c_str(), W_OK | X_OK) != 0)
+        throw OutputFileError(who + "cannot write in " + p.string() + " (" + systemMessage(errno) +
+                              ")");
+}
+
+void checkOutputFile(const std::filesystem::path& path, std::string_view role) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw OutputFileError((role.empty() ? std::string() : std::string(role) + " ") +
+                              path.string() + ": is a folder, not a file");
+    checkOutputFolder(path.parent_path(), role);
 }
 
 std::filesystem::path temporarySibling(const std::filesystem::path& path) {
@@ -167,6 +206,8 @@ OutputSet::~OutputSet() {
     if (current == this) current = outer_;
     if (done_) return;
     for (const auto& [tmp, path] : files_) ::unlink(tmp.c_str());
+    // Innermost first; ::rmdir leaves a folder that something else has put a file in.
+    for (auto it = folders_.rbegin(); it != folders_.rend(); ++it) ::rmdir(it->c_str());
 }
 
 void OutputSet::commit() {
@@ -176,7 +217,19 @@ void OutputSet::commit() {
     if (outer_) { // the outer set decides
         for (auto& f : files_) outer_->files_.push_back(std::move(f));
         files_.clear();
+        outer_->folders_.insert(outer_->folders_.end(), folders_.begin(), folders_.end());
         return;
+    }
+    // Every final place is checked before the first rename, so that a folder standing where a
+    // file goes fails the set before any of its files has appeared.
+    for (const auto& [tmp, path] : files_) {
+        std::error_code ec;
+        if (std::filesystem::is_directory(path, ec)) {
+            for (const auto& f : files_) ::unlink(f.first.c_str());
+            for (auto it = folders_.rbegin(); it != folders_.rend(); ++it) ::rmdir(it->c_str());
+            throw OutputFileError(path.string() +
+                                  ": is a folder; the finished file cannot take its place");
+        }
     }
     for (std::size_t i = 0; i < files_.size(); ++i) {
         try {

@@ -5,10 +5,14 @@
 // optional; paths are relative to the script's folder):
 //   {"scene": "default" | "FILE.glb",
 //    "camera": {"frames": N, "path": "default"}            // the walkthrough of `compare`
+//            | {"frames": N, "path": "auto"}               // every frame at --camera auto
+//            | {"frames": N, "path": "orbit"}              // circling the auto frame
 //            | {"frames": N, "file": "PATH.json"}          // a camera-path file (CameraPath.h)
 //            | {"frames": N, "fov": deg, "interpolation": "catmull-rom" | "linear",
 //               "keys": [{"eye": [x,y,z], "target": [x,y,z]}, ...]},
-//    "light": {"radius": R, "keys": [[x,y,z], ...]},        // keys: positions, piecewise linear
+//    "light": {"radius": R | "size": F,                     // scene units | a fraction of the
+//              "keys": [[x,y,z], ...]},                    // model's radius (--light-size);
+//                                                          // keys: positions, piecewise linear
 //    "resolutions": [[W, H], ...],                         // default [[512, 512]]
 //    "shadowMap": {"provider": "uniform" | "tsm", "size": S},
 //    "jfaPasses": P | "auto",                              // default "auto" (as --jfa-passes)
@@ -60,8 +64,11 @@ struct CaptureScript {
     std::filesystem::path file;
     std::filesystem::path scene; // empty = the default scene
     int frames = 0;
-    std::optional<CameraPath> camera; // nullopt: the default walkthrough from the scene camera
+    std::optional<CameraPath> camera; // nullopt: "path" (cameraPath) says
+    std::string cameraPath =
+        "default"; // default (walkthrough from the scene camera) | auto | orbit
     std::optional<float> lightRadius;
+    std::optional<float> lightSize;   // "light.size": --light-size
     std::vector<glm::vec3> lightKeys; // empty: the scene's light stays where it is
     std::vector<std::pair<int, int>> resolutions;
     std::string shadowMapProvider = "uniform";

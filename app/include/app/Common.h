@@ -73,6 +73,14 @@ void addSizeOptions(CLI::App& cmd, int& width, int& height);
 // Numbers, checked once here for every command with fl::numberProblem (base/Numbers.h), the
 // same rule the method options and the scripts use: finite, in range, whole for integers (NaN
 // and inf passed CLI11's Range, and "abc" was called "not in range"). Usage errors, exit 2.
+/// For a command line CLI11 refused with arguments left over (ExtrasError): a line per unknown
+/// flag naming it and, when one is close (a typo: --lightradius -> --light-radius), the nearest
+/// flag `cmd` (the subcommand that ran) takes; empty when no leftover is a flag.
+std::string suggestFlags(const CLI::App& cmd);
+
+/// "in [lo, hi]", ">= lo", "<= hi", or `unbounded` when neither bound is finite: a range in
+/// --help's words.
+std::string rangeText(double lo, double hi, const char* unbounded);
 /// A validator for a finite number in [lo, hi] (either may be kUnbounded); vector options check
 /// each element.
 CLI::Validator number(double lo = -kUnbounded, double hi = kUnbounded);
@@ -94,8 +102,8 @@ CLI::Option* addOutOption(CLI::App& cmd, std::string& out, const std::string& he
 /// Registers --name as a file-name stem inside --out (outputStem) with its default shown.
 CLI::Option* addNameOption(CLI::App& cmd, std::string& name, const std::string& help);
 
-/// The committed default scene (assets/default.glb) or, if that file is absent, the same scene
-/// generated in memory.
+/// The committed default scene, assets/default.glb, as built into the binary (DefaultScene.cpp):
+/// the same scene wherever the binary runs from.
 Scene loadDefaultScene(const LoadOptions& options);
 /// Loads o.scene (or the default), printing warnings to stderr; throws InputError.
 Scene loadScene(const SceneOptions& o);
@@ -121,6 +129,13 @@ inline constexpr std::uint32_t kDefaultSceneSeed = 1;
 /// The colour of region `id` in Voronoi pictures (voronoi, voronoi3d): a hash of the id in mid
 /// tones, so that black sites and red error cells stand out; negative ids as 0.
 std::array<std::uint8_t, 3> regionColour(std::int64_t id);
+
+/// The one line every rendering command prints about what it used: the light (centre, disk
+/// radius, and that radius as a fraction of the model's, --light-size's unit), the shadow map
+/// (size, provider) and, for a flooding method, its flood passes: what `rendered` ran in its
+/// last frame when given, else what the options ask for ("auto": chosen per frame).
+std::string setupLine(const Scene& scene, const RenderSettings& settings, int width, int height,
+                      const Renderer* rendered = nullptr);
 
 /// Prints per-pass times and the frame total on one line each.
 void printTimings(const Renderer& renderer, std::ostream& out);

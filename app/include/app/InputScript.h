@@ -54,7 +54,8 @@ class ScriptPlayer {
   public:
     explicit ScriptPlayer(std::vector<ScriptEvent> events) : events_(std::move(events)) {}
     /// The events to apply before frame `frame` renders (frames are asked in increasing order).
-    /// Hold and Wait events are returned too (the viewer holds the key) and pause the script.
+    /// Hold and Wait events are returned too (the viewer holds the key) and pause the script; a
+    /// Screenshot ends the frame's events (it shows the frame drawn next, before what follows).
     std::vector<ScriptEvent> due(int frame);
     /// Keys that an active Hold keeps pressed at `frame`.
     [[nodiscard]] bool held(int key, int frame) const;

@@ -85,6 +85,8 @@ class Viewer {
     void screenshot(const std::string& name, glm::ivec2 size);
     void moveLight(float dAzimuth, float dElevation);
     void scaleLight(float factor);
+    /// C: the auto frame, then the scene's own cameras in turn, then the auto frame again.
+    void nextCamera();
     void setMessage(const std::string& text, bool error);
     void recordPose(bool force);
     void writeOutputs();
@@ -121,6 +123,7 @@ class Viewer {
     // The animation clock (scene/Pose.h): seconds, speed factor, playing or paused;
     // `animationStep_` is a pending step of paused frames (J / K).
     double animationTime_ = 0.0, animationSpeed_ = 1.0;
+    int cameraIndex_ = -1; // the scene camera in view (C), -1 for the auto frame
     bool animationPlaying_ = true;
     int animationStep_ = 0;
     int fpsFrames_ = 0;

@@ -39,6 +39,7 @@ enum class Action {
     LightDown,
     LightSmaller,
     LightLarger,
+    NextCamera,
     PlayPause,
     AnimationBack,
     AnimationForward,

@@ -23,8 +23,18 @@ class OutputFileError : public std::runtime_error {
 
 /// Creates the folder `dir` and its parents (nothing for an empty path); throws OutputFileError
 /// "ROLE DIR: cannot create the folder (reason)" (just "DIR: ..." without a role), never a raw
-/// filesystem_error. ROLE is the option that named it, e.g. "--steps".
+/// filesystem_error. ROLE is the option that named it, e.g. "--steps". Missing folders are
+/// created for every output alike; under an open OutputSet, the folders it created are removed
+/// again (when empty) if the set is never committed, so a failed command leaves nothing new.
 void makeOutputFolder(const std::filesystem::path& dir, std::string_view role = {});
+
+/// Checks, before any work, that `dir` can be an output folder: it is a folder or can be made
+/// one (no file in the way, here or above), and an existing one is writable. Throws
+/// OutputFileError "ROLE DIR: problem".
+void checkOutputFolder(const std::filesystem::path& dir, std::string_view role = {});
+/// Checks, before any work, that a file can be written at `path`: not a folder, and its folder
+/// passes checkOutputFolder. Throws OutputFileError "ROLE PATH: problem".
+void checkOutputFile(const std::filesystem::path& path, std::string_view role = {});
 
 /// A new, empty, uniquely named hidden file beside `path` (".NAME.tmpPID.N"), for writers
 /// that need a path to write to (stb, OpenEXR). The folder must exist (callers that make
@@ -60,7 +70,9 @@ class OutputSet {
 
   private:
     friend void finishOutputFile(const std::filesystem::path&, const std::filesystem::path&);
+    friend void makeOutputFolder(const std::filesystem::path&, std::string_view);
     std::vector<std::pair<std::filesystem::path, std::filesystem::path>> files_; // tmp, final
+    std::vector<std::filesystem::path> folders_; // created under the set, outermost first
     OutputSet* outer_ = nullptr;
     bool done_ = false;
 };

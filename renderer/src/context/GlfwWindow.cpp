@@ -16,7 +16,7 @@ std::string g_lastGlfwError;
 int g_windows = 0;
 
 void onGlfwError(int code, const char* text) {
-    g_lastGlfwError = "GLFW error " + std::to_string(code) + ": " + (text ? text : "");
+    g_lastGlfwError = "GLFW " + std::to_string(code) + ": " + (text ? text : "");
 }
 
 } // namespace

@@ -39,12 +39,59 @@ std::string printable(const std::string& s) {
     return out;
 }
 
+// `line` cut at spaces into pieces at most `limit` font units wide; continuations start with two
+// spaces. A word wider than the limit is cut into pieces that fit.
+std::vector<std::string> wrapLine(const std::string& line, int limit) {
+    std::vector<std::string> out;
+    std::string current;
+    std::size_t at = 0;
+    while (at < line.size()) {
+        std::size_t end = line.find(' ', at + 1);
+        if (end == std::string::npos) end = line.size();
+        std::string word = line.substr(at, end - at); // with its leading space, if any
+        // A word wider than the limit (a long path) is cut where it reaches it.
+        while (stb_easy_font_width(word.data()) > limit && word.size() > 1) {
+            std::size_t fits = 1;
+            while (fits < word.size() &&
+                   stb_easy_font_width(word.substr(0, fits + 1).data()) <= limit)
+                ++fits;
+            if (!current.empty()) out.push_back(current);
+            out.push_back(word.substr(0, fits));
+            current.clear();
+            word = word.substr(fits); // shorter each time: fits >= 1
+        }
+        std::string tried = current + word;
+        if (!current.empty() && stb_easy_font_width(tried.data()) > limit) {
+            out.push_back(current);
+            std::size_t first = word.find_first_not_of(' ');
+            current = "  " + (first == std::string::npos ? std::string() : word.substr(first));
+        } else {
+            current = std::move(tried);
+        }
+        at = end;
+    }
+    out.push_back(current);
+    return out;
+}
+
 } // namespace
 
-HudGeometry layoutHud(std::span<const std::string> lines, const HudStyle& style) {
+HudGeometry layoutHud(std::span<const std::string> given, const HudStyle& style) {
     HudGeometry g;
-    if (lines.empty()) return g;
+    if (given.empty()) return g;
     const int scale = std::max(style.scale, 1);
+    std::vector<std::string> lines;
+    const int limit = (style.maxWidth - 2 * style.margin - 2 * style.padding) / scale;
+    for (const std::string& line : given) {
+        std::string shown = printable(line.substr(0, line.find('\t')));
+        if (style.maxWidth <= 0 || line.find('\t') != std::string::npos ||
+            stb_easy_font_width(shown.data()) <= limit) {
+            lines.push_back(line);
+            continue;
+        }
+        for (std::string& piece : wrapLine(line, std::max(limit, 1)))
+            lines.push_back(std::move(piece));
+    }
     // Each line is one or two cells: text before a tab, text after it. The font is proportional,
     // so the second column starts after the widest first cell rather than at a space count.
     struct Row {
@@ -143,9 +190,11 @@ HudPass::HudPass(const gl::ShaderLibrary& shaders)
     glVertexArrayAttribBinding(vao_.id(), 1, 0);
 }
 
-void HudPass::draw(std::span<const std::string> lines, int width, int height, const HudStyle& style,
+void HudPass::draw(std::span<const std::string> lines, int width, int height, const HudStyle& given,
                    GLuint framebuffer) {
     if (width <= 0 || height <= 0) return;
+    HudStyle style = given;
+    if (style.maxWidth == 0) style.maxWidth = width; // the HUD fits the window (issue 42)
     const HudGeometry g = layoutHud(lines, style);
     if (g.triangles.empty()) return;
     const gl::Buffer vertices(static_cast<GLsizeiptr>(g.triangles.size() * sizeof(HudVertex)),

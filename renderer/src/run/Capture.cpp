@@ -57,12 +57,15 @@ ByteImage visibilityToGrey(const FloatImage& v) {
     return out;
 }
 
+CapturePaths capturePaths(const std::filesystem::path& dir, const std::string& stem) {
+    return {dir / (stem + ".png"), dir / (stem + ".visibility.png"), dir / (stem + ".exr")};
+}
+
 CapturePaths writeFrame(const FrameImages& frame, const std::filesystem::path& dir,
                         const std::string& stem) {
     requireFinite(frame.color, stem + " colour");
     requireFinite(frame.visibility, stem + " visibility");
-    CapturePaths paths{dir / (stem + ".png"), dir / (stem + ".visibility.png"),
-                       dir / (stem + ".exr")};
+    const CapturePaths paths = capturePaths(dir, stem);
     writePng(paths.png, toSrgb8(frame.color));
     writePng(paths.visibilityPng, visibilityToGrey(frame.visibility));
     const size_t n = frame.visibility.data.size();

@@ -21,6 +21,9 @@ struct HudStyle {
     int scale = 1;   // font pixels per stb_easy_font unit (integer, so glyph edges hit pixel edges)
     int margin = 6;  // box distance from the window's top-left corner, in pixels
     int padding = 4; // text distance from the box edge, in pixels
+    /// The window's width in pixels: lines wrap at spaces so that the box fits it (continuations
+    /// indented); 0 = no limit (layoutHud), the window's width (HudPass::draw); < 0: no limit.
+    int maxWidth = 0;
     glm::vec4 text{1.0f, 1.0f, 1.0f, 1.0f};
     glm::vec4 warning{1.0f, 0.45f, 0.35f, 1.0f}; // lines that start with "!"
     glm::vec4 background{0.0f, 0.0f, 0.0f, 0.6f};
@@ -39,6 +42,8 @@ struct HudGeometry {
 
 /// Lays out `lines` top to bottom: one 12-unit row per line; a tab splits a line into two
 /// columns (the second aligned over all lines); other characters outside ' '..'~' show as '?'.
+/// With style.maxWidth, a line without a tab that would reach past it wraps at spaces (a word
+/// wider than the window is cut where it reaches the edge).
 HudGeometry layoutHud(std::span<const std::string> lines, const HudStyle& style = {});
 
 /// CPU reference of HudPass::draw: blends every quad of `geometry` (axis-aligned, as layoutHud
@@ -51,6 +56,7 @@ class HudPass {
     explicit HudPass(const gl::ShaderLibrary& shaders);
     /// Blends the HUD for `lines` into `framebuffer` (0 = the window) of width x height pixels.
     /// Every GL state it changes (blend, depth, cull, scissor, viewport, bindings) is restored.
+    /// Lines wrap to the window's width unless style.maxWidth says otherwise.
     void draw(std::span<const std::string> lines, int width, int height, const HudStyle& style = {},
               GLuint framebuffer = 0);
 

@@ -53,5 +53,7 @@ ByteImage visibilityToGrey(const FloatImage& visibility);
 /// std::runtime_error if a pixel is not finite or a file cannot be written.
 CapturePaths writeFrame(const FrameImages& frame, const std::filesystem::path& dir,
                         const std::string& stem);
+/// The files writeFrame(frame, dir, stem) writes: DIR/STEM.png, .visibility.png and .exr.
+CapturePaths capturePaths(const std::filesystem::path& dir, const std::string& stem);
 
 } // namespace fl
