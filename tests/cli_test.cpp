@@ -388,6 +388,9 @@ TEST(FirstUseCli, OutputsAreCheckedBeforeTheWork) {
                   "pair.tsm.exr");
     EXPECT_TRUE(fs::is_regular_file(d / "pair.uniform.exr"));
     EXPECT_TRUE(fs::is_regular_file(d / "pair.tsm.exr"));
+    // Options that cannot combine: exit 2.
+    expectOutcome(run("render --side-by-side --shadow-map tsm" + small(d)), 2,
+                  "--shadow-map excludes --side-by-side");
 }
 
 TEST(FirstUseCli, ABadSceneIsNamedInWords) {

@@ -4,6 +4,8 @@
 
 #include <app/Commands.h>
 
+#include <base/OutputFiles.h>
+
 #include <base/InputFile.h>
 #include <renderer/run/FrameRunner.h>
 
@@ -207,6 +209,11 @@ std::string writeWorstFrame(const std::filesystem::path& dir, const CompareReque
 int runCompare(const CompareRequest& r) {
     const std::string& method = r.method;
     const std::string reference = referenceOrThrow(method);
+    try { // before any work: a file where the folder goes failed after every frame (issue 42)
+        checkOutputFolder(r.out, "--out");
+    } catch (const OutputFileError& e) {
+        throw InputError(e.what());
+    }
     const Scene scene = loadScene(r.scene);
     CameraPath path = comparePath(r, scene);
     auto context = EglContext::create();

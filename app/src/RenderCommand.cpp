@@ -206,7 +206,9 @@ Runner addRenderCommand(CLI::App& app) {
         ->check(outputFile());
     cmd->add_flag("--side-by-side", s->sideBySide,
                   "Render with the uniform and the TSM provider and write NAME.uniform-vs-tsm.png "
-                  "(colour), .visibility.png and .footprint.png (heat map) side by side");
+                  "(colour), .visibility.png and .footprint.png (heat map) side by side")
+        // Both providers are rendered: a --shadow-map choice would be ignored (exit 2).
+        ->excludes(cmd->get_option("--shadow-map"));
     std::string overlayNames;
     for (OverlayMode m : allOverlayModes())
         if (m != OverlayMode::None)
