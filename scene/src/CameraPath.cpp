@@ -79,47 +79,53 @@ CameraView CameraPath::frame(int i, int n, const geom::Aabb& bounds, float aspec
     return viewAt(t, bounds, aspect);
 }
 
-CameraPath defaultWalkthrough(const CameraView& start, const geom::Aabb& bounds) {
+namespace {
+
+// What both camera paths turn about: `start`'s eye, the point on its view axis nearest the
+// centre of `around` (at least a little ahead), and its vertical field of view.
+struct Swing {
+    glm::vec3 eye, pivot;
+    float yfovDegrees;
+};
+
+Swing swingOf(const CameraView& start, const geom::Aabb& around) {
     const glm::mat4 inv = glm::inverse(start.view);
     const glm::vec3 eye = start.eye, forward = -glm::normalize(glm::vec3(inv[2]));
-    // The pivot: the point on the view axis nearest the scene's centre (at least a little ahead).
-    const float r = std::max(bounds.radius(), 1e-3f);
-    const float along = std::max(glm::dot(bounds.center() - eye, forward), 0.1f * r);
-    const glm::vec3 pivot = eye + forward * along;
-    const float yfov = glm::degrees(2.0f * std::atan(1.0f / start.proj[1][1]));
+    const float r = std::max(around.radius(), 1e-3f);
+    const float along = std::max(glm::dot(around.center() - eye, forward), 0.1f * r);
+    return {eye, eye + forward * along, glm::degrees(2.0f * std::atan(1.0f / start.proj[1][1]))};
+}
+
+// `offset` turned by `angle` radians about the vertical axis.
+glm::vec3 turned(glm::vec3 offset, float angle) {
+    const float c = std::cos(angle), s = std::sin(angle);
+    return {c * offset.x + s * offset.z, offset.y, -s * offset.x + c * offset.z};
+}
+
+} // namespace
+
+CameraPath defaultWalkthrough(const CameraView& start, const geom::Aabb& bounds) {
+    const Swing w = swingOf(start, bounds);
     std::vector<CameraKey> keys;
     const int n = 7;
     for (int i = 0; i < n; ++i) {
         const float u = static_cast<float>(i) / static_cast<float>(n - 1); // 0..1
         const float angle = glm::radians(-30.0f + 60.0f * u);
         const float scale = 1.0f - 0.45f * std::sin(3.14159265f * u); // 1 -> 0.55 -> 1
-        const glm::vec3 offset = eye - pivot;
-        const float c = std::cos(angle), s = std::sin(angle);
-        const glm::vec3 rotated{c * offset.x + s * offset.z, offset.y,
-                                -s * offset.x + c * offset.z};
-        keys.push_back({pivot + rotated * scale, pivot});
+        keys.push_back({w.pivot + turned(w.eye - w.pivot, angle) * scale, w.pivot});
     }
-    return CameraPath(std::move(keys), yfov);
+    return CameraPath(std::move(keys), w.yfovDegrees);
 }
 
 CameraPath orbitPath(const CameraView& start, const geom::Aabb& focus) {
-    const glm::mat4 inv = glm::inverse(start.view);
-    const glm::vec3 eye = start.eye, forward = -glm::normalize(glm::vec3(inv[2]));
-    const float r = std::max(focus.radius(), 1e-3f);
-    const float along = std::max(glm::dot(focus.center() - eye, forward), 0.1f * r);
-    const glm::vec3 pivot = eye + forward * along;
-    const float yfov = glm::degrees(2.0f * std::atan(1.0f / start.proj[1][1]));
-    const glm::vec3 offset = eye - pivot;
+    const Swing w = swingOf(start, focus);
     std::vector<CameraKey> keys;
     constexpr int kSteps = 24;
     for (int i = 0; i <= kSteps; ++i) {
         const float angle = glm::radians(360.0f * static_cast<float>(i) / kSteps);
-        const float c = std::cos(angle), s = std::sin(angle);
-        keys.push_back(
-            {pivot + glm::vec3{c * offset.x + s * offset.z, offset.y, -s * offset.x + c * offset.z},
-             pivot});
+        keys.push_back({w.pivot + turned(w.eye - w.pivot, angle), w.pivot});
     }
-    return CameraPath(std::move(keys), yfov);
+    return CameraPath(std::move(keys), w.yfovDegrees);
 }
 
 namespace {
