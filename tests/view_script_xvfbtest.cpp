@@ -211,6 +211,26 @@ TEST(ViewScript, SwitchingEverythingLeavesMemoryAndGlObjectsFlat) {
     }
 }
 
+// Issue 42: at 1024x768 the HUD read "65.9 ms/frame, 0.0 FPS" (the rate was counted over half a
+// second, and zero until then; the time was the GL frame's). Both come from the wall clock now,
+// from the first frame on: the rate after one frame and after twenty agrees with its frame time.
+TEST(ViewScript, TheHudsRateAgreesWithItsFrameTime) {
+    const ViewRun r = runView(outputDir("view_script") / "rate",
+                              "wait 1\nstats first\nwait 20\nstats later\nquit\n");
+    ASSERT_EQ(r.code, 0) << r.output;
+    const std::regex line(R"(stats (first|later): .*HUD ([0-9.]+) ms/frame, ([0-9.]+) FPS)");
+    int seen = 0;
+    for (auto it = std::sregex_iterator(r.output.begin(), r.output.end(), line);
+         it != std::sregex_iterator(); ++it, ++seen) {
+        const double ms = std::stod((*it)[2]), fps = std::stod((*it)[3]);
+        EXPECT_GT(fps, 0.0) << (*it)[0];
+        // Both are printed to 0.1: some values within 0.05 of each multiply to 1000 ms.
+        EXPECT_LE((ms - 0.05) * (fps - 0.05), 1000.0) << (*it)[0];
+        EXPECT_GE((ms + 0.05) * (fps + 0.05), 1000.0) << (*it)[0];
+    }
+    EXPECT_EQ(seen, 2) << r.output;
+}
+
 TEST(ViewScript, SurvivesMinimiseResizeAndABadDrop) {
     const fs::path dir = outputDir("view_script") / "resize";
     fs::create_directories(dir.parent_path());

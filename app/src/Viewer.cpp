@@ -198,7 +198,7 @@ void Viewer::applyScriptEvent(const ScriptEvent& e) {
         const gl::ObjectCounts live = gl::countLiveObjects();
         std::cout << "stats" << (e.text.empty() ? "" : " " + e.text) << ": frame " << tick_
                   << ", resident " << residentKiB() << " KiB, GL objects " << live.total() << " ("
-                  << live.text() << ")\n"
+                  << live.text() << "), HUD " << rateText() << "\n"
                   << std::flush;
         break;
     }
@@ -248,7 +248,6 @@ void Viewer::loadDropped(const std::string& path) {
 
 int Viewer::run() {
     double last = glfwGetTime();
-    fpsTime_ = last;
     while (!quit_ && !window_->shouldClose()) {
         glfwPollEvents();
         if (script_) {
@@ -332,15 +331,15 @@ void Viewer::renderFrame(glm::ivec2 size, float dt) {
     ++rendered_;
     recordPose(false);
     const double end = glfwGetTime();
-    ++fpsFrames_;
-    // Until the first half second is counted, the frame just drawn is the estimate: the HUD read
-    // "0.0 FPS" beside a 65.9 ms frame (issue 42).
-    if (fps_ <= 0.0 && end > start) fps_ = 1.0 / (end - start);
-    if (end - fpsTime_ >= 0.5) {
-        fps_ = fpsFrames_ / (end - fpsTime_);
-        fpsTime_ = end;
-        fpsFrames_ = 0;
-    }
+    // The rate over the frames that ended in the last half second, updated every frame (from
+    // the one frame drawn until there are two): the HUD read "0.0 FPS" until a first half-second
+    // window closed, then a window's stale rate (issue 42).
+    frameEnds_.push_back(end);
+    while (frameEnds_.size() > 2 && frameEnds_.front() < end - 0.5) frameEnds_.pop_front();
+    if (frameEnds_.size() >= 2 && frameEnds_.back() > frameEnds_.front())
+        fps_ = double(frameEnds_.size() - 1) / (frameEnds_.back() - frameEnds_.front());
+    else if (end > start)
+        fps_ = 1.0 / (end - start);
     if (!options_.fpsLog.empty()) {
         const RenderSettings& s = renderer_->settings();
         fpsRows_ += std::to_string(rendered_) + "," + s.method + "," +

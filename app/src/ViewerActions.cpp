@@ -220,6 +220,10 @@ void Viewer::moveLight(float dAzimuth, float dElevation) {
     stats_.reset();
 }
 
+std::string Viewer::rateText() const {
+    return fixed(fps_ > 0.0 ? 1000.0 / fps_ : 0.0, 1) + " ms/frame, " + fixed(fps_, 1) + " FPS";
+}
+
 void Viewer::nextCamera() {
     const int n = static_cast<int>(scene_.cameras.size());
     cameraIndex_ = cameraIndex_ + 1 >= n ? -1 : cameraIndex_ + 1;
@@ -336,8 +340,7 @@ std::vector<std::string> Viewer::hudLines(const std::vector<std::string>& overla
     // Frames per second and the frame time they imply, both from the wall clock, then the GL
     // frame's own time and its passes: the HUD showed the GL time beside a wall-clock rate, two
     // numbers that did not agree (issue 42).
-    std::string times = fixed(fps_ > 0.0 ? 1000.0 / fps_ : 0.0, 1) + " ms/frame, " +
-                        fixed(fps_, 1) + " FPS; render " + fixed(renderer_->timer().frameMs(), 1) +
+    std::string times = rateText() + "; render " + fixed(renderer_->timer().frameMs(), 1) +
                         " ms (" + renderer_->timer().modeName() + "):";
     for (const gl::PassTime& p : renderer_->timer().passes())
         times += " " + p.name + " " + fixed(p.ms, 1);

@@ -15,6 +15,7 @@
 #include <renderer/overlays/Overlay.h>
 #include <renderer/passes/HudPass.h>
 
+#include <deque>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -85,6 +86,8 @@ class Viewer {
     void screenshot(const std::string& name, glm::ivec2 size);
     void moveLight(float dAzimuth, float dElevation);
     void scaleLight(float factor);
+    /// "M ms/frame, F FPS": the wall clock's rate as the HUD shows it (and a script's stats).
+    [[nodiscard]] std::string rateText() const;
     /// C: the auto frame, then the scene's own cameras in turn, then the auto frame again.
     void nextCamera();
     void setMessage(const std::string& text, bool error);
@@ -119,14 +122,14 @@ class Viewer {
     std::string fpsRows_;
     glm::ivec2 rendererSize_{0};
     int tick_ = 0, rendered_ = 0, captureCounter_ = 0;
-    double fpsTime_ = 0.0, fps_ = 0.0;
+    double fps_ = 0.0;
+    std::deque<double> frameEnds_; // wall-clock ends of the last half second's frames
     // The animation clock (scene/Pose.h): seconds, speed factor, playing or paused;
     // `animationStep_` is a pending step of paused frames (J / K).
     double animationTime_ = 0.0, animationSpeed_ = 1.0;
     int cameraIndex_ = -1; // the scene camera in view (C), -1 for the auto frame
     bool animationPlaying_ = true;
     int animationStep_ = 0;
-    int fpsFrames_ = 0;
     bool quit_ = false;
 };
 
