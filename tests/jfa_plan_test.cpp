@@ -38,6 +38,21 @@ std::string invalidArgumentMessage(F f) {
 
 // ---- first-step rule ----------------------------------------------------------------------------
 
+// floor(log2 n): the one rule the penumbra map's and the eye's pass limits and the window read;
+// the loops it replaced (ViewerActions, PenumbraMap, EyeSoftShadow) gave these values.
+TEST(JfaStepRule, MaxPassesIsFloorLog2) {
+    EXPECT_EQ(jfaMaxPasses(0), 0);
+    EXPECT_EQ(jfaMaxPasses(1), 0);
+    EXPECT_EQ(jfaMaxPasses(2), 1);
+    EXPECT_EQ(jfaMaxPasses(3), 1);
+    EXPECT_EQ(jfaMaxPasses(512), 9);
+    EXPECT_EQ(jfaMaxPasses(1023), 9);
+    EXPECT_EQ(jfaMaxPasses(1024), 10);
+    EXPECT_EQ(jfaMaxPasses(8192), 13);
+    EXPECT_EQ(jfaMaxPasses(1 << 30), 30);
+    EXPECT_EQ(jfaMaxPasses(2147483647), 30); // no overflow at the top of int
+}
+
 TEST(JfaStepRule, FirstStepIsLargestPowerOfTwoBelowExtent) {
     EXPECT_EQ(jfaFirstStep(1), 0); // nothing to propagate on a single texel
     EXPECT_EQ(jfaFirstStep(2), 1);

@@ -3,6 +3,8 @@
 
 #include <app/Viewer.h>
 
+#include <jfa/Plan.h>
+
 #include <base/OutputFiles.h>
 #include <base/Text.h>
 #include <renderer/io/TextureImage.h>
@@ -36,12 +38,6 @@ T cycle(std::span<const T> all, T value, int delta) {
     return all[static_cast<std::size_t>(i)];
 }
 
-int log2Floor(int v) {
-    int n = 0;
-    while ((1 << (n + 1)) <= v) ++n;
-    return n;
-}
-
 } // namespace
 
 void Viewer::act(Action a) {
@@ -54,7 +50,7 @@ void Viewer::act(Action a) {
 }
 
 bool Viewer::changeSettings(Action a, RenderSettings& s) {
-    const int maxPasses = log2Floor(s.shadow.size);
+    const int maxPasses = jfa::jfaMaxPasses(s.shadow.size);
     switch (a) {
     case Action::NextMethod:
     case Action::PrevMethod: {
@@ -80,7 +76,7 @@ bool Viewer::changeSettings(Action a, RenderSettings& s) {
         s.shadow.size = std::max(256, s.shadow.size / 2);
         if (s.options.integer(floodPassesOption()) != kAutoPasses) // auto adapts by itself
             s.options.set(floodPassesOption().flag, std::min(s.options.integer(floodPassesOption()),
-                                                             log2Floor(s.shadow.size)));
+                                                             jfa::jfaMaxPasses(s.shadow.size)));
         return true;
     case Action::ShadowMapLarger:
         s.shadow.size = std::min(4096, s.shadow.size * 2);

@@ -182,6 +182,12 @@ bool consume(std::string_view& rest, std::string_view prefix) {
 
 // ---- step rules ---------------------------------------------------------------------------------
 
+int jfaMaxPasses(int n) {
+    int k = 0;
+    while (k < 30 && (2 << k) <= n) ++k; // 2 << 30 would overflow an int
+    return k;
+}
+
 int jfaFirstStep(int n) {
     if (n < 1) throw std::invalid_argument("jfaFirstStep: extent must be >= 1");
     int step = 0;

@@ -136,6 +136,10 @@ class Plan {
 // Prints plan.describe().
 std::ostream& operator<<(std::ostream& os, const Plan& plan);
 
+// The most halving passes a grid extent n allows: the largest k with 2^k <= n (floor(log2 n)),
+// 0 for n < 2. The one home of that rule: the penumbra map's and the eye's pass limits, the
+// window's -/= keys and --full-jfa all read it.
+int jfaMaxPasses(int n);
 // The JFA first step for a grid extent n >= 1: largest power of two <= n - 1, or 0 for n = 1.
 int jfaFirstStep(int n);
 // JFA's halving steps for a grid extent n >= 1: jfaFirstStep(n), ..., 2, 1 (empty for n = 1).

@@ -30,10 +30,7 @@ BoundaryThreshold boundaryThreshold(const EyeSoftSettings& settings, const glm::
 }
 
 int eyeSoftMaxPasses(int width, int height) {
-    const int size = std::max(width, height);
-    int maxPasses = 0;
-    while ((2 << maxPasses) <= size) ++maxPasses; // largest k with 2^k <= size
-    return maxPasses;
+    return jfa::jfaMaxPasses(std::max(width, height));
 }
 
 jfa::Plan eyeSoftPlan(int passes, bool standardFlooding, int width, int height) {

@@ -23,9 +23,7 @@ GLsizeiptr rowSpanBytes(int size, int tile) {
 } // namespace
 
 int penumbraMaxPasses(int size) {
-    int maxPasses = 0;
-    while ((2 << maxPasses) <= size) ++maxPasses; // largest k with 2^k <= size
-    return maxPasses;
+    return jfa::jfaMaxPasses(size);
 }
 
 jfa::Plan penumbraPlan(const PenumbraSettings& settings, int size) {
