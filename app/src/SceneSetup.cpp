@@ -63,7 +63,7 @@ void placeLight(Scene& scene, const SceneOptions& o, float modelRadius) {
 
 Scene loadScene(const SceneOptions& o) {
     LoadOptions lo;
-    lo.lightRadius = o.lightRadius;
+    // --light-radius and --light-size are applied once, by placeLight, for any scene.
     lo.warn = [](const std::string& w) { std::cerr << "warning: " << w << "\n"; };
     Scene scene;
     try {
