@@ -280,7 +280,7 @@ CLI::Validator outputFile() {
 }
 
 CLI::Option* addOutOption(CLI::App& cmd, std::string& out, const std::string& help) {
-    // One rule for every output (issue 42): said once here, where every command's --out is.
+    // One rule for every output: said once here, where every command's --out is.
     return cmd
         .add_option("--out", out, help + ". Missing folders are created, for every output alike")
         ->check(outputFolder())

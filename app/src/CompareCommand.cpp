@@ -209,7 +209,7 @@ std::string writeWorstFrame(const std::filesystem::path& dir, const CompareReque
 int runCompare(const CompareRequest& r) {
     const std::string& method = r.method;
     const std::string reference = referenceOrThrow(method);
-    try { // before any work: a file where the folder goes failed after every frame (issue 42)
+    try { // before any work: a file where the folder goes failed after every frame
         checkOutputFolder(r.out, "--out");
     } catch (const OutputFileError& e) {
         throw InputError(e.what());

@@ -1,4 +1,4 @@
-// The built-in scene, assets/default.glb, inside the binary (issue 42): it was read from the
+// The built-in scene, assets/default.glb, inside the binary: it was read from the
 // source tree at run time (FLOODLIGHT_SOURCE_DIR), so a binary moved or installed away from its
 // sources silently rendered the scene generator's version instead. The assembler's .incbin puts
 // the file's bytes in the read-only data; CMake rebuilds this file when the asset changes

@@ -165,7 +165,7 @@ std::vector<ScriptEvent> ScriptPlayer::due(int frame) {
         const ScriptEvent& e = events_[next_++];
         out.push_back(e);
         // A screenshot is of the frame drawn next: what follows it waits for that frame, so that
-        // "screenshot a.png" then "key M" shows the method before M (issue 42).
+        // "screenshot a.png" then "key M" shows the method before M.
         if (e.kind == ScriptEvent::Kind::Screenshot) break;
         if (e.kind == ScriptEvent::Kind::Hold || e.kind == ScriptEvent::Kind::Wait) {
             resumeFrame_ = frame + e.frames;

@@ -87,7 +87,7 @@ ProviderResult renderWith(const gl::ShaderLibrary& shaders, const Scene& scene,
     return result;
 }
 
-// Every file the request writes, checked before any work (issue 42: an existing file as --out
+// Every file the request writes, checked before any work (an existing file as --out
 // failed only after the whole frame, and a folder as --aliasing-map after the frame's files
 // had appeared).
 void checkOutputs(const RenderRequest& r, const std::vector<ShadowMapProvider>& providers) {

@@ -161,7 +161,7 @@ CameraSpec makeCameraSpec(const SceneOptions& o) {
         c.target = {o.target[0], o.target[1], o.target[2]};
         return c;
     }
-    // A file opens framed with its shadow, as model viewers open it (issue 42); its own cameras
+    // A file opens framed with its shadow, as model viewers open it; its own cameras
     // are --camera N. The built-in scene keeps its camera.
     if (o.camera == "default" && o.scene.empty()) return c;
     if (o.camera == "auto" || o.camera == "default") {

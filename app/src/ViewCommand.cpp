@@ -52,7 +52,7 @@ Runner addViewCommand(CLI::App& app) {
     return [s, captureDir, noHud] {
         s->captureDir = *captureDir;
         s->hud = !*noHud;
-        // One line that says what to do instead (issue 42): render headless, or give the window
+        // One line that says what to do instead: render headless, or give the window
         // a virtual display.
         const std::string instead =
             "; use `floodlight render` (headless), or run the window under a virtual display: "

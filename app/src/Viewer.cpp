@@ -333,7 +333,7 @@ void Viewer::renderFrame(glm::ivec2 size, float dt) {
     const double end = glfwGetTime();
     // The rate over the frames that ended in the last half second, updated every frame (from
     // the one frame drawn until there are two): the HUD read "0.0 FPS" until a first half-second
-    // window closed, then a window's stale rate (issue 42).
+    // window closed, then a window's stale rate.
     frameEnds_.push_back(end);
     while (frameEnds_.size() > 2 && frameEnds_.front() < end - 0.5) frameEnds_.pop_front();
     if (frameEnds_.size() >= 2 && frameEnds_.back() > frameEnds_.front())

@@ -335,7 +335,7 @@ std::vector<std::string> Viewer::hudLines(const std::vector<std::string>& overla
         " (radius " + fixed(renderer_->light().radius, 3) + ")");
     // Frames per second and the frame time they imply, both from the wall clock, then the GL
     // frame's own time and its passes: the HUD showed the GL time beside a wall-clock rate, two
-    // numbers that did not agree (issue 42).
+    // numbers that did not agree.
     std::string times = rateText() + "; render " + fixed(renderer_->timer().frameMs(), 1) +
                         " ms (" + renderer_->timer().modeName() + "):";
     for (const gl::PassTime& p : renderer_->timer().passes())
@@ -358,7 +358,7 @@ std::vector<std::string> Viewer::hudLines(const std::vector<std::string>& overla
     if (!openingNote_.empty()) lines.push_back(openingNote_);
     if (showHelp_) {
         // The keys in place of the status below the method line: appended, they ran off the
-        // bottom of a small window, where H then seemed to do nothing (issue 42).
+        // bottom of a small window, where H then seemed to do nothing.
         lines.resize(1);
         lines.push_back("");
         const std::vector<std::string> help = helpLines();

@@ -194,7 +194,7 @@ void HudPass::draw(std::span<const std::string> lines, int width, int height, co
                    GLuint framebuffer) {
     if (width <= 0 || height <= 0) return;
     HudStyle style = given;
-    if (style.maxWidth == 0) style.maxWidth = width; // the HUD fits the window (issue 42)
+    if (style.maxWidth == 0) style.maxWidth = width; // the HUD fits the window
     const HudGeometry g = layoutHud(lines, style);
     if (g.triangles.empty()) return;
     const gl::Buffer vertices(static_cast<GLsizeiptr>(g.triangles.size() * sizeof(HudVertex)),

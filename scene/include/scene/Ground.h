@@ -48,7 +48,7 @@ void addGround(Scene& scene);
 /// (that shadow runs off the ground). Their hull holds the model and its shadow. Empty for a
 /// scene without an added ground: its view frames all of it, as before.
 /// Skinned and morphed instances count where they are drawn: posed in `pose` when given, else
-/// at rest (their mesh positions are not where they appear; issue 42's skinned model was cut off).
+/// at rest (their mesh positions are not where they appear; a skinned model was cut off).
 std::vector<glm::vec3> modelAndShadowPoints(const Scene& scene, const Light& light,
                                             const struct Pose* pose = nullptr);
 

@@ -71,7 +71,7 @@ class Context {
     [[noreturn]] void fail(std::string_view element, std::string_view problem) const;
     /// Records a repair or a skipped part; flushWarnings reports it as "file: element: what".
     void warn(std::string_view element, std::string_view what) const;
-    /// Reports the recorded warnings through LoadOptions::warn, one line per kind (issue 42: 25
+    /// Reports the recorded warnings through LoadOptions::warn, one line per kind (25
     /// "degenerate triangle(s) dropped" lines came from one model): a warning alone as
     /// "file: element: what", a kind met in several elements as "file: what, summed, in N
     /// elements (the first three, ...)". Kinds are the text with its numbers blanked; counts

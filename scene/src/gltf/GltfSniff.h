@@ -1,5 +1,5 @@
 #pragma once
-// What a file that is not a loadable glTF 2.0 file is, in a user's words (issue 42): tinygltf's
+// What a file that is not a loadable glTF 2.0 file is, in a user's words: tinygltf's
 // and the JSON parser's own messages quoted raw bytes ("last read: '\x89'") and named nothing a
 // user could act on ("\"asset\" object not found" for a glTF 1.0 file). These checks run before
 // tinygltf (the bytes' kind, the .glb header) and after it fails (the JSON, the asset).
