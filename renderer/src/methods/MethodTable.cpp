@@ -128,7 +128,7 @@ constexpr MethodOption kAutoPassRule{
     "How --jfa-passes auto chooses jfa-e's and flood-e's count: measured = the fewest that cover "
     "how far the occluders travel in a quarter-resolution flood of the frame, capped by "
     "geometric; geometric = the fewest that cover the widest penumbra any boundary seed's "
-    "occluder can cast (the rule before issue 30; 9-10 passes at 512^2 where 6 give the same "
+    "occluder can cast (an upper bound: 9-10 passes at 512^2 where 6 give the same "
     "picture)",
     0,
     0,

@@ -42,7 +42,8 @@ class EyeFloodEstimator; // renderer/soft/EyeFloodReach.h
 /// How `--jfa-passes auto` chooses JFA-E's (and flood-E's) count (--auto-passes).
 enum class EyeAutoPasses {
     Measured,  // how far a coarse flood's cells travel (EyeFloodReach.h), capped by Geometric
-    Geometric, // the widest penumbra any seed's occluder could cast (the rule before issue 30)
+    Geometric, // the widest penumbra any seed's occluder could cast (an upper bound; measured is
+               // tighter)
 };
 
 /// Switches and thresholds of JFA-E / flood-E (the pass count is PenumbraSettings::passes).
