@@ -264,20 +264,6 @@ void takeBack(const CaptureScript& script, const std::vector<const FrameRecord*>
         }
     }
 }
-// The script's camera: its own path, or "path": default (the walkthrough from the scene's
-// camera), auto (the auto frame, still) or orbit (circling it).
-std::variant<CameraView, CameraPath> scriptCamera(const CaptureScript& script, const Scene& scene,
-                                                  const SceneOptions& options, int w, int h) {
-    if (script.camera) return *script.camera;
-    if (script.cameraPath == "default")
-        return defaultWalkthrough(initialCamera(scene, options, w, h), scene.bounds);
-    SceneOptions framed = options;
-    framed.camera = "auto";
-    const CameraView start = initialCamera(scene, framed, w, h);
-    if (script.cameraPath == "auto") return start;
-    return orbitPath(start, scene.modelBounds);
-}
-
 // Every frame of the script at one resolution: appends one MethodRun per method to `results`,
 // takes back the frames an earlier run finished, and records every frame it renders in
 // `progress`. Returns the frames it rendered.
@@ -301,7 +287,8 @@ int captureSize(const CaptureSetup& c, const SizeRun& at, FrameRunner& runner,
                                        : std::min(at.budget, script.frames - firstFrame);
     const FramePlan plan{
         .scene = &c.scene,
-        .camera = scriptCamera(script, c.scene, c.options, w, h),
+        .camera = script.camera ? std::variant<CameraView, CameraPath>(*script.camera)
+                                : namedCamera(script.cameraPath, c.scene, c.options, w, h),
         .frames = script.frames,
         .first = firstFrame,
         .last = firstFrame + rendered - 1,

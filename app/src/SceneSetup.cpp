@@ -1,6 +1,7 @@
 // The scene, shaders, render settings and camera that a rendering subcommand's options ask for.
 #include <app/Common.h>
 
+#include <scene/CameraPath.h>
 #include <scene/Ground.h>
 #include <scene/Pose.h>
 #include <scene/SceneGenerator.h>
@@ -199,6 +200,18 @@ CameraView initialCamera(const Scene& scene, const SceneOptions& o, int width, i
         throw InputError(e.what());
     }
 }
+std::variant<CameraView, CameraPath> namedCamera(const std::string& name, const Scene& scene,
+                                                 const SceneOptions& o, int width, int height) {
+    if (name == "default")
+        return defaultWalkthrough(initialCamera(scene, o, width, height), scene.bounds);
+    SceneOptions framed = o;
+    framed.camera = "auto";
+    const CameraView start = initialCamera(scene, framed, width, height);
+    if (name == "auto") return start;
+    if (name == "orbit") return orbitPath(start, scene.modelBounds);
+    throw UsageError("camera path '" + name + "': expected default, auto or orbit");
+}
+
 std::string setupLine(const Scene& scene, const RenderSettings& s, int width, int height,
                       const Renderer* rendered) {
     const Light l = sceneLight(scene);

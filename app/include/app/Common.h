@@ -3,6 +3,7 @@
 
 #include <gpu/ShaderLibrary.h>
 #include <renderer/Renderer.h>
+#include <scene/CameraPath.h>
 #include <scene/GltfLoader.h>
 #include <scene/Scene.h>
 
@@ -18,6 +19,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 namespace fl::app {
@@ -129,6 +131,12 @@ inline constexpr std::uint32_t kDefaultSceneSeed = 1;
 /// The colour of region `id` in Voronoi pictures (voronoi, voronoi3d): a hash of the id in mid
 /// tones, so that black sites and red error cells stand out; negative ids as 0.
 std::array<std::uint8_t, 3> regionColour(std::int64_t id);
+
+/// The camera of a named path at width x height (capture scripts' "path"): "default", the
+/// walkthrough from the scene's camera (defaultWalkthrough); "auto", the auto frame, still; or
+/// "orbit", circling the auto frame (orbitPath). Throws UsageError for another name.
+std::variant<CameraView, CameraPath> namedCamera(const std::string& name, const Scene& scene,
+                                                 const SceneOptions& o, int width, int height);
 
 /// The one line every rendering command prints about what it used: the light (centre, disk
 /// radius, and that radius as a fraction of the model's, --light-size's unit), the shadow map
