@@ -51,7 +51,8 @@ int renderOverview(SceneOptions o, int width, int height, const std::filesystem:
     std::cout << "context: " << context->description() << "\n"
               << "scene: " << scene.source << " (" << scene.triangleCount()
               << " triangles), light radius " << *o.lightRadius << ", " << width << "x" << height
-              << ", every method of the table against the ground truth\n";
+              << ", every method of the table against the ground truth\n"
+              << setupLine(scene, makeRenderSettings(o), width, height) << "\n";
     std::vector<Result> results;
     for (const MethodDescriptor& m : methodTable()) {
         RenderSettings settings = makeRenderSettings(o);
