@@ -40,7 +40,7 @@ using glm::dvec2;
 using detail::Stopwatch;
 
 // Gives v's memory back (clear() keeps it): the CPU steps drop each array once no later step
-// reads it, which lowers the pipeline's peak (issue 31: peak bytes per point).
+// reads it, which lowers the pipeline's peak (peak bytes per point).
 template <class T>
 void release(std::vector<T>& v) {
     std::vector<T>().swap(v);

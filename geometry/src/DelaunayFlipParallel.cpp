@@ -1,4 +1,4 @@
-// Step C4 on several threads (issue 31). What C4 does at a million points (1M uniform, 256²,
+// Step C4 on several threads. What C4 does at a million points (1M uniform, 256²,
 // measured 2026-11-29): C3 inserts with Lawson flips, so C4 finds 7 failing edges among 3M and
 // makes 23 flips; its 200 ms are the 3M exact incircle tests, not the flips. So the threads
 // share the tests, which only read the mesh (no locks, no ownership), and the flips run on one

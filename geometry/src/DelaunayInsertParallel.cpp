@@ -1,4 +1,4 @@
-// Step C3 on several threads (issue 31): the sites to insert are cut into one strip per thread
+// Step C3 on several threads: the sites to insert are cut into one strip per thread
 // (quantiles of their coordinate along the wider axis, so the strips hold equal counts), and
 // every vertex of the mesh belongs to the strip its position falls in. Each thread runs the
 // incremental Delaunay insertion of DelaunayInsert.cpp on its own strip's sites, in their BRIO

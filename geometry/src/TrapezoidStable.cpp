@@ -1,4 +1,4 @@
-// The stability measures of the trapezoid fit (issue 30 item 3): quantised parameters, texel
+// The stability measures of the trapezoid fit: quantised parameters, texel
 // snapping and hysteresis. Why: the paper's fit follows the camera continuously, so its texels
 // slide over the scene and shadow edges shimmer; a map that changes in steps, or not at all
 // while the old one still serves, keeps its texels fixed on the scene between the steps.

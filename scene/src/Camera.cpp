@@ -48,7 +48,7 @@ CameraView makeCameraView(const Scene& scene, const CameraSpec& spec, float aspe
         const float fov = glm::radians(spec.yfovDegrees.value_or(kAutoViewFovDegrees));
         const glm::vec3 from = kAutoViewFrom;
         // A model on the ground Floodlight added is framed with its shadow, as tightly as they
-        // allow (a 5% border), not the whole ground it would be a speck on (issue 30 item 6); a
+        // allow (a 5% border), not the whole ground it would be a speck on; a
         // scene of its own is framed whole, as before.
         // In spec.pose, the geometry where it is drawn then (a skinned model at --time).
         const std::vector<glm::vec3> focus =

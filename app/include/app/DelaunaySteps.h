@@ -23,7 +23,7 @@ inline constexpr std::size_t kMaxPicturePoints = 20000;
 ///   flips for C4) while the GPU steps stay nearly constant in time; §6.5 (Figs. 6.13, 6.16)
 ///   finds the best size growing with the site count and switches from 2048^2 to 4096^2 at
 ///   ~600k sites, i.e. at ~7 texels per site on the smaller texture.
-/// - CPU: geom::kCpuDefaultTexture (issue 31): the G-steps cost ~N^2 on the CPU and a site
+/// - CPU: geom::kCpuDefaultTexture: the G-steps cost ~N^2 on the CPU and a site
 ///   that keeps its pixel saves C3 less than it costs the other steps, so the smallest side
 ///   wins for uniform and clustered points alike.
 ///

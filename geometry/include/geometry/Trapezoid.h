@@ -35,7 +35,7 @@
 // w > 0 on the hull, hence every blended image is a convex combination of two points in the
 // square and stays inside it. degenerate is true whenever t < 1; the matrix is always finite.
 //
-// Stability (issue 30 item 3)
+// Stability
 // The paper's fit is a continuous function of the camera, so its texels slide over the scene
 // whenever the camera moves and shadow edges shimmer. Three optional measures, all off (0) by
 // the paper's fit, make the map change in steps instead:

@@ -2,7 +2,7 @@
 // Steps G1-G6 of the thesis' Delaunay pipeline (ch. 6, §6.3.2) on the GPU through OpenGL 4.5
 // compute shaders (shaders/delaunay_*.glsl), producing exactly what the CPU backend
 // discreteDelaunay() (geometry/DiscreteDelaunay.h) produces, every stage equal byte for byte.
-// run() makes one upload and one read-back (issue 31): the host maps and snaps the sites (double
+// run() makes one upload and one read-back: the host maps and snaps the sites (double
 // precision, as snapSites) and uploads their pixels; no step reads anything back; one mapped
 // read-back of one result buffer brings the triangles, the keepers (S' and the missing sites)
 // and the cleaned texture (C1 walks its border):

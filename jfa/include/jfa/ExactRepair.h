@@ -1,5 +1,5 @@
 #pragma once
-// The exact repair behind `voronoi --exact` (issue 31 item 3): a flood's answer per texel is
+// The exact repair behind `voronoi --exact`: a flood's answer per texel is
 // corrected to a truly nearest site by a greedy walk on a graph of the sites, on the CPU here and
 // by a GL compute twin (GlExactRepair, jfa_gl/GlExactRepair.h) that does the same texel for texel.
 //

@@ -4,7 +4,7 @@
 // aliasing, the map's resolution). Per receiver point, N rays go to stratified points of the
 // disk; its visibility is the share of them that nothing blocks. Pure CPU, all cores.
 //
-// Where rays start (issue 41 item 5, as Blender Cycles does): each receiver is found on the
+// Where rays start (as Blender Cycles does): each receiver is found on the
 // triangle the eye's ray meets there (RayScene::surface), and its rays start on that triangle and
 // skip it (Cycles' self-intersection rule: intern/cycles/kernel/bvh/util.h,
 // intersection_skip_self_shadow) rather than starting an epsilon off it. A ray nearly parallel to

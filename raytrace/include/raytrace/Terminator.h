@@ -7,7 +7,7 @@
 // Terminator", Ray Tracing Gems II ch. 4 (2021); Cycles' "Geometry Offset", Arnold's
 // shadow_terminator_fix.
 //
-// Where (issue 41 item 5): only where the light grazes, as Blender Cycles applies its Geometry
+// Where: only where the light grazes, as Blender Cycles applies its Geometry
 // Offset (offsetAmount below), so that a coarse surface that faces the light keeps its flat
 // triangles' shadows; the full offset on every ray lifted a 68-triangle terrain's ray starts by
 // up to 0.43 units and moved the shadows of small objects on it.

@@ -1,5 +1,5 @@
 #pragma once
-// A visible shadow for any model (issue 15): most glTF files are one object with no ground, so
+// A visible shadow for any model: most glTF files are one object with no ground, so
 // its shadow falls on nothing. `--ground auto` (the default) adds a plain ground plane under a
 // scene that has no surface under it to receive the shadow; a scene with its own ground or
 // terrain is left as it is.
@@ -41,7 +41,7 @@ bool hasGround(const Scene& scene);
 /// std::invalid_argument for bounds that are empty or not finite (the loader refuses those).
 void addGround(Scene& scene);
 
-/// What the first view of a scene with an added ground frames (issue 30 item 6): the model's
+/// What the first view of a scene with an added ground frames: the model's
 /// vertices (every instance's but the ground's, at rest) and their shadows on the ground's plane,
 /// each cast from `light` (along its direction for a directional light) and kept on the ground's
 /// square; with the ground's four corners when a vertex is level with or above a point light

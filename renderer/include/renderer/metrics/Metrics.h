@@ -56,7 +56,7 @@ struct FrameMetrics {
                                                 const FloatImage& reference,
                                                 const FloatImage& receivers = {});
 
-/// Light through solid shadows and dark on lit surfaces (issue 41): receivers the ground truth
+/// Light through solid shadows and dark on lit surfaces: receivers the ground truth
 /// puts in its umbra (v <= kLeakUmbraAtMost) that a method lights by more than kLeakBy, and
 /// receivers it lights fully (v >= kLeakLitAtLeast) that a method darkens by more than kLeakBy.
 /// Wider margins than the classes above: a leak is a gross error, not noise at a class edge.

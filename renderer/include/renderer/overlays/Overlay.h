@@ -1,5 +1,5 @@
 #pragma once
-// Step 5 of a frame, with the HUD: the window's overlay modes (issue 7). Pictures of the frame's
+// Step 5 of a frame, with the HUD: the window's overlay modes. Pictures of the frame's
 // intermediate data (shadow map, seeds, penumbra map, flood passes, Voronoi diagram / distance
 // transform of the seeds, JFA vs standard flooding, the TSM trapezoid), a Voronoi playground and
 // the Delaunay visualiser. Each is drawn over the current framebuffer by OverlayRenderer::draw.

@@ -1,5 +1,5 @@
 #pragma once
-// JFA-E's automatic pass count from what the frame's flood needs (issue 30 item 2).
+// JFA-E's automatic pass count from what the frame's flood needs.
 // The geometric bound (maxSeedReach: the widest penumbra any seed's occluder could cast) cannot
 // see that nearer seeds win most of those pixels, so it asks for 9-10 passes where the flood's
 // cells travel under 64 pixels (docs/BENCHMARKS.md). Instead, phase 2's images are point-sampled
