@@ -6,11 +6,10 @@
 // Blur size: one filter for the whole map (VSM has no blocker search), --vsm-blur x R in world
 // units at the scene centre's light depth, converted to map texels there. R (the penumbra of an
 // occluder halfway to the light) is far wider than most penumbrae of a scene standing on its
-// ground, and a wide blur erases thin and contact shadows (light leaks through the bound): on
-// the default scene's first view (256², radius 1.5, 64-sample ground truth) RMSE was 0.099,
-// 0.101, 0.115, 0.145 and 0.212 for 0.05, 0.1, 0.15, 0.25 and 1 (bleed 0.3), and 0.101 / 0.113
-// for bleed 0.15 / 0.5 at 0.1; the defaults are 0.1 and 0.2. With TSM the blur runs over warped
-// texels, so its world width varies across the map.
+// ground, and a wide blur erases thin and contact shadows (light leaks through the bound), so
+// the defaults (blur 0.1, bleed 0.2) are small: chosen by measurement, the table of settings in
+// docs/BENCHMARKS.md, "VSM (the method added through the table)". With TSM the blur runs over
+// warped texels, so its world width varies across the map.
 //
 // The CPU reference of all three phases (moments, blur, lookup: parts of frame step 3) is in
 // tests/vsm_gltest.cpp.
