@@ -67,10 +67,10 @@ std::string whereIs(const std::vector<unsigned char>& b, std::size_t begin, std:
 std::string sniffProblem(const std::vector<unsigned char>& bytes, std::size_t size) {
     if (size == 0) return "empty file (0 bytes); a glTF 2.0 file (.gltf or .glb) is needed";
     for (const Signature& s : kSignatures)
-        if (startsWith(bytes, size, s.bytes)) return cat("not a glTF file (it starts like ", s.what, ")");
+        if (startsWith(bytes, size, s.bytes))
+            return cat("not a glTF file (it starts like ", s.what, ")");
     if (startsWith(bytes, size, "glTF")) {
-        if (size < 12)
-            return cat("truncated: a .glb header is 12 bytes, the file has ", size);
+        if (size < 12) return cat("truncated: a .glb header is 12 bytes, the file has ", size);
         if (const std::uint32_t version = le32(bytes, 4); version != 2)
             return cat("glTF binary version ", version,
                        " is not supported (its header says so); glTF 2.0 is needed");
@@ -83,8 +83,9 @@ std::string sniffProblem(const std::vector<unsigned char>& bytes, std::size_t si
         return {};
     }
     // Not a .glb: a .gltf is a JSON object, so its first byte past white space is '{'.
-    const auto first = std::find_if(bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(size),
-                                    [](unsigned char c) { return !std::isspace(c); });
+    const auto first =
+        std::find_if(bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(size),
+                     [](unsigned char c) { return !std::isspace(c); });
     if (first == bytes.begin() + static_cast<std::ptrdiff_t>(size))
         return "only white space; a glTF 2.0 file (.gltf or .glb) is needed";
     if (*first == '{') return {};
@@ -134,8 +135,7 @@ std::string versionProblem(const std::string& version) {
     std::string shown;
     for (char c : version.substr(0, 16))
         shown += std::isprint(static_cast<unsigned char>(c)) ? c : '?';
-    return cat("glTF ", shown, " is not supported (asset.version ", shown,
-               "); glTF 2.0 is needed");
+    return cat("glTF ", shown, " is not supported (asset.version ", shown, "); glTF 2.0 is needed");
 }
 
 } // namespace fl::gltf
