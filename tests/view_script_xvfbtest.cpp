@@ -214,14 +214,19 @@ TEST(ViewScript, SwitchingEverythingLeavesMemoryAndGlObjectsFlat) {
 // Issue 42: at 1024x768 the HUD read "65.9 ms/frame, 0.0 FPS" (the rate was counted over half a
 // second, and zero until then; the time was the GL frame's). Both come from the wall clock now,
 // from the first frame on: the rate after one frame and after twenty agrees with its frame time.
+// The same run presses C (the cameras) and then Z: Z still makes the light smaller (x 0.8), C
+// leaves it as it was (C's case was once put in Z's place in the key switch).
 TEST(ViewScript, TheHudsRateAgreesWithItsFrameTime) {
     const ViewRun r = runView(outputDir("view_script") / "rate",
-                              "wait 1\nstats first\nwait 20\nstats later\nquit\n");
+                              "wait 1\nstats first\nkey C\nkey Z\nwait 20\nstats later\nquit\n");
     ASSERT_EQ(r.code, 0) << r.output;
-    const std::regex line(R"(stats (first|later): .*HUD ([0-9.]+) ms/frame, ([0-9.]+) FPS)");
+    const std::regex line(
+        R"(stats (first|later): .*HUD ([0-9.]+) ms/frame, ([0-9.]+) FPS, light radius ([0-9.e+-]+))");
     int seen = 0;
+    double radius[2] = {0.0, 0.0};
     for (auto it = std::sregex_iterator(r.output.begin(), r.output.end(), line);
          it != std::sregex_iterator(); ++it, ++seen) {
+        radius[(*it)[1] == "later"] = std::stod((*it)[4]);
         const double ms = std::stod((*it)[2]), fps = std::stod((*it)[3]);
         EXPECT_GT(fps, 0.0) << (*it)[0];
         // Both are printed to 0.1: some values within 0.05 of each multiply to 1000 ms.
@@ -229,6 +234,7 @@ TEST(ViewScript, TheHudsRateAgreesWithItsFrameTime) {
         EXPECT_GE((ms + 0.05) * (fps + 0.05), 1000.0) << (*it)[0];
     }
     EXPECT_EQ(seen, 2) << r.output;
+    EXPECT_NEAR(radius[1], 0.8 * radius[0], 1e-5 * radius[0]) << r.output;
 }
 
 TEST(ViewScript, SurvivesMinimiseResizeAndABadDrop) {

@@ -198,7 +198,8 @@ void Viewer::applyScriptEvent(const ScriptEvent& e) {
         const gl::ObjectCounts live = gl::countLiveObjects();
         std::cout << "stats" << (e.text.empty() ? "" : " " + e.text) << ": frame " << tick_
                   << ", resident " << residentKiB() << " KiB, GL objects " << live.total() << " ("
-                  << live.text() << "), HUD " << rateText() << "\n"
+                  << live.text() << "), HUD " << rateText() << ", light radius "
+                  << renderer_->light().radius << "\n"
                   << std::flush;
         break;
     }

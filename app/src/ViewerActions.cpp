@@ -170,10 +170,10 @@ bool Viewer::actOnView(Action a) {
     case Action::LightDown:
         moveLight(0.0f, a == Action::LightUp ? kLightStep : -kLightStep);
         return true;
-    case Action::LightSmaller:
     case Action::NextCamera:
         nextCamera();
         return true;
+    case Action::LightSmaller:
     case Action::LightLarger:
         scaleLight(a == Action::LightLarger ? 1.25f : 0.8f);
         return true;
