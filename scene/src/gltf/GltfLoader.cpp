@@ -47,6 +47,7 @@
 #include <cmath>
 #include <map>
 #include <new>
+#include <set>
 
 namespace fl {
 namespace gltf {
@@ -60,16 +61,13 @@ void Context::warn(std::string_view element, std::string_view what) const {
 }
 
 void Context::flushWarnings() const {
-    struct Kind {
-        std::string key;                  // the text with its numbers blanked
-        std::vector<std::size_t> members; // indices into warnings_
-    };
     // The same warning twice (a rule checked by two steps) is one.
-    std::vector<std::pair<std::string, std::string>> unique;
-    for (auto& w : warnings_)
-        if (std::find(unique.begin(), unique.end(), w) == unique.end()) unique.push_back(w);
-    warnings_ = std::move(unique);
-    std::vector<Kind> kinds;
+    std::set<std::pair<std::string, std::string>> seen;
+    std::erase_if(warnings_, [&](const auto& w) { return !seen.insert(w).second; });
+    // Kinds in the order each first came, each its warnings' indices; a kind's key is the text
+    // with its numbers blanked.
+    std::vector<std::vector<std::size_t>> kinds;
+    std::map<std::string, std::size_t> kindOf; // key -> index into kinds
     for (std::size_t i = 0; i < warnings_.size(); ++i) {
         std::string key;
         for (char c : warnings_[i].second)
@@ -77,14 +75,13 @@ void Context::flushWarnings() const {
                 key += c;
             else if (key.empty() || key.back() != '#')
                 key += '#';
-        auto it =
-            std::find_if(kinds.begin(), kinds.end(), [&](const Kind& k) { return k.key == key; });
-        if (it == kinds.end()) it = kinds.insert(kinds.end(), Kind{key, {}});
-        it->members.push_back(i);
+        const auto [at, added] = kindOf.emplace(key, kinds.size());
+        if (added) kinds.emplace_back();
+        kinds[at->second].push_back(i);
     }
-    for (const Kind& k : kinds) {
-        const auto& [element, what] = warnings_[k.members.front()];
-        if (k.members.size() == 1) {
+    for (const std::vector<std::size_t>& members : kinds) {
+        const auto& [element, what] = warnings_[members.front()];
+        if (members.size() == 1) {
             options_.warn(cat(fileName_, ": ", element, ": ", what));
             continue;
         }
@@ -92,16 +89,16 @@ void Context::flushWarnings() const {
         std::string text = what;
         if (!what.empty() && std::isdigit(static_cast<unsigned char>(what.front()))) {
             unsigned long long total = 0;
-            for (std::size_t i : k.members) total += std::stoull(warnings_[i].second);
+            for (std::size_t i : members) total += std::stoull(warnings_[i].second);
             text = cat(total, what.substr(what.find_first_not_of("0123456789")));
         }
         std::string where;
         constexpr std::size_t kNamed = 3;
-        for (std::size_t n = 0; n < std::min(kNamed, k.members.size()); ++n)
-            where += (n ? ", " : "") + warnings_[k.members[n]].first;
-        if (k.members.size() > kNamed) where += cat(", and ", k.members.size() - kNamed, " more");
+        for (std::size_t n = 0; n < std::min(kNamed, members.size()); ++n)
+            where += (n ? ", " : "") + warnings_[members[n]].first;
+        if (members.size() > kNamed) where += cat(", and ", members.size() - kNamed, " more");
         options_.warn(
-            cat(fileName_, ": ", text, " in ", k.members.size(), " elements (", where, ")"));
+            cat(fileName_, ": ", text, " in ", members.size(), " elements (", where, ")"));
     }
     warnings_.clear();
 }
