@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <set>
@@ -57,16 +58,26 @@ void checkKeys(const Json& obj, const std::string& field, const std::set<std::st
         if (!known.count(key)) fail(field + "." + key, "unknown field");
 }
 
+// kCameraPathNames as the messages quote them: "default", "auto", "orbit".
+std::string pathNames() {
+    std::string out;
+    for (std::string_view n : kCameraPathNames)
+        out += (out.empty() ? "\"" : ", \"") + std::string(n) + "\"";
+    return out;
+}
+
 void parseCamera(const Json& j, const std::filesystem::path& dir, CaptureScript& s) {
     checkKeys(j, "camera", {"frames", "path", "file", "fov", "interpolation", "keys"});
     if (!j.contains("frames")) fail("camera.frames", "missing (the number of frames)");
     s.frames = readInt(j["frames"], "camera.frames", 1, kMaxCaptureFrames);
     const bool hasKeys = j.contains("keys"), hasFile = j.contains("file");
     if (j.contains("path")) {
-        if (j["path"] != "default" && j["path"] != "auto" && j["path"] != "orbit")
-            fail("camera.path", "expected \"default\", \"auto\" or \"orbit\"");
+        const std::string path = j["path"].is_string() ? j["path"].get<std::string>() : "";
+        if (std::find(kCameraPathNames.begin(), kCameraPathNames.end(), path) ==
+            kCameraPathNames.end())
+            fail("camera.path", "expected one of " + pathNames());
         if (hasKeys || hasFile) fail("camera.path", "give one of path, file and keys");
-        s.cameraPath = j["path"].get<std::string>();
+        s.cameraPath = path;
         return;
     }
     if (hasFile) {
@@ -79,8 +90,7 @@ void parseCamera(const Json& j, const std::filesystem::path& dir, CaptureScript&
         }
         return;
     }
-    if (!hasKeys)
-        fail("camera", "missing \"path\" (\"default\", \"auto\", \"orbit\"), \"file\" or \"keys\"");
+    if (!hasKeys) fail("camera", "missing \"path\" (" + pathNames() + "), \"file\" or \"keys\"");
     try {
         s.camera = parseCameraPath(j.dump());
     } catch (const std::runtime_error& e) {

@@ -36,13 +36,19 @@
 #include <renderer/soft/ReferenceShadow.h>
 #include <scene/CameraPath.h>
 
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace fl::app {
+
+/// The named camera paths of "camera": {"path": NAME}: the walkthrough from the scene's camera,
+/// the auto frame held still, and a circle around it (namedCamera in Common.h makes them).
+inline constexpr std::array<std::string_view, 3> kCameraPathNames = {"default", "auto", "orbit"};
 
 /// A malformed or incomplete script: the message names the file and the field.
 class CaptureScriptError : public std::runtime_error {
@@ -65,8 +71,8 @@ struct CaptureScript {
     std::filesystem::path scene; // empty = the default scene
     int frames = 0;
     std::optional<CameraPath> camera; // nullopt: "path" (cameraPath) says
-    std::string cameraPath =
-        "default"; // default (walkthrough from the scene camera) | auto | orbit
+    /// "path": one of kCameraPathNames (namedCamera, Common.h).
+    std::string cameraPath = "default";
     std::optional<float> lightRadius;
     std::optional<float> lightSize;   // "light.size": --light-size
     std::vector<glm::vec3> lightKeys; // empty: the scene's light stays where it is
