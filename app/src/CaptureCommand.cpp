@@ -264,6 +264,7 @@ void takeBack(const CaptureScript& script, const std::vector<const FrameRecord*>
         }
     }
 }
+
 // Every frame of the script at one resolution: appends one MethodRun per method to `results`,
 // takes back the frames an earlier run finished, and records every frame it renders in
 // `progress`. Returns the frames it rendered.

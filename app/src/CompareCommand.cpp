@@ -221,9 +221,9 @@ int runCompare(const CompareRequest& r) {
     RenderSettings settings = makeRenderSettings(r.scene);
     settings.method = method;
     checkMethodOptions(settings, r.width, r.height);
+    const std::string setup = setupLine(scene, settings, r.width, r.height); // the method's
     const int passes = requestedPasses(methodOrThrow(method), settings.options,
                                        settings.shadow.size, r.width, r.height);
-    const std::string passesText = passes == kAutoPasses ? "auto" : std::to_string(passes);
     Renderer methodRenderer(shaders, scene, settings);
     settings.method = reference;
     Renderer referenceRenderer(shaders, scene, settings);
@@ -232,9 +232,8 @@ int runCompare(const CompareRequest& r) {
     std::cout << "context: " << context->description() << "\n"
               << "scene: " << scene.source << " (" << scene.triangleCount() << " triangles)\n"
               << method << " vs " << reference << ", " << r.frames << " frames at " << r.width
-              << "x" << r.height << ", shadow map " << providerName(settings.shadow.provider) << " "
-              << settings.shadow.size << "^2, " << passesText << " passes\n"
-              << setupLine(scene, settings, r.width, r.height) << "\n";
+              << "x" << r.height << "\n"
+              << setup << "\n";
 
     // Lane labels are also the CSV column and JSON key prefixes ("method_flood_ms").
     std::vector<Lane> lanes = {{"method", &methodRenderer, {}},

@@ -4,7 +4,6 @@
 #include <scene/CameraPath.h>
 #include <scene/Ground.h>
 #include <scene/Pose.h>
-#include <scene/SceneGenerator.h>
 
 #include <base/Text.h>
 
@@ -200,6 +199,7 @@ CameraView initialCamera(const Scene& scene, const SceneOptions& o, int width, i
         throw InputError(e.what());
     }
 }
+
 std::variant<CameraView, CameraPath> namedCamera(const std::string& name, const Scene& scene,
                                                  const SceneOptions& o, int width, int height) {
     if (name == "default")
@@ -209,7 +209,8 @@ std::variant<CameraView, CameraPath> namedCamera(const std::string& name, const 
     const CameraView start = initialCamera(scene, framed, width, height);
     if (name == "auto") return start;
     if (name == "orbit") return orbitPath(start, scene.modelBounds);
-    throw UsageError("camera path '" + name + "': expected default, auto or orbit");
+    // Scripts are checked against kCameraPathNames when read; a new name needs its camera here.
+    throw UsageError("camera path '" + name + "': no camera for it (kCameraPathNames)");
 }
 
 std::string setupLine(const Scene& scene, const RenderSettings& s, int width, int height,

@@ -72,9 +72,6 @@ void addMethodOptions(CLI::App& cmd, SceneOptions& o);
 /// Registers --width/--height with the accepted range.
 void addSizeOptions(CLI::App& cmd, int& width, int& height);
 
-// Numbers, checked once here for every command with fl::numberProblem (base/Numbers.h), the
-// same rule the method options and the scripts use: finite, in range, whole for integers (NaN
-// and inf passed CLI11's Range, and "abc" was called "not in range"). Usage errors, exit 2.
 /// For a command line CLI11 refused with arguments left over (ExtrasError): a line per unknown
 /// flag naming it and, when one is close (a typo: --lightradius -> --light-radius), the nearest
 /// flag `cmd` (the subcommand that ran) takes; empty when no leftover is a flag.
@@ -83,6 +80,10 @@ std::string suggestFlags(const CLI::App& cmd);
 /// "in [lo, hi]", ">= lo", "<= hi", or `unbounded` when neither bound is finite: a range in
 /// --help's words.
 std::string rangeText(double lo, double hi, const char* unbounded);
+
+// Numbers, checked once here for every command with fl::numberProblem (base/Numbers.h), the
+// same rule the method options and the scripts use: finite, in range, whole for integers (NaN
+// and inf passed CLI11's Range, and "abc" was called "not in range"). Usage errors, exit 2.
 /// A validator for a finite number in [lo, hi] (either may be kUnbounded); vector options check
 /// each element.
 CLI::Validator number(double lo = -kUnbounded, double hi = kUnbounded);

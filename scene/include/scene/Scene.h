@@ -138,7 +138,8 @@ struct Camera {
 /// where the scene does not give one (no light, or a light without extras.radius): what
 /// --light-size means, and its default. 0.02 drew penumbrae one or two pixels wide on an
 /// auto-framed model at 512^2 (hard-looking "soft" shadows); at 0.08 the default view's
-/// penumbra is several pixels wide on the ground (tests/default_light_gltest.cpp measures it),
+/// penumbra is several pixels wide on the ground (FirstViewTest in tests/first_view_gltest.cpp
+/// measures it),
 /// and the real-model benchmark (bench/real_models.sh) scores every method at this size.
 inline constexpr float kDefaultLightSize = 0.08f;
 
