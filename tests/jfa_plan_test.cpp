@@ -41,16 +41,11 @@ std::string invalidArgumentMessage(F f) {
 // floor(log2 n): the one rule the penumbra map's and the eye's pass limits and the window read;
 // the loops it replaced (ViewerActions, PenumbraMap, EyeSoftShadow) gave these values.
 TEST(JfaStepRule, MaxPassesIsFloorLog2) {
-    EXPECT_EQ(jfaMaxPasses(0), 0);
-    EXPECT_EQ(jfaMaxPasses(1), 0);
-    EXPECT_EQ(jfaMaxPasses(2), 1);
-    EXPECT_EQ(jfaMaxPasses(3), 1);
-    EXPECT_EQ(jfaMaxPasses(512), 9);
-    EXPECT_EQ(jfaMaxPasses(1023), 9);
-    EXPECT_EQ(jfaMaxPasses(1024), 10);
-    EXPECT_EQ(jfaMaxPasses(8192), 13);
-    EXPECT_EQ(jfaMaxPasses(1 << 30), 30);
-    EXPECT_EQ(jfaMaxPasses(2147483647), 30); // no overflow at the top of int
+    // n, floor(log2 n) (0 below 2), up to the top of int without overflow.
+    const std::pair<int, int> cases[] = {{0, 0},        {1, 0},          {2, 1},     {3, 1},
+                                         {512, 9},      {1023, 9},       {1024, 10}, {8192, 13},
+                                         {1 << 30, 30}, {2147483647, 30}};
+    for (const auto& [n, passes] : cases) EXPECT_EQ(jfaMaxPasses(n), passes) << n;
 }
 
 TEST(JfaStepRule, FirstStepIsLargestPowerOfTwoBelowExtent) {
