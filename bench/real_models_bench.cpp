@@ -11,12 +11,14 @@
 
 #include <renderer/Renderer.h>
 #include <renderer/context/EglContext.h>
+#include <renderer/metrics/BiasArtifacts.h>
 #include <renderer/metrics/Metrics.h>
 #include <renderer/metrics/ShadowStats.h>
 #include <renderer/metrics/SoftStats.h>
 #include <renderer/passes/HudPass.h>
 #include <renderer/run/Capture.h>
 #include <renderer/run/FrameRunner.h>
+#include <renderer/soft/ShadowRayInputs.h>
 #include <scene/Camera.h>
 #include <scene/GltfLoader.h>
 #include <scene/Ground.h>
@@ -29,6 +31,7 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <functional>
@@ -67,7 +70,16 @@ struct Score {
     fl::ShadowLeaks leaks;
     double medianMs = 0.0, minMs = 0.0, xHard = NAN;
     std::size_t frames = 0;
+    /// Where the squared error lies (ErrorPart): each part's root of its pixels' squared error
+    /// over all receivers, so the parts' squares add up to the RMSE's.
+    std::array<double, 3> parts{};
 };
+
+// The parts of a frame an error can come from: near a contact (within kContactReach pixels of
+// one, where the map's bias meets the rays' exact contact), on a receiver whose triangle faces
+// away from the light's centre (a body's own terminator: its smooth normal faces the light, its
+// plane does not), and the rest (cast shadows and penumbrae on surfaces facing the light).
+enum ErrorPart { kNearContact, kBackFacing, kElsewhere };
 
 struct ModelResult {
     std::vector<Score> scores; // one per column
@@ -269,6 +281,43 @@ fl::ByteImage gridPicture(const std::vector<MethodEntry>& columns,
     return fl::tileGrid(tiles, 3);
 }
 
+// Each receiver's ErrorPart, from the truth's surfaces (row 0 at the top, as readFrame gives).
+std::vector<ErrorPart> errorParts(const fl::BiasMasks& masks) {
+    const int w = masks.contact.width, h = masks.contact.height;
+    std::vector<ErrorPart> part(static_cast<std::size_t>(w) * h, kElsewhere);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const std::size_t i = static_cast<std::size_t>(y) * w + x;
+            bool contact = false;
+            for (int dy = -fl::kContactReach; dy <= fl::kContactReach && !contact; ++dy)
+                for (int dx = -fl::kContactReach; dx <= fl::kContactReach && !contact; ++dx) {
+                    const int qx = x + dx, qy = y + dy;
+                    contact = qx >= 0 && qy >= 0 && qx < w && qy < h &&
+                              masks.contact.data[static_cast<std::size_t>(qy) * w + qx] > 0.5f;
+                }
+            if (contact)
+                part[i] = kNearContact;
+            else if (masks.facingLight.data[i] < 0.5f)
+                part[i] = kBackFacing;
+        }
+    return part;
+}
+
+std::array<double, 3> errorByPart(const fl::FloatImage& method, const fl::FloatImage& truth,
+                                  const fl::FloatImage& receivers,
+                                  const std::vector<ErrorPart>& part) {
+    std::array<double, 3> sum{};
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < part.size(); ++i) {
+        if (!fl::isReceiver(receivers, i)) continue;
+        const double d = double(method.data[i]) - double(truth.data[i]);
+        sum[part[i]] += d * d;
+        ++n;
+    }
+    for (double& v : sum) v = n ? std::sqrt(v / double(n)) : 0.0;
+    return sum;
+}
+
 Score scoreOf(const fl::FrameImages& frame, const fl::FrameImages& truth, const fl::Lane& lane) {
     Score s;
     s.error = fl::compareWithReference(frame.visibility, truth.visibility, truth.receivers);
@@ -301,6 +350,8 @@ ModelResult runModel(const Options& o, const Model& model, const std::vector<Met
     timeLanes(o, model, cam, methods, truths);
 
     const fl::FrameImages truth = fl::readFrame(truthRenderer);
+    const std::vector<ErrorPart> parts = errorParts(fl::biasMasks(
+        fl::surfaceGeometry(truthRenderer.surfaces(), cam), truthRenderer.disk().center));
     std::vector<fl::FrameImages> frames;
     ModelResult r;
     std::size_t m = 0, t = 0;
@@ -308,6 +359,8 @@ ModelResult runModel(const Options& o, const Model& model, const std::vector<Met
         frames.push_back(fl::readFrame(*renderers[c]));
         const fl::Lane& lane = columns[c].method->truth.empty() ? methods[m++] : truths[t++];
         r.scores.push_back(scoreOf(frames.back(), truth, lane));
+        r.scores.back().parts =
+            errorByPart(frames.back().visibility, truth.visibility, truth.receivers, parts);
     }
     r.truthMs = truths.back().times.medianFrameMs();
     for (std::size_t c = 0; c < columns.size(); ++c)
@@ -327,7 +380,7 @@ std::string csvOf(const std::vector<Model>& models, const std::vector<ModelResul
                       "light_radius", "label",      "method",    "receivers",     "penumbra_pixels",
                       "umbra_pixels", "lit_pixels", "rmse",      "penumbra_rmse", "leak",
                       "dark",         "median_ms",  "min_ms",    "x_hard",        "frames",
-                      "raytrace_ms"});
+                      "raytrace_ms",  "rmse_near_contact", "rmse_back_facing", "rmse_elsewhere"});
     for (std::size_t i = 0; i < models.size(); ++i)
         for (std::size_t c = 0; c < columns.size(); ++c) {
             const Model& m = models[i];
@@ -341,7 +394,8 @@ std::string csvOf(const std::vector<Model>& models, const std::vector<ModelResul
                 csv << s.xHard;
             else
                 csv.blank();
-            csv << s.frames << results[i].truthMs;
+            csv << s.frames << results[i].truthMs << s.parts[kNearContact] << s.parts[kBackFacing]
+                << s.parts[kElsewhere];
             csv.endRow();
         }
     return csv.text();
@@ -383,6 +437,15 @@ std::string markdownOf(const std::vector<Model>& models, const std::vector<Model
                          [](const Score& s) {
                              return fl::fixed(s.error.rmsePenumbra, 4) + " / " +
                                     percent(s.leaks.dark) + " / " + fl::fixed(s.medianMs, 1);
+                         })
+        << "\nWhere the error lies: RMSE parts near a contact / on back-facing triangles / "
+           "elsewhere (each the root of its pixels' squared error over all receivers: the "
+           "squares add up to the RMSE's square):\n\n"
+        << markdownTable(models, results, columns,
+                         [](const Score& s) {
+                             return fl::fixed(s.parts[kNearContact], 4) + " / " +
+                                    fl::fixed(s.parts[kBackFacing], 4) + " / " +
+                                    fl::fixed(s.parts[kElsewhere], 4);
                          })
         << "\n| model | file | triangles | ground added | bounding radius | raytrace ms |\n"
         << "|---|---|---|---|---|---|\n";
