@@ -197,7 +197,9 @@ struct ReferenceSetup {
     explicit ReferenceSetup(int size) : surfaces(shaders, gpu, b, size) {}
     [[nodiscard]] ReferenceShadowPass::Inputs inputs(const ReferenceSettings& rs) const {
         const SurfacesPass::Outputs o = surfaces.pass.outputs();
-        return {gpu, surfaces.positions(), b.scene.bounds, b.disk, ss, rs, o.lift, o.normals};
+        return {
+            gpu,      surfaces.positions(), b.scene.bounds, b.scene.bounds, b.disk, ss, rs, o.lift,
+            o.normals};
     }
     const BoxScene b = boxScene();
     const gl::ShaderLibrary& shaders = fl::test::testShaders();

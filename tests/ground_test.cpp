@@ -10,8 +10,13 @@
 #include <scene/Ground.h>
 #include <scene/SceneGenerator.h>
 
+#include <geometry/Framing.h>
+
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
 
 namespace fl {
 namespace {
@@ -209,6 +214,85 @@ TEST(Ground, TheModelAndItsShadowOnTheAddedGround) {
     b = shadowFrame(box, light);
     EXPECT_EQ(b.min, box.bounds.min);
     EXPECT_EQ(b.max, box.bounds.max);
+}
+
+// Whether the segment from a to b meets box `b` (slab test).
+bool segmentMeetsBox(glm::vec3 a, glm::vec3 b, const geom::Aabb& box) {
+    float t0 = 0.0f, t1 = 1.0f;
+    for (int k = 0; k < 3; ++k) {
+        const float d = b[k] - a[k];
+        if (std::abs(d) < 1e-12f) {
+            if (a[k] < box.min[k] || a[k] > box.max[k]) return false;
+            continue;
+        }
+        float u = (box.min[k] - a[k]) / d, v = (box.max[k] - a[k]) / d;
+        if (u > v) std::swap(u, v);
+        t0 = std::max(t0, u);
+        t1 = std::min(t1, v);
+        if (t0 > t1) return false;
+    }
+    return true;
+}
+
+// Named after what the real-model benchmark found: on a model standing on the ground Floodlight
+// adds, the light's frustum was fitted to the whole square of ground, and the model got a
+// third of the map's width. Fitted to what casts shadows (the model), widened by the disk's
+// penumbrae, it must (1) give the model most of the map, (2) still hold every ground point the
+// model can shadow from any point of the disk, and (3) hold the ground in depth.
+TEST(Ground, TheLightsFrustumSpendsTheMapOnTheModel) {
+    Scene s;
+    addBox(s, {0, 0, 0}, {1, 2, 1});
+    ASSERT_TRUE(applyGround(s, GroundMode::Auto));
+    Light light = sceneLight(s);
+    light.radius = 0.3f; // large, so the penumbra margin matters
+    const geom::Aabb casters = shadowCasterBounds(s, light, s.bounds, s.modelBounds);
+    EXPECT_EQ(casters.min, s.modelBounds.min);
+    EXPECT_EQ(casters.max, s.modelBounds.max);
+    const glm::mat4 fitted = lightVolume(s, light).viewProj();
+    const glm::mat4 whole = lightVolume(s.bounds, light).viewProj();
+    // (1) The model's width on the map: its corners' NDC extent, both fits.
+    const auto extent = [&](const glm::mat4& m) {
+        glm::vec2 lo(1e9f), hi(-1e9f);
+        for (int i = 0; i < 8; ++i) {
+            const glm::vec3 c{(i & 1) ? casters.max.x : casters.min.x,
+                              (i & 2) ? casters.max.y : casters.min.y,
+                              (i & 4) ? casters.max.z : casters.min.z};
+            const glm::vec4 q = m * glm::vec4(c, 1.0f);
+            lo = glm::min(lo, glm::vec2(q) / q.w);
+            hi = glm::max(hi, glm::vec2(q) / q.w);
+        }
+        return std::max(hi.x - lo.x, hi.y - lo.y) / 2.0f;
+    };
+    EXPECT_GT(extent(fitted), 0.6f); // 0.71: the cone holds the box at both ends and the margin
+    EXPECT_GT(extent(fitted), 1.5f * extent(whole)) << "the old fit: " << extent(whole);
+    // (2) and (3): every ground point that some point of the disk sees through the model's box
+    // lies inside the frustum, and every ground point lies within its depth range.
+    const DiskLight disk = makeDiskLight(light, s.bounds);
+    const float y = s.bounds.min.y;
+    const glm::vec3 u = geom::stableUp(disk.normal),
+                    side = glm::normalize(glm::cross(disk.normal, u));
+    const glm::vec3 up = glm::cross(side, disk.normal);
+    int shadowed = 0;
+    for (int i = 0; i <= 80; ++i)
+        for (int j = 0; j <= 80; ++j) {
+            const glm::vec3 p{glm::mix(s.bounds.min.x, s.bounds.max.x, i / 80.0f), y,
+                              glm::mix(s.bounds.min.z, s.bounds.max.z, j / 80.0f)};
+            const glm::vec4 q = fitted * glm::vec4(p, 1.0f);
+            EXPECT_TRUE(q.w > 0.0f && std::abs(q.z) <= q.w) << "ground point out of depth range";
+            bool canBeShadowed = false;
+            for (int k = 0; k < 33 && !canBeShadowed; ++k) {
+                const float a = 6.2831853f * k / 32.0f;
+                const glm::vec3 onDisk =
+                    k == 32 ? disk.center
+                            : disk.center + disk.radius * (std::cos(a) * side + std::sin(a) * up);
+                canBeShadowed = segmentMeetsBox(p, onDisk, casters);
+            }
+            if (!canBeShadowed) continue;
+            ++shadowed;
+            EXPECT_TRUE(std::abs(q.x) <= q.w && std::abs(q.y) <= q.w)
+                << "a ground point the model shadows lies outside the map: " << p.x << ", " << p.z;
+        }
+    EXPECT_GT(shadowed, 100);
 }
 
 } // namespace

@@ -32,11 +32,15 @@ ViewVolume fitDirectionalLight(const Aabb& bounds, glm::vec3 dir) {
 
 namespace {
 
-// The perspective volume from `position` along unit `dir` containing every corner of `bounds`
-// in front of it; `behind` says whether a corner lay behind the light.
-ViewVolume fitAlong(const Aabb& bounds, glm::vec3 position, glm::vec3 dir, float maxFov,
-                    bool& behind) {
-    const float r = std::max(bounds.radius(), 1e-4f);
+// The perspective volume from `position` along unit `dir` whose square frustum holds every
+// corner of `casters` in front of it, widened by the angle a disk of radius `lightRadius` around
+// `position` subtends from the nearest of them (its penumbrae reach past the cone from the
+// centre by at most that angle), and whose depth range holds `scene` too (receivers behind the
+// casters must lie inside the map to be looked up); `behind` says whether a caster corner lay
+// behind the light.
+ViewVolume fitAlong(const Aabb& casters, const Aabb& scene, glm::vec3 position, glm::vec3 dir,
+                    float maxFov, float lightRadius, bool& behind) {
+    const float r = std::max(scene.radius(), 1e-4f);
     ViewVolume v;
     v.view = glm::lookAt(position, position + dir, stableUp(dir));
     // Largest tangent over the corners in front of the light; corners behind it cannot be
@@ -45,11 +49,12 @@ ViewVolume fitAlong(const Aabb& bounds, glm::vec3 position, glm::vec3 dir, float
     float zmin = std::numeric_limits<float>::max();
     float zmax = 0.0f;
     behind = false;
+    const auto corner = [](const Aabb& b, int i) {
+        return glm::vec3{(i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y,
+                         (i & 4) ? b.max.z : b.min.z};
+    };
     for (int i = 0; i < 8; ++i) {
-        const glm::vec3 corner{(i & 1) ? bounds.max.x : bounds.min.x,
-                               (i & 2) ? bounds.max.y : bounds.min.y,
-                               (i & 4) ? bounds.max.z : bounds.min.z};
-        const glm::vec3 p = glm::vec3(v.view * glm::vec4(corner, 1.0f));
+        const glm::vec3 p = glm::vec3(v.view * glm::vec4(corner(casters, i), 1.0f));
         const float depth = -p.z;
         zmax = std::max(zmax, depth);
         if (depth <= 1e-6f * r) {
@@ -59,6 +64,10 @@ ViewVolume fitAlong(const Aabb& bounds, glm::vec3 position, glm::vec3 dir, float
         zmin = std::min(zmin, depth);
         maxTan = std::max({maxTan, std::abs(p.x) / depth, std::abs(p.y) / depth});
     }
+    for (int i = 0; i < 8; ++i)
+        zmax = std::max(zmax, -(v.view * glm::vec4(corner(scene, i), 1.0f)).z);
+    if (!behind && lightRadius > 0.0f)
+        maxTan = std::tan(std::atan(maxTan) + std::atan(lightRadius / zmin));
     const float capTan = std::tan(0.5f * maxFov);
     const float tanHalf = behind ? capTan : std::min(maxTan * 1.01f, capTan);
     v.znear = behind ? 1e-3f * 2.0f * r : std::max(zmin * 0.99f, 1e-3f * 2.0f * r);
@@ -71,14 +80,21 @@ ViewVolume fitAlong(const Aabb& bounds, glm::vec3 position, glm::vec3 dir, float
 
 ViewVolume fitPerspectiveLight(const Aabb& bounds, glm::vec3 position, glm::vec3 axis,
                                float maxFov) {
-    const float r = std::max(bounds.radius(), 1e-4f);
-    glm::vec3 dir = bounds.center() - position;
+    return fitPerspectiveLight(bounds, bounds, position, axis, 0.0f, maxFov);
+}
+
+ViewVolume fitPerspectiveLight(const Aabb& casters, const Aabb& scene, glm::vec3 position,
+                               glm::vec3 axis, float lightRadius, float maxFov) {
+    const float r = std::max(scene.radius(), 1e-4f);
+    glm::vec3 dir = casters.center() - position;
     if (glm::length(dir) < 1e-6f * r) dir = glm::vec3(0.0f, -1.0f, 0.0f);
     bool behind = false;
-    const ViewVolume toCentre = fitAlong(bounds, position, glm::normalize(dir), maxFov, behind);
+    const ViewVolume toCentre =
+        fitAlong(casters, scene, position, glm::normalize(dir), maxFov, lightRadius, behind);
     if (!behind || !(glm::length(axis) > 0.0f)) return toCentre;
     bool axisBehind = false;
-    const ViewVolume along = fitAlong(bounds, position, glm::normalize(axis), maxFov, axisBehind);
+    const ViewVolume along =
+        fitAlong(casters, scene, position, glm::normalize(axis), maxFov, lightRadius, axisBehind);
     return axisBehind ? toCentre : along;
 }
 

@@ -20,6 +20,8 @@ Renderer::Renderer(const gl::ShaderLibrary& shaders, const Scene& scene,
                    const RenderSettings& settings)
     : shaders_(shaders), settings_(settings), method_(&methodOrThrow(settings.method)),
       scene_(scene), light_(sceneLight(scene)), sceneBounds_(scene.bounds),
+      modelBounds_(scene.modelBounds.valid() ? scene.modelBounds : scene.bounds),
+      casterBounds_(shadowCasterBounds(scene, light_, sceneBounds_, modelBounds_)),
       disk_(makeDiskLight(light_, scene.bounds)), lightVolume_(lightVolume(scene, light_)),
       shadowPass_(shaders), surfacesPass_(shaders), shadingPass_(shaders),
       diagnosticsPass_(shaders), presentPass_(shaders), timer_(settings.timing) {
@@ -53,13 +55,18 @@ const FloodFrame* Renderer::flood() const {
 void Renderer::setLight(const Light& light) {
     light_ = light;
     disk_ = makeDiskLight(light_, sceneBounds_);
-    lightVolume_ = lightVolume(sceneBounds_, light_);
+    casterBounds_ = shadowCasterBounds(scene_.source(), light_, sceneBounds_, modelBounds_);
+    lightVolume_ = lightVolume(casterBounds_, sceneBounds_, light_);
     diagnosticsPass_.reset(); // a moved light changes the map: nothing to compare with
 }
 
 void Renderer::setAnimations(std::vector<int> animations) {
     animations_ = std::move(animations);
     sceneBounds_ = animatedBounds(scene_.source(), animations_);
+    modelBounds_ =
+        scene_.source().addedGround >= 0
+            ? animatedBounds(scene_.source(), animations_, 64, scene_.source().addedGround)
+            : sceneBounds_;
     posedAt_.reset(); // another clip: the same times pose differently
     setLight(light_); // refits the light to the new bounds
     setTime(0.0);
@@ -131,19 +138,13 @@ void Renderer::renderFrame(const CameraView& camera, const CameraView* previous)
         }
         parsedOptions_ = method.options.parse(band ? wholeFlood : settings_.options);
     }
-    const FrameInputs in{scene_,
-                         camera,
-                         light_,
-                         disk_,
-                         sceneBounds_,
-                         lightVolume_,
-                         settings_.shadow,
-                         shadow,
-                         surfaces,
-                         method,
-                         *parsedOptions_,
-                         &timer_,
-                         settings_.progress ? &settings_.progress : nullptr};
+    const FrameInputs in{scene_,       camera,
+                         light_,       disk_,
+                         sceneBounds_, casterBounds_,
+                         lightVolume_, settings_.shadow,
+                         shadow,       surfaces,
+                         method,       *parsedOptions_,
+                         &timer_,      settings_.progress ? &settings_.progress : nullptr};
     const gl::Texture& methodVisibility = impl.execute(in);
     // 4. Shading with the method's visibility, and the blended surfaces over it; then the
     //    optional shadow-map diagnostics (texel footprint, the previous frame's visibility:

@@ -80,18 +80,38 @@ Light sceneLight(const Scene& scene) {
     return l;
 }
 
+geom::Aabb shadowCasterBounds(const Scene& scene, const Light& light, const geom::Aabb& bounds,
+                              const geom::Aabb& model) {
+    // Everything lies above the added ground, so a ray from any point to a light above its plane
+    // never crosses it. A directional light keeps the whole box: its orthographic map costs no
+    // texels per distance, and its fit stays as it was.
+    const bool groundBelowLight = scene.addedGround >= 0 && model.valid() &&
+                                  light.type != Light::Type::Directional &&
+                                  light.position.y > bounds.min.y;
+    return groundBelowLight ? model : bounds;
+}
+
 geom::ViewVolume lightVolume(const Scene& scene, const Light& light) {
-    return lightVolume(scene.bounds, light);
+    return lightVolume(shadowCasterBounds(scene, light, scene.bounds, scene.modelBounds),
+                       scene.bounds, light);
 }
 
 geom::ViewVolume lightVolume(const geom::Aabb& bounds, const Light& light) {
+    return lightVolume(bounds, bounds, light);
+}
+
+geom::ViewVolume lightVolume(const geom::Aabb& casters, const geom::Aabb& bounds,
+                             const Light& light) {
     if (light.type == Light::Type::Directional)
         return geom::fitDirectionalLight(bounds, light.direction);
-    // A spot light's own axis is the fallback when aiming at the bounds' centre would leave
-    // scene corners behind the light (geom::fitPerspectiveLight).
-    return geom::fitPerspectiveLight(bounds, light.position,
+    // A spot light's own axis is the fallback when aiming at the casters' centre would leave
+    // some of them behind the light (geom::fitPerspectiveLight). The volume is widened for the
+    // disk's penumbrae only where it leaves receivers out: fitted to everything, it holds them.
+    const bool everything = casters.min == bounds.min && casters.max == bounds.max;
+    return geom::fitPerspectiveLight(casters, bounds, light.position,
                                      light.type == Light::Type::Spot ? light.direction
-                                                                     : glm::vec3(0.0f));
+                                                                     : glm::vec3(0.0f),
+                                     everything ? 0.0f : light.radius);
 }
 
 } // namespace fl

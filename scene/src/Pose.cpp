@@ -275,10 +275,11 @@ void posedVertices(const Scene& scene, const Pose& pose, std::size_t instance,
     }
 }
 
-geom::Aabb posedBounds(const Scene& scene, const Pose& pose) {
+geom::Aabb posedBounds(const Scene& scene, const Pose& pose, int skipInstance) {
     geom::Aabb box;
     std::vector<glm::vec3> positions;
     for (std::size_t i = 0; i < scene.instances.size(); ++i) {
+        if (static_cast<int>(i) == skipInstance) continue;
         const Instance& inst = scene.instances[i];
         const Mesh& mesh = scene.meshes.at(static_cast<std::size_t>(inst.mesh));
         if (!isSkinned(inst, mesh) && mesh.targets.empty()) {
@@ -355,7 +356,8 @@ bool restHasArea(const Scene& scene) {
     return false;
 }
 
-geom::Aabb animatedBounds(const Scene& scene, std::span<const int> animations, int steps) {
+geom::Aabb animatedBounds(const Scene& scene, std::span<const int> animations, int steps,
+                          int skipInstance) {
     std::vector<double> times = {0.0};
     const double duration = animationDuration(scene, animations);
     for (int k = 1; k <= steps && duration > 0.0; ++k) times.push_back(duration * k / steps);
@@ -375,7 +377,8 @@ geom::Aabb animatedBounds(const Scene& scene, std::span<const int> animations, i
         times = std::move(kept);
     }
     geom::Aabb box;
-    for (double t : times) box.extend(posedBounds(scene, evaluatePose(scene, animations, t)));
+    for (double t : times)
+        box.extend(posedBounds(scene, evaluatePose(scene, animations, t), skipInstance));
     return box;
 }
 

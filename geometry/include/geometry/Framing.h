@@ -34,6 +34,16 @@ ViewVolume fitPerspectiveLight(const Aabb& bounds, glm::vec3 position,
                                glm::vec3 axis = glm::vec3(0.0f),
                                float maxFov = glm::radians(150.0f));
 
+/// The same aimed at the shadow casters only: the frustum holds every corner of `casters`,
+/// widened by the angle a disk light of radius `lightRadius` around `position` subtends from
+/// the nearest of them (the disk's penumbrae reach that far past the centre's cone), while its
+/// depth range holds all of `scene` (the receivers behind the casters). A receiver outside the
+/// frustum sees the whole light, so the map need not spend texels on it: on a model standing on
+/// a wide ground, most of the map would otherwise hold ground that nothing shadows.
+ViewVolume fitPerspectiveLight(const Aabb& casters, const Aabb& scene, glm::vec3 position,
+                               glm::vec3 axis, float lightRadius,
+                               float maxFov = glm::radians(150.0f));
+
 /// A look-at view from direction `fromDir` (pointing from the target to the eye) that shows the
 /// whole bounding sphere of `bounds` for the given vertical fov and aspect, plus near/far planes.
 ViewVolume frameBounds(const Aabb& bounds, glm::vec3 fromDir, float yfov, float aspect);

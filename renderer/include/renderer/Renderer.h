@@ -150,7 +150,9 @@ class Renderer {
     std::optional<std::any> parsedOptions_; // settings_.options as method_'s struct, once parsed
     GpuScene scene_;
     Light light_;
-    geom::Aabb sceneBounds_; // the scene's, or every pose its animations take
+    geom::Aabb sceneBounds_;  // the scene's, or every pose its animations take
+    geom::Aabb modelBounds_;  // the same without an added ground
+    geom::Aabb casterBounds_; // what casts shadows under light_ (shadowCasterBounds)
     std::vector<int> animations_;
     double time_ = 0.0;
     std::optional<std::pair<double, double>> posedAt_; // (time, previous) the scene is posed at

@@ -21,8 +21,8 @@ class GroundTruth final : public ShadowMethod {
         rs.mapSize = o.mapSize;
         rs.pattern = o.pattern;
         return pass_
-            .execute({in.scene, in.surfaces.positions(), in.sceneBounds, in.disk, in.shadowSettings,
-                      rs, in.surfaces.lift, in.surfaces.normals},
+            .execute({in.scene, in.surfaces.positions(), in.sceneBounds, in.casterBounds, in.disk,
+                      in.shadowSettings, rs, in.surfaces.lift, in.surfaces.normals},
                      in.timer)
             .visibility;
     }

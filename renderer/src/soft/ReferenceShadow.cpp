@@ -100,7 +100,8 @@ ReferenceShadowPass::Outputs ReferenceShadowPass::execute(const Inputs& in, gl::
     for (const glm::vec3& q : samples) {
         // The volume the scene's own point light at q would get (Renderer's lightVolume()).
         const glm::mat4 viewProj =
-            geom::fitPerspectiveLight(in.sceneBounds, q, in.light.normal).viewProj();
+            geom::fitPerspectiveLight(in.casterBounds, in.sceneBounds, q, in.light.normal, 0.0f)
+                .viewProj();
         glBindFramebuffer(GL_FRAMEBUFFER, mapFbo_.id());
         glViewport(0, 0, map_.width(), map_.height());
         glEnable(GL_DEPTH_TEST);
@@ -154,18 +155,18 @@ VisibilityDifference referenceSamplingError(ReferenceShadowPass& pass,
                                             ReferenceShadowPass::Inputs in, int samples) {
     ReferenceSettings s = in.settings;
     s.samples = samples;
-    ReferenceShadowPass::Inputs a{in.scene, in.positions,      in.sceneBounds,
-                                  in.light, in.shadowSettings, s,
-                                  in.lift,  in.normals};
+    ReferenceShadowPass::Inputs a{
+        in.scene, in.positions, in.sceneBounds, in.casterBounds, in.light, in.shadowSettings,
+        s,        in.lift,      in.normals};
     const ReferenceShadowPass::Outputs out = pass.execute(a);
     const FloatImage va = readTexture(out.visibility, 1);
     FloatImage mask = in.positions.read();
     FloatImage surface{mask.width, mask.height, 1, {}};
     for (std::size_t i = 3; i < mask.data.size(); i += 4) surface.data.push_back(mask.data[i]);
     s.samples = 2 * samples;
-    ReferenceShadowPass::Inputs b{in.scene, in.positions,      in.sceneBounds,
-                                  in.light, in.shadowSettings, s,
-                                  in.lift,  in.normals};
+    ReferenceShadowPass::Inputs b{
+        in.scene, in.positions, in.sceneBounds, in.casterBounds, in.light, in.shadowSettings,
+        s,        in.lift,      in.normals};
     const FloatImage vb = readTexture(pass.execute(b).visibility, 1);
     return visibilityDifference(va, vb, surface);
 }

@@ -48,9 +48,19 @@ CameraView makeCameraView(const Scene& scene, const CameraSpec& spec, float aspe
 /// The scene's light, or the default one (above and to the side of the bounds) if it has none.
 Light sceneLight(const Scene& scene);
 
-/// The light's view volume fitted to the scene bounds.
+/// The bounds of what can cast a shadow under `light`: `model` (the bounds without the ground
+/// Floodlight added, Scene::modelBounds or its animated box) where the scene has an added ground
+/// and a point or spot light stands above it, else `bounds` (everything).
+geom::Aabb shadowCasterBounds(const Scene& scene, const Light& light, const geom::Aabb& bounds,
+                              const geom::Aabb& model);
+
+/// The light's view volume: aimed at the scene's shadow casters (shadowCasterBounds) and widened
+/// by the disk light's penumbrae, with the depth range of the whole scene.
 geom::ViewVolume lightVolume(const Scene& scene, const Light& light);
-/// The same for scene bounds `bounds`.
+/// The same where everything in `bounds` casts shadows.
 geom::ViewVolume lightVolume(const geom::Aabb& bounds, const Light& light);
+/// The volume aimed at `casters` (geom::fitPerspectiveLight's), holding `bounds` in depth.
+geom::ViewVolume lightVolume(const geom::Aabb& casters, const geom::Aabb& bounds,
+                             const Light& light);
 
 } // namespace fl

@@ -60,7 +60,8 @@ void posedVertices(const Scene& scene, const Pose& pose, std::size_t instance,
 /// The scene's bounds in `pose`: skinned and morphed instances' posed vertices, and each rigid
 /// instance's mesh box moved by its transform (looser than its vertices where the transform
 /// turns: the clip's margin, animatedBounds).
-[[nodiscard]] geom::Aabb posedBounds(const Scene& scene, const Pose& pose);
+/// `skipInstance` (>= 0) leaves that instance out.
+[[nodiscard]] geom::Aabb posedBounds(const Scene& scene, const Pose& pose, int skipInstance = -1);
 
 /// The scene's bounds at rest (what Scene::computeBounds stores): the tight box around every
 /// vertex where the vertex stage places it with no animation applied; rigid instances' vertices
@@ -77,7 +78,8 @@ void posedVertices(const Scene& scene, const Pose& pose, std::size_t instance,
 /// The bounds of every pose `animations` take over their duration: the union over every key
 /// time (at most 256 of them) and `steps` even steps. The light's frustum fits these, so that the
 /// shadow map does not change its texel grid (and swim) from frame to frame as the characters move.
+/// `skipInstance` (>= 0) leaves that instance out (the added ground).
 [[nodiscard]] geom::Aabb animatedBounds(const Scene& scene, std::span<const int> animations,
-                                        int steps = 64);
+                                        int steps = 64, int skipInstance = -1);
 
 } // namespace fl

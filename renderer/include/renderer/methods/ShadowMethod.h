@@ -47,6 +47,7 @@ struct FrameInputs {
     const Light& light;
     const DiskLight& disk;
     const geom::Aabb& sceneBounds;
+    const geom::Aabb& casterBounds;      // what casts shadows (shadowCasterBounds, scene/Camera.h)
     const geom::ViewVolume& lightVolume; // the volume the shadow map was made with
     const ShadowMapSettings& shadowSettings;
     const ShadowMapPass::Outputs& shadow;  // step 1

@@ -55,9 +55,10 @@ class ReferenceShadowPass {
     explicit ReferenceShadowPass(const gl::ShaderLibrary& shaders);
 
     struct Inputs {
-        const GpuScene& scene;         // drawn into each sample's map
-        SurfacePositions positions;    // the frame's surfaces (SurfacesPass)
-        const geom::Aabb& sceneBounds; // each sample's volume is fitted to these
+        const GpuScene& scene;          // drawn into each sample's map
+        SurfacePositions positions;     // the frame's surfaces (SurfacesPass)
+        const geom::Aabb& sceneBounds;  // each sample's volume holds these in depth
+        const geom::Aabb& casterBounds; // and is aimed at these (Renderer's lightVolume())
         const DiskLight& light;
         const ShadowMapSettings& shadowSettings; // depth bias
         const ReferenceSettings& settings;
