@@ -63,6 +63,20 @@ vec4 compositePixel(ivec2 t, out float w, out float hard) {
     return r;
 }
 
+// Where the edges' window centres when the pixel's own texel has none (a wide penumbra): on the
+// seed's occluder o, which phase 3 walked to the silhouette, moved a quarter of the way back to
+// the seed's own texel's centre, so that it lies inside the occluder and off any texel's border
+// (o itself is half a texel out from a centre, on a border). CPU twin: seedWindowTexel
+// (EyeSoftShadow.cpp).
+ivec2 seedWindowTexel(ivec2 seed, vec3 o) {
+    ivec2 own = eyeCellTexel(texelFetch(uEyeCells, seed, 0).r);
+    precise vec3 q = o + 0.25 * (mapReceiver(uEyeReceivers, own).xyz - o);
+    vec3 uvz;
+    ivec2 size = textureSize(uEyeReceivers, 0);
+    if (!shadowCoord(q, uvz)) return own;
+    return clamp(ivec2(uvz.xy * vec2(size)), ivec2(0), size - 1);
+}
+
 #ifndef COMPOSITE_EDGES
 bool nextToFlooded(ivec2 t) {
     bool any = false;
@@ -104,15 +118,14 @@ void main() {
         float intensity = borrowed ? -1.0 : occluderIntensity(r.xyz, o, inside);
         if (intensity >= 0.0 || borrowed) {
             // The edges around the pixel's own texel where one lies within the window (the same
-            // edges whichever seed the flood brought), else around the seed's occluder texel (a
-            // wide penumbra: the seed lies at the edge).
+            // edges whichever seed the flood brought), else around the seed's occluder (a wide
+            // penumbra: the seed lies at the edge; seedWindowTexel).
             ivec2 own = eyeCellTexel(texelFetch(uEyeCells, eyeFramePixel(t), 0).r);
             OccluderLines lines = occluderLines(uEyeReceivers, own, r.xyz, plane);
-            if (lines.count == 0) {
-                ivec2 s = eyeFramePixel(eyeSeedPixel(w));
-                lines = occluderLines(uEyeReceivers, eyeCellTexel(texelFetch(uEyeCells, s, 0).r),
-                                      r.xyz, plane);
-            }
+            if (lines.count == 0)
+                lines = occluderLines(uEyeReceivers,
+                                      seedWindowTexel(eyeFramePixel(eyeSeedPixel(w)), o), r.xyz,
+                                      plane);
             float l = occluderShareFused(uEyeReceivers, own, r.xyz, plane, lines, o, inside,
                                          borrowed);
             intensity = l < 0.0 ? intensity : l;

@@ -47,14 +47,18 @@ EyeImage readEyeImage(const FloodFrame& f) {
 
 // Phase 3 also decodes each seed's occluder once for the flood and the composite
 // (eyeSeedOccluder): at every seed pixel it must be phase 2's occluder and object id, exactly.
-void expectSeedOccludersArePhaseTwos(const FloodFrame& f, const jfa::Grid& seeds,
-                                     const EyeImage& image) {
+// Phase 3's seed occluders as the flood reads them: the CPU seeds' points (phase 2's, or walked
+// to the silhouette), with phase 2's object ids.
+void expectSeedOccludersArePhaseThrees(const FloodFrame& f, const jfa::Grid& seeds,
+                                       const EyeImage& image) {
     ASSERT_NE(f.eyeCells->seedOccluders, nullptr);
     const std::vector<glm::vec4> seedOccluders = readVec4(*f.eyeCells->seedOccluders);
     ASSERT_EQ(seedOccluders.size(), image.occluders.size());
     for (std::size_t i = 0; i < seeds.cells.size(); ++i) {
-        if (seeds.cells[i].w == 0.0f) continue;
-        ASSERT_TRUE(seedOccluders[i] == image.occluders[i]) << "seed pixel " << i;
+        const jfa::Cell& c = seeds.cells[i];
+        if (c.w == 0.0f) continue;
+        ASSERT_TRUE(seedOccluders[i] == glm::vec4(c.x, c.y, c.z, image.occluders[i].w))
+            << "seed pixel " << i;
     }
 }
 
@@ -195,11 +199,24 @@ TEST_F(JfaETest, PhasesMatchTheCpuReference) {
 
         // Phase 3: boundary seeds, exactly.
         const BoundaryThreshold th = boundaryThreshold(eyeSettings, s.camera.proj, k.height);
-        const jfa::Grid cpuSeeds = eyeBoundarySeeds(image, s.camera.eye, th);
+        const std::vector<std::uint32_t> cells = out.eyeCells->words();
+        const BoundaryWalk walk{cells, receivers, r.disk(), threshold};
+        const jfa::Grid cpuSeeds =
+            eyeBoundarySeeds(image, s.camera.eye, th, k.edges ? &walk : nullptr);
         const jfa::Grid gpuSeeds = readFloodGrid(out, *out.seeds);
         ASSERT_EQ(gpuSeeds, cpuSeeds) << "boundary seeds differ";
         EXPECT_GT(nonEmpty(cpuSeeds), 20u);
-        expectSeedOccludersArePhaseTwos(out, cpuSeeds, image);
+        expectSeedOccludersArePhaseThrees(out, cpuSeeds, image);
+        std::size_t walked = 0; // seeds whose occluder phase 3 moved off phase 2's
+        for (std::size_t i = 0; i < cpuSeeds.cells.size(); ++i) {
+            const jfa::Cell& c = cpuSeeds.cells[i];
+            walked += c.w != 0.0f && glm::vec3(c.x, c.y, c.z) != glm::vec3(image.occluders[i]);
+        }
+        if (k.edges) {
+            EXPECT_GT(walked, 5u) << "seeds inside the occluder walk to its silhouette";
+        } else {
+            EXPECT_EQ(walked, 0u) << "centre points stay the thesis' texel centres";
+        }
 
         // Phase 4: the flood, exactly (same float operations, `precise` in the shaders).
         EyeSoftCriterion criterion;
@@ -218,7 +235,6 @@ TEST_F(JfaETest, PhasesMatchTheCpuReference) {
         // Phase 5: visibility, as the frame shows it (the shading pass reads the composite
         // for exactly the surface pixels and writes 1 on background, where the CPU composite
         // is 1 too); the tolerances: expectCompositeMatches.
-        const std::vector<std::uint32_t> cells = out.eyeCells->words();
         const LineMap lineMap = readLineMap(*r.shadow(), r.disk());
         const std::vector<glm::vec3> planes = receiverPlanes(r.surfaces(), image);
         const CompositeEdges edges{lineMap, planes, cells};

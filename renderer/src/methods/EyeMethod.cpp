@@ -34,7 +34,10 @@ class EyeFloodSpace final : public FloodSpace {
         return kernel_->run(plan, *f.seeds, c);
     }
     [[nodiscard]] const gl::Texture& unpackSource(const FloodFrame& f) const override {
-        return f.eyeCells->decoded().second; // phase 2's occluders
+        // Phase 3's occluder per seed (walked to the silhouette), which the flood carried;
+        // phase 2's where phase 3 has not run.
+        return f.eyeCells->seedOccluders ? *f.eyeCells->seedOccluders
+                                         : f.eyeCells->decoded().second;
     }
     [[nodiscard]] jfa::Grid unpack(const gl::Texture& grid,
                                    const jfa::Grid& source) const override {

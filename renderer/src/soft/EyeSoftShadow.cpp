@@ -1,5 +1,6 @@
 #include <renderer/soft/EyeSoftShadow.h>
 
+#include <renderer/passes/ShadowMapDecode.h>
 #include <renderer/passes/SurfacesPass.h>
 #include <renderer/scene/GpuScene.h>
 #include <renderer/soft/EyeFloodReach.h>
@@ -8,6 +9,7 @@
 #include <jfa/CpuKernel.h>
 
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -51,7 +53,28 @@ jfa::Plan eyeSoftPlan(int passes, bool standardFlooding, int width, int height) 
     return jfa::Plan("JFA-E " + std::to_string(passes) + " passes", {stage});
 }
 
-jfa::Grid eyeBoundarySeeds(const EyeImage& im, glm::vec3 eye, BoundaryThreshold th) {
+glm::vec3 boundaryOccluderPoint(const BoundaryWalk& w, int width, int x, int y, int qx, int qy) {
+    // Same operations as boundaryOccluder() in shaders/jfae_boundary.frag.glsl.
+    const auto texelOf = [&](int px, int py) {
+        return eyecell::texel(w.cells[static_cast<std::size_t>(py) * width + px]);
+    };
+    const glm::ivec2 a = texelOf(x, y), d = texelOf(qx, qy) - a;
+    constexpr int kMaxWalk = 16;
+    const int n = std::min(std::max(std::abs(d.x), std::abs(d.y)), kMaxWalk);
+    glm::ivec2 k = a;
+    glm::vec4 last = w.receivers.at(a.x, a.y);
+    for (int i = 1; i <= n; ++i) {
+        const glm::ivec2 c = a + glm::sign(d) * ((2 * glm::abs(d) * i + n) / (2 * n));
+        const glm::vec4 next = w.receivers.at(c.x, c.y);
+        if (acrossSilhouette(w.light, last, next, w.threshold)) break;
+        k = c;
+        last = next;
+    }
+    return occluderEdgePoint(w.receivers, w.light, k.x, k.y, w.threshold);
+}
+
+jfa::Grid eyeBoundarySeeds(const EyeImage& im, glm::vec3 eye, BoundaryThreshold th,
+                           const BoundaryWalk* walk) {
     jfa::Grid out(im.width, im.height, jfa::kEmptyCell);
     for (int y = 0; y < im.height; ++y)
         for (int x = 0; x < im.width; ++x) {
@@ -62,17 +85,25 @@ jfa::Grid eyeBoundarySeeds(const EyeImage& im, glm::vec3 eye, BoundaryThreshold 
             const float e2 = ex * ex + ey * ey + ez * ez;
             const float limit2 = th.absolute2 + th.relative2 * e2;
             bool boundary = false;
+            glm::ivec2 nearest(x, y); // the nearest lit neighbour within the limit
+            float nearest2 = 0.0f;
             for (int j = -1; j <= 1; ++j)
                 for (int i = -1; i <= 1; ++i) {
                     const int qx = x + i, qy = y + j;
                     if (qx < 0 || qy < 0 || qx >= im.width || qy >= im.height) continue;
                     const glm::vec4& n = im.points[im.index(qx, qy)];
+                    if (n.w != 0.0f) continue;
                     const float dx = n.x - self.x, dy = n.y - self.y, dz = n.z - self.z;
                     const float d2 = dx * dx + dy * dy + dz * dz;
-                    boundary = boundary || (n.w == 0.0f && d2 < limit2);
+                    if (d2 < limit2 && (!boundary || d2 < nearest2)) {
+                        nearest = {qx, qy};
+                        nearest2 = d2;
+                    }
+                    boundary = boundary || d2 < limit2;
                 }
             if (!boundary) continue;
-            const glm::vec4& o = im.occluders[im.index(x, y)];
+            glm::vec3 o(im.occluders[im.index(x, y)]);
+            if (walk) o = boundaryOccluderPoint(*walk, im.width, x, y, nearest.x, nearest.y);
             out.at(x, y) = {o.x, o.y, o.z, static_cast<float>(y * im.width + x + 1)};
         }
     return out;
@@ -123,20 +154,34 @@ jfa::Grid readEyeGrid(const gl::Texture& packed, const jfa::Grid& occluders) {
 namespace {
 
 // jfae_composite.frag.glsl's borrowedCell: an axis neighbour's occluder, if it lies on the
-// pixel's own surface (within 30 degrees of its plane); 0 for none.
-float borrowedCell(const EyeImage& im, const jfa::Grid& flooded, int x, int y, glm::vec3 p,
-                   glm::vec3 plane) {
+// pixel's own surface (within 30 degrees of its plane); nullptr for none.
+const jfa::Cell* borrowedCell(const EyeImage& im, const jfa::Grid& flooded, int x, int y,
+                              glm::vec3 p, glm::vec3 plane) {
     const glm::ivec2 axis[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
     for (const glm::ivec2 a : axis) {
         const int qx = x + a.x, qy = y + a.y;
         if (qx < 0 || qy < 0 || qx >= im.width || qy >= im.height) continue;
-        const float w = flooded.cells[im.index(qx, qy)].w;
-        if (w == 0.0f) continue;
+        const jfa::Cell& c = flooded.cells[im.index(qx, qy)];
+        if (c.w == 0.0f) continue;
         const glm::vec4& n = im.points[im.index(qx, qy)];
         const glm::vec3 d = glm::vec3(n) - p;
-        if (n.w >= 0.0f && std::abs(glm::dot(d, plane)) <= 0.5f * glm::length(d)) return w;
+        if (n.w >= 0.0f && std::abs(glm::dot(d, plane)) <= 0.5f * glm::length(d)) return &c;
     }
-    return 0.0f;
+    return nullptr;
+}
+
+// jfae_composite.frag.glsl's seedWindowTexel: where the edges' window centres when the pixel's
+// own texel has none; the GLSL says why.
+glm::ivec2 seedWindowTexel(const CompositeEdges& e, std::size_t seed, glm::vec3 o) {
+    const glm::ivec2 own = eyecell::texel(e.cells[seed]);
+    const glm::vec3 centre(lineMapReceiver(e.map, own));
+    const glm::vec3 q = o + 0.25f * (centre - o);
+    const std::optional<glm::vec3> uvz = shadowmap::mapCoord(e.map.lightViewProj, e.map.warp, q);
+    if (!uvz || glm::any(glm::lessThan(*uvz, glm::vec3(0.0f))) ||
+        glm::any(glm::greaterThan(*uvz, glm::vec3(1.0f))))
+        return own;
+    return glm::clamp(glm::ivec2(glm::vec2(*uvz) * float(e.map.size)), glm::ivec2(0),
+                      glm::ivec2(e.map.size - 1));
 }
 
 // One pixel of the composite with edges (the shader's main()).
@@ -145,17 +190,19 @@ float compositeWithEdges(const EyeImage& im, const jfa::Grid& flooded, const Dis
     const std::size_t i = im.index(x, y);
     const glm::vec4& r = im.points[i];
     const glm::vec3 plane = e.planes[i];
-    float w = flooded.cells[i].w;
+    const jfa::Cell* cell = &flooded.cells[i];
     const bool inside = r.w == 1.0f;
     float v = inside ? 0.0f : 1.0f;
     bool borrowed = false;
-    if (w == 0.0f && r.w >= 0.0f && light.radius > 0.0f) {
-        w = borrowedCell(im, flooded, x, y, glm::vec3(r), plane);
-        borrowed = w != 0.0f;
+    if (cell->w == 0.0f && r.w >= 0.0f && light.radius > 0.0f) {
+        const jfa::Cell* b = borrowedCell(im, flooded, x, y, glm::vec3(r), plane);
+        borrowed = b != nullptr;
+        if (b) cell = b;
     }
-    if (r.w < 0.0f || w == 0.0f) return v;
-    const std::size_t seed = static_cast<std::size_t>(w) - 1;
-    const glm::vec3 o(im.occluders[seed]);
+    if (r.w < 0.0f || cell->w == 0.0f) return v;
+    const std::size_t seed = static_cast<std::size_t>(cell->w) - 1;
+    // The seed's occluder as the flood carried it (phase 3's, eyeSeedOccluder in the shader).
+    const glm::vec3 o(cell->x, cell->y, cell->z);
     float intensity = -1.0f;
     if (!borrowed)
         if (const std::optional<float> k = occluderIntensity(light, glm::vec3(r), o, inside))
@@ -164,7 +211,7 @@ float compositeWithEdges(const EyeImage& im, const jfa::Grid& flooded, const Dis
         const glm::ivec2 own = eyecell::texel(e.cells[i]);
         OccluderLines lines = occluderLines(e.map, own, glm::vec3(r), plane);
         if (lines.count == 0)
-            lines = occluderLines(e.map, eyecell::texel(e.cells[seed]), glm::vec3(r), plane);
+            lines = occluderLines(e.map, seedWindowTexel(e, seed, o), glm::vec3(r), plane);
         const float l =
             occluderShareFused(e.map, own, glm::vec3(r), plane, lines, o, inside, borrowed);
         intensity = l < 0.0f ? intensity : l;
@@ -299,6 +346,10 @@ void EyeSoftShadowPass::drawBoundaries(const Inputs& in, BoundaryThreshold th) {
     // A banded flood lists its seeds here rather than sweeping the frame for them again.
     const bool listSeeds = jfa::banded(in.region);
     boundary_.set("uListSeeds", listSeeds ? 1 : 0);
+    // Edge points: a seed's occluder is walked to the silhouette (boundaryOccluderPoint).
+    boundary_.set("uSeedWalk", in.settings.occluderPoints == OccluderPoints::Edge ? 1 : 0);
+    boundary_.set("uSilhouetteThreshold", in.settings.silhouetteThreshold);
+    setDiskLightUniforms(boundary_, in.light); // the walk's silhouette test (silhouetteDepth)
     gl::BindScope scope;
     if (listSeeds) kernel_.beginSeedList(scope, in.width, in.height);
     eye_.bind(scope, boundary_);

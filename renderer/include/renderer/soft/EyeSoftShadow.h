@@ -89,9 +89,26 @@ int eyeSoftMaxPasses(int width, int height);
 /// indices must be exact in a float).
 jfa::Plan eyeSoftPlan(int passes, bool standardFlooding, int width, int height);
 
+/// What phase 3 walks a seed's occluder to the silhouette with (jfae_boundary.frag.glsl's
+/// boundaryOccluder): the frame's packed cells (EyeCells::words), the map's decoded receivers,
+/// the light and the silhouette threshold.
+struct BoundaryWalk {
+    const std::vector<std::uint32_t>& cells;
+    const ReceiverGrid& receivers;
+    DiskLight light;
+    float threshold = 0.0f;
+};
+
+/// The occluder point of boundary pixel (x, y) of a width-wide frame whose nearest lit neighbour
+/// is (qx, qy): from its texel, walked toward the neighbour's along the map while the surface
+/// continues, then moved to the edge (occluderEdgePoint). The GLSL says why.
+glm::vec3 boundaryOccluderPoint(const BoundaryWalk& walk, int width, int x, int y, int qx, int qy);
+
 /// CPU reference of phase 3 (shaders/jfae_boundary.frag.glsl): boundary pixels become cells
-/// (occluder xyz, w = seed pixel index + 1); others are jfa::kEmptyCell.
-jfa::Grid eyeBoundarySeeds(const EyeImage& image, glm::vec3 eye, BoundaryThreshold threshold);
+/// (occluder xyz, w = seed pixel index + 1); others are jfa::kEmptyCell. With `walk`, the
+/// occluders are walked to the silhouette (edge points on the frame's grid); without, phase 2's.
+jfa::Grid eyeBoundarySeeds(const EyeImage& image, glm::vec3 eye, BoundaryThreshold threshold,
+                           const BoundaryWalk* walk = nullptr);
 
 /// The flooding criterion of JFA-E: the CPU functor here, shaders/jfae_criterion.glsl for the
 /// GL kernel (bit for bit the same). See the GLSL file for the rule.

@@ -60,6 +60,10 @@ float occluderPointVisibilityFused(const LineMap& map, glm::vec3 p, glm::vec3 n,
 float occluderShareFused(const LineMap& map, glm::ivec2 own, glm::vec3 p, glm::vec3 n,
                          const OccluderLines& lines, glm::vec3 o, bool inside, bool borrowed);
 
+/// What texel t of the receiver target sees: xyz its world position, w 1; vec4(0) for nothing
+/// (mapReceiver() in shadow_map_decode.glsl).
+glm::vec4 lineMapReceiver(const LineMap& map, glm::ivec2 t);
+
 /// The light depth (along the disk's normal) of what texel t of the receiver target sees, 0
 /// where it sees nothing.
 float lineMapDepth(const LineMap& map, glm::ivec2 t);
