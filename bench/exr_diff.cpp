@@ -1,8 +1,8 @@
 // Compares one channel of two EXR files (or of every EXR file two folders share by relative
 // path), counting the receivers whose value moved by more than a threshold: the check behind
 // "the same picture" of an optimisation (issue 28: the packed surfaces pass against the unpacked
-// one; docs/BENCHMARKS.md, "Lean frame"). Receivers are the pixels whose `receiver` channel is
-// 1 in the first file (every pixel if it has none).
+// one; docs/history/gpu-and-lean-frame.md, "Lean frame"). Receivers are the pixels whose
+// `receiver` channel is 1 in the first file (every pixel if it has none).
 //   exr_diff A B [--channel visibility] [--threshold 0.00392]
 // Prints one row per file pair and a total; exit 1 if any file is missing from B or differs in
 // size.

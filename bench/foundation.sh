@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Foundation numbers (docs/BENCHMARKS.md): frame time of the default scene at 512² with a 1024²
-# shadow map, and the depth (shadow-map) pass of the 216,440-triangle scene, with peak RSS.
+# Foundation numbers (docs/history/hard-shadows-and-frame-costs.md): frame time of the default
+# scene at 512² with a 1024² shadow map, and the depth (shadow-map) pass of the 216,440-triangle
+# scene, with peak RSS.
 # Each configuration runs RUNS times as separate processes (default 3), 30 frames after 5 warm-up.
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# The frame-cost table (issue 28; docs/BENCHMARKS.md "GPU frame costs"): for every method x scene x
-# resolution, the median whole frame and the median flood, in ms, and the MB of render targets the
-# frame writes (from the formats: floodlight_bench's "written"), from floodlight_bench on whatever
-# GPU the EGL context gets. The first line names the GL renderer. Numbers from two runs differ with
-# the machine's clocks and load: compare methods within one table, not tables across runs.
+# The frame-cost table (issue 28; docs/history/gpu-and-lean-frame.md "GPU frame costs"): for every
+# method x scene x resolution, the median whole frame and the median flood, in ms, and the MB of
+# render targets the frame writes (from the formats: floodlight_bench's "written"), from
+# floodlight_bench on whatever GPU the EGL context gets. The first line names the GL renderer.
+# Numbers from two runs differ with the machine's clocks and load: compare methods within one table,
+# not tables across runs.
 #
 # From a checkout with a release build (cmake --preset release && cmake --build --preset release):
 #   bash bench/gpu_table.sh [OPTIONS]

@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# JFA-E's auto pass count, before and after (issue 30 item 2; docs/BENCHMARKS.md "JFA-E's auto
-# pass count"): floodlight_bench --method jfa-e with --auto-passes geometric (the rule before)
-# and measured (the default now), and a fixed count beside them, alternating within each round.
-# Per round and configuration: the bench's median frame, flood, band and pass-count phase (ms)
-# and the passes chosen; then per configuration the min and median of those medians.
+# JFA-E's auto pass count, before and after (issue 30 item 2; docs/history/soft-shadows.md "JFA-E's
+# auto pass count"): floodlight_bench --method jfa-e with --auto-passes geometric (the rule before)
+# and measured (the default now), and a fixed count beside them, alternating within each round. Per
+# round and configuration: the bench's median frame, flood, band and pass-count phase (ms) and the
+# passes chosen; then per configuration the min and median of those medians.
 # Usage: bash bench/jfae_auto_bench.sh [ROUNDS] [floodlight_bench options...]
 #   e.g. bash bench/jfae_auto_bench.sh 3 --frames 5 --light-radius 1.5
 # FLOODLIGHT_BENCH overrides the binary; JFAE_CONFIGS (;-separated) the configurations.

@@ -27,7 +27,8 @@ void main() {
     int bestId = 0;
     int reachZ = uSlices != 0 ? 0 : 1;
     // Clamped reads and an "inside" flag rather than skipping outside or empty cells: branch-light
-    // code ran 1.5x faster on llvmpipe (docs/BENCHMARKS.md, 3D Voronoi), with the same result.
+    // code ran 1.5x faster on llvmpipe (docs/history/jump-flooding.md, 3D Voronoi), with the
+    // same result.
     ivec3 hi = uSize - 1;
     for (int l = -reachZ; l <= reachZ; ++l) {
         for (int j = -1; j <= 1; ++j) {

@@ -5,8 +5,8 @@
 // texel's centre; where the surface curves or is grazed the map's slope bias falls short of that
 // and the surface shadows itself (acne in the lit band before a terminator). A quarter texel:
 // on the real-model benchmark 0 leaves that acne, a whole texel detaches contact shadows (peter-
-// panning in creases; docs/BENCHMARKS.md, "Real models"). Nothing for a surface facing away from
-// the light. CPU twin: surface::normalOffset (renderer/passes/TerminatorLift.h); keep
+// panning in creases; docs/history/soft-shadows.md, "Real models"). Nothing for a surface facing
+// away from the light. CPU twin: surface::normalOffset (renderer/passes/TerminatorLift.h); keep
 // kNormalOffsetTexels equal to its.
 const float kNormalOffsetTexels = 0.25;
 

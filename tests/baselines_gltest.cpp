@@ -306,11 +306,11 @@ TEST_F(BaselinesTest, PcssFindsBlockersUnderASpotOverASceneToOneSide) {
     EXPECT_GT(e.penumbra, 200u);
 }
 
-// The bug (closed-form cases, docs/BENCHMARKS.md "PCSS where the map is aimed off the spot's
-// axis"): PCSS took its similar triangles across the map, with depths along the map's axis, while
-// the disk lies across the spot's axis. Where the map is tilted from the spot (the edge at height
-// 0.5, the map aimed at the bounds' centre), PCSS equalled the hard shadow: RMSE 0.072 against the
-// exact answer at 256², 0.013 now with the triangles taken across the disk.
+// The bug (closed-form cases, docs/history/truth-and-raytrace.md "PCSS where the map is aimed off
+// the spot's axis"): PCSS took its similar triangles across the map, with depths along the map's
+// axis, while the disk lies across the spot's axis. Where the map is tilted from the spot (the
+// edge at height 0.5, the map aimed at the bounds' centre), PCSS equalled the hard shadow: RMSE
+// 0.072 against the exact answer at 256², 0.013 now with the triangles taken across the disk.
 TEST_F(BaselinesTest, PcssTakesItsTrianglesAcrossTheDiskNotTheMap) {
     // Between the two: at this size 0.0748 with the old construction (verified to fail), 0.0145
     // now.

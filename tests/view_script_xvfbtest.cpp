@@ -178,8 +178,8 @@ std::string soakCycle(int n) {
 // asking GL) are the same after every cycle from the second on, and resident memory after the
 // last cycle is within 16 MiB of the second's. The allocator and the driver's caches settle by
 // then (measured over 40 cycles, 1720 frames: +3 MiB from the second cycle to the third, then
-// flat within 8 MiB; docs/BENCHMARKS.md, "Soak"); a leaked 256 x 192 float target per frame would
-// add over 30 MiB a cycle.
+// flat within 8 MiB; docs/history/robustness-fuzz-soak.md, "Soak"); a leaked 256 x 192 float
+// target per frame would add over 30 MiB a cycle.
 TEST(ViewScript, SwitchingEverythingLeavesMemoryAndGlObjectsFlat) {
     std::string script = "stats start\n";
     // bench/soak.sh runs this test for longer (FLOODLIGHT_SOAK_CYCLES, thousands of frames).

@@ -140,7 +140,7 @@ void GlFloodKernelBase::dispatch(const gl::Texture& src, const gl::Texture& seed
     glUseProgram(p.id());
     // Band passes are always compute (an indirect dispatch over the tile list), whatever the
     // kernel's kind: on llvmpipe the fragment kernel's instanced tile quads cost twice as much
-    // per pass on a small band (docs/BENCHMARKS.md, jfa_bench "flood:15 ... band").
+    // per pass on a small band (docs/history/soft-shadows.md, jfa_bench "flood:15 ... band").
     if (kind_ == GlKernelKind::Compute || banded) {
         scope.image(gl::bind::FloodOut, dst.id(), GL_WRITE_ONLY, cellFormat_);
         if (banded)

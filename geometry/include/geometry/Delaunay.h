@@ -72,7 +72,7 @@ struct DelaunayResult {
     std::vector<std::vector<std::uint32_t>> stages;
 };
 
-/// The CPU backend's default texture side (bench/delaunay_bench, docs/BENCHMARKS.md
+/// The CPU backend's default texture side (bench/delaunay_bench, docs/history/delaunay.md
 /// "Two cores in C1-C4"). On the CPU a texel costs the G-steps about 1 us, and a site that keeps
 /// its pixel costs G6, C1 and C2 more than C3 saves by not inserting it, so at 1M points the
 /// smallest side was the fastest (or level) for uniform and Gaussian points alike, although 93 %

@@ -63,8 +63,8 @@ constexpr bool banded(FloodRegion region) {
 }
 
 /// Tile side in texels: 8 measured fastest on llvmpipe for JFA-L (frame 99 ms against 109 at 16
-/// and ~145 at 32; docs/BENCHMARKS.md "Band-limited flooding"). Tiles must be a multiple of 8
-/// (the compute kernels' 8x8 groups).
+/// and ~145 at 32; docs/history/soft-shadows.md "Band-limited flooding"). Tiles must be a
+/// multiple of 8 (the compute kernels' 8x8 groups).
 inline constexpr int kDefaultBandTile = 8;
 inline constexpr int kMinBandTile = 8;
 inline constexpr int kMaxBandTile = 256;

@@ -8,8 +8,8 @@
 // occluder halfway to the light) is far wider than most penumbrae of a scene standing on its
 // ground, and a wide blur erases thin and contact shadows (light leaks through the bound), so
 // the defaults (blur 0.1, bleed 0.2) are small: chosen by measurement, the table of settings in
-// docs/BENCHMARKS.md, "VSM (the method added through the table)". With TSM the blur runs over
-// warped texels, so its world width varies across the map.
+// docs/history/hard-shadows-and-frame-costs.md, "VSM (the method added through the table)". With
+// TSM the blur runs over warped texels, so its world width varies across the map.
 //
 // The CPU reference of all three phases (moments, blur, lookup: parts of frame step 3) is in
 // tests/vsm_gltest.cpp.

@@ -8,7 +8,7 @@ namespace fl {
 
 namespace {
 
-// Each measure alone and combined is in docs/BENCHMARKS.md, "Stable TSM (issue 30 item 3)".
+// Each measure alone and combined is in docs/history/tsm.md, "Stable TSM (issue 30 item 3)".
 const std::array<TsmOption, 3> kTsmOptions{{
     {"--tsm-quantize", "quantize",
      "TSM: the trapezoid's parameters move in steps of this size (angle in radians, lines in "

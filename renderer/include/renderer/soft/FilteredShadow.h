@@ -70,7 +70,8 @@ struct FilterFrame {
     DiskLight disk;
     // PCSS: the disk's normal (toward the scene) and two tangents, in light-view space. The
     // filter's similar triangles are taken across the disk, not across the map: the two differ
-    // where the map is not aimed along the spot (docs/BENCHMARKS.md, "PCSS across the disk").
+    // where the map is not aimed along the spot (docs/history/truth-and-raytrace.md, "PCSS
+    // across the disk").
     glm::vec3 diskNormalView{0.0f, 0.0f, -1.0f}, diskTangentView{1.0f, 0.0f, 0.0f},
         diskBitangentView{0.0f, 1.0f, 0.0f};
     std::vector<glm::vec2> taps;        // PCF: NDC offsets; PCSS: filter taps (unit disk)

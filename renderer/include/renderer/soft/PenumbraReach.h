@@ -63,7 +63,8 @@ struct PenumbraReach {
     /// Pyramid cells per axis a rect is first split into (then two finer levels under the cells
     /// kept): more cut the rects closer and cost more per seed. 4 was the cheapest frame for
     /// JFA-L, and for JFA-E once its passes run within the flood's front, which absorbs the
-    /// looser band (docs/BENCHMARKS.md, "Band-limited flooding, fourth and fifth parts").
+    /// looser band (docs/history/soft-shadows.md, "Band-limited flooding, fourth and fifth
+    /// parts").
     int firstCells = 4;
 };
 

@@ -6,9 +6,9 @@
 // visible fraction of the disk. The samples follow a geom::DiskPattern: by default Vogel's
 // golden-angle spiral, which a straight edge splits evenly at every angle; `grid` is the centres
 // of an a x b grid (a the largest divisor of N not above sqrt(N)) mapped onto the disk by
-// Shirley-Chiu's concentric map, which bands along edges parallel to its rows (docs/BENCHMARKS.md,
-// "The maps reference's sample pattern"). N = 1 is the disk centre for every pattern and the
-// result equals the hard method there (point and spot lights;
+// Shirley-Chiu's concentric map, which bands along edges parallel to its rows
+// (docs/history/truth-and-raytrace.md, "The maps reference's sample pattern"). N = 1 is the disk
+// centre for every pattern and the result equals the hard method there (point and spot lights;
 // a directional light's disk is sampled with perspective maps from the disk, so N = 1 is not its
 // hard shadow). The estimate's error: shadow-map discretisation per sample (texel size at the
 // map resolution) plus sampling error, measured by comparing N with 2N (referenceSamplingError).
