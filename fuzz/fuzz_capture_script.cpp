@@ -6,7 +6,7 @@
 #include "FuzzInput.h"
 #include <app/CaptureScript.h>
 
-#include <geometry/Finite.h>
+#include <base/Finite.h>
 #include <renderer/methods/ShadowMethod.h>
 
 #include <cmath>

@@ -1,6 +1,6 @@
 // Light-frustum fitting and camera framing: every corner of the bounds ends up inside the volume.
 
-#include <geometry/Framing.h>
+#include <base/Framing.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>

@@ -4,7 +4,7 @@
 
 #include <scene/GltfLoader.h>
 
-#include <geometry/Finite.h>
+#include <base/Finite.h>
 
 #include <gtest/gtest.h>
 

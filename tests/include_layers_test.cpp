@@ -1,7 +1,7 @@
 // Includes run only downward (issue 29 item 1): each library includes its own headers and those
-// of the libraries below it (the picture in DESIGN.md), the CPU libraries include no GL header,
-// inside the renderer each folder includes only the folders below it, and nothing reaches into
-// another library's src/. The table below is the rule; the scan reads every source of the tree.
+// of the libraries it links (cmake/layers.txt, the table CMake links them by; issue 43), the CPU
+// libraries include no GL header, inside the renderer each folder includes only the folders below
+// it, and nothing reaches into another library's src/. The scan reads every source of the tree.
 
 #include "SourceFolders.h"
 
@@ -14,37 +14,96 @@
 #include <regex>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
 
 namespace fs = std::filesystem;
 
-// Each library (its folder and include prefix) and the libraries it may include, itself aside.
-// Mirrors the CMake link lines: a library may include what it links, directly or through others.
+// A library of the layer table (cmake/layers.txt, the file CMake links the libraries by).
+struct Layer {
+    bool cpu = false;                  // kind cpu: builds without GL
+    std::vector<std::string> links;    // the libraries it links directly
+    std::set<std::string> publicLinks; // those of `links` linked PUBLIC (not in [brackets])
+};
+
+/// The table in `text` (cmake/layers.txt's format: "library kind: links", # comments), in the
+/// order of its lines. Throws on a line of another shape.
+std::vector<std::pair<std::string, Layer>> parseLayers(const std::string& text) {
+    static const std::regex line(R"(^([a-z_]+)[ \t]+(cpu|gl):(.*)$)");
+    static const std::regex link(R"((\[?)([a-z_]+)\]?)");
+    std::vector<std::pair<std::string, Layer>> out;
+    std::istringstream in(text);
+    std::string l;
+    while (std::getline(in, l)) {
+        if (l.find_first_not_of(" \t") == std::string::npos || l[l.find_first_not_of(" \t")] == '#')
+            continue;
+        std::smatch m;
+        if (!std::regex_match(l, m, line))
+            throw std::runtime_error("not 'library kind: links': " + l);
+        Layer layer;
+        layer.cpu = m[2].str() == "cpu";
+        const std::string links = m[3].str();
+        for (auto it = std::sregex_iterator(links.begin(), links.end(), link);
+             it != std::sregex_iterator(); ++it) {
+            layer.links.push_back((*it)[2].str());
+            if ((*it)[1].str().empty()) layer.publicLinks.insert((*it)[2].str());
+        }
+        out.emplace_back(m[1].str(), layer);
+    }
+    return out;
+}
+
+/// The library `name` and those it links PUBLIC, directly or through their PUBLIC links: what
+/// a library that links `name` sees (CMake's usage requirements).
+void addPublicClosure(const std::map<std::string, Layer>& table, const std::string& name,
+                      std::set<std::string>& out) {
+    if (!out.insert(name).second) return;
+    for (const std::string& next : table.at(name).publicLinks) addPublicClosure(table, next, out);
+}
+
+/// Each library (its folder and include prefix) and the libraries it may include, itself aside:
+/// those it links, and what they pass on.
+std::map<std::string, std::set<std::string>>
+allowedIncludes(const std::vector<std::pair<std::string, Layer>>& layers) {
+    const std::map<std::string, Layer> table(layers.begin(), layers.end());
+    std::map<std::string, std::set<std::string>> out;
+    for (const auto& [name, layer] : layers) {
+        std::set<std::string>& allowed = out[name];
+        for (const std::string& link : layer.links) addPublicClosure(table, link, allowed);
+    }
+    return out;
+}
+
+const std::vector<std::pair<std::string, Layer>>& layerTable() {
+    static const std::vector<std::pair<std::string, Layer>> table = [] {
+        std::ifstream in(FLOODLIGHT_LAYERS_FILE);
+        if (!in) throw std::runtime_error("cannot read " FLOODLIGHT_LAYERS_FILE);
+        std::stringstream text;
+        text << in.rdbuf();
+        return parseLayers(text.str());
+    }();
+    return table;
+}
+
 const std::map<std::string, std::set<std::string>>& layers() {
-    static const std::map<std::string, std::set<std::string>> table = {
-        {"base", {}},
-        {"io", {"base"}},
-        {"gpu", {"base"}},
-        {"jfa", {"base"}},
-        {"jfa_gl", {"jfa", "gpu", "base"}},
-        {"geometry", {"jfa", "base"}},
-        {"geometry_gl", {"geometry", "jfa_gl", "jfa", "gpu", "base"}},
-        {"scene", {"geometry", "jfa", "io", "base"}},
-        {"raytrace", {"scene", "geometry", "jfa", "io", "base"}},
-        {"renderer",
-         {"scene", "raytrace", "geometry_gl", "geometry", "jfa_gl", "jfa", "io", "gpu", "base"}},
-        {"app",
-         {"renderer", "scene", "raytrace", "geometry_gl", "geometry", "jfa_gl", "jfa", "io", "gpu",
-          "base"}},
-    };
+    static const auto table = allowedIncludes(layerTable());
     return table;
 }
 
 // The libraries that must build without GL: no GL, EGL, GLFW or epoxy header.
-const std::set<std::string> kCpuLibraries = {"base", "io", "jfa", "geometry", "scene", "raytrace"};
+const std::set<std::string>& cpuLibraries() {
+    static const std::set<std::string> cpu = [] {
+        std::set<std::string> out;
+        for (const auto& [name, layer] : layerTable())
+            if (layer.cpu) out.insert(name);
+        return out;
+    }();
+    return cpu;
+}
 
 // The renderer's folders, bottom to top: a folder includes only those before it (and the files
 // at the renderer's top, Renderer.h, sit between methods and overlays).
@@ -102,7 +161,7 @@ std::vector<std::string> layerProblems(const std::string& relative, const std::s
         if (!inc.angled) continue;
         const auto slash = inc.path.find('/');
         const std::string prefix = slash == std::string::npos ? "" : inc.path.substr(0, slash);
-        if (kCpuLibraries.count(library) &&
+        if (cpuLibraries().count(library) &&
             (prefix == "epoxy" || prefix == "GL" || prefix == "EGL" || prefix == "GLFW"))
             problems.push_back(where + "<" + inc.path + "> is GL in the CPU library " + library);
         if (library.empty() || !table.count(prefix) || prefix == library) {
@@ -145,6 +204,24 @@ TEST(IncludeLayers, TheCheckFindsEachKindOfProblem) {
                               "#include <glm/glm.hpp>\n#include \"LightLookup.h\"\n")
                     .empty());
     EXPECT_TRUE(layerProblems("app/src/A.cpp", "app", "#include <renderer/Renderer.h>\n").empty());
+}
+
+TEST(IncludeLayers, TheTableIsReadAsCMakeLinksIt) {
+    // A library sees what it links and what those link PUBLIC; a [PRIVATE] link is its own.
+    const auto allowed = allowedIncludes(parseLayers("# comment\n\na cpu:\nb  cpu: a\n"
+                                                     "c cpu: [b]\nd gl:  c a\n"));
+    EXPECT_EQ(allowed.at("a"), std::set<std::string>{});
+    EXPECT_EQ(allowed.at("c"), (std::set<std::string>{"a", "b"}));
+    EXPECT_EQ(allowed.at("d"), (std::set<std::string>{"a", "c"}));
+    EXPECT_THROW(parseLayers("a: b\n"), std::runtime_error);
+    // The real table: the ray tracer links geometry (disk sampling), not the scene, and the
+    // scene needs none of the Delaunay pipeline (its boxes and framing are base's).
+    EXPECT_FALSE(layers().at("raytrace").count("scene"));
+    EXPECT_TRUE(layers().at("raytrace").count("geometry"));
+    EXPECT_FALSE(layers().at("scene").count("geometry"));
+    EXPECT_TRUE(layers().at("app").count("base"));
+    EXPECT_EQ(cpuLibraries(),
+              (std::set<std::string>{"base", "io", "jfa", "geometry", "scene", "raytrace"}));
 }
 
 TEST(IncludeLayers, TheTableNamesEveryLibraryFolder) {

@@ -6,7 +6,7 @@
 #include <base/InputFile.h>
 #include <base/Numbers.h>
 
-#include <geometry/Framing.h>
+#include <base/Framing.h>
 
 #include <nlohmann/json.hpp>
 

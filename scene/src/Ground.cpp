@@ -2,7 +2,7 @@
 
 #include <scene/Pose.h>
 
-#include <geometry/Finite.h>
+#include <base/Finite.h>
 
 #include <glm/geometric.hpp>
 

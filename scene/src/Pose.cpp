@@ -1,7 +1,7 @@
 #include <scene/Pose.h>
 
+#include <base/Finite.h>
 #include <base/Text.h>
-#include <geometry/Finite.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 

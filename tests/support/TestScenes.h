@@ -1,7 +1,7 @@
 #pragma once
 // Small hand-built scenes with known answers, and a CPU ray caster as the reference for shadows.
 
-#include <renderer/Renderer.h>
+#include <scene/Camera.h>
 #include <scene/Scene.h>
 
 namespace fl::test {

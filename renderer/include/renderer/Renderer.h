@@ -26,7 +26,7 @@
 #include <scene/Pose.h>
 #include <scene/Scene.h>
 
-#include <geometry/Framing.h>
+#include <base/Framing.h>
 
 #include <functional>
 #include <memory>

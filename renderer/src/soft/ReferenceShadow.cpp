@@ -3,8 +3,8 @@
 
 #include <renderer/metrics/Metrics.h>
 
+#include <base/Framing.h>
 #include <geometry/DiskSampling.h>
-#include <geometry/Framing.h>
 
 #include <cmath>
 #include <stdexcept>

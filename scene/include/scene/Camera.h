@@ -5,8 +5,8 @@
 
 #include <scene/Scene.h>
 
-#include <geometry/Aabb.h>
-#include <geometry/Framing.h>
+#include <base/Aabb.h>
+#include <base/Framing.h>
 
 #include <glm/glm.hpp>
 

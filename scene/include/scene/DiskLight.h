@@ -8,7 +8,7 @@
 
 #include <scene/Scene.h>
 
-#include <geometry/Aabb.h>
+#include <base/Aabb.h>
 
 #include <optional>
 

@@ -5,7 +5,7 @@
 // in their vertex stages (shaders/pose.glsl, uploaded by GpuScene::setPose); posedVertices() is
 // the CPU twin, which the ray-traced truth, the bounds and the tests use.
 
-#include <geometry/Aabb.h>
+#include <base/Aabb.h>
 #include <scene/Scene.h>
 
 #include <span>

@@ -2,7 +2,7 @@
 // The in-memory scene every pass draws: flat, index-based triangle meshes in world space placement,
 // materials, one camera and one disk area light. Produced by the glTF loader and the generator.
 
-#include <geometry/Aabb.h>
+#include <base/Aabb.h>
 
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>

@@ -5,9 +5,8 @@
 
 #include <scene/SceneGenerator.h>
 
-#include <geometry/Finite.h>
-#include <geometry/Framing.h>
-
+#include <base/Finite.h>
+#include <base/Framing.h>
 #include <base/OutputFiles.h>
 
 #include <nlohmann/json.hpp>

@@ -5,7 +5,7 @@
 
 #include "GltfInternal.h"
 
-#include <geometry/Finite.h>
+#include <base/Finite.h>
 
 #include <glm/geometric.hpp>
 

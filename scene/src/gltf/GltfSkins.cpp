@@ -6,7 +6,7 @@
 
 #include "GltfInternal.h"
 
-#include <geometry/Finite.h>
+#include <base/Finite.h>
 
 #include <glm/gtc/quaternion.hpp>
 

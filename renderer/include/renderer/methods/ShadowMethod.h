@@ -22,8 +22,8 @@
 #include <scene/DiskLight.h>
 #include <scene/Scene.h>
 
-#include <geometry/Aabb.h>
-#include <geometry/Framing.h>
+#include <base/Aabb.h>
+#include <base/Framing.h>
 
 #include <any>
 #include <functional>

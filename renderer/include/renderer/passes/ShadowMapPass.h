@@ -16,8 +16,8 @@
 #include <gpu/ShaderLibrary.h>
 #include <renderer/scene/GpuScene.h>
 
-#include <geometry/Aabb.h>
-#include <geometry/Framing.h>
+#include <base/Aabb.h>
+#include <base/Framing.h>
 #include <geometry/Trapezoid.h>
 
 #include <optional>

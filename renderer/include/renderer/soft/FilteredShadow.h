@@ -28,7 +28,7 @@
 #include <renderer/scene/GpuScene.h>
 #include <scene/DiskLight.h>
 
-#include <geometry/Framing.h>
+#include <base/Framing.h>
 
 #include <optional>
 #include <string_view>

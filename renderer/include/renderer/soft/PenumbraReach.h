@@ -39,8 +39,8 @@
 #include <gpu/ShaderLibrary.h>
 #include <jfa/Band.h>
 
-#include <geometry/Aabb.h>
-#include <geometry/Framing.h>
+#include <base/Aabb.h>
+#include <base/Framing.h>
 
 #include <glm/glm.hpp>
 

@@ -23,7 +23,7 @@
 #include <renderer/scene/GpuScene.h>
 #include <scene/DiskLight.h>
 
-#include <geometry/Aabb.h>
+#include <base/Aabb.h>
 #include <geometry/DiskSampling.h>
 
 #include <vector>

@@ -1,4 +1,4 @@
-#include <geometry/Aabb.h>
+#include <base/Aabb.h>
 
 namespace fl::geom {
 

@@ -1,4 +1,4 @@
-#include <geometry/Framing.h>
+#include <base/Framing.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 

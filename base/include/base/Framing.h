@@ -2,7 +2,7 @@
 // Fitting view volumes to scene bounds: the light's frustum for shadow maps and automatic camera
 // framing when a scene has no camera.
 
-#include <geometry/Aabb.h>
+#include <base/Aabb.h>
 
 #include <glm/glm.hpp>
 
