@@ -79,6 +79,12 @@ struct BoundaryThreshold {
 /// Resolves settings.boundaryThreshold for a camera and frame height.
 BoundaryThreshold boundaryThreshold(const EyeSoftSettings& settings, const glm::mat4& proj,
                                     int height);
+/// Sets jfae_boundary.frag.glsl's own uniforms: the eye, the threshold and whether the pass
+/// lists its seeds (the frame's boundaries and EyeFloodEstimator's coarse ones alike).
+void setBoundaryUniforms(const gl::Program& program, glm::vec3 eye, BoundaryThreshold th,
+                         bool listSeeds);
+/// Binds what a jfae_boundary program is set with: its own uniforms and the eye cells'.
+void bindBoundaryUniforms(gl::Program& program);
 
 /// The most JFA passes a width x height frame can use: log2(max(width, height)), rounded down.
 int eyeSoftMaxPasses(int width, int height);
@@ -123,6 +129,9 @@ struct EyeSoftCriterion {
 /// bounds in the run's `scope`, uniforms.
 void setCriterionUniforms(gl::BindScope& scope, const gl::Program& program,
                           const EyeSoftCriterion& criterion);
+/// Binds the uniforms setCriterionUniforms sets on a kernel program (the pointer only chooses
+/// the overload).
+void bindCriterionUniforms(gl::Program& program, const EyeSoftCriterion*);
 
 /// A JFA-E grid as the GL kernels store it (R32F, packed cells: the seed pixel's index + 1, 0
 /// empty; EyeSoftCriterion::packedCells) turned back into cells, each occluder read from
