@@ -206,23 +206,26 @@ TEST_F(ShaderTest, TypedUniformsAreCheckedWhenBound) {
     // A misspelt name, a name declared nowhere but in a comment, a type or an arrayness other
     // than the declaration's (active or removed): each fails at bind time, naming the
     // program's file and the uniform.
+    constexpr gl::Uniform<int> misspelt{"uUsd"};
+    constexpr gl::Uniform<float> onlyInAComment{"uInComment"};
+    constexpr gl::Uniform<float> intAsFloat{"uUsed"};
+    constexpr gl::Uniform<glm::vec4> vec3AsVec4{"uOffset"};
+    constexpr gl::Uniform<float> arrayAsScalar{"uWeights"};
+    constexpr gl::UniformArray<int> scalarAsArray{"uUsed"};
+    constexpr gl::Uniform<float> removedVec2AsFloat{"uDeclaredUnused"};
+    constexpr gl::Uniform<glm::mat3> variantMat4AsMat3{"uOnlyInVariant"};
     const struct {
-        std::string expected; // in the message, after the file and the name
-        std::unique_ptr<gl::UniformBase> uniform;
+        const gl::UniformBase* uniform;
+        const char* expected; // in the message, after the file and the name
     } cases[] = {
-        {"declared in none", std::make_unique<gl::Uniform<int>>("uUsd")},
-        {"declared in none", std::make_unique<gl::Uniform<float>>("uInComment")},
-        {"set as float but the linked program's is int",
-         std::make_unique<gl::Uniform<float>>("uUsed")},
-        {"set as vec4 but the linked program's is vec3",
-         std::make_unique<gl::Uniform<glm::vec4>>("uOffset")},
-        {"set as float but the linked program's is float[]",
-         std::make_unique<gl::Uniform<float>>("uWeights")},
-        {"set as int[] but the linked program's is int",
-         std::make_unique<gl::UniformArray<int>>("uUsed")},
-        {"set as float but declared vec2", std::make_unique<gl::Uniform<float>>("uDeclaredUnused")},
-        {"set as mat3 but declared mat4",
-         std::make_unique<gl::Uniform<glm::mat3>>("uOnlyInVariant")},
+        {&misspelt, "declared in none"},
+        {&onlyInAComment, "declared in none"},
+        {&intAsFloat, "set as float but the linked program's is int"},
+        {&vec3AsVec4, "set as vec4 but the linked program's is vec3"},
+        {&arrayAsScalar, "set as float but the linked program's is float[]"},
+        {&scalarAsArray, "set as int[] but the linked program's is int"},
+        {&removedVec2AsFloat, "set as float but declared vec2"},
+        {&variantMat4AsMat3, "set as mat3 but declared mat4"},
     };
     for (const auto& c : cases) {
         const std::string msg = bindError(lib, *c.uniform);
