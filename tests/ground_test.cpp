@@ -10,7 +10,7 @@
 #include <scene/Ground.h>
 #include <scene/SceneGenerator.h>
 
-#include <geometry/Framing.h>
+#include <base/Framing.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>

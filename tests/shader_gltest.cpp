@@ -1,11 +1,25 @@
 // Compile and link failures are fatal and name the file, the line and the driver's log; a
-// program built again from the same sources reuses an idle one, as if it were new.
+// program built again from the same sources reuses an idle one, as if it were new. Typed
+// uniforms (gpu/Uniform.h) are checked when a program binds them, and every program the
+// renderer, the overlays, the JFA kernels and the Delaunay steps build binds its table.
 
 #include "GlTest.h"
 #include "TestPaths.h"
 
+#include "TestScenes.h"
+
+#include <geometry_gl/GlDiscreteDelaunay.h>
 #include <gpu/LiveObjects.h>
 #include <gpu/Program.h>
+#include <jfa/CpuKernel.h>
+#include <jfa_gl/GlExactRepair.h>
+#include <jfa_gl/GlJfa3d.h>
+#include <jfa_gl/GlKernel.h>
+#include <renderer/Renderer.h>
+#include <renderer/overlays/Overlay.h>
+#include <renderer/overlays/OverlayCanvas.h>
+#include <renderer/passes/HudPass.h>
+#include <renderer/passes/ShadowDiagnosticsPass.h>
 
 #include <fstream>
 #include <optional>
@@ -94,10 +108,13 @@ TEST_F(ShaderTest, AReusedProgramStartsWithItsJustLinkedUniforms) {
     const std::vector<gl::StageSource> stages = {{GL_COMPUTE_SHADER, "u.comp.glsl"}};
     GLuint first = 0;
     {
-        const gl::Program p = gl::Program::build(lib, stages);
+        gl::Program p = gl::Program::build(lib, stages);
         first = p.id();
-        p.set("uCount", 3);
-        p.set("uScale", 2.5f);
+        constexpr gl::Uniform<int> count{"uCount"};
+        constexpr gl::Uniform<float> scale{"uScale"};
+        p.bindUniforms({&count, &scale});
+        p.set(count, 3);
+        p.set(scale, 2.5f);
         glProgramUniform3f(p.id(), p.location("uOffsets[2]"), 1.0f, 4.0f, 1.0f);
         glProgramUniformMatrix3fv(p.id(), p.location("uBasis"), 1, GL_FALSE,
                                   std::array<float, 9>{1, 1, 1, 1, 1, 6, 1, 1, 1}.data());
@@ -151,6 +168,160 @@ TEST_F(ShaderTest, IdleProgramsGoWithTheLibraryAndItsCopies) {
     // Its pool is gone: the program is deleted, not kept.
     outlives.reset();
     EXPECT_EQ(gl::countLiveObjects().live, before.live);
+}
+
+// A compute shader with active uniforms of three kinds, one declared but unused (the compiler
+// removes it), one declared only in a variant and one only in a comment.
+gl::ShaderLibrary typedShaders() {
+    const auto dir = outputDir("typed_uniforms");
+    std::ofstream(dir / "typed.comp.glsl") << R"(#version 450 core
+layout(local_size_x = 1) in;
+uniform int uUsed;
+uniform vec3 uOffset;
+uniform float uWeights[4];
+uniform vec2 uDeclaredUnused;
+#ifdef VARIANT
+uniform mat4 uOnlyInVariant;
+#endif
+// uniform float uInComment;
+layout(std430, binding = 0) buffer Out { float o[]; };
+void main() { o[0] = float(uUsed) + uOffset.y + uWeights[2]; }
+)";
+    return gl::ShaderLibrary(dir);
+}
+
+// bindUniforms' GlError for `u` on a fresh typed.comp.glsl program ("" if none).
+std::string bindError(const gl::ShaderLibrary& lib, const gl::UniformBase& u) {
+    gl::Program p = gl::Program::build(lib, {{GL_COMPUTE_SHADER, "typed.comp.glsl"}});
+    try {
+        p.bindUniforms({&u});
+    } catch (const gl::GlError& e) {
+        return e.what();
+    }
+    return {};
+}
+
+TEST_F(ShaderTest, TypedUniformsAreCheckedWhenBound) {
+    const gl::ShaderLibrary lib = typedShaders();
+    // A misspelt name, a name declared nowhere but in a comment, a type or an arrayness other
+    // than the declaration's (active or removed): each fails at bind time, naming the
+    // program's file and the uniform.
+    constexpr gl::Uniform<int> misspelt{"uUsd"};
+    constexpr gl::Uniform<float> onlyInAComment{"uInComment"};
+    constexpr gl::Uniform<float> intAsFloat{"uUsed"};
+    constexpr gl::Uniform<glm::vec4> vec3AsVec4{"uOffset"};
+    constexpr gl::Uniform<float> arrayAsScalar{"uWeights"};
+    constexpr gl::UniformArray<int> scalarAsArray{"uUsed"};
+    constexpr gl::Uniform<float> removedVec2AsFloat{"uDeclaredUnused"};
+    constexpr gl::Uniform<glm::mat3> variantMat4AsMat3{"uOnlyInVariant"};
+    const struct {
+        const gl::UniformBase* uniform;
+        const char* expected; // in the message, after the file and the name
+    } cases[] = {
+        {&misspelt, "declared in none"},
+        {&onlyInAComment, "declared in none"},
+        {&intAsFloat, "set as float but the linked program's is int"},
+        {&vec3AsVec4, "set as vec4 but the linked program's is vec3"},
+        {&arrayAsScalar, "set as float but the linked program's is float[]"},
+        {&scalarAsArray, "set as int[] but the linked program's is int"},
+        {&removedVec2AsFloat, "set as float but declared vec2"},
+        {&variantMat4AsMat3, "set as mat3 but declared mat4"},
+    };
+    for (const auto& c : cases) {
+        const std::string msg = bindError(lib, *c.uniform);
+        EXPECT_NE(msg.find(std::string("typed.comp.glsl: uniform ") + c.uniform->name() + ": "),
+                  std::string::npos)
+            << c.uniform->name() << ": " << msg;
+        EXPECT_NE(msg.find(c.expected), std::string::npos) << c.uniform->name() << ": " << msg;
+    }
+}
+
+TEST_F(ShaderTest, BoundUniformsSetTheirValuesAndInactiveOnesDoNothing) {
+    const gl::ShaderLibrary lib = typedShaders();
+    constexpr struct {
+        gl::Uniform<int> used{"uUsed"};
+        gl::Uniform<glm::vec3> offset{"uOffset"};
+        gl::UniformArray<float> weights{"uWeights"};
+        gl::Uniform<glm::vec2> declaredUnused{"uDeclaredUnused"};
+        gl::Uniform<glm::mat4> onlyInVariant{"uOnlyInVariant"};
+    } u;
+    const std::vector<gl::StageSource> stages = {{GL_COMPUTE_SHADER, "typed.comp.glsl"}};
+    GLuint first = 0;
+    {
+        gl::Program p = gl::Program::build(lib, stages);
+        first = p.id();
+        p.bindUniforms({&u.used, &u.offset, &u.weights, &u.declaredUnused, &u.onlyInVariant});
+        EXPECT_EQ(p.location(u.declaredUnused), -1);
+        EXPECT_EQ(p.location(u.onlyInVariant), -1);
+        p.set(u.used, 3);
+        p.set(u.offset, glm::vec3(1.0f, 2.0f, 3.0f));
+        const std::array<float, 3> weights{0.5f, 1.5f, 2.5f};
+        p.set(u.weights, weights);
+        p.set(u.declaredUnused, glm::vec2(1.0f)); // removed by the compiler: nothing to set
+        gl::throwIfErrors("setting typed uniforms");
+        GLint used = 0;
+        glGetUniformiv(p.id(), p.location(u.used), &used);
+        EXPECT_EQ(used, 3);
+        GLfloat third = 0.0f;
+        glGetnUniformfv(p.id(), p.location("uWeights[2]"), sizeof(third), &third);
+        EXPECT_EQ(third, 2.5f);
+        // A uniform of the right name and type that this program never bound is refused.
+        constexpr gl::Uniform<int> other{"uUsed"};
+        EXPECT_THROW(p.set(other, 1), gl::GlError);
+    }
+    // The pooled program comes back to a new Program with nothing bound; bound again, its
+    // locations are its own (the same GL program's).
+    gl::Program again = gl::Program::build(lib, stages);
+    EXPECT_EQ(again.id(), first) << "the idle program was not reused";
+    EXPECT_THROW(again.set(u.used, 1), gl::GlError);
+    again.bindUniforms({&u.used});
+    EXPECT_EQ(again.location(u.used), glGetUniformLocation(again.id(), "uUsed"));
+    EXPECT_NO_THROW(again.set(u.used, 1));
+    // With the variant's define the uniform is declared but still unused: bound, inactive.
+    gl::Program variant = gl::Program::build(lib, stages, {"VARIANT 1"});
+    EXPECT_NO_THROW(variant.bindUniforms({&u.onlyInVariant}));
+}
+
+// Every program binds its uniform table when it is built, so building them all checks every
+// table against its shaders: a Renderer per method of the table (each frame drawn too, so every
+// set() finds its uniform bound, and the flooding methods' band programs get built), the
+// overlays, the HUD, the aliasing diagnostics, the JFA kernels of both kinds with their band
+// programs, the exact repair, the 3D flood and the Delaunay steps.
+TEST_F(ShaderTest, EveryProgramBindsItsUniformTable) {
+    const gl::ShaderLibrary& shaders = fl::test::testShaders();
+    const Scene scene =
+        groundAndBox(2.0f, {-0.5f, 0.5f, -0.5f}, {0.5f, 1.0f, 0.5f}, {0.3f, -1, 0.2f});
+    const CameraView camera = makeCameraView(scene, {}, 1.0f);
+    for (const MethodDescriptor& m : methodTable()) {
+        SCOPED_TRACE(std::string(m.name));
+        RenderSettings settings;
+        settings.method = std::string(m.name);
+        settings.shadow.size = 128;
+        if (m.name == "reference") {
+            settings.options.set("--reference-samples", 2);
+            settings.options.set("--reference-map-size", 128);
+        }
+        if (m.name == "raytrace") settings.options.set("--raytrace-samples", 2);
+        Renderer renderer(shaders, scene, settings);
+        renderer.resize(32, 32);
+        EXPECT_NO_THROW(renderer.render(camera));
+    }
+    EXPECT_NO_THROW(OverlayRenderer{shaders});
+    EXPECT_NO_THROW(overlay::OverlayCanvas{shaders});
+    EXPECT_NO_THROW(HudPass{shaders});
+    EXPECT_NO_THROW(ShadowDiagnosticsPass{shaders});
+    EXPECT_NO_THROW(jfa::GlExactRepair{shaders});
+    EXPECT_NO_THROW(jfa::GlJfa3d{shaders});
+    for (const jfa::GlKernelKind kind : {jfa::GlKernelKind::Fragment, jfa::GlKernelKind::Compute}) {
+        EXPECT_NO_THROW(geom::GlDiscreteDelaunay(shaders, kind));
+        jfa::GlFloodKernel<jfa::NearestSite> kernel(shaders, kind);
+        kernel.setRegion(jfa::FloodRegion::Band);
+        jfa::Grid seeds(16, 16, jfa::kEmptyCell);
+        seeds.at(7, 5) = {7.0f, 5.0f, 0.0f, 0.0f}; // one site, id 0
+        // Measuring a seed's reach builds the band's programs, the criterion's bound on each.
+        const gl::Texture texture = jfa::uploadGrid(seeds);
+        EXPECT_NO_THROW(kernel.maxSeedReach(texture, jfa::NearestSite{true}));
+    }
 }
 
 TEST_F(ShaderTest, GlErrorsBecomeExceptions) {

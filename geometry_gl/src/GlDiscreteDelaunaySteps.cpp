@@ -31,8 +31,39 @@ constexpr GLbitfield kAfterWrites =
     GL_TEXTURE_UPDATE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_ATOMIC_COUNTER_BARRIER_BIT |
     GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_PIXEL_BUFFER_BARRIER_BIT;
 
-gl::Program buildStep(const gl::ShaderLibrary& shaders, const char* file) {
-    return gl::Program::build(shaders, {{GL_COMPUTE_SHADER, file}});
+// The steps' uniforms, one table per shader (delaunay_*.comp.glsl).
+constexpr struct {
+    gl::Uniform<int> count{"uCount"};
+    gl::Uniform<int> mode{"uMode"};
+} kSites;
+constexpr gl::Uniform<glm::ivec2> kIdsSize{"uSize"};
+constexpr gl::Uniform<glm::ivec2> kIslandsSize{"uSize"};
+constexpr struct {
+    gl::Uniform<glm::ivec2> groups{"uGroups"};
+    gl::Uniform<int> cap{"uCap"};
+    gl::Uniform<int> reset{"uReset"};
+} kIslandsControl;
+constexpr gl::Uniform<glm::ivec2> kResolveSize{"uSize"};
+constexpr gl::Uniform<glm::ivec2> kCornersSize{"uSize"};
+constexpr struct {
+    gl::Uniform<glm::ivec2> size{"uSize"};
+    gl::Uniform<int> step{"uStep"};
+    gl::Uniform<int> fromCorners{"uFromCorners"};
+} kChain;
+constexpr struct {
+    gl::Uniform<glm::ivec2> size{"uSize"};
+    gl::Uniform<int> mode{"uMode"};
+    gl::Uniform<int> vertexCapacity{"uVertexCapacity"};
+    gl::Uniform<int> triangleCapacity{"uTriangleCapacity"};
+} kTriangles;
+constexpr gl::Uniform<int> kScanRows{"uRows"};
+
+// One step's program, its uniform table bound.
+gl::Program buildStep(const gl::ShaderLibrary& shaders, const char* file,
+                      std::initializer_list<const gl::UniformBase*> uniforms) {
+    gl::Program program = gl::Program::build(shaders, {{GL_COMPUTE_SHADER, file}});
+    program.bindUniforms(uniforms);
+    return program;
 }
 
 // A buffer of at least `bytes` (never empty: zero-sized storage is a GL error, and the kernels
@@ -128,15 +159,21 @@ ResultLayout layoutResult(std::size_t sites, std::size_t texels, std::size_t ver
 } // namespace gl_stages
 
 GlDiscreteDelaunay::Impl::Impl(const gl::ShaderLibrary& shaders, jfa::GlKernelKind flood)
-    : sitesProgram(buildStep(shaders, "delaunay_sites.comp.glsl")),
-      idsProgram(buildStep(shaders, "delaunay_ids.comp.glsl")),
-      islandsProgram(buildStep(shaders, "delaunay_islands.comp.glsl")),
-      controlProgram(buildStep(shaders, "delaunay_islands_control.comp.glsl")),
-      resolveProgram(buildStep(shaders, "delaunay_islands_resolve.comp.glsl")),
-      cornersProgram(buildStep(shaders, "delaunay_corners.comp.glsl")),
-      chainProgram(buildStep(shaders, "delaunay_chain.comp.glsl")),
-      trianglesProgram(buildStep(shaders, "delaunay_triangles.comp.glsl")),
-      scanProgram(buildStep(shaders, "delaunay_rows_scan.comp.glsl")), floodKernel(shaders, flood),
+    : sitesProgram(buildStep(shaders, "delaunay_sites.comp.glsl", {&kSites.count, &kSites.mode})),
+      idsProgram(buildStep(shaders, "delaunay_ids.comp.glsl", {&kIdsSize})),
+      islandsProgram(buildStep(shaders, "delaunay_islands.comp.glsl", {&kIslandsSize})),
+      controlProgram(
+          buildStep(shaders, "delaunay_islands_control.comp.glsl",
+                    {&kIslandsControl.groups, &kIslandsControl.cap, &kIslandsControl.reset})),
+      resolveProgram(buildStep(shaders, "delaunay_islands_resolve.comp.glsl", {&kResolveSize})),
+      cornersProgram(buildStep(shaders, "delaunay_corners.comp.glsl", {&kCornersSize})),
+      chainProgram(buildStep(shaders, "delaunay_chain.comp.glsl",
+                             {&kChain.size, &kChain.step, &kChain.fromCorners})),
+      trianglesProgram(buildStep(shaders, "delaunay_triangles.comp.glsl",
+                                 {&kTriangles.size, &kTriangles.mode, &kTriangles.vertexCapacity,
+                                  &kTriangles.triangleCapacity})),
+      scanProgram(buildStep(shaders, "delaunay_rows_scan.comp.glsl", {&kScanRows})),
+      floodKernel(shaders, flood),
       control(kControlWords * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT) {
     GLint alignment = 0;
     glGetIntegerv(GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT, &alignment);
@@ -187,10 +224,10 @@ void GlDiscreteDelaunay::Impl::claimPixels(std::size_t count) {
     bindImage(scope, gl::bind::DelaunaySeeds, seeds, GL_WRITE_ONLY);
     scope.storage(gl::bind::DelaunayPixels, pixels.id());
     bindPart(scope, gl::bind::DelaunayKeepers, result, layout.keepers, count * sizeof(GLuint));
-    sitesProgram.set("uCount", static_cast<int>(count));
+    sitesProgram.set(kSites.count, static_cast<int>(count));
     // Two dispatches: every claim must land before any site reads its pixel's owner.
     for (int mode : {0, 1}) {
-        sitesProgram.set("uMode", mode);
+        sitesProgram.set(kSites.mode, mode);
         dispatchItems(count);
     }
     endStep();
@@ -204,7 +241,7 @@ void GlDiscreteDelaunay::Impl::flood(const jfa::Plan& plan) {
     gl::BindScope scope;
     scope.texture(gl::bind::DelaunayCells, cells.id());
     bindImage(scope, gl::bind::DelaunayOut, voronoi, GL_WRITE_ONLY);
-    idsProgram.set("uSize", glm::ivec2(width, height));
+    idsProgram.set(kIdsSize, glm::ivec2(width, height));
     dispatchTexels(width, height);
     endStep();
 }
@@ -216,12 +253,12 @@ void GlDiscreteDelaunay::Impl::removeIslands(const gl::Texture& in, int bound) {
     glUseProgram(controlProgram.id());
     gl::BindScope scope;
     scope.storage(gl::bind::DelaunayControl, control.id());
-    controlProgram.set("uGroups", texelGroups(width, height));
-    controlProgram.set("uCap", cap);
-    controlProgram.set("uReset", 1);
+    controlProgram.set(kIslandsControl.groups, texelGroups(width, height));
+    controlProgram.set(kIslandsControl.cap, cap);
+    controlProgram.set(kIslandsControl.reset, 1);
     dispatchOne();
-    controlProgram.set("uReset", 0);
-    islandsProgram.set("uSize", glm::ivec2(width, height));
+    controlProgram.set(kIslandsControl.reset, 0);
+    islandsProgram.set(kIslandsSize, glm::ivec2(width, height));
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, control.id());
     scope.storage(gl::bind::DelaunayPixels, pixels.id())
         .counter(gl::bind::ChangedCounter, control.id(), kChangedOffset, sizeof(GLuint));
@@ -248,7 +285,7 @@ void GlDiscreteDelaunay::Impl::removeIslands(const gl::Texture& in, int bound) {
     bindImage(scope, gl::bind::DelaunayOut, cleaned, GL_WRITE_ONLY);
     scope.storage(gl::bind::DelaunayControl, control.id());
     bindHeader(scope, result);
-    resolveProgram.set("uSize", glm::ivec2(width, height));
+    resolveProgram.set(kResolveSize, glm::ivec2(width, height));
     dispatchTexels(width, height);
     endStep();
 }
@@ -259,7 +296,7 @@ void GlDiscreteDelaunay::Impl::classifyCorners(const gl::Texture& ids) {
     scope.texture(gl::bind::DelaunayIds, ids.id());
     bindImage(scope, gl::bind::DelaunayOut, corners, GL_WRITE_ONLY);
     bindHeader(scope, result);
-    cornersProgram.set("uSize", glm::ivec2(width, height));
+    cornersProgram.set(kCornersSize, glm::ivec2(width, height));
     dispatchTexels(width, height);
     endStep();
 }
@@ -273,15 +310,15 @@ const gl::Texture& GlDiscreteDelaunay::Impl::chainRows() {
     // seeds the chain.
     if (steps.empty()) steps.push_back(width);
     glUseProgram(chainProgram.id());
-    chainProgram.set("uSize", glm::ivec2(width, height));
+    chainProgram.set(kChain.size, glm::ivec2(width, height));
     gl::BindScope scope;
     scope.texture(gl::bind::DelaunayCorners, corners.id());
     int current = 1; // the first pass reads the corners; chain[1] is only bound, never read
     bool first = true;
     for (int step : steps) {
         const int dst = current ^ 1;
-        chainProgram.set("uStep", step);
-        chainProgram.set("uFromCorners", first ? 1 : 0);
+        chainProgram.set(kChain.step, step);
+        chainProgram.set(kChain.fromCorners, first ? 1 : 0);
         scope.texture(gl::bind::DelaunayChainIn, chain[current].id());
         bindImage(scope, gl::bind::DelaunayOut, chain[dst], GL_WRITE_ONLY);
         dispatchTexels(width, height);
@@ -311,17 +348,17 @@ void GlDiscreteDelaunay::Impl::buildTriangles(const gl::Texture& ids,
              3 * layout.triangleCap * sizeof(GLuint));
     bindPart(scope, gl::bind::DelaunayTriangleVertex, result, layout.triangleVertex,
              layout.triangleCap * sizeof(GLuint));
-    trianglesProgram.set("uSize", glm::ivec2(width, height));
-    trianglesProgram.set("uVertexCapacity", static_cast<int>(layout.vertexCap));
-    trianglesProgram.set("uTriangleCapacity", static_cast<int>(layout.triangleCap));
-    trianglesProgram.set("uMode", 0);
+    trianglesProgram.set(kTriangles.size, glm::ivec2(width, height));
+    trianglesProgram.set(kTriangles.vertexCapacity, static_cast<int>(layout.vertexCap));
+    trianglesProgram.set(kTriangles.triangleCapacity, static_cast<int>(layout.triangleCap));
+    trianglesProgram.set(kTriangles.mode, 0);
     dispatchItems(std::size_t(rowCount));
     // Each row's first vertex and triangle: the CPU's row-major order, no host copying.
     glUseProgram(scanProgram.id());
-    scanProgram.set("uRows", rowCount);
+    scanProgram.set(kScanRows, rowCount);
     dispatchOne();
     glUseProgram(trianglesProgram.id());
-    trianglesProgram.set("uMode", 1);
+    trianglesProgram.set(kTriangles.mode, 1);
     dispatchItems(std::size_t(rowCount));
     endStep();
 }

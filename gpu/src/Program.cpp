@@ -147,6 +147,7 @@ Program Program::build(const ShaderLibrary& library, const std::vector<StageSour
         p.handle_ = ProgramHandle(reused);
         p.pool_ = pool;
         p.key_ = std::move(key);
+        p.files_ = std::move(names);
         return p;
     }
     std::vector<Shader> shaders;
@@ -162,6 +163,7 @@ Program Program::build(const ShaderLibrary& library, const std::vector<StageSour
     pool->remember(p.id());
     p.pool_ = pool; // from here on the program goes back to the pool rather than being deleted
     p.key_ = std::move(key);
+    p.files_ = std::move(names);
     return p;
 }
 
@@ -171,6 +173,8 @@ Program& Program::operator=(Program&& o) noexcept {
         handle_ = std::move(o.handle_);
         pool_ = std::move(o.pool_);
         key_ = std::move(o.key_);
+        files_ = std::move(o.files_);
+        bound_ = std::move(o.bound_);
     }
     return *this;
 }
@@ -190,30 +194,46 @@ void Program::giveBack() {
 GLint Program::location(const char* name) const {
     return glGetUniformLocation(id(), name);
 }
-void Program::set(const char* name, int v) const {
-    glProgramUniform1i(id(), location(name), v);
-}
-void Program::set(const char* name, float v) const {
-    glProgramUniform1f(id(), location(name), v);
-}
-void Program::set(const char* name, const glm::ivec2& v) const {
-    glProgramUniform2iv(id(), location(name), 1, glm::value_ptr(v));
-}
-void Program::set(const char* name, const glm::vec2& v) const {
-    glProgramUniform2fv(id(), location(name), 1, glm::value_ptr(v));
-}
-void Program::set(const char* name, const glm::vec3& v) const {
-    glProgramUniform3fv(id(), location(name), 1, glm::value_ptr(v));
-}
-void Program::set(const char* name, const glm::vec4& v) const {
-    glProgramUniform4fv(id(), location(name), 1, glm::value_ptr(v));
-}
-void Program::set(const char* name, const glm::mat3& v) const {
-    glProgramUniformMatrix3fv(id(), location(name), 1, GL_FALSE, glm::value_ptr(v));
-}
 
-void Program::set(const char* name, const glm::mat4& v) const {
-    glProgramUniformMatrix4fv(id(), location(name), 1, GL_FALSE, glm::value_ptr(v));
+// bind() and the uniform checks are in Uniform.cpp.
+
+void Program::upload(GLint at, int v) const {
+    if (at >= 0) glProgramUniform1i(id(), at, v);
+}
+void Program::upload(GLint at, float v) const {
+    if (at >= 0) glProgramUniform1f(id(), at, v);
+}
+void Program::upload(GLint at, const glm::ivec2& v) const {
+    if (at >= 0) glProgramUniform2iv(id(), at, 1, glm::value_ptr(v));
+}
+void Program::upload(GLint at, const glm::ivec3& v) const {
+    if (at >= 0) glProgramUniform3iv(id(), at, 1, glm::value_ptr(v));
+}
+void Program::upload(GLint at, const glm::ivec4& v) const {
+    if (at >= 0) glProgramUniform4iv(id(), at, 1, glm::value_ptr(v));
+}
+void Program::upload(GLint at, const glm::vec2& v) const {
+    if (at >= 0) glProgramUniform2fv(id(), at, 1, glm::value_ptr(v));
+}
+void Program::upload(GLint at, const glm::vec3& v) const {
+    if (at >= 0) glProgramUniform3fv(id(), at, 1, glm::value_ptr(v));
+}
+void Program::upload(GLint at, const glm::vec4& v) const {
+    if (at >= 0) glProgramUniform4fv(id(), at, 1, glm::value_ptr(v));
+}
+void Program::upload(GLint at, const glm::mat3& v) const {
+    if (at >= 0) glProgramUniformMatrix3fv(id(), at, 1, GL_FALSE, glm::value_ptr(v));
+}
+void Program::upload(GLint at, const glm::mat4& v) const {
+    if (at >= 0) glProgramUniformMatrix4fv(id(), at, 1, GL_FALSE, glm::value_ptr(v));
+}
+void Program::upload(GLint at, std::span<const glm::vec2> v) const {
+    if (at >= 0 && !v.empty())
+        glProgramUniform2fv(id(), at, static_cast<GLsizei>(v.size()), glm::value_ptr(v[0]));
+}
+void Program::upload(GLint at, std::span<const float> v) const {
+    if (at >= 0 && !v.empty())
+        glProgramUniform1fv(id(), at, static_cast<GLsizei>(v.size()), v.data());
 }
 
 void drawFullscreenTriangle(const Program& program, const VertexArray& emptyVao) {

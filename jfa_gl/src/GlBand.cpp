@@ -5,6 +5,8 @@
 #include <jfa/CpuKernel.h> // stageScale
 #include <jfa_gl/GlKernel.h>
 
+#include "GlKernelUniforms.h"
+
 #include <base/Text.h>
 
 #include <algorithm>
@@ -33,6 +35,46 @@ GLuint groups(int n) {
     return static_cast<GLuint>((n + 7) / 8);
 }
 
+// The band programs' uniforms, one table per shader (jfa_band_*.comp.glsl, tile_dilate).
+constexpr struct {
+    gl::Uniform<glm::ivec2> size{"uSize"};
+    gl::Uniform<int> mode{"uMode"};
+} kBandSeeds;
+constexpr struct {
+    gl::Uniform<glm::ivec2> size{"uSize"};
+    gl::Uniform<int> tile{"uTile"};
+    gl::Uniform<int> tilesX{"uTilesX"};
+} kBandReach;
+constexpr struct {
+    gl::Uniform<glm::ivec2> tiles{"uTiles"};
+    gl::Uniform<int> tile{"uTile"};
+    gl::Uniform<int> planReach{"uPlanReach"};
+} kBandMark;
+constexpr gl::Uniform<glm::ivec2> kBandViewTiles{"uTiles"};
+constexpr struct {
+    gl::Uniform<glm::ivec2> tiles{"uTiles"};
+    gl::Uniform<int> tile{"uTile"};
+    gl::Uniform<glm::ivec2> stageTiles{"uStageTiles"};
+    gl::Uniform<glm::ivec2> stageSize{"uStageSize"};
+    gl::Uniform<int> scale{"uScale"};
+} kBandCompact;
+constexpr struct {
+    gl::Uniform<glm::ivec2> tiles{"uTiles"};
+    gl::Uniform<glm::ivec2> size{"uSize"};
+    gl::Uniform<int> tile{"uTile"};
+    gl::Uniform<int> step{"uStep"};
+} kBandFront;
+constexpr struct {
+    gl::Uniform<glm::ivec2> size{"uSize"};
+    gl::Uniform<int> tile{"uTile"};
+} kBandClear;
+constexpr struct {
+    gl::Uniform<glm::ivec2> tiles{"uTiles"};
+    gl::Uniform<int> reach{"uReach"};
+    gl::Uniform<int> axis{"uAxis"};
+    gl::Uniform<int> spans{"uSpans"};
+} kDilate;
+
 } // namespace
 
 void GlFloodKernelBase::setRegion(FloodRegion region, int tile) {
@@ -60,6 +102,17 @@ void GlFloodKernelBase::buildBandPrograms() {
                                        cellDefines);
     viewProgram_ = gl::Program::build(shaders_, {{GL_COMPUTE_SHADER, "jfa_band_view.comp.glsl"}});
     frontProgram_ = gl::Program::build(shaders_, {{GL_COMPUTE_SHADER, "jfa_band_front.comp.glsl"}});
+    reachProgram_.bindUniforms({&kBandReach.size, &kBandReach.tile, &kBandReach.tilesX});
+    bindCriterion_(reachProgram_);
+    seedsProgram_.bindUniforms({&kBandSeeds.size, &kBandSeeds.mode});
+    bindCriterion_(seedsProgram_);
+    markProgram_.bindUniforms({&kBandMark.tiles, &kBandMark.tile, &kBandMark.planReach});
+    const auto& c = kBandCompact;
+    compactProgram_.bindUniforms({&c.tiles, &c.tile, &c.stageTiles, &c.stageSize, &c.scale});
+    clearProgram_.bindUniforms({&kBandClear.size, &kBandClear.tile});
+    viewProgram_.bindUniforms({&kBandViewTiles});
+    const auto& f = kBandFront;
+    frontProgram_.bindUniforms({&f.tiles, &f.size, &f.tile, &f.step});
     dilation_ = std::make_unique<GlTileDilation>(shaders_);
     for (bool expand : {false, true}) {
         std::vector<std::string> defines = cellDefines;
@@ -70,6 +123,8 @@ void GlFloodKernelBase::buildBandPrograms() {
             shaders_,
             {{GL_COMPUTE_SHADER, "jfa_pass.comp.glsl"}, {GL_COMPUTE_SHADER, criterionFile_}},
             defines);
+        detail::bindKernelPassUniforms(p, true);
+        bindCriterion_(p);
         (expand ? bandExpandProgram_ : bandPassProgram_) = std::move(p);
     }
 }
@@ -102,21 +157,21 @@ void GlFloodKernelBase::measureReach(const gl::Texture& seeds) {
     listedSeeds_ = 0;
     gl::BindScope scope;
     if (!listed) beginSeedList(scope, seeds.width(), seeds.height());
-    seedsProgram_.set("uSize", glm::ivec2(seeds.width(), seeds.height()));
+    seedsProgram_.set(kBandSeeds.size, glm::ivec2(seeds.width(), seeds.height()));
     scope.texture(gl::bind::FloodSeeds, seeds.id()).storage(gl::bind::SeedList, seedList_.id());
     glUseProgram(seedsProgram_.id());
     if (!listed) {
-        seedsProgram_.set("uMode", 0);
+        seedsProgram_.set(kBandSeeds.mode, 0);
         glDispatchCompute(groups(seeds.width()), groups(seeds.height()), 1);
     }
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-    seedsProgram_.set("uMode", 1);
+    seedsProgram_.set(kBandSeeds.mode, 1);
     glDispatchCompute(1, 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
     // Step A over the list.
-    reachProgram_.set("uSize", glm::ivec2(seeds.width(), seeds.height()));
-    reachProgram_.set("uTile", tile_);
-    reachProgram_.set("uTilesX", tilesX);
+    reachProgram_.set(kBandReach.size, glm::ivec2(seeds.width(), seeds.height()));
+    reachProgram_.set(kBandReach.tile, tile_);
+    reachProgram_.set(kBandReach.tilesX, tilesX);
     scope.storage(gl::bind::BandTileRects, tileReach_.id())
         .storage(gl::bind::BandMaxReach, maxReach_.id())
         .storage(gl::bind::FloodFront, front_.id());
@@ -159,9 +214,9 @@ bool GlFloodKernelBase::buildBand(const Plan& plan, const gl::Texture& seeds) {
     ensureBuffer(flags_, std::size_t(tiles.x) * std::size_t(tiles.y));
     clearBuffer(flags_);
     // Step B: mark the tiles each seed tile's rect touches, within the plan's square.
-    markProgram_.set("uTiles", tiles);
-    markProgram_.set("uTile", tile_);
-    markProgram_.set("uPlanReach", int(std::min(planReach, kMaxShaderReach)));
+    markProgram_.set(kBandMark.tiles, tiles);
+    markProgram_.set(kBandMark.tile, tile_);
+    markProgram_.set(kBandMark.planReach, int(std::min(planReach, kMaxShaderReach)));
     gl::BindScope scope;
     scope.storage(gl::bind::BandTileRects, tileReach_.id())
         .storage(gl::bind::BandFlags, flags_.id());
@@ -176,7 +231,7 @@ bool GlFloodKernelBase::buildBand(const Plan& plan, const gl::Texture& seeds) {
                                         std::to_string(tiles.x * tiles.y) + " tiles");
         ensureBuffer(viewNear_, std::size_t(tiles.x) * std::size_t(tiles.y));
         dilation_->run(*viewTiles_, viewNear_, tiles, reach);
-        viewProgram_.set("uTiles", tiles);
+        viewProgram_.set(kBandViewTiles, tiles);
         // In the step's scope: the dilation above unbound only its own points.
         scope.storage(gl::bind::BandFlags, flags_.id())
             .storage(gl::bind::BandNearView, viewNear_.id());
@@ -186,8 +241,8 @@ bool GlFloodKernelBase::buildBand(const Plan& plan, const gl::Texture& seeds) {
     }
     // Step C: per stage, the tiles holding a band texel's grid point, and the commands.
     const std::vector<Stage>& stages = plan.stages();
-    compactProgram_.set("uTiles", tiles);
-    compactProgram_.set("uTile", tile_);
+    compactProgram_.set(kBandCompact.tiles, tiles);
+    compactProgram_.set(kBandCompact.tile, tile_);
     for (std::size_t s = 0; s < stages.size(); ++s) {
         const glm::ivec2 size(stages[s].width, stages[s].height);
         const glm::ivec2 stageTiles = (size + tile_ - 1) / tile_;
@@ -206,9 +261,9 @@ bool GlFloodKernelBase::buildBand(const Plan& plan, const gl::Texture& seeds) {
             }
         }
         restartList(band, stageTiles, true);
-        compactProgram_.set("uStageTiles", stageTiles);
-        compactProgram_.set("uStageSize", size);
-        compactProgram_.set("uScale", stageScale(plan, s));
+        compactProgram_.set(kBandCompact.stageTiles, stageTiles);
+        compactProgram_.set(kBandCompact.stageSize, size);
+        compactProgram_.set(kBandCompact.scale, stageScale(plan, s));
         scope.storage(gl::bind::BandTiles, band.tiles.id())
             .storage(gl::bind::BandCommands, band.commands.id());
         glUseProgram(compactProgram_.id());
@@ -232,14 +287,14 @@ void GlFloodKernelBase::restartList(StageBandList& list, glm::ivec2 tiles, bool 
 void GlFloodKernelBase::startFront(glm::ivec2 size) {
     frontTiles_ = (size + tile_ - 1) / tile_;
     restartList(frontList_, frontTiles_, true); // [3] then sums the texels over the run
-    frontProgram_.set("uTiles", frontTiles_);
-    frontProgram_.set("uSize", size);
-    frontProgram_.set("uTile", tile_);
+    frontProgram_.set(kBandFront.tiles, frontTiles_);
+    frontProgram_.set(kBandFront.size, size);
+    frontProgram_.set(kBandFront.tile, tile_);
 }
 
 void GlFloodKernelBase::listFront(int step) {
     restartList(frontList_, frontTiles_, false);
-    frontProgram_.set("uStep", step);
+    frontProgram_.set(kBandFront.step, step);
     gl::BindScope scope;
     scope.storage(gl::bind::BandFlags, flags_.id())
         .storage(gl::bind::BandTiles, frontList_.tiles.id())
@@ -254,8 +309,8 @@ void GlFloodKernelBase::listFront(int step) {
 void GlFloodKernelBase::emptyTexture(Pair& pair, int i, int stage) {
     const gl::Texture& t = pair.tex[i];
     if (pair.dirt[i] == stage && stageBands_[stage].commands) {
-        clearProgram_.set("uSize", glm::ivec2(t.width(), t.height()));
-        clearProgram_.set("uTile", tile_);
+        clearProgram_.set(kBandClear.size, glm::ivec2(t.width(), t.height()));
+        clearProgram_.set(kBandClear.tile, tile_);
         gl::BindScope scope;
         scope.image(gl::bind::FloodOut, t.id(), GL_WRITE_ONLY, cellFormat_)
             .storage(gl::bind::BandTiles, stageBands_[stage].tiles.id());
@@ -274,7 +329,9 @@ void GlFloodKernelBase::emptyTexture(Pair& pair, int i, int stage) {
 }
 
 GlTileDilation::GlTileDilation(const gl::ShaderLibrary& shaders)
-    : program_(gl::Program::build(shaders, {{GL_COMPUTE_SHADER, "tile_dilate.comp.glsl"}})) {}
+    : program_(gl::Program::build(shaders, {{GL_COMPUTE_SHADER, "tile_dilate.comp.glsl"}})) {
+    program_.bindUniforms({&kDilate.tiles, &kDilate.reach, &kDilate.axis, &kDilate.spans});
+}
 
 void GlTileDilation::run(const gl::Buffer& in, const gl::Buffer& out, glm::ivec2 tiles, int reach,
                          std::initializer_list<const gl::Buffer*> spanLists) {
@@ -282,8 +339,8 @@ void GlTileDilation::run(const gl::Buffer& in, const gl::Buffer& out, glm::ivec2
         throw std::invalid_argument("jfa: a tile dilation widens at most two span lists");
     ensureBuffer(rows_, std::size_t(tiles.x) * std::size_t(tiles.y));
     glUseProgram(program_.id());
-    program_.set("uTiles", tiles);
-    program_.set("uReach", reach);
+    program_.set(kDilate.tiles, tiles);
+    program_.set(kDilate.reach, reach);
     gl::BindScope scope;
     const gl::StorageBinding spanBindings[] = {gl::bind::RowSpans, gl::bind::OwnSpans};
     const gl::StorageBinding* binding = spanBindings;
@@ -291,8 +348,8 @@ void GlTileDilation::run(const gl::Buffer& in, const gl::Buffer& out, glm::ivec2
     const std::pair<const gl::Buffer*, const gl::Buffer*> halves[] = {{&in, &rows_},
                                                                       {&rows_, &out}};
     for (int axis = 0; axis < 2; ++axis) {
-        program_.set("uAxis", axis);
-        program_.set("uSpans", axis == 1 ? int(spanLists.size()) : 0);
+        program_.set(kDilate.axis, axis);
+        program_.set(kDilate.spans, axis == 1 ? int(spanLists.size()) : 0);
         scope.storage(gl::bind::DilateIn, halves[axis].first->id())
             .storage(gl::bind::DilateOut, halves[axis].second->id());
         glDispatchCompute(groups(tiles.x), groups(tiles.y), 1);

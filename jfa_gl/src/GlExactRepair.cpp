@@ -20,11 +20,20 @@ gl::Buffer storageOf(const std::vector<T>& values) {
     return gl::Buffer(GLsizeiptr(data.size() * sizeof(T)), data.data(), 0);
 }
 
+// jfa_exact_repair.comp.glsl's own uniforms (NearestSite's apart).
+constexpr struct {
+    gl::Uniform<glm::ivec2> size{"uSize"};
+    gl::Uniform<int> vertexCount{"uVertexCount"};
+} kRepair;
+
 } // namespace
 
 GlExactRepair::GlExactRepair(const gl::ShaderLibrary& shaders)
     : program_(gl::Program::build(shaders, {{GL_COMPUTE_SHADER, "jfa_exact_repair.comp.glsl"},
-                                            {GL_COMPUTE_SHADER, NearestSite::glslFile}})) {}
+                                            {GL_COMPUTE_SHADER, NearestSite::glslFile}})) {
+    program_.bindUniforms({&kRepair.size, &kRepair.vertexCount});
+    bindCriterionUniforms(program_, static_cast<const NearestSite*>(nullptr));
+}
 
 void GlExactRepair::setGraph(const SiteGraph& graph) {
     if (graph.offsets.size() != graph.vertices.size() + 1)
@@ -43,8 +52,8 @@ const gl::Texture& GlExactRepair::run(const gl::Texture& flooded) {
     glUseProgram(program_.id());
     gl::BindScope scope;
     setCriterionUniforms(scope, program_, NearestSite{true});
-    program_.set("uSize", glm::ivec2(flooded.width(), flooded.height()));
-    program_.set("uVertexCount", int(vertexCount_));
+    program_.set(kRepair.size, glm::ivec2(flooded.width(), flooded.height()));
+    program_.set(kRepair.vertexCount, int(vertexCount_));
     scope.texture(gl::bind::Flooded, flooded.id())
         .image(gl::bind::RepairOut, out_.id(), GL_WRITE_ONLY, GL_RGBA32F)
         .storage(gl::bind::RepairVertices, vertices_.id())

@@ -55,8 +55,19 @@ void checkGlExtent3d(Extent3 e) {
     }
 }
 
+namespace {
+// jfa3d_pass.comp.glsl's uniforms.
+constexpr struct {
+    gl::Uniform<glm::ivec3> size{"uSize"};
+    gl::Uniform<int> step{"uStep"};
+    gl::Uniform<int> slices{"uSlices"};
+} kJfa3d;
+} // namespace
+
 GlJfa3d::GlJfa3d(const gl::ShaderLibrary& shaders)
-    : program_(gl::Program::build(shaders, {{GL_COMPUTE_SHADER, "jfa3d_pass.comp.glsl"}})) {}
+    : program_(gl::Program::build(shaders, {{GL_COMPUTE_SHADER, "jfa3d_pass.comp.glsl"}})) {
+    program_.bindUniforms({&kJfa3d.size, &kJfa3d.step, &kJfa3d.slices});
+}
 
 void GlJfa3d::upload(const std::vector<Site3>& sites, const SiteGrid3& seeds) {
     const Extent3 e = seeds.extent;
@@ -84,9 +95,8 @@ void GlJfa3d::run(const Plan& plan, Flood3dShape shape) {
     if (!result_) throw std::logic_error("GlJfa3d::run before upload");
     checkPlan(plan, shape, extent_);
     glUseProgram(program_.id());
-    program_.set("uSlices", shape == Flood3dShape::Slices ? 1 : 0);
-    glProgramUniform3i(program_.id(), program_.location("uSize"), extent_.width, extent_.height,
-                       extent_.depth);
+    program_.set(kJfa3d.slices, shape == Flood3dShape::Slices ? 1 : 0);
+    program_.set(kJfa3d.size, glm::ivec3(extent_.width, extent_.height, extent_.depth));
     gl::BindScope scope;
     scope.storage(gl::bind::Flood3dSites, sites_.id());
     const gl::Texture3D* src = &seeds_;
@@ -94,7 +104,7 @@ void GlJfa3d::run(const Plan& plan, Flood3dShape shape) {
     for (int step : plan.stages().front().steps) {
         const gl::Texture3D* dst = &ping_[next];
         next ^= 1;
-        program_.set("uStep", step);
+        program_.set(kJfa3d.step, step);
         scope.image(gl::bind::Flood3dIn, src->id(), GL_READ_ONLY, GL_R32I, 0, GL_TRUE)
             .image(gl::bind::Flood3dOut, dst->id(), GL_WRITE_ONLY, GL_R32I, 0, GL_TRUE);
         glDispatchCompute(groups3d(extent_.width), groups3d(extent_.height),

@@ -1,5 +1,7 @@
 #include <jfa_gl/GlKernel.h>
 
+#include "GlKernelUniforms.h"
+
 #include <stdexcept>
 #include <string>
 
@@ -16,10 +18,18 @@ const char* kernelName(GlKernelKind kind) {
     return kind == GlKernelKind::Fragment ? "fragment" : "compute";
 }
 
+namespace {
+constexpr gl::Uniform<int> kJfaIntegerSites{"uJfaIntegerSites"}; // jfa_nearest_site.glsl
+} // namespace
+
 // NearestSite binds no textures: the scope stays empty.
 void setCriterionUniforms(gl::BindScope& /*scope*/, const gl::Program& program,
                           const NearestSite& criterion) {
-    program.set("uJfaIntegerSites", criterion.integerSites ? 1 : 0);
+    program.set(kJfaIntegerSites, criterion.integerSites ? 1 : 0);
+}
+
+void bindCriterionUniforms(gl::Program& program, const NearestSite* /*criterion*/) {
+    program.bindUniforms({&kJfaIntegerSites});
 }
 
 gl::Texture uploadGrid(const Grid& grid) {
@@ -82,12 +92,18 @@ std::string detail::cellFormatDefine(bool packed) {
 
 GlFloodKernelBase::GlFloodKernelBase(const gl::ShaderLibrary& shaders,
                                      const std::string& criterionFile, GlKernelKind kind,
-                                     bool keyed, bool packed)
+                                     bool keyed, bool packed, void (*bindCriterion)(gl::Program&))
     : passProgram_(buildKernel(shaders, criterionFile, kind, false, keyed, packed)),
       expandProgram_(buildKernel(shaders, criterionFile, kind, true, keyed, packed)),
-      shaders_(shaders), criterionFile_(criterionFile), keyed_(keyed),
-      cellFormat_(packed ? GL_R32F : GL_RGBA32F), kind_(kind), emptyVao_(gl::VertexArray::create()),
-      changedCounter_(sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT) {}
+      shaders_(shaders), criterionFile_(criterionFile), bindCriterion_(bindCriterion),
+      keyed_(keyed), cellFormat_(packed ? GL_R32F : GL_RGBA32F), kind_(kind),
+      emptyVao_(gl::VertexArray::create()),
+      changedCounter_(sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT) {
+    for (gl::Program* p : {&passProgram_, &expandProgram_}) {
+        detail::bindKernelPassUniforms(*p, false);
+        bindCriterion_(*p);
+    }
+}
 
 const gl::Texture& GlFloodKernelBase::otherTexture(int width, int height,
                                                    const gl::Texture* current) {
@@ -114,12 +130,13 @@ void GlFloodKernelBase::dispatch(const gl::Texture& src, const gl::Texture& seed
     const bool expand = what == GlDispatch::ExpandThenPass;
     const gl::Program& p = banded ? (expand ? bandExpandProgram_ : bandPassProgram_)
                                   : (expand ? expandProgram_ : passProgram_);
-    p.set("uSize", glm::ivec2(dst.width(), dst.height()));
-    p.set("uSrcSize", glm::ivec2(src.width(), src.height()));
-    p.set("uStep", step);
-    p.set("uScale", scale);
-    p.set("uMode", static_cast<int>(what));
-    p.set("uCountChanges", countChanges ? 1 : 0);
+    const detail::KernelPassUniforms& u = detail::kKernelPass;
+    p.set(u.size, glm::ivec2(dst.width(), dst.height()));
+    p.set(u.srcSize, glm::ivec2(src.width(), src.height()));
+    p.set(u.step, step);
+    p.set(u.scale, scale);
+    p.set(u.mode, static_cast<int>(what));
+    p.set(u.countChanges, countChanges ? 1 : 0);
     gl::BindScope scope;
     scope.texture(gl::bind::FloodIn, src.id())
         .texture(gl::bind::FloodSeeds, seeds.id())
@@ -129,9 +146,9 @@ void GlFloodKernelBase::dispatch(const gl::Texture& src, const gl::Texture& seed
         // them; the pass binds that list and the front's flags, which it extends).
         const bool front = frontRun_ && what == GlDispatch::Pass;
         if (front) listFront(step);
-        p.set("uTile", tile_);
-        p.set("uFront", front ? 1 : 0);
-        p.set("uTilesX", (dst.width() + tile_ - 1) / tile_);
+        p.set(u.tile, tile_);
+        p.set(u.front, front ? 1 : 0);
+        p.set(u.tilesX, (dst.width() + tile_ - 1) / tile_);
         const StageBandList& band = front ? frontList_ : stageBands_[bandStage];
         scope.storage(gl::bind::BandTiles, band.tiles.id())
             .storage(gl::bind::FloodFront, front ? front_.id() : 0);

@@ -36,6 +36,9 @@ const char* kernelName(GlKernelKind kind);
 /// the kernel holds for the run; one overload per criterion.
 void setCriterionUniforms(gl::BindScope& scope, const gl::Program& program,
                           const NearestSite& criterion);
+/// Binds the uniforms setCriterionUniforms sets on a kernel program, once it is built; one
+/// overload per criterion, found the same way (the pointer only chooses the overload).
+void bindCriterionUniforms(gl::Program& program, const NearestSite*);
 
 /// Uploads a grid as an RGBA32F texture (row y of the grid = texel row y).
 gl::Texture uploadGrid(const Grid& grid);
@@ -119,11 +122,13 @@ class GlFloodKernelBase {
     [[nodiscard]] double computedShare() const;
 
   protected:
-    /// Builds the kernel programs with `criterionFile` (a criterion's glslFile) linked in.
-    /// `packed`: the criterion stores a cell in one R32F texel (jfaLoad/jfaStore unpack it;
-    /// JFA_CELL_FORMAT r32f), else one RGBA32F texel as it is.
+    /// Builds the kernel programs with `criterionFile` (a criterion's glslFile) linked in;
+    /// `bindCriterion` binds the criterion's uniforms on each (now, and on the band's programs
+    /// when they are built). `packed`: the criterion stores a cell in one R32F texel
+    /// (jfaLoad/jfaStore unpack it; JFA_CELL_FORMAT r32f), else one RGBA32F texel as it is.
     GlFloodKernelBase(const gl::ShaderLibrary& shaders, const std::string& criterionFile,
-                      GlKernelKind kind, bool keyed, bool packed);
+                      GlKernelKind kind, bool keyed, bool packed,
+                      void (*bindCriterion)(gl::Program&));
 
     /// The programs that link the criterion (their uniforms are the criterion's), the band
     /// programs included once built; `needBand` builds them first.
@@ -156,6 +161,7 @@ class GlFloodKernelBase {
 
     gl::ShaderLibrary shaders_;
     std::string criterionFile_;
+    void (*bindCriterion_)(gl::Program&); // the criterion's bindCriterionUniforms
     bool keyed_ = false;
     GLenum cellFormat_ = GL_RGBA32F; // GL_R32F for packed cells
     GlKernelKind kind_;
@@ -258,7 +264,9 @@ class GlFloodKernel : public GlFloodKernelBase {
   public:
     /// Builds the kernel programs with C::glslFile linked in.
     GlFloodKernel(const gl::ShaderLibrary& shaders, GlKernelKind kind)
-        : GlFloodKernelBase(shaders, C::glslFile, kind, Keyed<C>, PackedCells<C>) {
+        : GlFloodKernelBase(
+              shaders, C::glslFile, kind, Keyed<C>, PackedCells<C>,
+              [](gl::Program& p) { bindCriterionUniforms(p, static_cast<const C*>(nullptr)); }) {
         criterionBounds_ = Reaching<C>;
     }
 

@@ -7,6 +7,25 @@
 
 namespace fl {
 
+namespace {
+
+// light_visibility.frag.glsl's own uniform (--penumbra both: soft_penumbra.glsl).
+constexpr gl::Uniform<float> kLookupSilhouetteThreshold{"uSilhouetteThreshold"};
+
+// Binds what draw() sets on a lookup program: the shadow map and the eye's surfaces; with the
+// penumbra map the disk light and the map's receivers; with `both` the silhouette threshold.
+void bindLookupUniforms(gl::Program& program, bool penumbra, bool both) {
+    bindShadowMapUniforms(program);
+    SurfacePositions::bindUniforms(program);
+    if (penumbra) {
+        bindDiskLightUniforms(program);
+        MapPositions::bindUniforms(program);
+    }
+    if (both) program.bindUniforms({&kLookupSilhouetteThreshold});
+}
+
+} // namespace
+
 LightLookup::LightLookup(const gl::ShaderLibrary& shaders, bool penumbra)
     : penumbra_(penumbra),
       program_(gl::Program::build(shaders,
@@ -15,6 +34,7 @@ LightLookup::LightLookup(const gl::ShaderLibrary& shaders, bool penumbra)
                                   penumbra ? std::vector<std::string>{"SOFT_PENUMBRA_MAP 1"}
                                            : std::vector<std::string>{})),
       emptyVao_(gl::VertexArray::create()) {
+    bindLookupUniforms(program_, penumbra, false);
     // Its own program, so that outer's is the thesis' lookup instruction for instruction (the
     // same picture and cost as before the umbra side).
     if (penumbra) {
@@ -27,6 +47,8 @@ LightLookup::LightLookup(const gl::ShaderLibrary& shaders, bool penumbra)
                                {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
                                 {GL_FRAGMENT_SHADER, "light_visibility.frag.glsl"}},
                                {"SOFT_PENUMBRA_MAP 1", "SOFT_PENUMBRA_BOTH 1", "PENUMBRA_EDGES 1"});
+        bindLookupUniforms(bothProgram_, true, true);
+        bindLookupUniforms(edgesProgram_, true, true);
     }
 }
 
@@ -54,7 +76,7 @@ void LightLookup::draw(const FrameInputs& in, const gl::Program& program,
         in.shadow.receivers->bind(scope, program, gl::bind::PenumbraReceivers);
     }
     if (penumbra_ && bothSides) {
-        program.set("uSilhouetteThreshold", silhouetteThreshold(in.sceneBounds.radius()));
+        program.set(kLookupSilhouetteThreshold, silhouetteThreshold(in.sceneBounds.radius()));
         // surfacePlane (hard-shadowed points)
         scope.texture(gl::bind::PenumbraNormals, in.surfaces.normals.id());
     }

@@ -52,6 +52,16 @@ constexpr MethodOption kVsmBleed{"--vsm-bleed",
 constexpr OptionField kVsmFields[] = {field<&VsmOptions::blur>(kVsmBlur),
                                       field<&VsmOptions::bleed>(kVsmBleed)};
 
+// The three VSM programs' uniforms: moments (vsm_moments), blur (vsm_blur), lookup (vsm_lookup).
+constexpr struct {
+    gl::Uniform<glm::mat4> invLightProj{"uInvLightProj"};
+    gl::Uniform<int> radius{"uRadius"};
+    gl::Uniform<glm::ivec2> direction{"uDirection"};
+    gl::Uniform<glm::mat4> lightView{"uLightView"};
+    gl::Uniform<float> bleed{"uBleed"};
+    gl::Uniform<float> minVariance{"uMinVariance"};
+} kVsmUniforms;
+
 class Vsm final : public ShadowMethod {
   public:
     explicit Vsm(const gl::ShaderLibrary& shaders)
@@ -62,6 +72,12 @@ class Vsm final : public ShadowMethod {
           lookup_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
                                                {GL_FRAGMENT_SHADER, "vsm_lookup.frag.glsl"}})),
           emptyVao_(gl::VertexArray::create()), rawDepth_(gl::makeRawTexelSampler()) {
+        moments_.bindUniforms({&kVsmUniforms.invLightProj});
+        blur_.bindUniforms({&kVsmUniforms.radius, &kVsmUniforms.direction});
+        lookup_.bindUniforms(
+            {&kVsmUniforms.lightView, &kVsmUniforms.bleed, &kVsmUniforms.minVariance});
+        bindShadowMapUniforms(lookup_);
+        SurfacePositions::bindUniforms(lookup_);
     } // the map's depths, not depth tests
 
     void resize(int width, int height) override {
@@ -80,7 +96,7 @@ class Vsm final : public ShadowMethod {
         if (in.timer) in.timer->begin("vsm moments");
         glBindFramebuffer(GL_FRAMEBUFFER, fbo_[0].id());
         glViewport(0, 0, size, size);
-        moments_.set("uInvLightProj", glm::inverse(in.lightVolume.proj));
+        moments_.set(kVsmUniforms.invLightProj, glm::inverse(in.lightVolume.proj));
         {
             gl::BindScope scope;
             scope.texture(gl::bind::VsmDepth, in.shadow.depth.id())
@@ -94,11 +110,11 @@ class Vsm final : public ShadowMethod {
         if (in.timer) in.timer->begin("vsm blur");
         const int radius = blurRadius(in);
         if (radius > 0) {
-            blur_.set("uRadius", radius);
+            blur_.set(kVsmUniforms.radius, radius);
             gl::BindScope scope;
             for (int pass = 0; pass < 2; ++pass) {
                 glBindFramebuffer(GL_FRAMEBUFFER, fbo_[1 - pass].id());
-                blur_.set("uDirection", pass == 0 ? glm::ivec2(1, 0) : glm::ivec2(0, 1));
+                blur_.set(kVsmUniforms.direction, pass == 0 ? glm::ivec2(1, 0) : glm::ivec2(0, 1));
                 scope.texture(gl::bind::VsmBlurIn, maps_[pass].id());
                 gl::drawFullscreenTriangle(blur_, emptyVao_);
             }
@@ -113,9 +129,9 @@ class Vsm final : public ShadowMethod {
         glViewport(0, 0, in.width(), in.height());
         gl::BindScope scope;
         bindShadowMap(scope, lookup_, in.shadow);
-        lookup_.set("uLightView", in.lightVolume.view);
-        lookup_.set("uBleed", in.options<VsmOptions>().bleed);
-        lookup_.set("uMinVariance", kMinVariance);
+        lookup_.set(kVsmUniforms.lightView, in.lightVolume.view);
+        lookup_.set(kVsmUniforms.bleed, in.options<VsmOptions>().bleed);
+        lookup_.set(kVsmUniforms.minVariance, kMinVariance);
         in.surfaces.positions().bind(scope, lookup_, gl::bind::SurfacesDepth);
         in.surfaces.bindLookup(scope);
         scope.texture(gl::bind::VsmMoments, maps_[0].id());

@@ -9,6 +9,18 @@ namespace fl::overlay {
 
 namespace {
 
+// overlay_grid.frag.glsl's uniforms (and the disk light's, bound apart).
+constexpr struct {
+    gl::Uniform<int> mode{"uMode"};
+    gl::Uniform<glm::ivec4> viewport{"uViewport"};
+    gl::Uniform<float> scale{"uScale"};
+    gl::Uniform<int> lightSpace{"uLightSpace"};
+    gl::Uniform<int> eyeSpace{"uEyeSpace"};
+    gl::Uniform<glm::mat4> warp{"uWarp"};
+} kGridUniforms;
+
+constexpr gl::Uniform<float> kLinesPointSize{"uPointSize"}; // overlay_lines.vert.glsl
+
 // Saves what the overlays change (viewport, depth test, blending, point size) and restores it.
 class StateGuard {
   public:
@@ -73,19 +85,23 @@ OverlayCanvas::OverlayCanvas(const gl::ShaderLibrary& shaders)
     glVertexArrayAttribFormat(linesVao_.id(), 1, 4, GL_FLOAT, GL_FALSE, offsetof(Vertex, colour));
     glVertexArrayAttribBinding(linesVao_.id(), 0, 0);
     glVertexArrayAttribBinding(linesVao_.id(), 1, 0);
+    const auto& u = kGridUniforms;
+    grid_.bindUniforms({&u.mode, &u.viewport, &u.scale, &u.lightSpace, &u.eyeSpace, &u.warp});
+    bindDiskLightUniforms(grid_);
+    lines_.bindUniforms({&kLinesPointSize});
 }
 
 void OverlayCanvas::drawGrid(const GridDraw& g, glm::ivec4 viewport) const {
     if (g.a == nullptr) return;
     StateGuard guard;
     glViewport(viewport.x, viewport.y, viewport.z, viewport.w);
-    grid_.set("uMode", int(g.mode));
-    glProgramUniform4i(grid_.id(), grid_.location("uViewport"), viewport.x, viewport.y, viewport.z,
-                       viewport.w);
-    grid_.set("uScale", std::max(g.scale, 1e-6f));
-    grid_.set("uLightSpace", g.lightSpace ? 1 : 0);
-    grid_.set("uEyeSpace", g.eyeSpace ? 1 : 0);
-    grid_.set("uWarp", g.warp);
+    const auto& grid = kGridUniforms;
+    grid_.set(grid.mode, int(g.mode));
+    grid_.set(grid.viewport, viewport);
+    grid_.set(grid.scale, std::max(g.scale, 1e-6f));
+    grid_.set(grid.lightSpace, g.lightSpace ? 1 : 0);
+    grid_.set(grid.eyeSpace, g.eyeSpace ? 1 : 0);
+    grid_.set(grid.warp, g.warp);
     if (g.light != nullptr) setDiskLightUniforms(grid_, *g.light);
     const std::array<const gl::Texture*, 3> units{g.a, g.b != nullptr ? g.b : g.a,
                                                   g.c != nullptr ? g.c : nullptr};
@@ -109,7 +125,7 @@ void OverlayCanvas::drawVertices(std::span<const Vertex> vertices, GLenum primit
     const gl::Buffer buffer(GLsizeiptr(vertices.size_bytes()), vertices.data());
     glVertexArrayVertexBuffer(linesVao_.id(), 0, buffer.id(), 0, sizeof(Vertex));
     glEnable(GL_PROGRAM_POINT_SIZE);
-    lines_.set("uPointSize", pointSize);
+    lines_.set(kLinesPointSize, pointSize);
     glUseProgram(lines_.id());
     glBindVertexArray(linesVao_.id());
     glDrawArrays(primitive, 0, GLsizei(vertices.size()));

@@ -178,6 +178,10 @@ void rasterizeHud(const HudGeometry& geometry, ByteImage& image) {
     }
 }
 
+namespace {
+constexpr gl::Uniform<glm::vec2> kHudViewport{"uViewport"}; // hud.vert.glsl: pixels to NDC
+} // namespace
+
 HudPass::HudPass(const gl::ShaderLibrary& shaders)
     : program_(gl::Program::build(
           shaders, {{GL_VERTEX_SHADER, "hud.vert.glsl"}, {GL_FRAGMENT_SHADER, "hud.frag.glsl"}})),
@@ -188,6 +192,7 @@ HudPass::HudPass(const gl::ShaderLibrary& shaders)
     glEnableVertexArrayAttrib(vao_.id(), 1);
     glVertexArrayAttribFormat(vao_.id(), 1, 4, GL_FLOAT, GL_FALSE, offsetof(HudVertex, color));
     glVertexArrayAttribBinding(vao_.id(), 1, 0);
+    program_.bindUniforms({&kHudViewport});
 }
 
 void HudPass::draw(std::span<const std::string> lines, int width, int height, const HudStyle& given,
@@ -224,7 +229,7 @@ void HudPass::draw(std::span<const std::string> lines, int width, int height, co
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
     glDisable(GL_SCISSOR_TEST);
-    program_.set("uViewport", glm::vec2(width, height));
+    program_.set(kHudViewport, glm::vec2(width, height));
     glUseProgram(program_.id());
     glBindVertexArray(vao_.id());
     glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(g.triangles.size()));

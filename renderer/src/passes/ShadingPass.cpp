@@ -2,12 +2,43 @@
 
 namespace fl {
 
+namespace {
+
+// The light as shading.frag.glsl and blended.frag.glsl read it (light.glsl).
+struct ShadingLightUniforms {
+    gl::Uniform<glm::vec3> position{"uLightPosition"};
+    gl::Uniform<glm::vec3> direction{"uLightDirection"};
+    gl::Uniform<int> directional{"uLightDirectional"};
+    gl::Uniform<glm::vec3> colour{"uLightColor"};
+};
+constexpr ShadingLightUniforms kShadingLight;
+constexpr gl::Uniform<glm::mat4> kBlendedViewProj{"uViewProj"};
+
+void bindShadingLight(gl::Program& program) {
+    program.bindUniforms({&kShadingLight.position, &kShadingLight.direction,
+                          &kShadingLight.directional, &kShadingLight.colour});
+}
+
+void setShadingLight(const gl::Program& program, const Light& light) {
+    program.set(kShadingLight.position, light.position);
+    program.set(kShadingLight.direction, light.direction);
+    program.set(kShadingLight.directional, light.type == Light::Type::Directional ? 1 : 0);
+    program.set(kShadingLight.colour, light.color);
+}
+
+} // namespace
+
 ShadingPass::ShadingPass(const gl::ShaderLibrary& shaders)
     : program_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
                                             {GL_FRAGMENT_SHADER, "shading.frag.glsl"}})),
       blended_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "forward.vert.glsl"},
                                             {GL_FRAGMENT_SHADER, "blended.frag.glsl"}})),
-      emptyVao_(gl::VertexArray::create()) {}
+      emptyVao_(gl::VertexArray::create()) {
+    bindShadingLight(program_);
+    SurfacePositions::bindUniforms(program_);
+    bindShadingLight(blended_);
+    blended_.bindUniforms({&kBlendedViewProj});
+}
 
 void ShadingPass::resize(int width, int height) {
     if (color_ && color_.width() == width && color_.height() == height) return;
@@ -31,11 +62,8 @@ void ShadingPass::drawBlended(const Inputs& in) {
     // blended surface too, as the sky's 0 means "nothing here".
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     glDisable(GL_CULL_FACE);
-    blended_.set("uViewProj", in.surfaces.viewProj);
-    blended_.set("uLightPosition", in.light.position);
-    blended_.set("uLightDirection", in.light.direction);
-    blended_.set("uLightDirectional", in.light.type == Light::Type::Directional ? 1 : 0);
-    blended_.set("uLightColor", in.light.color);
+    blended_.set(kBlendedViewProj, in.surfaces.viewProj);
+    setShadingLight(blended_, in.light);
     withReversedDepth([&] {
         in.scene.draw(blended_, GpuScene::Uniforms::Material, GpuScene::Surfaces::Blended);
     });
@@ -49,10 +77,7 @@ ShadingPass::Outputs ShadingPass::execute(const Inputs& in) {
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glViewport(0, 0, color_.width(), color_.height());
     glDisable(GL_DEPTH_TEST);
-    program_.set("uLightPosition", in.light.position);
-    program_.set("uLightDirection", in.light.direction);
-    program_.set("uLightDirectional", in.light.type == Light::Type::Directional ? 1 : 0);
-    program_.set("uLightColor", in.light.color);
+    setShadingLight(program_, in.light);
     {
         gl::BindScope scope;
         in.surfaces.positions().bind(scope, program_, gl::bind::SurfacesDepth);

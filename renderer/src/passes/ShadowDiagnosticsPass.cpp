@@ -2,10 +2,33 @@
 
 namespace fl {
 
+namespace {
+// shadow_diagnostics.frag.glsl's own uniforms.
+constexpr struct {
+    gl::Uniform<glm::mat4> view{"uView"};
+    gl::Uniform<float> shadowMapSize{"uShadowMapSize"};
+    gl::Uniform<int> hasPrevious{"uHasPrevious"};
+    gl::Uniform<glm::mat4> previousLightViewProj{"uPreviousLightViewProj"};
+    gl::Uniform<glm::mat4> previousWarp{"uPreviousShadowWarp"};
+    gl::Uniform<glm::vec3> lightPosition{"uLightPosition"};
+    gl::Uniform<glm::vec3> lightDirection{"uLightDirection"};
+    gl::Uniform<int> lightDirectional{"uLightDirectional"};
+    gl::Uniform<glm::mat4> invViewProj{"uInvViewProj"};
+    gl::Uniform<glm::vec2> viewportSize{"uViewportSize"};
+} kDiagnostics;
+} // namespace
+
 ShadowDiagnosticsPass::ShadowDiagnosticsPass(const gl::ShaderLibrary& shaders)
     : program_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
                                             {GL_FRAGMENT_SHADER, "shadow_diagnostics.frag.glsl"}})),
-      emptyVao_(gl::VertexArray::create()) {}
+      emptyVao_(gl::VertexArray::create()) {
+    const auto& u = kDiagnostics;
+    program_.bindUniforms({&u.view, &u.shadowMapSize, &u.hasPrevious, &u.previousLightViewProj,
+                           &u.previousWarp, &u.lightPosition, &u.lightDirection,
+                           &u.lightDirectional, &u.invViewProj, &u.viewportSize});
+    bindShadowMapUniforms(program_);
+    SurfacePositions::bindUniforms(program_);
+}
 
 void ShadowDiagnosticsPass::resize(int width, int height) {
     width_ = width;
@@ -34,21 +57,22 @@ ShadowDiagnosticsPass::Outputs ShadowDiagnosticsPass::execute(const Inputs& in) 
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glViewport(0, 0, output_.width(), output_.height());
     glDisable(GL_DEPTH_TEST);
-    program_.set("uView", in.camera.view);
-    program_.set("uShadowMapSize", static_cast<float>(mapSize));
-    program_.set("uHasPrevious", hasPrevious_ ? 1 : 0);
-    program_.set("uPreviousLightViewProj", previousLightViewProj_);
-    program_.set("uPreviousShadowWarp", previousWarp_);
-    program_.set("uLightPosition", in.light.position);
-    program_.set("uLightDirection", in.light.direction);
-    program_.set("uLightDirectional", in.light.type == Light::Type::Directional ? 1 : 0);
+    const auto& u = kDiagnostics;
+    program_.set(u.view, in.camera.view);
+    program_.set(u.shadowMapSize, static_cast<float>(mapSize));
+    program_.set(u.hasPrevious, hasPrevious_ ? 1 : 0);
+    program_.set(u.previousLightViewProj, previousLightViewProj_);
+    program_.set(u.previousWarp, previousWarp_);
+    program_.set(u.lightPosition, in.light.position);
+    program_.set(u.lightDirection, in.light.direction);
+    program_.set(u.lightDirectional, in.light.type == Light::Type::Directional ? 1 : 0);
     gl::BindScope scope;
     bindShadowMap(scope, program_, in.shadow);
     scope.texture(gl::bind::PreviousShadowMap, previousMap_.id());
     in.surfaces.positions().bind(scope, program_, gl::bind::DiagnosticsSurfacesDepth);
     scope.texture(gl::bind::DiagnosticsSurfacesNormals, in.surfaces.normals.id());
-    program_.set("uInvViewProj", glm::inverse(in.camera.proj * in.camera.view));
-    program_.set("uViewportSize", glm::vec2(output_.width(), output_.height()));
+    program_.set(u.invViewProj, glm::inverse(in.camera.proj * in.camera.view));
+    program_.set(u.viewportSize, glm::vec2(output_.width(), output_.height()));
     gl::drawFullscreenTriangle(program_, emptyVao_);
     scope.release();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

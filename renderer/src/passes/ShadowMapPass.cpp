@@ -25,6 +25,27 @@ const std::array<TsmOption, 3> kTsmOptions{{
      0.0, 0.5, &geom::TrapezoidParams::hysteresis},
 }};
 
+// shaders/shadow_map_decode.glsl's uniforms (MapPositions::bind).
+constexpr struct {
+    gl::Uniform<glm::mat3> unwarp{"uMapUnwarp"};
+    gl::Uniform<glm::mat4> inverseLightViewProj{"uMapInverseLightViewProj"};
+} kMapDecode;
+
+// shaders/shadow_lookup.glsl's uniforms (bindShadowMap).
+constexpr struct {
+    gl::Uniform<glm::mat4> lightViewProj{"uLightViewProj"};
+    gl::Uniform<glm::mat4> warp{"uShadowWarp"};
+    gl::Uniform<glm::vec4> light{"uShadowLight"};
+} kShadowLookup;
+
+// The depth pass's own (shadow_depth.*.glsl).
+constexpr struct {
+    gl::Uniform<glm::mat4> lightViewProj{"uLightViewProj"};
+    gl::Uniform<glm::mat4> warp{"uShadowWarp"};
+    gl::Uniform<float> slopeBias{"uSlopeBias"};
+    gl::Uniform<float> constantBias{"uConstantBias"};
+} kShadowDepth;
+
 bool sameParams(const geom::TrapezoidParams& a, const geom::TrapezoidParams& b) {
     return a.focusFraction == b.focusFraction && a.xi == b.xi && a.rLow == b.rLow &&
            a.rHigh == b.rHigh && a.wBand == b.wBand && a.quantize == b.quantize &&
@@ -50,8 +71,12 @@ std::optional<ShadowMapProvider> parseProvider(std::string_view name) {
 void MapPositions::bind(gl::BindScope& scope, const gl::Program& program,
                         gl::TextureUnit unit) const {
     scope.texture(unit, depth->id());
-    program.set("uMapUnwarp", unwarp);
-    program.set("uMapInverseLightViewProj", inverseLightViewProj);
+    program.set(kMapDecode.unwarp, unwarp);
+    program.set(kMapDecode.inverseLightViewProj, inverseLightViewProj);
+}
+
+void MapPositions::bindUniforms(gl::Program& program) {
+    program.bindUniforms({&kMapDecode.unwarp, &kMapDecode.inverseLightViewProj});
 }
 
 const gl::Texture& MapPositions::decoded() const {
@@ -78,7 +103,11 @@ ShadowMapPass::ShadowMapPass(const gl::ShaderLibrary& shaders)
     : program_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "shadow_depth.vert.glsl"},
                                             {GL_FRAGMENT_SHADER, "shadow_depth.frag.glsl"}})),
       decodeProgram_(
-          gl::Program::build(shaders, {{GL_COMPUTE_SHADER, "shadow_map_positions.comp.glsl"}})) {}
+          gl::Program::build(shaders, {{GL_COMPUTE_SHADER, "shadow_map_positions.comp.glsl"}})) {
+    const auto& u = kShadowDepth;
+    program_.bindUniforms({&u.lightViewProj, &u.warp, &u.slopeBias, &u.constantBias});
+    MapPositions::bindUniforms(decodeProgram_);
+}
 
 gl::Texture makeShadowDepthTexture(int size) {
     gl::Texture depth(GL_DEPTH_COMPONENT32F, size, size);
@@ -139,10 +168,10 @@ ShadowMapPass::Outputs ShadowMapPass::execute(const Inputs& in) {
     // Both faces are drawn: the generated and loaded scenes contain open and double-sided
     // surfaces, and culling either face would let light through them.
     glDisable(GL_CULL_FACE);
-    program_.set("uLightViewProj", lightViewProj);
-    program_.set("uShadowWarp", warp);
-    program_.set("uSlopeBias", in.settings.slopeBias);
-    program_.set("uConstantBias", in.settings.constantBias);
+    program_.set(kShadowDepth.lightViewProj, lightViewProj);
+    program_.set(kShadowDepth.warp, warp);
+    program_.set(kShadowDepth.slopeBias, in.settings.slopeBias);
+    program_.set(kShadowDepth.constantBias, in.settings.constantBias);
     in.scene.draw(program_, GpuScene::Uniforms::Geometry);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     receiversWritten_ = in.writeReceivers;
@@ -177,9 +206,13 @@ const gl::Texture& ShadowMapPass::decodedReceivers() const {
 void bindShadowMap(gl::BindScope& scope, const gl::Program& program,
                    const ShadowMapPass::Outputs& shadow) {
     scope.texture(gl::bind::ShadowMap, shadow.depth.id());
-    program.set("uLightViewProj", shadow.lightViewProj);
-    program.set("uShadowWarp", shadow.warp);
-    program.set("uShadowLight", shadowLight(shadow.lightViewProj));
+    program.set(kShadowLookup.lightViewProj, shadow.lightViewProj);
+    program.set(kShadowLookup.warp, shadow.warp);
+    program.set(kShadowLookup.light, shadowLight(shadow.lightViewProj));
+}
+
+void bindShadowMapUniforms(gl::Program& program) {
+    program.bindUniforms({&kShadowLookup.lightViewProj, &kShadowLookup.warp, &kShadowLookup.light});
 }
 
 glm::vec4 shadowLight(const glm::mat4& lightViewProj) {

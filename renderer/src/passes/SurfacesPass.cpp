@@ -8,20 +8,43 @@
 namespace fl {
 
 namespace {
+
+// shaders/surface_decode.glsl's matrix (SurfacePositions::bind).
+constexpr gl::Uniform<glm::mat4> kSurfaceInverseViewProj{"uSurfaceInverseViewProj"};
+
+// The surfaces pass's own uniforms (forward.vert.glsl, surfaces.*.glsl).
+constexpr struct {
+    gl::Uniform<glm::mat4> viewProj{"uViewProj"};
+    gl::Uniform<glm::mat4> previousViewProj{"uPreviousViewProj"}; // FL_MOTION only
+    gl::Uniform<glm::vec2> viewport{"uViewport"};
+    gl::Uniform<glm::vec3> lightPosition{"uLightPosition"};
+    gl::Uniform<glm::vec3> lightDirection{"uLightDirection"};
+    gl::Uniform<int> lightDirectional{"uLightDirectional"};
+} kSurfaces;
+
 gl::Program buildProgram(const gl::ShaderLibrary& shaders, bool motion) {
-    return gl::Program::build(shaders,
-                              {{GL_VERTEX_SHADER, "forward.vert.glsl"},
-                               {GL_GEOMETRY_SHADER, "surfaces.geom.glsl"},
-                               {GL_FRAGMENT_SHADER, "surfaces.frag.glsl"}},
-                              motion ? std::vector<std::string>{"FL_MOTION 1"}
-                                     : std::vector<std::string>{});
+    gl::Program program = gl::Program::build(shaders,
+                                             {{GL_VERTEX_SHADER, "forward.vert.glsl"},
+                                              {GL_GEOMETRY_SHADER, "surfaces.geom.glsl"},
+                                              {GL_FRAGMENT_SHADER, "surfaces.frag.glsl"}},
+                                             motion ? std::vector<std::string>{"FL_MOTION 1"}
+                                                    : std::vector<std::string>{});
+    const auto& u = kSurfaces;
+    program.bindUniforms({&u.viewProj, &u.previousViewProj, &u.viewport, &u.lightPosition,
+                          &u.lightDirection, &u.lightDirectional});
+    return program;
 }
+
 } // namespace
 
 void SurfacePositions::bind(gl::BindScope& scope, const gl::Program& program,
                             gl::TextureUnit unit) const {
     scope.texture(unit, depth.id());
-    program.set("uSurfaceInverseViewProj", inverseViewProj);
+    program.set(kSurfaceInverseViewProj, inverseViewProj);
+}
+
+void SurfacePositions::bindUniforms(gl::Program& program) {
+    program.bindUniforms({&kSurfaceInverseViewProj});
 }
 
 FloatImage SurfacePositions::read() const {
@@ -115,13 +138,14 @@ SurfacesPass::Outputs SurfacesPass::execute(const Inputs& in) {
     glDepthFunc(GL_GREATER); // reversed Z: nearer is larger
     glDepthMask(GL_TRUE);
     glDisable(GL_CULL_FACE); // glTF doubleSided and open meshes: both faces are visible
-    program.set("uViewProj", viewProj_);
+    const auto& u = kSurfaces;
+    program.set(u.viewProj, viewProj_);
     if (in.previousCamera)
-        program.set("uPreviousViewProj", in.previousCamera->proj * in.previousCamera->view);
-    program.set("uViewport", glm::vec2(depth_.width(), depth_.height()));
-    program.set("uLightPosition", in.light.position);
-    program.set("uLightDirection", in.light.direction);
-    program.set("uLightDirectional", in.light.type == Light::Type::Directional ? 1 : 0);
+        program.set(u.previousViewProj, in.previousCamera->proj * in.previousCamera->view);
+    program.set(u.viewport, glm::vec2(depth_.width(), depth_.height()));
+    program.set(u.lightPosition, in.light.position);
+    program.set(u.lightDirection, in.light.direction);
+    program.set(u.lightDirectional, in.light.type == Light::Type::Directional ? 1 : 0);
     // Blended surfaces are drawn over the shaded image (ShadingPass, step 4b), not here.
     withReversedDepth(
         [&] { in.scene.draw(program, GpuScene::Uniforms::Material, GpuScene::Surfaces::Solid); });

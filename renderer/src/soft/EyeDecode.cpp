@@ -1,4 +1,5 @@
 #include <renderer/passes/SurfaceDecode.h>
+#include <renderer/passes/SurfacesPass.h>
 #include <renderer/soft/EyeDecode.h>
 
 #include <gpu/ReadBack.h>
@@ -49,16 +50,31 @@ glm::vec4 occluder(std::uint32_t cell, const ReceiverGrid& receivers,
 
 } // namespace eyecell
 
+namespace {
+// shaders/eye_decode.glsl's own uniforms (EyeCells::bind; the surfaces' and the map's apart).
+constexpr struct {
+    gl::Uniform<int> objectIds{"uEyeObjectIds"};
+    gl::Uniform<int> factor{"uEyeFactor"};
+    gl::Uniform<glm::ivec2> grid{"uEyeGrid"};
+} kEyeDecode;
+} // namespace
+
 void EyeCells::bind(gl::BindScope& scope, const gl::Program& program, int factor) const {
-    scope.texture(gl::bind::EyeCells, cells->id()).texture(gl::bind::EyeDepth, depth->id());
-    program.set("uSurfaceInverseViewProj", inverseViewProj);
+    scope.texture(gl::bind::EyeCells, cells->id());
+    SurfacePositions{*depth, inverseViewProj}.bind(scope, program, gl::bind::EyeDepth);
     map.bind(scope, program, gl::bind::EyeReceivers);
     scope.texture(gl::bind::EyeIds, objectIds ? ids->id() : 0);
-    program.set("uEyeObjectIds", objectIds ? 1 : 0);
+    program.set(kEyeDecode.objectIds, objectIds ? 1 : 0);
     scope.texture(gl::bind::SeedOccluders, seedOccluders ? seedOccluders->id() : 0);
-    program.set("uEyeFactor", factor);
-    program.set("uEyeGrid",
+    program.set(kEyeDecode.factor, factor);
+    program.set(kEyeDecode.grid,
                 glm::ivec2((width() + factor - 1) / factor, (height() + factor - 1) / factor));
+}
+
+void EyeCells::bindUniforms(gl::Program& program) {
+    program.bindUniforms({&kEyeDecode.objectIds, &kEyeDecode.factor, &kEyeDecode.grid});
+    SurfacePositions::bindUniforms(program);
+    MapPositions::bindUniforms(program);
 }
 
 std::pair<const gl::Texture&, const gl::Texture&> EyeCells::decoded() const {

@@ -79,7 +79,9 @@ EyeFloodEstimator::EyeFloodEstimator(const gl::ShaderLibrary& shaders)
       travel_(gl::Program::build(shaders, {{GL_COMPUTE_SHADER, "jfae_travel.comp.glsl"}})),
       emptyVao_(gl::VertexArray::create()),
       bins_(static_cast<GLsizeiptr>(kTravelBins * sizeof(std::uint32_t)), nullptr),
-      kernel_(shaders, jfa::GlKernelKind::Fragment) {}
+      kernel_(shaders, jfa::GlKernelKind::Fragment) {
+    bindBoundaryUniforms(boundary_);
+}
 
 void EyeFloodEstimator::resize(glm::ivec2 size) {
     if (seeds_ && seeds_.width() == size.x && seeds_.height() == size.y) return;
@@ -102,10 +104,7 @@ std::vector<std::uint32_t> EyeFloodEstimator::travel(const EyeCells& eye,
     // EyeCells::bind's factor, no coarse copy): the same boundary rule.
     const BoundaryThreshold th = coarseThreshold(s.threshold, s.factor);
     glBindFramebuffer(GL_FRAMEBUFFER, seedsFbo_.id());
-    boundary_.set("uEye", s.eye);
-    boundary_.set("uAbsolute2", th.absolute2);
-    boundary_.set("uRelative2", th.relative2);
-    boundary_.set("uListSeeds", 0);
+    setBoundaryUniforms(boundary_, s.eye, th, false);
     {
         gl::BindScope scope;
         eye.bind(scope, boundary_, s.factor);

@@ -15,6 +15,38 @@
 
 namespace fl {
 
+namespace {
+
+// jfae_criterion.glsl's own uniforms (the disk light's, the reach's and the eye cells' apart).
+constexpr struct {
+    gl::Uniform<int> objectIdFix{"uObjectIdFix"};
+    gl::Uniform<int> midpointFix{"uMidpointFix"};
+} kEyeCriterion;
+
+// The JFA-E passes' own uniforms: the occluder ids drawn from the light (shadow_depth.vert.glsl),
+// the eye pass, the boundary seeds and the composite.
+constexpr struct {
+    gl::Uniform<glm::mat4> lightViewProj{"uLightViewProj"};
+    gl::Uniform<glm::mat4> warp{"uShadowWarp"};
+    gl::Uniform<float> slopeBias{"uSlopeBias"};
+    gl::Uniform<float> constantBias{"uConstantBias"};
+} kEyeLightIds;
+constexpr struct {
+    gl::Uniform<int> occluderEdges{"uOccluderEdges"};
+    gl::Uniform<float> silhouetteThreshold{"uSilhouetteThreshold"};
+} kEyePass;
+constexpr struct {
+    gl::Uniform<glm::vec3> eye{"uEye"};
+    gl::Uniform<float> absolute2{"uAbsolute2"};
+    gl::Uniform<float> relative2{"uRelative2"};
+    gl::Uniform<int> listSeeds{"uListSeeds"};
+    gl::Uniform<int> seedWalk{"uSeedWalk"};
+    gl::Uniform<float> silhouetteThreshold{"uSilhouetteThreshold"};
+} kEyeBoundary;
+constexpr gl::Uniform<int> kCompositeOccluderEdges{"uOccluderEdges"};
+
+} // namespace
+
 BoundaryThreshold boundaryThreshold(const EyeSoftSettings& settings, const glm::mat4& proj,
                                     int height) {
     BoundaryThreshold t;
@@ -140,9 +172,36 @@ void setCriterionUniforms(gl::BindScope& scope, const gl::Program& program,
                           const EyeSoftCriterion& criterion) {
     setDiskLightUniforms(program, criterion.light);
     setPenumbraReachUniforms(scope, program, criterion.reachBound);
-    program.set("uObjectIdFix", criterion.objectIdFix ? 1 : 0);
-    program.set("uMidpointFix", criterion.midpointFix ? 1 : 0);
+    program.set(kEyeCriterion.objectIdFix, criterion.objectIdFix ? 1 : 0);
+    program.set(kEyeCriterion.midpointFix, criterion.midpointFix ? 1 : 0);
     if (criterion.cells != nullptr) criterion.cells->bind(scope, program, criterion.cellsFactor);
+}
+
+void setBoundaryUniforms(const gl::Program& program, glm::vec3 eye, BoundaryThreshold th,
+                         bool listSeeds, const DiskLight* walkLight, float silhouetteThreshold) {
+    program.set(kEyeBoundary.eye, eye);
+    program.set(kEyeBoundary.absolute2, th.absolute2);
+    program.set(kEyeBoundary.relative2, th.relative2);
+    program.set(kEyeBoundary.listSeeds, listSeeds ? 1 : 0);
+    program.set(kEyeBoundary.seedWalk, walkLight ? 1 : 0);
+    if (!walkLight) return;
+    program.set(kEyeBoundary.silhouetteThreshold, silhouetteThreshold);
+    setDiskLightUniforms(program, *walkLight); // the walk's silhouette test (silhouetteDepth)
+}
+
+void bindBoundaryUniforms(gl::Program& program) {
+    const auto& b = kEyeBoundary;
+    program.bindUniforms(
+        {&b.eye, &b.absolute2, &b.relative2, &b.listSeeds, &b.seedWalk, &b.silhouetteThreshold});
+    bindDiskLightUniforms(program);
+    EyeCells::bindUniforms(program);
+}
+
+void bindCriterionUniforms(gl::Program& program, const EyeSoftCriterion* /*criterion*/) {
+    bindDiskLightUniforms(program);
+    bindPenumbraReachUniforms(program);
+    program.bindUniforms({&kEyeCriterion.objectIdFix, &kEyeCriterion.midpointFix});
+    EyeCells::bindUniforms(program);
 }
 
 jfa::Grid readEyeGrid(const gl::Texture& packed, const jfa::Grid& occluders) {
@@ -261,7 +320,23 @@ EyeSoftShadowPass::EyeSoftShadowPass(const gl::ShaderLibrary& shaders)
       unpack_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
                                            {GL_FRAGMENT_SHADER, "jfae_unpack.frag.glsl"}})),
       emptyVao_(gl::VertexArray::create()), kernel_(shaders, jfa::GlKernelKind::Fragment),
-      bounds_(shaders), shaders_(shaders) {}
+      bounds_(shaders), shaders_(shaders) {
+    const auto& l = kEyeLightIds;
+    lightIds_.bindUniforms({&l.lightViewProj, &l.warp, &l.slopeBias, &l.constantBias});
+    eyePass_.bindUniforms({&kEyePass.occluderEdges, &kEyePass.silhouetteThreshold});
+    bindDiskLightUniforms(eyePass_);
+    bindShadowMapUniforms(eyePass_);
+    SurfacePositions::bindUniforms(eyePass_);
+    MapPositions::bindUniforms(eyePass_);
+    bindBoundaryUniforms(boundary_);
+    for (gl::Program* composite : {&composite_, &compositeEdges_}) {
+        composite->bindUniforms({&kCompositeOccluderEdges});
+        bindDiskLightUniforms(*composite);
+        EyeCells::bindUniforms(*composite);
+        bindShadowMapUniforms(*composite);
+    }
+    EyeCells::bindUniforms(unpack_);
+}
 
 EyeSoftShadowPass::~EyeSoftShadowPass() = default;
 
@@ -308,10 +383,10 @@ void EyeSoftShadowPass::drawOccluderIds(const Inputs& in) {
     glDepthFunc(GL_LEQUAL);
     glDepthMask(GL_FALSE);
     glDisable(GL_CULL_FACE);
-    lightIds_.set("uLightViewProj", in.shadow.lightViewProj);
-    lightIds_.set("uShadowWarp", in.shadow.warp);
-    lightIds_.set("uSlopeBias", in.shadowSettings.slopeBias);
-    lightIds_.set("uConstantBias", in.shadowSettings.constantBias);
+    lightIds_.set(kEyeLightIds.lightViewProj, in.shadow.lightViewProj);
+    lightIds_.set(kEyeLightIds.warp, in.shadow.warp);
+    lightIds_.set(kEyeLightIds.slopeBias, in.shadowSettings.slopeBias);
+    lightIds_.set(kEyeLightIds.constantBias, in.shadowSettings.constantBias);
     in.scene.draw(lightIds_, GpuScene::Uniforms::Material);
     glDepthMask(GL_TRUE);
     glDepthFunc(GL_LESS);
@@ -322,8 +397,9 @@ void EyeSoftShadowPass::drawEyeHardShadows(const Inputs& in) {
     glBindFramebuffer(GL_FRAMEBUFFER, eyeFbo_.id());
     glViewport(0, 0, in.width, in.height);
     glDisable(GL_DEPTH_TEST);
-    eyePass_.set("uOccluderEdges", in.settings.occluderPoints == OccluderPoints::Edge ? 1 : 0);
-    eyePass_.set("uSilhouetteThreshold", in.settings.silhouetteThreshold);
+    eyePass_.set(kEyePass.occluderEdges,
+                 in.settings.occluderPoints == OccluderPoints::Edge ? 1 : 0);
+    eyePass_.set(kEyePass.silhouetteThreshold, in.settings.silhouetteThreshold);
     setDiskLightUniforms(eyePass_, in.light);
     gl::BindScope scope;
     bindShadowMap(scope, eyePass_, in.shadow);
@@ -340,16 +416,12 @@ void EyeSoftShadowPass::drawBoundaries(const Inputs& in, BoundaryThreshold th) {
     glBindFramebuffer(GL_FRAMEBUFFER, seedsFbo_.id());
     glViewport(0, 0, in.width, in.height);
     glDisable(GL_DEPTH_TEST);
-    boundary_.set("uEye", in.camera.eye);
-    boundary_.set("uAbsolute2", th.absolute2);
-    boundary_.set("uRelative2", th.relative2);
     // A banded flood lists its seeds here rather than sweeping the frame for them again.
     const bool listSeeds = jfa::banded(in.region);
-    boundary_.set("uListSeeds", listSeeds ? 1 : 0);
     // Edge points: a seed's occluder is walked to the silhouette (boundaryOccluderPoint).
-    boundary_.set("uSeedWalk", in.settings.occluderPoints == OccluderPoints::Edge ? 1 : 0);
-    boundary_.set("uSilhouetteThreshold", in.settings.silhouetteThreshold);
-    setDiskLightUniforms(boundary_, in.light); // the walk's silhouette test (silhouetteDepth)
+    const bool walk = in.settings.occluderPoints == OccluderPoints::Edge;
+    setBoundaryUniforms(boundary_, in.camera.eye, th, listSeeds, walk ? &in.light : nullptr,
+                        in.settings.silhouetteThreshold);
     gl::BindScope scope;
     if (listSeeds) kernel_.beginSeedList(scope, in.width, in.height);
     eye_.bind(scope, boundary_);
@@ -366,7 +438,7 @@ void EyeSoftShadowPass::drawComposite(const Inputs& in, const gl::Texture& flood
     // The first pass marks the pixels the edges recompute; the second runs only there.
     const auto draw = [&](const gl::Program& program) {
         setDiskLightUniforms(program, in.light);
-        program.set("uOccluderEdges", edges ? 1 : 0);
+        program.set(kCompositeOccluderEdges, edges ? 1 : 0);
         gl::BindScope scope;
         eye_.bind(scope, program);
         bindShadowMap(scope, program, in.shadow);

@@ -4,8 +4,6 @@
 
 #include <renderer/passes/SurfacesPass.h>
 
-#include <glm/gtc/type_ptr.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -146,10 +144,38 @@ float filteredVisibility(const FilterFrame& f, glm::vec3 p, glm::vec3 n) {
     return filter(d.centre, d.u, d.v);
 }
 
+namespace {
+// filtered_shadow.frag.glsl's own uniforms.
+constexpr struct {
+    gl::Uniform<glm::mat4> lightView{"uLightView"};
+    gl::Uniform<glm::mat4> lightProj{"uLightProj"};
+    gl::Uniform<glm::mat4> invLightProj{"uInvLightProj"};
+    gl::Uniform<glm::mat4> warp{"uShadowWarp"};
+    gl::Uniform<int> pcss{"uPcss"};
+    gl::Uniform<glm::vec3> diskCenter{"uDiskCenter"};
+    gl::Uniform<float> diskRadius{"uDiskRadius"};
+    gl::Uniform<float> searchDepth{"uSearchDepth"};
+    gl::Uniform<glm::vec3> diskNormalView{"uDiskNormalView"};
+    gl::Uniform<glm::vec3> diskTangentView{"uDiskTangentView"};
+    gl::Uniform<glm::vec3> diskBitangentView{"uDiskBitangentView"};
+    gl::Uniform<int> tapCount{"uTapCount"};
+    gl::UniformArray<glm::vec2> taps{"uTaps"};
+    gl::Uniform<int> blockerCount{"uBlockerCount"};
+    gl::UniformArray<glm::vec2> blockerTaps{"uBlockerTaps"};
+} kFiltered;
+} // namespace
+
 FilteredShadowPass::FilteredShadowPass(const gl::ShaderLibrary& shaders)
     : program_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
                                             {GL_FRAGMENT_SHADER, "filtered_shadow.frag.glsl"}})),
-      rawDepth_(gl::makeRawTexelSampler()), emptyVao_(gl::VertexArray::create()) {}
+      rawDepth_(gl::makeRawTexelSampler()), emptyVao_(gl::VertexArray::create()) {
+    const auto& u = kFiltered;
+    program_.bindUniforms({&u.lightView, &u.lightProj, &u.invLightProj, &u.warp, &u.pcss,
+                           &u.diskCenter, &u.diskRadius, &u.searchDepth, &u.diskNormalView,
+                           &u.diskTangentView, &u.diskBitangentView, &u.tapCount, &u.taps,
+                           &u.blockerCount, &u.blockerTaps});
+    SurfacePositions::bindUniforms(program_);
+}
 
 void FilteredShadowPass::resize(int width, int height) {
     if (visibility_ && visibility_.width() == width && visibility_.height() == height) return;
@@ -200,26 +226,22 @@ FilteredShadowPass::Outputs FilteredShadowPass::execute(const Inputs& in, gl::Pa
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glViewport(0, 0, width, height);
     glDisable(GL_DEPTH_TEST);
-    const GLuint id = program_.id();
-    program_.set("uLightView", f.lightView);
-    program_.set("uLightProj", f.lightProj);
-    program_.set("uInvLightProj", glm::inverse(f.lightProj));
-    program_.set("uShadowWarp", f.warp);
-    program_.set("uPcss", in.pcss ? 1 : 0);
-    program_.set("uDiskCenter", f.disk.center);
-    program_.set("uDiskRadius", f.disk.radius);
-    program_.set("uSearchDepth", f.searchDepth);
-    program_.set("uDiskNormalView", f.diskNormalView);
-    program_.set("uDiskTangentView", f.diskTangentView);
-    program_.set("uDiskBitangentView", f.diskBitangentView);
-    program_.set("uTapCount", static_cast<int>(f.taps.size()));
-    glProgramUniform2fv(id, glGetUniformLocation(id, "uTaps"), static_cast<GLsizei>(f.taps.size()),
-                        glm::value_ptr(f.taps[0]));
-    program_.set("uBlockerCount", static_cast<int>(f.blockerTaps.size()));
-    if (!f.blockerTaps.empty())
-        glProgramUniform2fv(id, glGetUniformLocation(id, "uBlockerTaps"),
-                            static_cast<GLsizei>(f.blockerTaps.size()),
-                            glm::value_ptr(f.blockerTaps[0]));
+    const auto& u = kFiltered;
+    program_.set(u.lightView, f.lightView);
+    program_.set(u.lightProj, f.lightProj);
+    program_.set(u.invLightProj, glm::inverse(f.lightProj));
+    program_.set(u.warp, f.warp);
+    program_.set(u.pcss, in.pcss ? 1 : 0);
+    program_.set(u.diskCenter, f.disk.center);
+    program_.set(u.diskRadius, f.disk.radius);
+    program_.set(u.searchDepth, f.searchDepth);
+    program_.set(u.diskNormalView, f.diskNormalView);
+    program_.set(u.diskTangentView, f.diskTangentView);
+    program_.set(u.diskBitangentView, f.diskBitangentView);
+    program_.set(u.tapCount, static_cast<int>(f.taps.size()));
+    program_.set(u.taps, f.taps);
+    program_.set(u.blockerCount, static_cast<int>(f.blockerTaps.size()));
+    program_.set(u.blockerTaps, f.blockerTaps);
     gl::BindScope scope;
     scope.texture(gl::bind::ShadowDepth, in.shadow.depth.id())
         .sampler(gl::bind::ShadowDepth, rawDepth_.id());

@@ -11,6 +11,28 @@
 namespace fl {
 
 namespace {
+
+// silhouette.frag.glsl's own uniforms; the region's (SILHOUETTE_REGION, with tile_rows.vert.glsl)
+// apart.
+constexpr struct {
+    gl::Uniform<float> threshold{"uSilhouetteThreshold"};
+    gl::Uniform<int> listSeeds{"uListSeeds"};
+} kSilhouette;
+constexpr struct {
+    gl::Uniform<int> regionTile{"uRegionTile"};
+    gl::Uniform<int> regionTilesX{"uRegionTilesX"};
+    gl::Uniform<int> tile{"uTile"};
+    gl::Uniform<glm::ivec2> size{"uSize"};
+} kSilhouetteRegion;
+
+// penumbra_view.frag.glsl's uniforms.
+constexpr struct {
+    gl::Uniform<glm::mat4> lightViewProj{"uLightViewProj"};
+    gl::Uniform<glm::mat4> warp{"uShadowWarp"};
+    gl::Uniform<int> mapSize{"uMapSize"};
+    gl::Uniform<int> tile{"uTile"};
+} kPenumbraView;
+
 // Bytes of one flag (a uint) per band tile of a size^2 map: the view's and the seed region's.
 GLsizeiptr tileFlagBytes(int size, int tile) {
     const GLsizeiptr tiles = (size + tile - 1) / tile;
@@ -103,7 +125,18 @@ PenumbraMapPass::PenumbraMapPass(const gl::ShaderLibrary& shaders)
       silhouetteRows_(gl::Program::build(
           shaders,
           {{GL_VERTEX_SHADER, "tile_rows.vert.glsl"}, {GL_FRAGMENT_SHADER, "silhouette.frag.glsl"}},
-          {"SILHOUETTE_REGION 1"})) {}
+          {"SILHOUETTE_REGION 1"})) {
+    for (gl::Program* program : {&silhouette_, &silhouetteRows_}) {
+        program->bindUniforms({&kSilhouette.threshold, &kSilhouette.listSeeds});
+        bindDiskLightUniforms(*program);
+        MapPositions::bindUniforms(*program);
+    }
+    const auto& r = kSilhouetteRegion;
+    silhouetteRows_.bindUniforms({&r.regionTile, &r.regionTilesX, &r.tile, &r.size});
+    const auto& v = kPenumbraView;
+    viewProgram_.bindUniforms({&v.lightViewProj, &v.warp, &v.mapSize, &v.tile});
+    SurfacePositions::bindUniforms(viewProgram_);
+}
 
 PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, gl::PassTimer* timer) {
     const int size = in.receivers.size();
@@ -210,11 +243,11 @@ void PenumbraMapPass::findSeeds(const Inputs& in, bool region) {
     glViewport(0, 0, size, size);
     glDisable(GL_DEPTH_TEST);
     setDiskLightUniforms(program, in.light);
-    program.set("uSilhouetteThreshold", in.threshold);
+    program.set(kSilhouette.threshold, in.threshold);
     // A banded flood lists its seeds here, in the pass that finds them, rather than sweeping
     // the map for them again (GlFloodKernelBase::beginSeedList).
     const bool listSeeds = jfa::banded(in.settings.region);
-    program.set("uListSeeds", listSeeds ? 1 : 0);
+    program.set(kSilhouette.listSeeds, listSeeds ? 1 : 0);
     gl::BindScope scope;
     if (listSeeds) kernel_.beginSeedList(scope, size, size);
     in.receivers.bind(scope, program, gl::bind::SilhouetteReceivers);
@@ -227,10 +260,10 @@ void PenumbraMapPass::findSeeds(const Inputs& in, bool region) {
             glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, empty.data());
         }
         const int tiles = (size + tile - 1) / tile;
-        program.set("uRegionTile", tile);
-        program.set("uRegionTilesX", tiles);
-        program.set("uTile", tile);
-        program.set("uSize", glm::ivec2(size));
+        program.set(kSilhouetteRegion.regionTile, tile);
+        program.set(kSilhouetteRegion.regionTilesX, tiles);
+        program.set(kSilhouetteRegion.tile, tile);
+        program.set(kSilhouetteRegion.size, glm::ivec2(size));
         scope.storage(gl::bind::SeedRegion, seedRegion_.id())
             .storage(gl::bind::RowSpans, rowSpans_.id());
         glUseProgram(program.id());
@@ -282,10 +315,10 @@ void PenumbraMapPass::markView(const PenumbraView& view, int size, int tile) {
     viewTileCount_ = tiles * tiles;
     const GLuint zero = 0;
     glClearNamedBufferData(viewTiles_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-    viewProgram_.set("uLightViewProj", view.lightViewProj);
-    viewProgram_.set("uShadowWarp", view.warp);
-    viewProgram_.set("uMapSize", size);
-    viewProgram_.set("uTile", tile);
+    viewProgram_.set(kPenumbraView.lightViewProj, view.lightViewProj);
+    viewProgram_.set(kPenumbraView.warp, view.warp);
+    viewProgram_.set(kPenumbraView.mapSize, size);
+    viewProgram_.set(kPenumbraView.tile, tile);
     // One fragment per eye pixel, into a framebuffer without attachments.
     const int w = view.positions.width(), h = view.positions.height();
     glNamedFramebufferParameteri(viewFbo_.id(), GL_FRAMEBUFFER_DEFAULT_WIDTH, w);

@@ -101,15 +101,44 @@ std::optional<long long> widestPenumbraTexels(const DiskLight& light,
     return static_cast<long long>(std::ceil(ndc * 0.5 * size)) + 6;
 }
 
+namespace {
+
+// shaders/disk_light.glsl's reach bound (setPenumbraReachUniforms).
+constexpr struct {
+    gl::Uniform<int> enabled{"uReachEnabled"};
+    gl::Uniform<glm::mat4> matrix{"uReachMatrix"};
+    gl::Uniform<glm::ivec2> size{"uReachSize"};
+    gl::Uniform<float> farDepth{"uReachFarDepth"};
+    gl::Uniform<int> levels{"uReachLevels"};
+    gl::Uniform<int> cells{"uReachCells"};
+} kReach;
+
+// reach_bounds.comp.glsl's own uniforms.
+constexpr struct {
+    gl::Uniform<float> validMin{"uValidMin"};
+    gl::Uniform<int> regionTile{"uRegionTile"};
+    gl::Uniform<int> regionTilesX{"uRegionTilesX"};
+    gl::Uniform<int> mode{"uMode"};
+    gl::Uniform<glm::ivec2> dstSize{"uDstSize"};
+    gl::Uniform<glm::ivec2> srcSize{"uSrcSize"};
+} kReachBounds;
+
+} // namespace
+
 void setPenumbraReachUniforms(gl::BindScope& scope, const gl::Program& program,
                               const PenumbraReach& reach) {
-    program.set("uReachEnabled", reach.enabled ? 1 : 0);
-    program.set("uReachMatrix", reach.worldToClip);
-    program.set("uReachSize", reach.size);
-    program.set("uReachFarDepth", reach.farDepth);
-    program.set("uReachLevels", reach.boundsLo != 0 ? reach.boundsLevels : 0);
-    program.set("uReachCells", reach.firstCells);
+    program.set(kReach.enabled, reach.enabled ? 1 : 0);
+    program.set(kReach.matrix, reach.worldToClip);
+    program.set(kReach.size, reach.size);
+    program.set(kReach.farDepth, reach.farDepth);
+    program.set(kReach.levels, reach.boundsLo != 0 ? reach.boundsLevels : 0);
+    program.set(kReach.cells, reach.firstCells);
     scope.texture(gl::bind::ReachLo, reach.boundsLo).texture(gl::bind::ReachHi, reach.boundsHi);
+}
+
+void bindPenumbraReachUniforms(gl::Program& program) {
+    program.bindUniforms({&kReach.enabled, &kReach.matrix, &kReach.size, &kReach.farDepth,
+                          &kReach.levels, &kReach.cells});
 }
 
 namespace {
@@ -119,7 +148,15 @@ gl::Program boundsProgram(const gl::ShaderLibrary& shaders, int source, bool reg
     if (source == 1) defines.emplace_back("MAP_RECEIVERS 1");
     if (source == 2) defines.emplace_back("EYE_CELLS 1");
     if (region) defines.emplace_back("REACH_REGION 1");
-    return gl::Program::build(shaders, {{GL_COMPUTE_SHADER, "reach_bounds.comp.glsl"}}, defines);
+    gl::Program program =
+        gl::Program::build(shaders, {{GL_COMPUTE_SHADER, "reach_bounds.comp.glsl"}}, defines);
+    const auto& u = kReachBounds;
+    program.bindUniforms(
+        {&u.validMin, &u.regionTile, &u.regionTilesX, &u.mode, &u.dstSize, &u.srcSize});
+    bindDiskLightUniforms(program);
+    if (source == 1) MapPositions::bindUniforms(program);
+    if (source == 2) EyeCells::bindUniforms(program);
+    return program;
 }
 } // namespace
 
@@ -176,15 +213,16 @@ void ReceiverBoundsPyramid::build(gl::BindScope& scope, const gl::Program& progr
     }
     glUseProgram(program.id());
     setDiskLightUniforms(program, light);
-    program.set("uValidMin", validMin);
-    program.set("uRegionTile", regionTile);
-    program.set("uRegionTilesX", (width + regionTile - 1) / regionTile);
+    const auto& u = kReachBounds;
+    program.set(u.validMin, validMin);
+    program.set(u.regionTile, regionTile);
+    program.set(u.regionTilesX, (width + regionTile - 1) / regionTile);
     scope.storage(gl::bind::SeedRegion, region != nullptr ? region->id() : 0);
     int w = w0, h = h0, sw = width, sh = height;
     for (int level = 0; level < levels_; ++level) {
-        program.set("uMode", level == 0 ? 0 : 1);
-        program.set("uDstSize", glm::ivec2(w, h));
-        program.set("uSrcSize", glm::ivec2(sw, sh));
+        program.set(u.mode, level == 0 ? 0 : 1);
+        program.set(u.dstSize, glm::ivec2(w, h));
+        program.set(u.srcSize, glm::ivec2(sw, sh));
         scope.image(gl::bind::ReachLoOut, lo_.id(), GL_WRITE_ONLY, GL_RGBA32F, level)
             .image(gl::bind::ReachHiOut, hi_.id(), GL_WRITE_ONLY, GL_RGBA32F, level);
         if (level > 0) {

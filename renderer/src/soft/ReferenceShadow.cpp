@@ -12,6 +12,23 @@
 
 namespace fl {
 
+namespace {
+// The reference's passes: each sample's depth map (shadow_depth.*.glsl), its lookup added to
+// the sum (reference_accumulate.frag.glsl, shadow_lookup.glsl's names) and the mean.
+constexpr struct {
+    gl::Uniform<glm::mat4> lightViewProj{"uLightViewProj"};
+    gl::Uniform<glm::mat4> warp{"uShadowWarp"};
+    gl::Uniform<float> slopeBias{"uSlopeBias"};
+    gl::Uniform<float> constantBias{"uConstantBias"};
+} kReferenceDepth;
+constexpr struct {
+    gl::Uniform<glm::mat4> lightViewProj{"uLightViewProj"};
+    gl::Uniform<glm::mat4> warp{"uShadowWarp"};
+    gl::Uniform<glm::vec4> light{"uShadowLight"};
+} kReferenceAccumulate;
+constexpr gl::Uniform<float> kReferenceSamples{"uSamples"};
+} // namespace
+
 std::vector<glm::vec3> referenceDiskSamples(const DiskLight& disk, int samples,
                                             geom::DiskPattern pattern) {
     if (samples < 1)
@@ -56,7 +73,15 @@ ReferenceShadowPass::ReferenceShadowPass(const gl::ShaderLibrary& shaders)
                                        {GL_FRAGMENT_SHADER, "reference_accumulate.frag.glsl"}})),
       resolve_(gl::Program::build(shaders, {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
                                             {GL_FRAGMENT_SHADER, "reference_resolve.frag.glsl"}})),
-      emptyVao_(gl::VertexArray::create()) {}
+      emptyVao_(gl::VertexArray::create()) {
+    const auto& d = kReferenceDepth;
+    depth_.bindUniforms({&d.lightViewProj, &d.warp, &d.slopeBias, &d.constantBias});
+    const auto& a = kReferenceAccumulate;
+    accumulate_.bindUniforms({&a.lightViewProj, &a.warp, &a.light});
+    SurfacePositions::bindUniforms(accumulate_);
+    resolve_.bindUniforms({&kReferenceSamples});
+    SurfacePositions::bindUniforms(resolve_);
+}
 
 void ReferenceShadowPass::resize(int width, int height, int mapSize) {
     if (!map_ || map_.width() != mapSize) {
@@ -87,10 +112,10 @@ ReferenceShadowPass::Outputs ReferenceShadowPass::execute(const Inputs& in, gl::
     // One depth map per disk sample, each added to the sum.
     if (timer) timer->begin("reference maps");
     glClearNamedFramebufferfv(sumFbo_.id(), GL_COLOR, 0, none);
-    depth_.set("uShadowWarp", glm::mat4(1.0f));
-    depth_.set("uSlopeBias", in.shadowSettings.slopeBias);
-    depth_.set("uConstantBias", in.shadowSettings.constantBias);
-    accumulate_.set("uShadowWarp", glm::mat4(1.0f));
+    depth_.set(kReferenceDepth.warp, glm::mat4(1.0f));
+    depth_.set(kReferenceDepth.slopeBias, in.shadowSettings.slopeBias);
+    depth_.set(kReferenceDepth.constantBias, in.shadowSettings.constantBias);
+    accumulate_.set(kReferenceAccumulate.warp, glm::mat4(1.0f));
     {
         gl::BindScope matrix; // the matrix once; the depth is bound per map, below
         in.positions.bind(matrix, accumulate_, gl::bind::SurfacesDepth);
@@ -108,7 +133,7 @@ ReferenceShadowPass::Outputs ReferenceShadowPass::execute(const Inputs& in, gl::
         glDepthFunc(GL_LESS);
         glDepthMask(GL_TRUE);
         glClearNamedFramebufferfv(mapFbo_.id(), GL_DEPTH, 0, &far);
-        depth_.set("uLightViewProj", viewProj);
+        depth_.set(kReferenceDepth.lightViewProj, viewProj);
         in.scene.draw(depth_, GpuScene::Uniforms::Geometry);
 
         glBindFramebuffer(GL_FRAMEBUFFER, sumFbo_.id());
@@ -116,8 +141,8 @@ ReferenceShadowPass::Outputs ReferenceShadowPass::execute(const Inputs& in, gl::
         // Depth test and blending alternate with the map pass; the rest is set once above.
         glDisable(GL_DEPTH_TEST);
         glEnable(GL_BLEND);
-        accumulate_.set("uLightViewProj", viewProj);
-        accumulate_.set("uShadowLight", shadowLight(viewProj));
+        accumulate_.set(kReferenceAccumulate.lightViewProj, viewProj);
+        accumulate_.set(kReferenceAccumulate.light, shadowLight(viewProj));
         // Bound per map: the scene's draw binds alpha cut-out textures on unit 0, and the next
         // map pass draws into map_ (the scope unbinds it first).
         gl::BindScope scope;
@@ -138,7 +163,7 @@ ReferenceShadowPass::Outputs ReferenceShadowPass::execute(const Inputs& in, gl::
     if (timer) timer->begin("reference resolve");
     glBindFramebuffer(GL_FRAMEBUFFER, visibilityFbo_.id());
     glViewport(0, 0, width, height);
-    resolve_.set("uSamples", static_cast<float>(samples.size()));
+    resolve_.set(kReferenceSamples, static_cast<float>(samples.size()));
     {
         gl::BindScope scope;
         scope.texture(gl::bind::ReferenceSum, sum_.id());

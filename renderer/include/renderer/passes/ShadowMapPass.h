@@ -43,6 +43,8 @@ struct MapPositions {
     /// For mapReceiver(): the target on texture `unit` (the shader's sampler binding) in
     /// `scope` and the uMapUnwarp / uMapInverseLightViewProj uniforms of `program`.
     void bind(gl::BindScope& scope, const gl::Program& program, gl::TextureUnit unit) const;
+    /// Binds the uniforms bind() sets on `program`, built with shadow_map_decode.glsl.
+    static void bindUniforms(gl::Program& program);
     /// Every texel's position, decoded on the CPU (the twin of mapReceiver()), in GL's row
     /// order (row 0 at the bottom): (xyz, 1), or all 0 where the light sees nothing.
     [[nodiscard]] std::vector<glm::vec4> read() const;
@@ -138,6 +140,8 @@ class ShadowMapPass {
 /// `scope` and the uLightViewProj / uShadowWarp / uShadowLight uniforms of `program`.
 void bindShadowMap(gl::BindScope& scope, const gl::Program& program,
                    const ShadowMapPass::Outputs& shadow);
+/// Binds the uniforms bindShadowMap sets on `program`, built with shadow_lookup.glsl.
+void bindShadowMapUniforms(gl::Program& program);
 
 /// shadow_lookup.glsl's uShadowLight: inverse(lightViewProj) * (0, 0, 1, 0), the light's
 /// position (homogeneous, w != 0) or, for an orthographic map, its travel direction (w = 0).

@@ -28,6 +28,8 @@ struct SurfacePositions {
     /// For shaders/surface_decode.glsl's surfacePosition(): the depth on texture `unit` (the
     /// shader's sampler binding) in `scope` and uSurfaceInverseViewProj of `program`.
     void bind(gl::BindScope& scope, const gl::Program& program, gl::TextureUnit unit) const;
+    /// Binds the uniform bind() sets on `program`, built with surface_decode.glsl.
+    static void bindUniforms(gl::Program& program);
     /// Every pixel's position as RGBA floats, row 0 at the top (readTexture's layout): world xyz
     /// and w = 1, or all 0 for background. The CPU twin of surfacePosition().
     [[nodiscard]] FloatImage read() const;

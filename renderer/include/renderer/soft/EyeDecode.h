@@ -82,6 +82,8 @@ struct EyeCells {
     /// eye_decode.glsl's textures (gl::bind::Eye*, SeedOccluders) in `scope` and uniforms on
     /// `program`, for a grid `factor` times coarser than the frame (1: the frame itself).
     void bind(gl::BindScope& scope, const gl::Program& program, int factor = 1) const;
+    /// Binds the uniforms bind() sets on `program`, built with eye_decode.glsl.
+    static void bindUniforms(gl::Program& program);
     /// Every pixel decoded on the GPU by eye_decode.glsl (the bits the phases read), as two
     /// RGBA32F textures in EyeImage layout: points and occluders. Made on first use after a
     /// frame, outside it (overlays, tests).

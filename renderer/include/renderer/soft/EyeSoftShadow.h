@@ -79,6 +79,15 @@ struct BoundaryThreshold {
 /// Resolves settings.boundaryThreshold for a camera and frame height.
 BoundaryThreshold boundaryThreshold(const EyeSoftSettings& settings, const glm::mat4& proj,
                                     int height);
+/// Sets jfae_boundary.frag.glsl's own uniforms: the eye, the threshold, whether the pass
+/// lists its seeds (the frame's boundaries and EyeFloodEstimator's coarse ones alike) and, with
+/// `walkLight`, that seeds' occluders walk to the silhouette (boundaryOccluderPoint) under that
+/// light and silhouette threshold; without, they stay phase 2's.
+void setBoundaryUniforms(const gl::Program& program, glm::vec3 eye, BoundaryThreshold th,
+                         bool listSeeds, const DiskLight* walkLight = nullptr,
+                         float silhouetteThreshold = 0.0f);
+/// Binds what a jfae_boundary program is set with: its own uniforms and the eye cells'.
+void bindBoundaryUniforms(gl::Program& program);
 
 /// The most JFA passes a width x height frame can use: log2(max(width, height)), rounded down.
 int eyeSoftMaxPasses(int width, int height);
@@ -140,6 +149,9 @@ struct EyeSoftCriterion {
 /// bounds in the run's `scope`, uniforms.
 void setCriterionUniforms(gl::BindScope& scope, const gl::Program& program,
                           const EyeSoftCriterion& criterion);
+/// Binds the uniforms setCriterionUniforms sets on a kernel program (the pointer only chooses
+/// the overload).
+void bindCriterionUniforms(gl::Program& program, const EyeSoftCriterion*);
 
 /// A JFA-E grid as the GL kernels store it (R32F, packed cells: the seed pixel's index + 1, 0
 /// empty; EyeSoftCriterion::packedCells) turned back into cells, each occluder read from

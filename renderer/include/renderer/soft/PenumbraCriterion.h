@@ -80,10 +80,15 @@ struct PenumbraCriterion {
 
 /// Sets the disk-light uniforms (shaders/disk_light.glsl) of any program that includes it.
 void setDiskLightUniforms(const gl::Program& program, const DiskLight& light);
+/// Binds the uniforms setDiskLightUniforms sets on `program`.
+void bindDiskLightUniforms(gl::Program& program);
 /// The GL kernels' hook (found by argument-dependent lookup from jfa::GlFloodKernel::run):
 /// binds the map's receiver target (gl::bind::PenumbraPositions) and the reach bounds in the
 /// run's `scope` and sets the light.
 void setCriterionUniforms(gl::BindScope& scope, const gl::Program& program,
                           const PenumbraCriterion& criterion);
+/// Binds the uniforms setCriterionUniforms sets on a kernel program (the GL kernels' other
+/// hook; the pointer only chooses the overload).
+void bindCriterionUniforms(gl::Program& program, const PenumbraCriterion*);
 
 } // namespace fl

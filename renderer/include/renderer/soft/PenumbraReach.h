@@ -144,5 +144,7 @@ std::optional<long long> widestPenumbraTexels(const DiskLight& light,
 /// Sets the uReach* uniforms of shaders/disk_light.glsl and binds the bounds in `scope`.
 void setPenumbraReachUniforms(gl::BindScope& scope, const gl::Program& program,
                               const PenumbraReach& reach);
+/// Binds the uniforms setPenumbraReachUniforms sets on `program`.
+void bindPenumbraReachUniforms(gl::Program& program);
 
 } // namespace fl
