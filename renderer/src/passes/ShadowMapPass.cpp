@@ -31,20 +31,9 @@ constexpr struct {
     gl::Uniform<glm::mat4> inverseLightViewProj{"uMapInverseLightViewProj"};
 } kMapDecode;
 
-// shaders/shadow_lookup.glsl's uniforms (bindShadowMap).
-constexpr struct {
-    gl::Uniform<glm::mat4> lightViewProj{"uLightViewProj"};
-    gl::Uniform<glm::mat4> warp{"uShadowWarp"};
-    gl::Uniform<glm::vec4> light{"uShadowLight"};
-} kShadowLookup;
-
-// The depth pass's own (shadow_depth.*.glsl).
-constexpr struct {
-    gl::Uniform<glm::mat4> lightViewProj{"uLightViewProj"};
-    gl::Uniform<glm::mat4> warp{"uShadowWarp"};
-    gl::Uniform<float> slopeBias{"uSlopeBias"};
-    gl::Uniform<float> constantBias{"uConstantBias"};
-} kShadowDepth;
+// shadow_lookup.glsl's and shadow_depth.*.glsl's uniforms (one home: ShadowMapPass.h).
+const ShadowLookupUniforms& kShadowLookup = kShadowLookupUniforms;
+const ShadowDepthUniforms& kShadowDepth = kShadowDepthUniforms;
 
 bool sameParams(const geom::TrapezoidParams& a, const geom::TrapezoidParams& b) {
     return a.focusFraction == b.focusFraction && a.xi == b.xi && a.rLow == b.rLow &&

@@ -25,12 +25,7 @@ constexpr struct {
 
 // The JFA-E passes' own uniforms: the occluder ids drawn from the light (shadow_depth.vert.glsl),
 // the eye pass, the boundary seeds and the composite.
-constexpr struct {
-    gl::Uniform<glm::mat4> lightViewProj{"uLightViewProj"};
-    gl::Uniform<glm::mat4> warp{"uShadowWarp"};
-    gl::Uniform<float> slopeBias{"uSlopeBias"};
-    gl::Uniform<float> constantBias{"uConstantBias"};
-} kEyeLightIds;
+const ShadowDepthUniforms& kEyeLightIds = kShadowDepthUniforms;
 constexpr struct {
     gl::Uniform<int> occluderEdges{"uOccluderEdges"};
     gl::Uniform<float> silhouetteThreshold{"uSilhouetteThreshold"};

@@ -15,17 +15,8 @@ namespace fl {
 namespace {
 // The reference's passes: each sample's depth map (shadow_depth.*.glsl), its lookup added to
 // the sum (reference_accumulate.frag.glsl, shadow_lookup.glsl's names) and the mean.
-constexpr struct {
-    gl::Uniform<glm::mat4> lightViewProj{"uLightViewProj"};
-    gl::Uniform<glm::mat4> warp{"uShadowWarp"};
-    gl::Uniform<float> slopeBias{"uSlopeBias"};
-    gl::Uniform<float> constantBias{"uConstantBias"};
-} kReferenceDepth;
-constexpr struct {
-    gl::Uniform<glm::mat4> lightViewProj{"uLightViewProj"};
-    gl::Uniform<glm::mat4> warp{"uShadowWarp"};
-    gl::Uniform<glm::vec4> light{"uShadowLight"};
-} kReferenceAccumulate;
+const ShadowDepthUniforms& kReferenceDepth = kShadowDepthUniforms;
+const ShadowLookupUniforms& kReferenceAccumulate = kShadowLookupUniforms;
 constexpr gl::Uniform<float> kReferenceSamples{"uSamples"};
 } // namespace
 

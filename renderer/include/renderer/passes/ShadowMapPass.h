@@ -14,6 +14,7 @@
 #include <gpu/Gl.h>
 #include <gpu/Program.h>
 #include <gpu/ShaderLibrary.h>
+#include <gpu/Uniform.h>
 #include <renderer/scene/GpuScene.h>
 
 #include <base/Aabb.h>
@@ -135,6 +136,25 @@ class ShadowMapPass {
     };
     std::optional<History> history_;
 };
+
+/// shaders/shadow_depth.*.glsl's uniforms: every pass that draws depths from a light sets these
+/// (the shadow map, the maps truth's per-sample maps, JFA-E's occluder ids).
+struct ShadowDepthUniforms {
+    gl::Uniform<glm::mat4> lightViewProj{"uLightViewProj"};
+    gl::Uniform<glm::mat4> warp{"uShadowWarp"};
+    gl::Uniform<float> slopeBias{"uSlopeBias"};
+    gl::Uniform<float> constantBias{"uConstantBias"};
+};
+inline constexpr ShadowDepthUniforms kShadowDepthUniforms;
+
+/// shaders/shadow_lookup.glsl's uniforms (bindShadowMap sets them from a map; the maps truth
+/// sets them per sample).
+struct ShadowLookupUniforms {
+    gl::Uniform<glm::mat4> lightViewProj{"uLightViewProj"};
+    gl::Uniform<glm::mat4> warp{"uShadowWarp"};
+    gl::Uniform<glm::vec4> light{"uShadowLight"};
+};
+inline constexpr ShadowLookupUniforms kShadowLookupUniforms;
 
 /// Binds the map for shaders/shadow_lookup.glsl: the depth texture on gl::bind::ShadowMap in
 /// `scope` and the uLightViewProj / uShadowWarp / uShadowLight uniforms of `program`.
