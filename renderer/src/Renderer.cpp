@@ -107,7 +107,7 @@ void Renderer::renderFrame(const CameraView& camera, const CameraView* previous)
     ShadowMethod& impl = currentMethod();
     timer_.beginFrame();
     const std::size_t eyeDrawsBefore = scene_.eyeDrawCalls();
-    // 1. Shadow map: depth from the light, fitted to the scene bounds; TSM also fits the warp
+    // 1. Shadow map: depth from the light, fitted to the shadow casters; TSM also fits the warp
     //    to the camera's frustum. The flooding methods also keep each texel's world position.
     timer_.begin("shadow map");
     shadow_.reset();
