@@ -7,6 +7,7 @@
 #include <base/OutputFiles.h>
 
 #include <base/InputFile.h>
+#include <renderer/methods/Phases.h>
 #include <renderer/run/FrameRunner.h>
 
 #include <renderer/context/EglContext.h>
@@ -180,8 +181,8 @@ nlohmann::json compareSummary(const CompareRequest& r, const std::string& refere
         for (const std::string& p : phaseNames({&lanes[0].times, &lanes[1].times}))
             times[lane.label + " " + p] = {{"medianMs", lane.times.medianPhaseMs(p)}};
     j["phases"] = times;
-    j["floodTimeReferenceOverMethod"] = lanes[1].times.medianPhaseMs("flood") /
-                                        std::max(lanes[0].times.medianPhaseMs("flood"), 1e-9);
+    j["floodTimeReferenceOverMethod"] = lanes[1].times.medianPhaseMs(phase::kFlood) /
+                                        std::max(lanes[0].times.medianPhaseMs(phase::kFlood), 1e-9);
     for (const Lane& lane : lanes)
         if (const std::optional<FloodSample> f = lane.times.medianFlood())
             j["flood"][lane.label] = {{"medianPasses", f->passes},

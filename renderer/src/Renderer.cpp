@@ -1,4 +1,5 @@
 #include <renderer/Renderer.h>
+#include <renderer/methods/Phases.h>
 
 #include <cmath>
 
@@ -10,9 +11,9 @@
 namespace fl {
 
 std::vector<std::string_view> framePhases(const MethodDescriptor& m) {
-    std::vector<std::string_view> out{"shadow map", "surfaces"};
+    std::vector<std::string_view> out{phase::kShadowMap, phase::kSurfaces};
     out.insert(out.end(), m.phases.begin(), m.phases.end());
-    out.push_back("shading");
+    out.push_back(phase::kShading);
     return out;
 }
 
@@ -109,7 +110,7 @@ void Renderer::renderFrame(const CameraView& camera, const CameraView* previous)
     const std::size_t eyeDrawsBefore = scene_.eyeDrawCalls();
     // 1. Shadow map: depth from the light, fitted to the shadow casters; TSM also fits the warp
     //    to the camera's frustum. The flooding methods also keep each texel's world position.
-    timer_.begin("shadow map");
+    timer_.begin(phase::kShadowMap);
     shadow_.reset();
     const ShadowMapPass::Outputs& shadow = shadow_.emplace(
         shadowPass_.execute({scene_, lightVolume_, settings_.shadow, camera.view, camera.proj,
@@ -118,7 +119,7 @@ void Renderer::renderFrame(const CameraView& camera, const CameraView* previous)
                  (shadow.receivers ? gl::textureBytes(*shadow.receivers->depth) : 0));
     timer_.end();
     // 2. Surfaces: the scene drawn once from the eye; every later step reads these targets.
-    timer_.begin("surfaces");
+    timer_.begin(phase::kSurfaces);
     const SurfacesPass::Outputs surfaces =
         surfacesPass_.execute({scene_, camera, light_, previous});
     timer_.wrote(surfaces.bytes());
@@ -149,14 +150,14 @@ void Renderer::renderFrame(const CameraView& camera, const CameraView* previous)
     // 4. Shading with the method's visibility, and the blended surfaces over it; then the
     //    optional shadow-map diagnostics (texel footprint, the previous frame's visibility:
     //    measurement only).
-    timer_.begin("shading");
+    timer_.begin(phase::kShading);
     const ShadingPass::Outputs shaded =
         shadingPass_.execute({surfaces, light_, methodVisibility, scene_, camera});
     timer_.wrote(gl::textureBytes(shaded.color));
     timer_.end();
     diagnostics_ = nullptr;
     if (settings_.diagnostics) {
-        timer_.begin("diagnostics");
+        timer_.begin(phase::kDiagnostics);
         diagnostics_ = &diagnosticsPass_.execute({surfaces, camera, light_, shadow}).diagnostics;
         // The pass also keeps a copy of this frame's map for the next.
         timer_.wrote(gl::textureBytes(*diagnostics_) + gl::textureBytes(shadow.depth));

@@ -1,6 +1,7 @@
 // hard: one shadow-map test at the light's centre per pixel.
 
 #include "LightLookup.h"
+#include <renderer/methods/Phases.h>
 
 namespace fl {
 
@@ -11,7 +12,7 @@ class Hard final : public ShadowMethod {
     explicit Hard(const gl::ShaderLibrary& shaders) : lookup_(shaders, false) {}
     void resize(int width, int height) override { lookup_.resize(width, height); }
     const gl::Texture& execute(const FrameInputs& in) override {
-        if (in.timer) in.timer->begin("hard shadows");
+        if (in.timer) in.timer->begin(phase::kHardShadows);
         const gl::Texture& v = lookup_.execute(in);
         if (in.timer) in.timer->wrote(gl::textureBytes(v));
         if (in.timer) in.timer->end();

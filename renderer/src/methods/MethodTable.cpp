@@ -2,6 +2,7 @@
 // times methods reads these rows (renderer/methods/ShadowMethod.h).
 
 #include <renderer/methods/OptionStructs.h>
+#include <renderer/methods/Phases.h>
 #include <renderer/methods/ShadowMethod.h>
 #include <renderer/soft/EyeSoftShadow.h>
 #include <renderer/soft/FilteredShadow.h>
@@ -272,16 +273,17 @@ constexpr OptionField kRayTraceFields[] = {
 
 // --- Timed phases (step 3's parts, as PassTimer names them) ------------------------------------
 
-constexpr std::string_view kHardPhases[] = {"hard shadows"};
-constexpr std::string_view kLightFloodPhases[] = {"view", "silhouettes", "band", "flood",
-                                                  "penumbra lookup"};
+constexpr std::string_view kHardPhases[] = {phase::kHardShadows};
+constexpr std::string_view kLightFloodPhases[] = {phase::kView, phase::kSilhouettes, phase::kBand,
+                                                  phase::kFlood, phase::kPenumbraLookup};
 constexpr std::string_view kEyeFloodPhases[] = {
-    "occluder ids", "eye hard shadows", "boundaries", "pass count", "band", "flood", "composite"};
-constexpr std::string_view kPcfPhases[] = {"pcf filter"};
-constexpr std::string_view kPcssPhases[] = {"blocker search+filter"};
-constexpr std::string_view kGroundTruthPhases[] = {"reference maps", "reference resolve"};
-constexpr std::string_view kVsmPhases[] = {"vsm moments", "vsm blur", "vsm lookup"};
-constexpr std::string_view kRayTracePhases[] = {"raytrace bvh", "raytrace rays"};
+    phase::kOccluderIds, phase::kEyeHardShadows, phase::kBoundaries, phase::kPassCount,
+    phase::kBand,        phase::kFlood,          phase::kComposite};
+constexpr std::string_view kPcfPhases[] = {phase::kPcfFilter};
+constexpr std::string_view kPcssPhases[] = {phase::kBlockerSearchFilter};
+constexpr std::string_view kGroundTruthPhases[] = {phase::kReferenceMaps, phase::kReferenceResolve};
+constexpr std::string_view kVsmPhases[] = {phase::kVsmMoments, phase::kVsmBlur, phase::kVsmLookup};
+constexpr std::string_view kRayTracePhases[] = {phase::kRaytraceBvh, phase::kRaytraceRays};
 
 // --- The ground truths in words (capture's log and report) ------------------------------------
 

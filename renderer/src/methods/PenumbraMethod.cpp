@@ -6,6 +6,7 @@
 #include "LightLookup.h"
 
 #include <renderer/methods/OptionStructs.h>
+#include <renderer/methods/Phases.h>
 
 #include <renderer/soft/OccluderEdge.h>
 #include <renderer/soft/PenumbraMap.h>
@@ -113,7 +114,7 @@ class PenumbraMethod final : public ShadowMethod {
                   .kernel = &pass_.kernel(),
                   .map = in.shadow.receivers,
                   .umbraDepth = pi.umbraDepth};
-        if (in.timer) in.timer->begin("penumbra lookup");
+        if (in.timer) in.timer->begin(phase::kPenumbraLookup);
         const gl::Texture& v = lookup_.execute(in, &pm.penumbraMap, both);
         if (in.timer) in.timer->wrote(gl::textureBytes(v));
         if (in.timer) in.timer->end();

@@ -7,6 +7,7 @@
 // that graze start on it (raytrace/ShadowRays.h, raytrace/Terminator.h), as Cycles does.
 
 #include <renderer/methods/OptionStructs.h>
+#include <renderer/methods/Phases.h>
 #include <renderer/methods/ShadowMethod.h>
 
 #include <renderer/soft/ShadowRayInputs.h>
@@ -29,7 +30,7 @@ class RayTrace final : public ShadowMethod {
         // The BVH once per scene, and again (refit: the same triangles, moved) whenever the
         // scene's pose changes.
         if (!bvh_ || posedVersion_ != in.scene.poseVersion()) {
-            if (in.timer) in.timer->begin("raytrace bvh");
+            if (in.timer) in.timer->begin(phase::kRaytraceBvh);
             if (!bvh_) bvh_.emplace(worldTriangles(in.scene.source()));
             if (const auto& pose = in.scene.pose()) {
                 std::vector<glm::vec3> normals;
@@ -40,7 +41,7 @@ class RayTrace final : public ShadowMethod {
             posedVersion_ = in.scene.poseVersion();
             if (in.timer) in.timer->end();
         }
-        if (in.timer) in.timer->begin("raytrace rays");
+        if (in.timer) in.timer->begin(phase::kRaytraceRays);
         // Receivers and visibility both in GL's row order.
         const std::vector<rt::Receiver> receivers = surfaceReceivers(in.surfaces);
         rt::VisibilitySettings s;

@@ -14,6 +14,7 @@
 // The CPU reference of all three phases (moments, blur, lookup: parts of frame step 3) is in
 // tests/vsm_gltest.cpp.
 
+#include <renderer/methods/Phases.h>
 #include <renderer/methods/ShadowMethod.h>
 
 #include <glm/gtc/matrix_inverse.hpp>
@@ -93,7 +94,7 @@ class Vsm final : public ShadowMethod {
         glDisable(GL_DEPTH_TEST);
 
         // 1. Moments of the light-view depth per map texel.
-        if (in.timer) in.timer->begin("vsm moments");
+        if (in.timer) in.timer->begin(phase::kVsmMoments);
         glBindFramebuffer(GL_FRAMEBUFFER, fbo_[0].id());
         glViewport(0, 0, size, size);
         moments_.set(kVsmUniforms.invLightProj, glm::inverse(in.lightVolume.proj));
@@ -107,7 +108,7 @@ class Vsm final : public ShadowMethod {
         if (in.timer) in.timer->end();
 
         // 2. Separable box blur: map 0 -> 1 horizontally, 1 -> 0 vertically.
-        if (in.timer) in.timer->begin("vsm blur");
+        if (in.timer) in.timer->begin(phase::kVsmBlur);
         const int radius = blurRadius(in);
         if (radius > 0) {
             blur_.set(kVsmUniforms.radius, radius);
@@ -124,7 +125,7 @@ class Vsm final : public ShadowMethod {
         if (in.timer) in.timer->end();
 
         // 3. Chebyshev's bound per pixel of the frame's surfaces.
-        if (in.timer) in.timer->begin("vsm lookup");
+        if (in.timer) in.timer->begin(phase::kVsmLookup);
         glBindFramebuffer(GL_FRAMEBUFFER, visibilityFbo_.id());
         glViewport(0, 0, in.width(), in.height());
         gl::BindScope scope;

@@ -1,3 +1,4 @@
+#include <renderer/methods/Phases.h>
 #include <renderer/run/FrameRunner.h>
 
 #include <base/Stats.h>
@@ -43,7 +44,7 @@ std::vector<std::pair<std::string, std::int64_t>> writtenBytes(const Renderer& r
     for (const gl::PassTime& p : renderer.timer().passes()) add(p.name, p.bytes);
     if (const FloodFrame* f = renderer.flood(); f && f->flooded) {
         const double share = f->kernel ? f->kernel->computedShare() : 1.0;
-        add("flood", std::llround(f->passes * share * double(gl::textureBytes(*f->flooded))));
+        add(phase::kFlood, std::llround(f->passes * share * double(gl::textureBytes(*f->flooded))));
     }
     return out;
 }

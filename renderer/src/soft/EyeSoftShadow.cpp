@@ -1,3 +1,4 @@
+#include <renderer/methods/Phases.h>
 #include <renderer/soft/EyeSoftShadow.h>
 
 #include <renderer/passes/ShadowMapDecode.h>
@@ -472,20 +473,20 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::Pass
     // Phases 2-5 are the thesis' (§5.4), all within frame step 3.
     // Phase 2a (object-ID fix only): which object the light's centre sees at each texel.
     if (in.settings.objectIdFix) {
-        if (timer) timer->begin("occluder ids");
+        if (timer) timer->begin(phase::kOccluderIds);
         drawOccluderIds(in);
         if (timer) timer->wrote(gl::textureBytes(ids_));
         if (timer) timer->end();
     }
 
     // Phase 2: hard shadows per pixel of the frame's surfaces, with occluders.
-    if (timer) timer->begin("eye hard shadows");
+    if (timer) timer->begin(phase::kEyeHardShadows);
     drawEyeHardShadows(in);
     if (timer) timer->wrote(gl::textureBytes(cells_));
     if (timer) timer->end();
 
     // Phase 3: boundary pixels become seeds with their occluders.
-    if (timer) timer->begin("boundaries");
+    if (timer) timer->begin(phase::kBoundaries);
     const BoundaryThreshold th = boundaryThreshold(in.settings, in.camera.proj, in.height);
     drawBoundaries(in, th);
     eye_.seedOccluders = &seedOccluders_; // the flood's and the composite's from here on
@@ -497,13 +498,13 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::Pass
     const bool autoPasses = passes == 0;
     int measured = -1, geometric = -1;
     if (autoPasses && in.settings.autoPasses == EyeAutoPasses::Measured) {
-        if (timer) timer->begin("pass count");
+        if (timer) timer->begin(phase::kPassCount);
         measured = measurePasses(in, th, maxPasses);
         if (timer && estimator_) timer->wrote(estimator_->bytes());
         if (timer) timer->end();
     }
     // Then its band (jfa/Band.h).
-    if (timer) timer->begin("band");
+    if (timer) timer->begin(phase::kBand);
     EyeSoftCriterion criterion;
     criterion.light = in.light;
     criterion.objectIdFix = in.settings.objectIdFix;
@@ -524,12 +525,12 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::Pass
     const jfa::Plan plan = eyeSoftPlan(passes, in.standardFlooding, in.width, in.height);
     kernel_.prepareBand(plan, seeds_, criterion);
     if (timer) timer->end();
-    if (timer) timer->begin("flood");
+    if (timer) timer->begin(phase::kFlood);
     const gl::Texture& flooded = kernel_.run(plan, seeds_, criterion);
     if (timer) timer->end();
 
     // Phase 5: visibility per pixel.
-    if (timer) timer->begin("composite");
+    if (timer) timer->begin(phase::kComposite);
     drawComposite(in, flooded);
     if (timer) timer->wrote(gl::textureBytes(visibility_) + gl::textureBytes(mask_));
     if (timer) timer->end();

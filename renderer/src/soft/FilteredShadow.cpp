@@ -1,3 +1,4 @@
+#include <renderer/methods/Phases.h>
 #include <renderer/soft/FilteredShadow.h>
 
 #include <geometry/DiskSampling.h>
@@ -221,7 +222,7 @@ FilteredShadowPass::Outputs FilteredShadowPass::execute(const Inputs& in, gl::Pa
         throw std::invalid_argument("PCSS sample counts must be in [1, 64] / [1, 225]");
     const int width = in.surfaces.width, height = in.surfaces.height;
     resize(width, height);
-    if (timer) timer->begin(in.pcss ? "blocker search+filter" : "pcf filter");
+    if (timer) timer->begin(in.pcss ? phase::kBlockerSearchFilter : phase::kPcfFilter);
     const FilterFrame f = frame(in);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glViewport(0, 0, width, height);

@@ -1,3 +1,4 @@
+#include <renderer/methods/Phases.h>
 #include <renderer/soft/OccluderEdge.h>
 #include <renderer/soft/PenumbraMap.h>
 
@@ -154,7 +155,7 @@ PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, gl::PassTime
     viewTileCount_ = 0;
     bool region = limited && markViewRegion(in, regionReach, timer);
     // Phase 2 (thesis; within frame step 3): silhouettes.
-    if (timer) timer->begin("silhouettes");
+    if (timer) timer->begin(phase::kSilhouettes);
     findSeeds(in, region);
     // The whole map: exact without a region; with one, an upper bound (the pass draws only the
     // region's row spans, which only the GPU knows).
@@ -162,7 +163,7 @@ PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, gl::PassTime
     if (timer) timer->end();
     // Phase 3: flood the occluders through the penumbra region; its band (jfa/Band.h) and,
     // with auto, its pass count first, timed apart.
-    if (timer) timer->begin("band");
+    if (timer) timer->begin(phase::kBand);
     PenumbraCriterion criterion;
     criterion.light = in.light;
     criterion.map = in.receivers;
@@ -175,7 +176,7 @@ PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, gl::PassTime
     const jfa::Plan plan = penumbraPlan(settings, size);
     kernel_.prepareBand(plan, seeds_, criterion);
     if (timer) timer->end();
-    if (timer) timer->begin("flood");
+    if (timer) timer->begin(phase::kFlood);
     const gl::Texture& map = kernel_.run(plan, seeds_, criterion);
     if (timer) timer->end();
     kernel_.setViewTiles(nullptr);
@@ -186,7 +187,7 @@ bool PenumbraMapPass::markViewRegion(const Inputs& in, long long regionReach,
                                      gl::PassTimer* timer) {
     const int size = in.receivers.size();
     const int tile = in.settings.bandTile;
-    if (timer) timer->begin("view");
+    if (timer) timer->begin(phase::kView);
     markView(*in.view, size, tile);
     const bool region = regionReach >= 0 && markSeedRegion(size, tile, regionReach);
     // The view's tile flags; the seed region's flags and its two lists of row spans.

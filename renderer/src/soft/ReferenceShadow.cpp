@@ -1,4 +1,5 @@
 #include <renderer/io/TextureImage.h>
+#include <renderer/methods/Phases.h>
 #include <renderer/soft/ReferenceShadow.h>
 
 #include <renderer/metrics/Metrics.h>
@@ -101,7 +102,7 @@ ReferenceShadowPass::Outputs ReferenceShadowPass::execute(const Inputs& in, gl::
     const float far = 1.0f;
 
     // One depth map per disk sample, each added to the sum.
-    if (timer) timer->begin("reference maps");
+    if (timer) timer->begin(phase::kReferenceMaps);
     glClearNamedFramebufferfv(sumFbo_.id(), GL_COLOR, 0, none);
     depth_.set(kReferenceDepth.warp, glm::mat4(1.0f));
     depth_.set(kReferenceDepth.slopeBias, in.shadowSettings.slopeBias);
@@ -151,7 +152,7 @@ ReferenceShadowPass::Outputs ReferenceShadowPass::execute(const Inputs& in, gl::
                      (gl::textureBytes(map_) + gl::textureBytes(sum_)));
     if (timer) timer->end();
 
-    if (timer) timer->begin("reference resolve");
+    if (timer) timer->begin(phase::kReferenceResolve);
     glBindFramebuffer(GL_FRAMEBUFFER, visibilityFbo_.id());
     glViewport(0, 0, width, height);
     resolve_.set(kReferenceSamples, static_cast<float>(samples.size()));
