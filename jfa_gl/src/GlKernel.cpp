@@ -217,9 +217,9 @@ const gl::Texture& GlFloodKernelBase::runPlan(const Plan& plan, const gl::Textur
     if (halfRes) {
         const Stage& s0 = stages.front();
         const gl::Texture& dst = otherTexture(s0.width, s0.height, nullptr);
-        if (timer) timer->begin("downsample");
+        gl::TimedPass timedDownsample(timer, "downsample");
         dispatch(seeds, seeds, dst, GlDispatch::Downsample, 0, 2, false, -1);
-        if (timer) timer->end();
+        timedDownsample.end();
         current = &dst;
     }
     bool expanded = false;
@@ -241,11 +241,11 @@ const gl::Texture& GlFloodKernelBase::runPlan(const Plan& plan, const gl::Textur
             const GLuint zero = 0;
             glNamedBufferSubData(changedCounter_.id(), 0, sizeof(zero), &zero);
         }
-        if (timer) timer->begin("jfa step");
+        gl::TimedPass timedStep(timer, "jfa step");
         const int stage = halfRes && !expanded ? 0 : (halfRes ? 1 : 0);
         dispatch(*current, seeds, dst, what, pass.step, scale, pass.untilUnchanged,
                  lastRunBanded_ ? stage : -1);
-        if (timer) timer->end();
+        timedStep.end();
         ++passesRun_;
         if (pass.untilUnchanged) {
             GLuint changed = 0;

@@ -54,4 +54,29 @@ class PassTimer {
     bool open_ = false; // between begin() and end()
 };
 
+/// One pass of a timer that may be absent (a method's `in.timer`): begins at construction, ends
+/// at end() or at the end of its scope, and adds the bytes the pass wrote; without a timer it
+/// does nothing. What the `if (timer)` guards around begin(), wrote() and end() did, once.
+class TimedPass {
+  public:
+    TimedPass(PassTimer* timer, const char* name) : timer_(timer) {
+        if (timer_) timer_->begin(name);
+    }
+    ~TimedPass() { end(); }
+    TimedPass(const TimedPass&) = delete;
+    TimedPass& operator=(const TimedPass&) = delete;
+    /// PassTimer::wrote on the open pass.
+    void wrote(std::int64_t bytes) const {
+        if (timer_) timer_->wrote(bytes);
+    }
+    /// Ends the pass now; later calls, and the destructor, do nothing.
+    void end() {
+        if (timer_) timer_->end();
+        timer_ = nullptr;
+    }
+
+  private:
+    PassTimer* timer_;
+};
+
 } // namespace fl::gl

@@ -12,10 +12,10 @@ class Hard final : public ShadowMethod {
     explicit Hard(const gl::ShaderLibrary& shaders) : lookup_(shaders, false) {}
     void resize(int width, int height) override { lookup_.resize(width, height); }
     const gl::Texture& execute(const FrameInputs& in) override {
-        if (in.timer) in.timer->begin(phase::kHardShadows);
+        gl::TimedPass timedHardShadows(in.timer, phase::kHardShadows);
         const gl::Texture& v = lookup_.execute(in);
-        if (in.timer) in.timer->wrote(gl::textureBytes(v));
-        if (in.timer) in.timer->end();
+        timedHardShadows.wrote(gl::textureBytes(v));
+        timedHardShadows.end();
         return v;
     }
 

@@ -114,10 +114,10 @@ class PenumbraMethod final : public ShadowMethod {
                   .kernel = &pass_.kernel(),
                   .map = in.shadow.receivers,
                   .umbraDepth = pi.umbraDepth};
-        if (in.timer) in.timer->begin(phase::kPenumbraLookup);
+        gl::TimedPass timedPenumbraLookup(in.timer, phase::kPenumbraLookup);
         const gl::Texture& v = lookup_.execute(in, &pm.penumbraMap, both);
-        if (in.timer) in.timer->wrote(gl::textureBytes(v));
-        if (in.timer) in.timer->end();
+        timedPenumbraLookup.wrote(gl::textureBytes(v));
+        timedPenumbraLookup.end();
         return v;
     }
     [[nodiscard]] const FloodFrame* flood() const override { return &flood_; }

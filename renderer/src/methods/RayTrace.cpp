@@ -30,7 +30,7 @@ class RayTrace final : public ShadowMethod {
         // The BVH once per scene, and again (refit: the same triangles, moved) whenever the
         // scene's pose changes.
         if (!bvh_ || posedVersion_ != in.scene.poseVersion()) {
-            if (in.timer) in.timer->begin(phase::kRaytraceBvh);
+            gl::TimedPass timedRaytraceBvh(in.timer, phase::kRaytraceBvh);
             if (!bvh_) bvh_.emplace(worldTriangles(in.scene.source()));
             if (const auto& pose = in.scene.pose()) {
                 std::vector<glm::vec3> normals;
@@ -39,9 +39,9 @@ class RayTrace final : public ShadowMethod {
                 bvh_->refit(vertices, normals);
             }
             posedVersion_ = in.scene.poseVersion();
-            if (in.timer) in.timer->end();
+            timedRaytraceBvh.end();
         }
-        if (in.timer) in.timer->begin(phase::kRaytraceRays);
+        gl::TimedPass timedRaytraceRays(in.timer, phase::kRaytraceRays);
         // Receivers and visibility both in GL's row order.
         const std::vector<rt::Receiver> receivers = surfaceReceivers(in.surfaces);
         rt::VisibilitySettings s;
@@ -55,8 +55,8 @@ class RayTrace final : public ShadowMethod {
         const std::vector<float> v = rt::diskVisibility(*bvh_, disk, receivers, s);
         glTextureSubImage2D(visibility_.id(), 0, 0, 0, w, h, GL_RED, GL_FLOAT, v.data());
         gl::throwIfErrors("raytrace: visibility upload");
-        if (in.timer) in.timer->wrote(gl::textureBytes(visibility_)); // the upload
-        if (in.timer) in.timer->end();
+        timedRaytraceRays.wrote(gl::textureBytes(visibility_)); // the upload
+        timedRaytraceRays.end();
         return visibility_;
     }
 

@@ -94,7 +94,7 @@ class Vsm final : public ShadowMethod {
         glDisable(GL_DEPTH_TEST);
 
         // 1. Moments of the light-view depth per map texel.
-        if (in.timer) in.timer->begin(phase::kVsmMoments);
+        gl::TimedPass timedVsmMoments(in.timer, phase::kVsmMoments);
         glBindFramebuffer(GL_FRAMEBUFFER, fbo_[0].id());
         glViewport(0, 0, size, size);
         moments_.set(kVsmUniforms.invLightProj, glm::inverse(in.lightVolume.proj));
@@ -104,11 +104,11 @@ class Vsm final : public ShadowMethod {
                 .sampler(gl::bind::VsmDepth, rawDepth_.id());
             gl::drawFullscreenTriangle(moments_, emptyVao_);
         }
-        if (in.timer) in.timer->wrote(gl::textureBytes(maps_[0]));
-        if (in.timer) in.timer->end();
+        timedVsmMoments.wrote(gl::textureBytes(maps_[0]));
+        timedVsmMoments.end();
 
         // 2. Separable box blur: map 0 -> 1 horizontally, 1 -> 0 vertically.
-        if (in.timer) in.timer->begin(phase::kVsmBlur);
+        gl::TimedPass timedVsmBlur(in.timer, phase::kVsmBlur);
         const int radius = blurRadius(in);
         if (radius > 0) {
             blur_.set(kVsmUniforms.radius, radius);
@@ -120,12 +120,11 @@ class Vsm final : public ShadowMethod {
                 gl::drawFullscreenTriangle(blur_, emptyVao_);
             }
         }
-        if (in.timer && radius > 0)
-            in.timer->wrote(gl::textureBytes(maps_[0]) + gl::textureBytes(maps_[1]));
-        if (in.timer) in.timer->end();
+        if (radius > 0) timedVsmBlur.wrote(gl::textureBytes(maps_[0]) + gl::textureBytes(maps_[1]));
+        timedVsmBlur.end();
 
         // 3. Chebyshev's bound per pixel of the frame's surfaces.
-        if (in.timer) in.timer->begin(phase::kVsmLookup);
+        gl::TimedPass timedVsmLookup(in.timer, phase::kVsmLookup);
         glBindFramebuffer(GL_FRAMEBUFFER, visibilityFbo_.id());
         glViewport(0, 0, in.width(), in.height());
         gl::BindScope scope;
@@ -139,8 +138,8 @@ class Vsm final : public ShadowMethod {
         gl::drawFullscreenTriangle(lookup_, emptyVao_);
         scope.release();
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        if (in.timer) in.timer->wrote(gl::textureBytes(visibility_));
-        if (in.timer) in.timer->end();
+        timedVsmLookup.wrote(gl::textureBytes(visibility_));
+        timedVsmLookup.end();
         return visibility_;
     }
 

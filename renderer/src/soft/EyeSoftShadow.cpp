@@ -473,38 +473,38 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::Pass
     // Phases 2-5 are the thesis' (§5.4), all within frame step 3.
     // Phase 2a (object-ID fix only): which object the light's centre sees at each texel.
     if (in.settings.objectIdFix) {
-        if (timer) timer->begin(phase::kOccluderIds);
+        gl::TimedPass timedOccluderIds(timer, phase::kOccluderIds);
         drawOccluderIds(in);
-        if (timer) timer->wrote(gl::textureBytes(ids_));
-        if (timer) timer->end();
+        timedOccluderIds.wrote(gl::textureBytes(ids_));
+        timedOccluderIds.end();
     }
 
     // Phase 2: hard shadows per pixel of the frame's surfaces, with occluders.
-    if (timer) timer->begin(phase::kEyeHardShadows);
+    gl::TimedPass timedEyeHardShadows(timer, phase::kEyeHardShadows);
     drawEyeHardShadows(in);
-    if (timer) timer->wrote(gl::textureBytes(cells_));
-    if (timer) timer->end();
+    timedEyeHardShadows.wrote(gl::textureBytes(cells_));
+    timedEyeHardShadows.end();
 
     // Phase 3: boundary pixels become seeds with their occluders.
-    if (timer) timer->begin(phase::kBoundaries);
+    gl::TimedPass timedBoundaries(timer, phase::kBoundaries);
     const BoundaryThreshold th = boundaryThreshold(in.settings, in.camera.proj, in.height);
     drawBoundaries(in, th);
     eye_.seedOccluders = &seedOccluders_; // the flood's and the composite's from here on
-    if (timer) timer->wrote(gl::textureBytes(seeds_) + gl::textureBytes(seedOccluders_));
-    if (timer) timer->end();
+    timedBoundaries.wrote(gl::textureBytes(seeds_) + gl::textureBytes(seedOccluders_));
+    timedBoundaries.end();
 
     // Phase 4: flood the occluders through the penumbrae, in eye space. With auto, first how
     // far they travel in a coarse flood of this frame (EyeFloodReach.h), timed apart.
     const bool autoPasses = passes == 0;
     int measured = -1, geometric = -1;
     if (autoPasses && in.settings.autoPasses == EyeAutoPasses::Measured) {
-        if (timer) timer->begin(phase::kPassCount);
+        gl::TimedPass timedPassCount(timer, phase::kPassCount);
         measured = measurePasses(in, th, maxPasses);
-        if (timer && estimator_) timer->wrote(estimator_->bytes());
-        if (timer) timer->end();
+        if (estimator_) timedPassCount.wrote(estimator_->bytes());
+        timedPassCount.end();
     }
     // Then its band (jfa/Band.h).
-    if (timer) timer->begin(phase::kBand);
+    gl::TimedPass timedBand(timer, phase::kBand);
     EyeSoftCriterion criterion;
     criterion.light = in.light;
     criterion.objectIdFix = in.settings.objectIdFix;
@@ -513,7 +513,7 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::Pass
     criterion.reachBound = in.reach;
     if (criterion.reachBound.enabled) { // receivers are the surface pixels (w >= 0)
         bounds_.build(eye_, in.light, criterion.reachBound);
-        if (timer) timer->wrote(bounds_.bytes());
+        timedBand.wrote(bounds_.bytes());
     }
     kernel_.setRegion(in.region, in.bandTile);
     if (autoPasses) {
@@ -524,16 +524,16 @@ EyeSoftShadowPass::Outputs EyeSoftShadowPass::execute(const Inputs& in, gl::Pass
     }
     const jfa::Plan plan = eyeSoftPlan(passes, in.standardFlooding, in.width, in.height);
     kernel_.prepareBand(plan, seeds_, criterion);
-    if (timer) timer->end();
-    if (timer) timer->begin(phase::kFlood);
+    timedBand.end();
+    gl::TimedPass timedFlood(timer, phase::kFlood);
     const gl::Texture& flooded = kernel_.run(plan, seeds_, criterion);
-    if (timer) timer->end();
+    timedFlood.end();
 
     // Phase 5: visibility per pixel.
-    if (timer) timer->begin(phase::kComposite);
+    gl::TimedPass timedComposite(timer, phase::kComposite);
     drawComposite(in, flooded);
-    if (timer) timer->wrote(gl::textureBytes(visibility_) + gl::textureBytes(mask_));
-    if (timer) timer->end();
+    timedComposite.wrote(gl::textureBytes(visibility_) + gl::textureBytes(mask_));
+    timedComposite.end();
     return {eye_, seeds_, flooded, visibility_, kernel_.passesRun(), passes, geometric, measured};
 }
 

@@ -222,7 +222,7 @@ FilteredShadowPass::Outputs FilteredShadowPass::execute(const Inputs& in, gl::Pa
         throw std::invalid_argument("PCSS sample counts must be in [1, 64] / [1, 225]");
     const int width = in.surfaces.width, height = in.surfaces.height;
     resize(width, height);
-    if (timer) timer->begin(in.pcss ? phase::kBlockerSearchFilter : phase::kPcfFilter);
+    gl::TimedPass timedFilter(timer, in.pcss ? phase::kBlockerSearchFilter : phase::kPcfFilter);
     const FilterFrame f = frame(in);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glViewport(0, 0, width, height);
@@ -252,8 +252,8 @@ FilteredShadowPass::Outputs FilteredShadowPass::execute(const Inputs& in, gl::Pa
     gl::drawFullscreenTriangle(program_, emptyVao_);
     scope.release();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    if (timer) timer->wrote(gl::textureBytes(visibility_));
-    if (timer) timer->end();
+    timedFilter.wrote(gl::textureBytes(visibility_));
+    timedFilter.end();
     return {visibility_};
 }
 

@@ -155,15 +155,15 @@ PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, gl::PassTime
     viewTileCount_ = 0;
     bool region = limited && markViewRegion(in, regionReach, timer);
     // Phase 2 (thesis; within frame step 3): silhouettes.
-    if (timer) timer->begin(phase::kSilhouettes);
+    gl::TimedPass timedSilhouettes(timer, phase::kSilhouettes);
     findSeeds(in, region);
     // The whole map: exact without a region; with one, an upper bound (the pass draws only the
     // region's row spans, which only the GPU knows).
-    if (timer) timer->wrote(gl::textureBytes(seeds_));
-    if (timer) timer->end();
+    timedSilhouettes.wrote(gl::textureBytes(seeds_));
+    timedSilhouettes.end();
     // Phase 3: flood the occluders through the penumbra region; its band (jfa/Band.h) and,
     // with auto, its pass count first, timed apart.
-    if (timer) timer->begin(phase::kBand);
+    gl::TimedPass timedBand(timer, phase::kBand);
     PenumbraCriterion criterion;
     criterion.light = in.light;
     criterion.map = in.receivers;
@@ -171,14 +171,14 @@ PenumbraMapPass::Outputs PenumbraMapPass::execute(const Inputs& in, gl::PassTime
     criterion.umbraDepth = in.umbraDepth;
     kernel_.setRegion(in.settings.region, in.settings.bandTile);
     kernel_.setViewTiles(limited ? &viewTiles_ : nullptr);
-    const PenumbraSettings settings = planBand(in, criterion, region, regionReach, timer);
+    const PenumbraSettings settings = planBand(in, criterion, region, regionReach, timedBand);
     seedRegionCount_ = region ? viewTileCount_ : 0;
     const jfa::Plan plan = penumbraPlan(settings, size);
     kernel_.prepareBand(plan, seeds_, criterion);
-    if (timer) timer->end();
-    if (timer) timer->begin(phase::kFlood);
+    timedBand.end();
+    gl::TimedPass timedFlood(timer, phase::kFlood);
     const gl::Texture& map = kernel_.run(plan, seeds_, criterion);
-    if (timer) timer->end();
+    timedFlood.end();
     kernel_.setViewTiles(nullptr);
     return {seeds_, map, kernel_.passesRun(), settings.passes};
 }
@@ -187,20 +187,19 @@ bool PenumbraMapPass::markViewRegion(const Inputs& in, long long regionReach,
                                      gl::PassTimer* timer) {
     const int size = in.receivers.size();
     const int tile = in.settings.bandTile;
-    if (timer) timer->begin(phase::kView);
+    gl::TimedPass timedView(timer, phase::kView);
     markView(*in.view, size, tile);
     const bool region = regionReach >= 0 && markSeedRegion(size, tile, regionReach);
     // The view's tile flags; the seed region's flags and its two lists of row spans.
-    if (timer)
-        timer->wrote(tileFlagBytes(size, tile) +
-                     (region ? tileFlagBytes(size, tile) + 2 * rowSpanBytes(size, tile) : 0));
-    if (timer) timer->end();
+    timedView.wrote(tileFlagBytes(size, tile) +
+                    (region ? tileFlagBytes(size, tile) + 2 * rowSpanBytes(size, tile) : 0));
+    timedView.end();
     return region;
 }
 
 PenumbraSettings PenumbraMapPass::planBand(const Inputs& in, PenumbraCriterion& criterion,
                                            bool& region, long long& regionReach,
-                                           gl::PassTimer* timer) {
+                                           const gl::TimedPass& band) {
     const int size = in.receivers.size();
     const int tile = in.settings.bandTile;
     PenumbraSettings settings = in.settings;
@@ -208,7 +207,7 @@ PenumbraSettings PenumbraMapPass::planBand(const Inputs& in, PenumbraCriterion& 
         if (criterion.reachBound.enabled) { // receivers are the texels with w = 1
             bounds_.build(in.receivers, in.light, criterion.reachBound,
                           region ? &seedRegion_ : nullptr, tile);
-            if (timer) timer->wrote(bounds_.bytes());
+            band.wrote(bounds_.bytes());
         }
         // auto: one value read back (the plan is recorded on the CPU). The count covers the lit
         // side's reach on the real receivers (umbraDepth 0): the umbra side's half of a penumbra
@@ -231,7 +230,7 @@ PenumbraSettings PenumbraMapPass::planBand(const Inputs& in, PenumbraCriterion& 
         settings.passes = 0;
         region = markSeedRegion(size, tile, regionReach);
         findSeeds(in, region);
-        if (timer) timer->wrote(gl::textureBytes(seeds_)); // as above, an upper bound
+        band.wrote(gl::textureBytes(seeds_)); // as above, an upper bound
     }
     return settings;
 }

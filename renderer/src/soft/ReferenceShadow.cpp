@@ -102,7 +102,7 @@ ReferenceShadowPass::Outputs ReferenceShadowPass::execute(const Inputs& in, gl::
     const float far = 1.0f;
 
     // One depth map per disk sample, each added to the sum.
-    if (timer) timer->begin(phase::kReferenceMaps);
+    gl::TimedPass timedReferenceMaps(timer, phase::kReferenceMaps);
     glClearNamedFramebufferfv(sumFbo_.id(), GL_COLOR, 0, none);
     depth_.set(kReferenceDepth.warp, glm::mat4(1.0f));
     depth_.set(kReferenceDepth.slopeBias, in.shadowSettings.slopeBias);
@@ -147,12 +147,11 @@ ReferenceShadowPass::Outputs ReferenceShadowPass::execute(const Inputs& in, gl::
     }
     glBlendFunc(GL_ONE, GL_ZERO); // the default
     // Each sample writes its depth map and adds into the sum.
-    if (timer)
-        timer->wrote(static_cast<std::int64_t>(samples.size()) *
-                     (gl::textureBytes(map_) + gl::textureBytes(sum_)));
-    if (timer) timer->end();
+    timedReferenceMaps.wrote(static_cast<std::int64_t>(samples.size()) *
+                             (gl::textureBytes(map_) + gl::textureBytes(sum_)));
+    timedReferenceMaps.end();
 
-    if (timer) timer->begin(phase::kReferenceResolve);
+    gl::TimedPass timedReferenceResolve(timer, phase::kReferenceResolve);
     glBindFramebuffer(GL_FRAMEBUFFER, visibilityFbo_.id());
     glViewport(0, 0, width, height);
     resolve_.set(kReferenceSamples, static_cast<float>(samples.size()));
@@ -163,8 +162,8 @@ ReferenceShadowPass::Outputs ReferenceShadowPass::execute(const Inputs& in, gl::
         gl::drawFullscreenTriangle(resolve_, emptyVao_);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    if (timer) timer->wrote(gl::textureBytes(visibility_));
-    if (timer) timer->end();
+    timedReferenceResolve.wrote(gl::textureBytes(visibility_));
+    timedReferenceResolve.end();
     return {visibility_};
 }
 

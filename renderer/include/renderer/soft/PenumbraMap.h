@@ -102,7 +102,7 @@ class PenumbraMapPass {
     /// Phase 3's band: the reach bounds and, with auto, the pass count (growing the seed
     /// region while auto asks for more than it covers); returns the settings with the count.
     PenumbraSettings planBand(const Inputs& in, PenumbraCriterion& criterion, bool& region,
-                              long long& regionReach, gl::PassTimer* timer);
+                              long long& regionReach, const gl::TimedPass& band);
     /// Fills viewTiles_ from `view` (penumbra_view.frag.glsl).
     void markView(const PenumbraView& view, int size, int tile);
     /// Fills seedRegion_: the view's tiles widened by `reach` texels (jfa::GlTileDilation);
