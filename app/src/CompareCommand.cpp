@@ -7,7 +7,7 @@
 #include <base/OutputFiles.h>
 
 #include <base/InputFile.h>
-#include <renderer/methods/Phases.h>
+#include <renderer/passes/Phases.h>
 #include <renderer/run/FrameRunner.h>
 
 #include <renderer/context/EglContext.h>

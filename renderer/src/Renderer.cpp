@@ -1,5 +1,5 @@
 #include <renderer/Renderer.h>
-#include <renderer/methods/Phases.h>
+#include <renderer/passes/Phases.h>
 
 #include <cmath>
 

@@ -1,7 +1,7 @@
 // hard: one shadow-map test at the light's centre per pixel.
 
 #include "LightLookup.h"
-#include <renderer/methods/Phases.h>
+#include <renderer/passes/Phases.h>
 
 namespace fl {
 

@@ -2,8 +2,8 @@
 // times methods reads these rows (renderer/methods/ShadowMethod.h).
 
 #include <renderer/methods/OptionStructs.h>
-#include <renderer/methods/Phases.h>
 #include <renderer/methods/ShadowMethod.h>
+#include <renderer/passes/Phases.h>
 #include <renderer/soft/EyeSoftShadow.h>
 #include <renderer/soft/FilteredShadow.h>
 #include <renderer/soft/PenumbraMap.h>

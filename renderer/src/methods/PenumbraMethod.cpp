@@ -6,7 +6,7 @@
 #include "LightLookup.h"
 
 #include <renderer/methods/OptionStructs.h>
-#include <renderer/methods/Phases.h>
+#include <renderer/passes/Phases.h>
 
 #include <renderer/soft/OccluderEdge.h>
 #include <renderer/soft/PenumbraMap.h>

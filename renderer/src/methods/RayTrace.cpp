@@ -7,8 +7,8 @@
 // that graze start on it (raytrace/ShadowRays.h, raytrace/Terminator.h), as Cycles does.
 
 #include <renderer/methods/OptionStructs.h>
-#include <renderer/methods/Phases.h>
 #include <renderer/methods/ShadowMethod.h>
+#include <renderer/passes/Phases.h>
 
 #include <renderer/soft/ShadowRayInputs.h>
 

@@ -14,8 +14,8 @@
 // The CPU reference of all three phases (moments, blur, lookup: parts of frame step 3) is in
 // tests/vsm_gltest.cpp.
 
-#include <renderer/methods/Phases.h>
 #include <renderer/methods/ShadowMethod.h>
+#include <renderer/passes/Phases.h>
 
 #include <glm/gtc/matrix_inverse.hpp>
 

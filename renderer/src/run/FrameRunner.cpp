@@ -1,4 +1,4 @@
-#include <renderer/methods/Phases.h>
+#include <renderer/passes/Phases.h>
 #include <renderer/run/FrameRunner.h>
 
 #include <base/Stats.h>

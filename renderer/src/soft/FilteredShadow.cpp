@@ -1,4 +1,4 @@
-#include <renderer/methods/Phases.h>
+#include <renderer/passes/Phases.h>
 #include <renderer/soft/FilteredShadow.h>
 
 #include <geometry/DiskSampling.h>

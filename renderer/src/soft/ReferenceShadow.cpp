@@ -1,5 +1,5 @@
 #include <renderer/io/TextureImage.h>
-#include <renderer/methods/Phases.h>
+#include <renderer/passes/Phases.h>
 #include <renderer/soft/ReferenceShadow.h>
 
 #include <renderer/metrics/Metrics.h>
