@@ -376,11 +376,30 @@ ModelResult runModel(const Options& o, const Model& model, const std::vector<Met
 
 std::string csvOf(const std::vector<Model>& models, const std::vector<ModelResult>& results,
                   const std::vector<MethodEntry>& columns, const Options& o) {
-    fl::CsvTable csv({"model",        "path",       "triangles", "ground_added",  "model_radius",
-                      "light_radius", "label",      "method",    "receivers",     "penumbra_pixels",
-                      "umbra_pixels", "lit_pixels", "rmse",      "penumbra_rmse", "leak",
-                      "dark",         "median_ms",  "min_ms",    "x_hard",        "frames",
-                      "raytrace_ms",  "rmse_near_contact", "rmse_back_facing", "rmse_elsewhere"});
+    fl::CsvTable csv({"model",
+                      "path",
+                      "triangles",
+                      "ground_added",
+                      "model_radius",
+                      "light_radius",
+                      "label",
+                      "method",
+                      "receivers",
+                      "penumbra_pixels",
+                      "umbra_pixels",
+                      "lit_pixels",
+                      "rmse",
+                      "penumbra_rmse",
+                      "leak",
+                      "dark",
+                      "median_ms",
+                      "min_ms",
+                      "x_hard",
+                      "frames",
+                      "raytrace_ms",
+                      "rmse_near_contact",
+                      "rmse_back_facing",
+                      "rmse_elsewhere"});
     for (std::size_t i = 0; i < models.size(); ++i)
         for (std::size_t c = 0; c < columns.size(); ++c) {
             const Model& m = models[i];

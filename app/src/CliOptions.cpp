@@ -20,8 +20,9 @@ void addShadowMapOptions(CLI::App& cmd, SceneOptions& o) {
     cmd.add_option("--shadow-map-size", o.shadowMapSize, "Shadow map texels per side")
         ->check(integer(16, kMaxShadowMapSize))
         ->capture_default_str();
-    cmd.add_option("--shadow-map", o.shadowMap,
-                   "Shadow-map provider: uniform (fitted to what casts shadows) or tsm (trapezoidal)")
+    cmd.add_option(
+           "--shadow-map", o.shadowMap,
+           "Shadow-map provider: uniform (fitted to what casts shadows) or tsm (trapezoidal)")
         ->check(CLI::IsMember({"uniform", "tsm"}))
         ->capture_default_str();
     for (const TsmOption& t : tsmOptions()) // out of range: a usage error naming flag and range
