@@ -63,11 +63,18 @@ void Renderer::setLight(const Light& light) {
 
 void Renderer::setAnimations(std::vector<int> animations) {
     animations_ = std::move(animations);
-    sceneBounds_ = animatedBounds(scene_.source(), animations_);
-    modelBounds_ =
-        scene_.source().addedGround >= 0
-            ? animatedBounds(scene_.source(), animations_, 64, scene_.source().addedGround)
-            : sceneBounds_;
+    // The poses are skinned once: the model's box, then the added ground's (rigid, on no node,
+    // never animated: its mesh box at its world, as posedBounds places it in every pose).
+    const Scene& s = scene_.source();
+    modelBounds_ = animatedBounds(s, animations_, 64, s.addedGround);
+    sceneBounds_ = modelBounds_;
+    if (s.addedGround >= 0) {
+        const Instance& ground = s.instances.at(static_cast<std::size_t>(s.addedGround));
+        geom::Aabb local;
+        for (const glm::vec3& p : s.meshes.at(static_cast<std::size_t>(ground.mesh)).positions)
+            local.extend(p);
+        sceneBounds_.extend(local.transformed(ground.world));
+    }
     posedAt_.reset(); // another clip: the same times pose differently
     setLight(light_); // refits the light to the new bounds
     setTime(0.0);
