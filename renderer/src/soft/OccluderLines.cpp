@@ -182,9 +182,9 @@ LineMap readLineMap(const ShadowMapPass::Outputs& shadow, const DiskLight& light
 }
 
 glm::vec4 lineMapReceiver(const LineMap& m, glm::ivec2 t) {
-    const float d = m.receiverDepth[std::size_t(t.y) * std::size_t(m.size) + t.x];
-    if (d == shadowmap::kNoReceiver) return glm::vec4(0.0f);
-    return glm::vec4(mapUnproject(m, glm::vec2(t) + 0.5f, d), 1.0f);
+    return shadowmap::receiverPosition(
+        m.receiverDepth[std::size_t(t.y) * std::size_t(m.size) + t.x], t, m.size, m.unwarp,
+        m.inverseLightViewProj);
 }
 
 float lineMapDepth(const LineMap& m, glm::ivec2 t) {
